@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "app/commands.h"
+
+namespace wearlink::app
+{
+  // Each sub-command lives in app/commands/<name>.cc and exposes its Command entry.
+  extern const Command run_scene_command;
+
+  const std::vector<Command> &
+  commands()
+  {
+    static const std::vector<Command> table = {
+      run_scene_command,
+    };
+    return table;
+  }
+} // namespace wearlink::app

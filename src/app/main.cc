@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The wearlink program: dispatch to a sub-command and the one place where errors are
+// caught. A user error (InputError) prints its message and exits with status 2; a
+// numerical failure of a valid scene (NumericalError) exits with 3; anything else is a
+// bug and exits with 1 after printing what deal.II knows about it.
+#include "app/commands.h"
+#include "base/exceptions.h"
+#include "register_all.h"
+
+#include <deal.II/base/exceptions.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "wearlink — finite-element wear refinement for planar mechanisms with revolute\n"
+           "clearance joints.\n\n"
+           "Usage:\n";
+    for (const auto &c : wearlink::app::commands())
+      out << "  wearlink " << c.synopsis << "\n";
+    out << "  wearlink --validate SCENE.prm        check a scene without running it\n"
+           "  wearlink --print-parameters [SCENE]  every declared entry with its unit and "
+           "default\n"
+           "  wearlink --help | COMMAND --help\n\n"
+           "Exit status: 0 success, 2 bad input (the message says what to fix), 3 a\n"
+           "numerical failure in a valid scene, 1 an internal error.\n";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  std::vector<std::string> args(argv + 1, argv + argc);
+  try
+    {
+      dealii::deal_II_exceptions::disable_abort_on_exception();
+      wearlink::register_all();
+
+      if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help")
+        {
+          print_usage(std::cout);
+          return args.empty() ? 2 : 0;
+        }
+      // Global spellings that map onto the run command.
+      if (args[0] == "--validate" || args[0] == "--print-parameters")
+        {
+          args.insert(args.begin(), "run");
+        }
+      for (const auto &c : wearlink::app::commands())
+        if (args[0] == c.name)
+          {
+            const std::vector<std::string> rest(args.begin() + 1, args.end());
+            for (const auto &a : rest)
+              if (a == "--help" || a == "-h")
+                {
+                  std::cout << c.help;
+                  return 0;
+                }
+            return c.run(rest);
+          }
+      std::cerr << "error: unknown command '" << args[0] << "'.\n\n";
+      print_usage(std::cerr);
+      return 2;
+    }
+  catch (const wearlink::InputError &e)
+    {
+      std::cerr << "error: " << e.message() << '\n';
+      return 2;
+    }
+  catch (const wearlink::NumericalError &e)
+    {
+      std::cerr << "numerical failure: " << e.message() << '\n';
+      return 3;
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      std::cerr << "internal error:\n" << e.what() << '\n';
+      return 1;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "internal error: " << e.what() << '\n';
+      return 1;
+    }
+}

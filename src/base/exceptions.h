@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Exception types of wearlink. Two kinds of failure reach the user:
+//  - InputError: the scene, a file or a command line is wrong; the message says what is
+//    wrong, where (file and entry path), what is allowed and how to fix it.
+//  - NumericalError: a valid scene that the numerics could not handle (assembly Newton
+//    did not converge, step size underflow, contact solver cycling); the message carries
+//    time, joint, iteration and residual.
+// Our own bugs are caught by deal.II's Assert (debug builds only).
+#pragma once
+
+#include <deal.II/base/exceptions.h>
+
+#include <string>
+
+namespace wearlink
+{
+  /** Base of wearlink's user-facing exceptions: the message is all there is to print. */
+  class Error : public dealii::ExceptionBase
+  {
+  public:
+    explicit Error(std::string message);
+
+    /** The message for the user (no stack trace, no source location). */
+    const std::string &
+    message() const
+    {
+      return text;
+    }
+
+    void
+    print_info(std::ostream &out) const override;
+
+    const char *
+    what() const noexcept override
+    {
+      return text.c_str();
+    }
+
+  private:
+    std::string text;
+  };
+
+  /** The user's input (scene, file, command line) is wrong. Exit status 2. */
+  class InputError : public Error
+  {
+  public:
+    using Error::Error;
+  };
+
+  /** A valid scene the numerics could not carry through. Exit status 3. */
+  class NumericalError : public Error
+  {
+  public:
+    using Error::Error;
+  };
+} // namespace wearlink

@@ -1,0 +1,429 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "base/parameters.h"
+
+#include "base/exceptions.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace wearlink
+{
+  namespace
+  {
+    std::string
+    trim(const std::string &s)
+    {
+      const auto b = s.find_first_not_of(" \t\r");
+      if (b == std::string::npos)
+        return "";
+      const auto e = s.find_last_not_of(" \t\r");
+      return s.substr(b, e - b + 1);
+    }
+
+    /** The text of a line without its comment and surrounding blanks. */
+    std::string
+    strip_comment(const std::string &line)
+    {
+      const auto hash = line.find('#');
+      return trim(hash == std::string::npos ? line : line.substr(0, hash));
+    }
+
+    bool
+    starts_with_word(const std::string &line, const std::string &word)
+    {
+      return line.compare(0, word.size(), word) == 0 &&
+             (line.size() == word.size() || line[word.size()] == ' ' ||
+              line[word.size()] == '\t');
+    }
+
+    /** deal.II's messages end with a newline and often start with one. */
+    std::string
+    info_of(const dealii::ExceptionBase &e)
+    {
+      std::ostringstream os;
+      e.print_info(os);
+      return trim(os.str());
+    }
+
+    /** Undo deal.II's internal name mangling ("_20" for a blank, "." between levels). */
+    std::string
+    demangle_path(const std::string &mangled)
+    {
+      std::string out;
+      for (std::size_t i = 0; i < mangled.size(); ++i)
+        {
+          if (mangled[i] == '.')
+            out += '/';
+          else if (mangled[i] == '_' && i + 2 < mangled.size() + 0 &&
+                   std::isxdigit(static_cast<unsigned char>(mangled[i + 1])) &&
+                   std::isxdigit(static_cast<unsigned char>(mangled[i + 2])))
+            {
+              out += static_cast<char>(std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
+              i += 2;
+            }
+          else
+            out += mangled[i];
+        }
+      return out;
+    }
+
+    /** One parse of @p text (a balanced chunk of @p filename) into @p prm. */
+    void
+    parse_chunk(dealii::ParameterHandler &prm,
+                const std::string &       text,
+                const std::string &       filename,
+                bool                      skip_undefined)
+    {
+      std::istringstream in(text);
+      try
+        {
+          prm.parse_input(in, filename, "", skip_undefined);
+        }
+      catch (const Error &)
+        {
+          throw;
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError("Error in scene file '" + filename + "':\n  " + info_of(e));
+        }
+    }
+  } // namespace
+
+
+  void
+  declare(dealii::ParameterHandler &           prm,
+          const std::string &                  name,
+          const std::string &                  default_value,
+          const dealii::Patterns::PatternBase &pattern,
+          const std::string &                  doc,
+          const std::string &                  unit)
+  {
+    prm.declare_entry(name, default_value, pattern, doc + " Units: " + unit + ".");
+  }
+
+
+  void
+  declare_required(dealii::ParameterHandler &           prm,
+                   const std::string &                  name,
+                   const dealii::Patterns::PatternBase &pattern,
+                   const std::string &                  doc,
+                   const std::string &                  unit)
+  {
+    // deal.II wants a default that matches the pattern even for an entry the user must
+    // set; it only shows in --print-parameters, where the doc says it is required.
+    std::string placeholder;
+    for (const char *candidate : {"", "0", "1", "0, 0", "none"})
+      if (pattern.match(candidate))
+        {
+          placeholder = candidate;
+          break;
+        }
+    Assert(pattern.match(placeholder), dealii::ExcInternalError());
+    prm.declare_entry(name,
+                      placeholder,
+                      pattern,
+                      doc + " Required (no default). Units: " + unit + ".",
+                      true);
+  }
+
+
+  dealii::Patterns::List
+  point_pattern()
+  {
+    return dealii::Patterns::List(dealii::Patterns::Double(), 2, 2, ",");
+  }
+
+
+  ParameterReader::ParameterReader(dealii::ParameterHandler &prm, std::string file)
+    : prm(prm)
+    , filename(std::move(file))
+  {}
+
+
+  void
+  ParameterReader::enter(const std::string &subsection)
+  {
+    prm.enter_subsection(subsection);
+    sections.push_back(subsection);
+  }
+
+
+  void
+  ParameterReader::leave()
+  {
+    Assert(!sections.empty(), dealii::ExcInternalError());
+    prm.leave_subsection();
+    sections.pop_back();
+  }
+
+
+  std::string
+  ParameterReader::path(const std::string &entry) const
+  {
+    std::string p;
+    for (const auto &s : sections)
+      p += s + "/";
+    return p + entry;
+  }
+
+
+  std::string
+  ParameterReader::get(const std::string &entry) const
+  {
+    return prm.get(entry);
+  }
+
+
+  bool
+  ParameterReader::get_bool(const std::string &entry) const
+  {
+    return prm.get_bool(entry);
+  }
+
+
+  long
+  ParameterReader::get_integer(const std::string &entry) const
+  {
+    return prm.get_integer(entry);
+  }
+
+
+  double
+  ParameterReader::get_double(const std::string &entry) const
+  {
+    const std::string text = trim(prm.get(entry));
+    double            value;
+    std::size_t       used = 0;
+    try
+      {
+        value = std::stod(text, &used);
+      }
+    catch (const std::exception &)
+      {
+        fail(entry, "it must be a finite number");
+      }
+    if (used != text.size() || !std::isfinite(value))
+      fail(entry, "it must be a finite number");
+    return value;
+  }
+
+
+  double
+  ParameterReader::get_positive(const std::string &entry) const
+  {
+    const double v = get_double(entry);
+    if (!(v > 0))
+      fail(entry, "it must be > 0");
+    return v;
+  }
+
+
+  std::array<double, 2>
+  ParameterReader::get_point(const std::string &entry) const
+  {
+    const auto parts = get_list(entry);
+    if (parts.size() != 2)
+      fail(entry, "it must be two numbers \"x, y\"");
+    std::array<double, 2> p{};
+    for (unsigned d = 0; d < 2; ++d)
+      {
+        std::size_t used = 0;
+        try
+          {
+            p[d] = std::stod(parts[d], &used);
+          }
+        catch (const std::exception &)
+          {
+            fail(entry, "it must be two finite numbers \"x, y\"");
+          }
+        if (used != parts[d].size() || !std::isfinite(p[d]))
+          fail(entry, "it must be two finite numbers \"x, y\"");
+      }
+    return p;
+  }
+
+
+  std::vector<std::string>
+  ParameterReader::get_list(const std::string &entry) const
+  {
+    std::vector<std::string> out;
+    for (const auto &s : dealii::Utilities::split_string_list(prm.get(entry), ','))
+      {
+        const auto t = trim(s);
+        if (!t.empty())
+          out.push_back(t);
+      }
+    return out;
+  }
+
+
+  void
+  ParameterReader::fail(const std::string &entry,
+                        const std::string &allowed,
+                        const std::string &hint) const
+  {
+    std::string value;
+    try
+      {
+        value = prm.get(entry);
+      }
+    catch (...)
+      {
+        value = "(not declared)";
+      }
+    std::string msg = "In " + filename + ", '" + path(entry) + "' is '" + value + "'; " + allowed + ".";
+    if (!hint.empty())
+      msg += " " + hint;
+    throw InputError(msg);
+  }
+
+
+  void
+  ParameterReader::fail_section(const std::string &what_is_wrong) const
+  {
+    std::string p;
+    for (const auto &s : sections)
+      p += (p.empty() ? "" : "/") + s;
+    throw InputError("In " + filename + ", subsection '" + p + "': " + what_is_wrong);
+  }
+
+
+  void
+  read_prm_file(dealii::ParameterHandler &prm,
+                const std::string &       filename,
+                bool                      skip_undefined)
+  {
+    namespace fs = std::filesystem;
+    std::ifstream in(filename);
+    if (!in)
+      throw InputError("Cannot open the parameter file '" + filename +
+                       "': it does not exist or is not readable. Check the path (relative "
+                       "paths are taken from the current directory).");
+
+    const fs::path base = fs::path(filename).parent_path();
+
+    // Split the file into balanced chunks at top-level `include` lines. Each chunk is
+    // padded with empty lines so that deal.II's line numbers stay those of the file.
+    std::string line;
+    std::string chunk;
+    unsigned    line_no = 0;
+    int         depth   = 0;
+    while (std::getline(in, line))
+      {
+        ++line_no;
+        const std::string body = strip_comment(line);
+        if (starts_with_word(body, "subsection"))
+          ++depth;
+        else if (body == "end")
+          --depth;
+
+        if (starts_with_word(body, "include"))
+          {
+            if (depth != 0)
+              throw InputError("In " + filename + " line " + std::to_string(line_no) +
+                               ": 'include' is only allowed outside subsections. Move it "
+                               "to the top level of the file.");
+            fs::path inc = trim(body.substr(7));
+            if (inc.empty())
+              throw InputError("In " + filename + " line " + std::to_string(line_no) +
+                               ": 'include' needs a file name.");
+            if (inc.is_relative())
+              inc = base / inc;
+            parse_chunk(prm, chunk, filename, skip_undefined);
+            if (!fs::exists(inc))
+              throw InputError("In " + filename + " line " + std::to_string(line_no) +
+                               ": the included file '" + inc.string() +
+                               "' does not exist (include paths are relative to the "
+                               "including file).");
+            read_prm_file(prm, inc.string(), skip_undefined);
+            chunk = std::string(line_no, '\n');
+          }
+        else
+          chunk += line + '\n';
+      }
+    parse_chunk(prm, chunk, filename, skip_undefined);
+  }
+
+
+  void
+  check_required_entries(const dealii::ParameterHandler &prm, const std::string &filename)
+  {
+    const auto missing = prm.get_entries_wrongly_not_set();
+    if (missing.empty())
+      return;
+    std::string list;
+    for (const auto &m : missing)
+      list += "\n  " + demangle_path(m);
+    throw InputError("In " + filename +
+                     ", these required entries are not set (physical data has no default; "
+                     "set them in the scene or with --set):" +
+                     list);
+  }
+
+
+  void
+  apply_overrides(dealii::ParameterHandler &prm, const std::vector<std::string> &overrides)
+  {
+    for (const auto &o : overrides)
+      {
+        const auto eq = o.find('=');
+        if (eq == std::string::npos)
+          throw InputError("The override '--set " + o +
+                           "' must have the form \"Section/Sub/Entry=value\".");
+        const std::string path  = trim(o.substr(0, eq));
+        const std::string value = trim(o.substr(eq + 1));
+        auto parts = dealii::Utilities::split_string_list(path, '/');
+        for (auto &p : parts)
+          p = trim(p);
+        const std::string              entry = parts.back();
+        const std::vector<std::string> sections(parts.begin(), parts.end() - 1);
+        if (!sections.empty() && !prm.subsection_path_exists(sections))
+          throw InputError("The override '--set " + o + "' names the subsection '" +
+                           path.substr(0, path.rfind('/')) +
+                           "', which this scene does not declare. Run `wearlink "
+                           "--print-parameters` to see the declared entries.");
+        for (const auto &s : sections)
+          prm.enter_subsection(s);
+        bool        ok = true;
+        std::string why;
+        try
+          {
+            prm.get(entry);
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            ok  = false;
+            why = "there is no entry '" + entry + "' there. Run `wearlink --print-parameters` "
+                  "to see the declared entries.";
+          }
+        if (ok)
+          try
+            {
+              prm.set(entry, value);
+            }
+          catch (const dealii::ExceptionBase &e)
+            {
+              ok  = false;
+              why = info_of(e);
+            }
+        for (std::size_t i = 0; i < sections.size(); ++i)
+          prm.leave_subsection();
+        if (!ok)
+          throw InputError("The override '--set " + o + "' cannot be applied: " + why);
+      }
+  }
+
+
+  std::string
+  format_number(double value)
+  {
+    std::ostringstream os;
+    os << std::setprecision(std::numeric_limits<double>::max_digits10) << value;
+    return os.str();
+  }
+} // namespace wearlink

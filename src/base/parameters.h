@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Declaring and reading .prm entries the wearlink way (STYLE.md B.4):
+//  - every entry is declared once with a bounded pattern, a documented default and its
+//    unit; declare() appends "Units: <unit>." to the documentation so that
+//    --print-parameters always states it;
+//  - physical data without a sensible default is declared required (has_to_be_set);
+//  - ParameterReader reads entries while tracking the subsection path, so an error
+//    names the file, the full entry path ("Joint A/Clearance/Radial clearance"), the
+//    value, the allowed range and how to fix it.
+//  - read_prm_file() parses a .prm file with `include` lines resolved relative to the
+//    including file, keeping deal.II's own file:line error reporting.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace wearlink
+{
+  /** Declare an entry; @p unit is appended to @p doc as "Units: unit.". */
+  void
+  declare(dealii::ParameterHandler &       prm,
+          const std::string &              name,
+          const std::string &              default_value,
+          const dealii::Patterns::PatternBase &pattern,
+          const std::string &              doc,
+          const std::string &              unit);
+
+  /** Declare an entry that the scene must set (no silent default for physical data). */
+  void
+  declare_required(dealii::ParameterHandler &       prm,
+                   const std::string &              name,
+                   const dealii::Patterns::PatternBase &pattern,
+                   const std::string &              doc,
+                   const std::string &              unit);
+
+  /** Pattern of a 2D point or vector "x, y". */
+  dealii::Patterns::List
+  point_pattern();
+
+  /**
+   * Read access to a parsed ParameterHandler that knows the file it came from and the
+   * subsection path it is in, so that every error it raises is an InputError naming
+   * file, entry path, value and the allowed range.
+   */
+  class ParameterReader
+  {
+  public:
+    ParameterReader(dealii::ParameterHandler &prm, std::string file);
+
+    void
+    enter(const std::string &subsection);
+    void
+    leave();
+
+    /** The full path of @p entry in the current subsection, e.g. "Joint A/Model". */
+    std::string
+    path(const std::string &entry) const;
+
+    const std::string &
+    file() const
+    {
+      return filename;
+    }
+
+    std::string
+    get(const std::string &entry) const;
+    bool
+    get_bool(const std::string &entry) const;
+    long
+    get_integer(const std::string &entry) const;
+    /** A finite double (deal.II's pattern has already checked its bounds). */
+    double
+    get_double(const std::string &entry) const;
+    /** A double that must be > 0 (strictly). */
+    double
+    get_positive(const std::string &entry) const;
+    std::array<double, 2>
+    get_point(const std::string &entry) const;
+    std::vector<std::string>
+    get_list(const std::string &entry) const;
+
+    /** Throw an InputError "In FILE, 'PATH' is VALUE; ALLOWED. HINT". */
+    [[noreturn]] void
+    fail(const std::string &entry,
+         const std::string &allowed,
+         const std::string &hint = "") const;
+
+    /** Throw an InputError about the current subsection as a whole. */
+    [[noreturn]] void
+    fail_section(const std::string &what_is_wrong) const;
+
+    dealii::ParameterHandler &
+    handler() const
+    {
+      return prm;
+    }
+
+  private:
+    dealii::ParameterHandler &prm;
+    std::string               filename;
+    std::vector<std::string>  sections;
+  };
+
+  /**
+   * Parse the .prm file @p filename into @p prm. `include FILE` lines (top level only)
+   * are resolved relative to the including file. A missing file, a malformed line, a
+   * value outside its pattern, an undeclared entry (unless @p skip_undefined) all throw
+   * an InputError naming the file and line. Required entries are not checked here (see
+   * check_required_entries()), so that command-line overrides can still supply them.
+   */
+  void
+  read_prm_file(dealii::ParameterHandler &prm,
+                const std::string &       filename,
+                bool                      skip_undefined = false);
+
+  /** Throw an InputError listing every required entry the scene did not set. */
+  void
+  check_required_entries(const dealii::ParameterHandler &prm, const std::string &filename);
+
+  /**
+   * Apply command-line overrides "Section/Sub/Entry=value" to @p prm. An unknown path
+   * or a value outside the entry's pattern is an InputError naming the override.
+   */
+  void
+  apply_overrides(dealii::ParameterHandler &      prm,
+                  const std::vector<std::string> &overrides);
+
+  /** Render a double the way a user would type it in a .prm file. */
+  std::string
+  format_number(double value);
+} // namespace wearlink

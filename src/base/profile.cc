@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "base/profile.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <numeric>
+#include <sstream>
+
+namespace wearlink
+{
+  namespace
+  {
+    constexpr double two_pi = 6.283185307179586476925286766559;
+    constexpr unsigned int min_points = 8;
+
+    /** Position of @p psi in sample units: index k and fraction f in [0, 1). */
+    void
+    locate(double psi, unsigned int n, unsigned int &k, double &f)
+    {
+      double s = psi / two_pi;
+      s -= std::floor(s);
+      double x = s * n;
+      if (x >= n)
+        x -= n;
+      k = static_cast<unsigned int>(x);
+      if (k >= n)
+        k = n - 1;
+      f = x - k;
+    }
+  } // namespace
+
+  Profile
+  Profile::round(double radius, unsigned int n_points)
+  {
+    Profile p;
+    p.r.assign(n_points, radius);
+    p.check("round profile");
+    return p;
+  }
+
+  Profile
+  Profile::from_samples(std::vector<double> radii, const std::string &what)
+  {
+    Profile p;
+    p.r = std::move(radii);
+    p.check(what);
+    return p;
+  }
+
+  Profile
+  Profile::read_csv(const std::string &filename, unsigned int n_points)
+  {
+    std::ifstream in(filename);
+    if (!in)
+      throw InputError("Cannot open the profile file '" + filename +
+                       "': it does not exist or is not readable.");
+    std::vector<double> angles, radii;
+    std::string         line;
+    unsigned int        line_no = 0;
+    while (std::getline(in, line))
+      {
+        ++line_no;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos)
+          line.resize(hash);
+        if (line.find_first_not_of(" \t\r") == std::string::npos)
+          continue;
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream ls(line);
+        std::string        a_text, r_text;
+        ls >> a_text >> r_text;
+        char *     end_a = nullptr;
+        char *     end_r = nullptr;
+        const double a   = std::strtod(a_text.c_str(), &end_a);
+        const double rr  = std::strtod(r_text.c_str(), &end_r);
+        const bool numeric = !a_text.empty() && !r_text.empty() && *end_a == '\0' && *end_r == '\0';
+        if (!numeric)
+          {
+            if (angles.empty() && radii.empty() && line_no == 1)
+              continue; // header line
+            throw InputError("In profile file '" + filename + "' line " +
+                             std::to_string(line_no) +
+                             ": expected two numbers 'angle_rad, radius_m'.");
+          }
+        if (!std::isfinite(a) || !std::isfinite(rr))
+          throw InputError("In profile file '" + filename + "' line " +
+                           std::to_string(line_no) +
+                           ": the angle and radius must be finite numbers (found NaN or inf).");
+        if (!(rr > 0))
+          throw InputError("In profile file '" + filename + "' line " +
+                           std::to_string(line_no) + ": the radius must be > 0 m.");
+        if (!angles.empty() && !(a > angles.back()))
+          throw InputError("In profile file '" + filename + "' line " +
+                           std::to_string(line_no) +
+                           ": angles must increase strictly (a profile that turns back "
+                           "on itself is self-intersecting).");
+        angles.push_back(a);
+        radii.push_back(rr);
+      }
+    if (angles.size() < min_points)
+      throw InputError("The profile file '" + filename + "' has " +
+                       std::to_string(angles.size()) + " points; at least " +
+                       std::to_string(min_points) + " are needed.");
+    if (!(angles.back() - angles.front() < two_pi))
+      throw InputError("In profile file '" + filename +
+                       "', the angles span more than one turn (2π rad): the profile would "
+                       "overlap itself.");
+
+    const unsigned int n = n_points == 0 ? static_cast<unsigned int>(angles.size()) : n_points;
+    if (n_points == 0)
+      {
+        const double step = two_pi / n;
+        for (unsigned int k = 0; k < n; ++k)
+          if (std::abs(angles[k] - angles[0] - k * step) > 1e-6 * step)
+            throw InputError("The profile file '" + filename +
+                             "' is not uniformly spaced over 2π; give the number of "
+                             "discrete areas so that it can be resampled.");
+        // Already on the grid ψ_k = 2πk/N: keep the samples as they are. Otherwise
+        // (grid shifted by a0) fall through to the resampling below.
+        if (std::abs(angles[0]) <= 1e-12)
+          return from_samples(radii, "profile file '" + filename + "'");
+      }
+    // Periodic linear resampling onto ψ_k = 2πk/n.
+    const std::size_t m = angles.size();
+    std::vector<double> out(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        double psi = two_pi * k / n;
+        // bring psi into [angles[0], angles[0] + 2π)
+        psi -= two_pi * std::floor((psi - angles[0]) / two_pi);
+        std::size_t j = std::upper_bound(angles.begin(), angles.end(), psi) - angles.begin();
+        const double a0 = angles[j - 1];
+        const double r0 = radii[j - 1];
+        const double a1 = j < m ? angles[j] : angles[0] + two_pi;
+        const double r1 = j < m ? radii[j] : radii[0];
+        out[k]          = r0 + (r1 - r0) * (psi - a0) / (a1 - a0);
+      }
+    return from_samples(out, "profile file '" + filename + "'");
+  }
+
+  void
+  Profile::write_csv(const std::string &filename, const std::string &header_comment) const
+  {
+    AtomicFile f(filename);
+    auto &     os = f.stream();
+    if (!header_comment.empty())
+      os << "# " << header_comment << '\n';
+    os << "angle_rad,radius_m\n" << std::setprecision(17);
+    for (unsigned int k = 0; k < n_points(); ++k)
+      os << angle(k) << ',' << r[k] << '\n';
+    f.commit();
+  }
+
+  double
+  Profile::angle(unsigned int k) const
+  {
+    return two_pi * k / r.size();
+  }
+
+  double
+  Profile::radius(double psi) const
+  {
+    unsigned int k;
+    double       f;
+    const auto   n = n_points();
+    locate(psi, n, k, f);
+    const unsigned int k1 = k + 1 == n ? 0 : k + 1;
+    return r[k] + f * (r[k1] - r[k]);
+  }
+
+  double
+  Profile::slope(double psi) const
+  {
+    unsigned int k;
+    double       f;
+    const auto   n = n_points();
+    locate(psi, n, k, f);
+    const unsigned int k1 = k + 1 == n ? 0 : k + 1;
+    return (r[k1] - r[k]) * n / two_pi;
+  }
+
+  double
+  Profile::min_radius() const
+  {
+    return *std::min_element(r.begin(), r.end());
+  }
+
+  double
+  Profile::max_radius() const
+  {
+    return *std::max_element(r.begin(), r.end());
+  }
+
+  double
+  Profile::mean_radius() const
+  {
+    return std::accumulate(r.begin(), r.end(), 0.0) / r.size();
+  }
+
+  bool
+  Profile::is_round() const
+  {
+    const double r0 = r.front();
+    for (const double x : r)
+      if (std::abs(x - r0) > 1e-15 * r0)
+        return false;
+    return true;
+  }
+
+  double
+  Profile::enclosed_area() const
+  {
+    // ∫ ½ R(ψ)² dψ with R linear on each interval: ½ h (a² + ab + b²)/3.
+    const auto   n = n_points();
+    const double h = two_pi / n;
+    double       a = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double r0 = r[k];
+        const double r1 = r[k + 1 == n ? 0 : k + 1];
+        a += (r0 * r0 + r0 * r1 + r1 * r1) / 3.0;
+      }
+    return 0.5 * h * a;
+  }
+
+  void
+  Profile::check(const std::string &what) const
+  {
+    if (r.size() < min_points)
+      throw InputError("The " + what + " has " + std::to_string(r.size()) +
+                       " points; at least " + std::to_string(min_points) + " are needed.");
+    for (std::size_t k = 0; k < r.size(); ++k)
+      if (!std::isfinite(r[k]) || !(r[k] > 0))
+        throw InputError("The " + what + " has radius " + std::to_string(r[k]) +
+                         " m at point " + std::to_string(k) +
+                         "; every radius must be a finite number > 0.");
+  }
+} // namespace wearlink

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The pressure-model family: given the (worn) geometry of one shaft–bushing pair and
+// the contact load that the multibody model computed, return the contact pressure on
+// each discrete area of both surfaces. Members (chosen per joint by name):
+//   hertz-strip : Hertz line-contact half-width around the contact direction (seed route)
+//   winkler     : elastic foundation from the local overlap of the profiles
+//   fe          : 2D plane-strain contact FE of the actual pin and bushing (src/fe)
+// The wear layer integrates Archard's law with these pressures (REFERENCE.md §4–5).
+//
+// Frames: the bore profile and its pressure live in the bushing body's frame, the pin
+// profile and its pressure in the pin body's frame (ψ measured from each body's x-axis).
+#pragma once
+
+#include "base/profile.h"
+#include "base/registry.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace wearlink::contact
+{
+  /** Isotropic linear-elastic material. */
+  struct Material
+  {
+    double youngs_modulus = 0; ///< E [Pa]
+    double poisson_ratio  = 0; ///< ν [-]
+
+    /** (1 − ν²)/E [1/Pa], the σ of seed eq. 10. */
+    double
+    compliance() const
+    {
+      return (1 - poisson_ratio * poisson_ratio) / youngs_modulus;
+    }
+  };
+
+  /** 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2 [Pa] (REFERENCE.md §5). */
+  inline double
+  effective_modulus(const Material &a, const Material &b)
+  {
+    return 1.0 / (a.compliance() + b.compliance());
+  }
+
+  /** Geometry and materials of one shaft–bushing pair. */
+  struct JointGeometry
+  {
+    Profile  bore;             ///< R1*(ψ) [m], bushing frame
+    Profile  pin;              ///< R2*(ψ) [m], pin frame
+    double   axial_length = 0; ///< contact length along the pin axis [m]
+    Material bushing;
+    Material pin_material;
+  };
+
+  /** One load state of the joint, as the multibody model saw it. */
+  struct ContactLoad
+  {
+    double bushing_angle = 0;           ///< θ of the body holding the bore [rad]
+    double pin_angle     = 0;           ///< θ of the body holding the pin [rad]
+    std::array<double, 2> eccentricity{}; ///< pin centre − bore centre, global [m]
+    std::array<double, 2> force{};        ///< force of the bushing on the pin, global [N]
+    double penetration = 0;             ///< δ of the rigid-body contact model [m]
+  };
+
+  /** Contact pressure per discrete area of each surface. */
+  struct SurfacePressure
+  {
+    std::vector<double> bore; ///< [Pa] at the bore profile's sample angles
+    std::vector<double> pin;  ///< [Pa] at the pin profile's sample angles
+  };
+
+  class PressureModel
+  {
+  public:
+    virtual ~PressureModel() = default;
+
+    /**
+     * (Re)build whatever the model needs for this geometry (for `fe`: mesh,
+     * factorization, compliance). Called before the first evaluate() and after every
+     * wear update of the profiles.
+     */
+    virtual void
+    update_geometry(const JointGeometry &geometry) = 0;
+
+    /**
+     * Pressure for one load state. @p out's vectors are resized to the profiles'
+     * sample counts. The resultant of the pressure balances load.force (equilibrium).
+     */
+    virtual void
+    evaluate(const ContactLoad &load, SurfacePressure &out) = 0;
+
+    /** True for models that mesh and solve the actual geometry (gmsh + deal.II). */
+    virtual bool
+    requires_fe_geometry() const
+    {
+      return false;
+    }
+  };
+
+  /** The registry of pressure models (filled by register_contact_effects / register_fe_effects). */
+  Registry<PressureModel> &
+  pressure_models();
+} // namespace wearlink::contact

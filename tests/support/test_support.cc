@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "support/test_support.h"
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include <sys/wait.h>
+
+namespace wearlink::testing
+{
+  namespace fs = std::filesystem;
+
+  std::string
+  source_path(const std::string &relative)
+  {
+    return (fs::path(WEARLINK_SOURCE_DIR) / relative).string();
+  }
+
+  std::string
+  fresh_directory(const std::string &name)
+  {
+    const fs::path dir = fs::current_path() / "test-output" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir.string();
+  }
+
+  namespace
+  {
+    std::string
+    shell_quote(const std::string &s)
+    {
+      std::string out = "'";
+      for (const char c : s)
+        {
+          if (c == '\'')
+            out += "'\\''";
+          else
+            out += c;
+        }
+      return out + "'";
+    }
+  } // namespace
+
+  ProgramResult
+  run_wearlink(const std::vector<std::string> &args)
+  {
+    std::string cmd = shell_quote(WEARLINK_BINARY);
+    for (const auto &a : args)
+      cmd += " " + shell_quote(a);
+    cmd += " 2>&1";
+    ProgramResult r;
+    FILE *        pipe = ::popen(cmd.c_str(), "r");
+    if (pipe == nullptr)
+      throw std::runtime_error("cannot start " + cmd);
+    std::array<char, 4096> buf;
+    std::size_t            n;
+    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0)
+      r.output.append(buf.data(), n);
+    const int status = ::pclose(pipe);
+    r.exit_status    = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+  }
+
+  std::vector<std::string>
+  files_in(const std::string &dir)
+  {
+    std::vector<std::string> out;
+    if (!fs::exists(dir))
+      return out;
+    for (const auto &e : fs::recursive_directory_iterator(dir))
+      if (e.is_regular_file())
+        out.push_back(e.path().string());
+    return out;
+  }
+} // namespace wearlink::testing

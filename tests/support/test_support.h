@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Helpers shared by the test executables.
+#pragma once
+
+#include "base/json.h"
+
+#include <string>
+#include <vector>
+
+namespace wearlink::testing
+{
+  /** Absolute path of a file in the source tree, e.g. source_path("params/x.prm"). */
+  std::string
+  source_path(const std::string &relative);
+
+  /** A fresh, empty directory under the build tree's tmp area, unique per test. */
+  std::string
+  fresh_directory(const std::string &name);
+
+  /** Result of running the wearlink executable. */
+  struct ProgramResult
+  {
+    int         exit_status = -1;
+    std::string output; ///< stdout and stderr together
+  };
+
+  /** Run the wearlink executable with @p args (each one shell-quoted). */
+  ProgramResult
+  run_wearlink(const std::vector<std::string> &args);
+
+  /** Files (recursively) in @p dir. */
+  std::vector<std::string>
+  files_in(const std::string &dir);
+} // namespace wearlink::testing
