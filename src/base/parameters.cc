@@ -123,6 +123,18 @@ namespace wearlink
           placeholder = candidate;
           break;
         }
+    if (dynamic_cast<const dealii::Patterns::Selection *>(&pattern) != nullptr)
+      {
+        // "[Selection a|b|c ]": the first choice stands in for the missing default.
+        const std::string d = pattern.description(dealii::Patterns::PatternBase::Machine);
+        const auto        b = d.find(' ');
+        placeholder         = trim(d.substr(b + 1, d.find('|') == std::string::npos ?
+                                                std::string::npos :
+                                                d.find('|') - b - 1));
+        if (!placeholder.empty() && placeholder.back() == ']')
+          placeholder.pop_back();
+        placeholder = trim(placeholder);
+      }
     Assert(pattern.match(placeholder), dealii::ExcInternalError());
     prm.declare_entry(name,
                       placeholder,

@@ -1,9 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Registration of the contact layer's plugins: one line per plugin.
+// Registration of the contact layer's plugins: one line per family.
+#include "contact/friction_law.h"
+#include "contact/normal_force_law.h"
 #include "contact/pressure_model.h"
 
 namespace wearlink::contact
 {
+  void
+  register_normal_force_laws();
+  void
+  register_friction_laws();
+
   Registry<PressureModel> &
   pressure_models()
   {
@@ -13,5 +20,8 @@ namespace wearlink::contact
 
   void
   register_contact_effects()
-  {}
+  {
+    register_normal_force_laws();
+    register_friction_laws();
+  }
 } // namespace wearlink::contact

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "contact/clearance_joint.h"
+
+#include <cmath>
+
+namespace wearlink::contact
+{
+  double
+  contact_stiffness(double          bore_radius,
+                    double          pin_radius,
+                    const Material &bushing,
+                    const Material &pin,
+                    EffectiveRadius form)
+  {
+    const double r_star = form == EffectiveRadius::internal ?
+                            bore_radius * pin_radius / (bore_radius - pin_radius) :
+                            bore_radius * pin_radius / (bore_radius + pin_radius);
+    return 4.0 / (3.0 * (bushing.compliance() + pin.compliance())) * std::sqrt(r_star);
+  }
+
+  ClearanceJoint::ClearanceJoint(ClearanceJointDescription       d,
+                                 std::unique_ptr<NormalForceLaw> normal,
+                                 std::unique_ptr<FrictionLaw>    friction)
+    : description(std::move(d))
+    , normal_law(std::move(normal))
+    , friction_law(std::move(friction))
+    , gap(description.geometry.bore, description.geometry.pin)
+    , contact_stiffness(wearlink::contact::contact_stiffness(description.geometry.bore.mean_radius(),
+                                                             description.geometry.pin.mean_radius(),
+                                                             description.geometry.bushing,
+                                                             description.geometry.pin_material,
+                                                             description.effective_radius))
+  {}
+
+  void
+  ClearanceJoint::set_profiles(const Profile &bore, const Profile &pin)
+  {
+    description.geometry.bore = bore;
+    description.geometry.pin  = pin;
+    gap                       = Gap(bore, pin);
+  }
+
+  void
+  ClearanceJoint::contact_kinematics(const mbs::StateView &s, Contact &c) const
+  {
+    const int    bb = description.bushing_body;
+    const int    pb = description.pin_body;
+    const auto   p_bore = s.point(bb, description.bushing_point);
+    const auto   p_pin  = s.point(pb, description.pin_point);
+    c.gap               = gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
+    const auto &n       = c.gap.normal;
+    c.t                 = mbs::perp(n);
+    c.q_bore            = p_bore + c.gap.bore_radius * n;
+    c.q_pin             = p_pin + c.gap.pin_radius * n;
+    // Material-point velocities at the contact points.
+    const mbs::Vec2 v_bore =
+      s.velocity(bb) + s.angular_velocity(bb) * mbs::perp(c.q_bore - s.position(bb));
+    const mbs::Vec2 v_pin =
+      s.velocity(pb) + s.angular_velocity(pb) * mbs::perp(c.q_pin - s.position(pb));
+    const mbs::Vec2 v_rel = v_pin - v_bore;
+    c.rate                = v_rel.dot(n);
+    c.slide               = v_rel.dot(c.t);
+  }
+
+  void
+  ClearanceJoint::forces(const Contact &c, double &fn, double &fel, double &ft) const
+  {
+    NormalContactInput in;
+    in.penetration      = c.gap.penetration;
+    in.penetration_rate = c.rate;
+    in.impact_velocity  = in_contact ? captured_impact_velocity : c.rate;
+    in.stiffness        = contact_stiffness;
+    NormalContactOutput out;
+    normal_law->evaluate(in, out);
+    fn  = out.force;
+    fel = out.elastic_force;
+    ft  = friction_law ? friction_law->force(fn, c.slide) : 0.0;
+  }
+
+  void
+  ClearanceJoint::add_forces(double, const mbs::StateView &s, mbs::ForceAccumulator &out) const
+  {
+    Contact c;
+    contact_kinematics(s, c);
+    if (!(c.gap.penetration > 0))
+      return;
+    ++force_evaluations;
+    double fn, fel, ft;
+    forces(c, fn, fel, ft);
+    const mbs::Vec2 f_pin = -fn * c.gap.normal + ft * c.t;
+    out.add_force(description.pin_body, s, f_pin, c.q_pin);
+    out.add_force(description.bushing_body, s, -f_pin, c.q_bore);
+    out.damping_power += (fn - fel) * c.rate;
+    out.friction_power += -ft * c.slide;
+  }
+
+  double
+  ClearanceJoint::potential_energy(const mbs::StateView &s) const
+  {
+    Contact c;
+    contact_kinematics(s, c);
+    if (!(c.gap.penetration > 0))
+      return 0;
+    const double n = normal_law->exponent();
+    return contact_stiffness * std::pow(c.gap.penetration, n + 1) / (n + 1);
+  }
+
+  double
+  ClearanceJoint::event_value(const mbs::StateView &s) const
+  {
+    const auto p_bore = s.point(description.bushing_body, description.bushing_point);
+    const auto p_pin  = s.point(description.pin_body, description.pin_point);
+    return gap
+      .evaluate(p_pin - p_bore, s.angle(description.bushing_body), s.angle(description.pin_body))
+      .penetration;
+  }
+
+  void
+  ClearanceJoint::on_event(double, const mbs::StateView &s, bool onset)
+  {
+    in_contact = onset;
+    if (onset)
+      {
+        Contact c;
+        contact_kinematics(s, c);
+        captured_impact_velocity = c.rate;
+        ++impacts;
+      }
+  }
+
+  JointDiagnostics
+  ClearanceJoint::diagnostics(const mbs::StateView &s) const
+  {
+    JointDiagnostics d;
+    Contact          c;
+    contact_kinematics(s, c);
+    const int bb          = description.bushing_body;
+    d.bushing_angle       = s.angle(bb);
+    d.pin_angle           = s.angle(description.pin_body);
+    d.eccentricity        = s.point(description.pin_body, description.pin_point) -
+                     s.point(bb, description.bushing_point);
+    d.local_eccentricity  = mbs::rotate(d.eccentricity, -d.bushing_angle);
+    d.penetration         = c.gap.penetration;
+    d.normal              = c.gap.normal;
+    d.contact_angle       = c.gap.angle;
+    if (c.gap.penetration > 0)
+      {
+        double fel;
+        forces(c, d.normal_force, fel, d.friction_force);
+        d.penetration_rate = c.rate;
+        d.sliding_velocity = c.slide;
+        d.force_on_pin     = -d.normal_force * c.gap.normal + d.friction_force * c.t;
+      }
+    return d;
+  }
+} // namespace wearlink::contact

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The clearance revolute joint as a force element (REFERENCE.md §1, seed eqs 1–13):
+// the bore sits in the bushing body, the pin in the pin body; their centres are the
+// joint's attachment points. From the gap (contact/gap.h) it computes the penetration
+// δ, the contact normal n and the contact points Q_bore = P_bushing + R1* n,
+// Q_pin = P_pin + R2* n; the relative velocity of the material points there gives
+// δ̇ = v_rel·n and the sliding velocity v_t = v_rel·t (t = n rotated +90°; material
+// points, i.e. including the bodies' rotation, so a journal spinning in its bearing
+// slides). The normal law gives F_n, the friction law F_t; the pin receives
+// −F_n n + F_t t at Q_pin, the bushing the opposite at Q_bore.
+//
+// Mode: the joint is in a contact episode between a located onset and the following
+// separation; at onset it captures the impact velocity δ̇⁻ = δ̇(t*) (seed eq. 11). Stages
+// that penetrate before an onset has been located use the current δ̇ as provisional δ̇⁻.
+#pragma once
+
+#include "contact/friction_law.h"
+#include "contact/gap.h"
+#include "contact/normal_force_law.h"
+#include "contact/pressure_model.h"
+#include "mbs/force_element.h"
+
+#include <memory>
+#include <string>
+
+namespace wearlink::contact
+{
+  /** How K's relative radius is formed (REFERENCE.md §1). */
+  enum class EffectiveRadius
+  {
+    internal,    ///< R* = R1 R2/(R1 − R2): pin inside a bore (default)
+    seed_printed ///< R* = R1 R2/(R1 + R2): as printed in seed eq. 10 (external form)
+  };
+
+  struct ClearanceJointDescription
+  {
+    std::string   name;
+    int           bushing_body = mbs::ground;
+    mbs::Vec2     bushing_point{0, 0}; ///< bore centre in the bushing body's frame [m]
+    int           pin_body = mbs::ground;
+    mbs::Vec2     pin_point{0, 0};     ///< pin centre in the pin body's frame [m]
+    JointGeometry geometry;
+    EffectiveRadius effective_radius = EffectiveRadius::internal;
+  };
+
+  /** Everything about the joint at one state, for recording and pressure models. */
+  struct JointDiagnostics
+  {
+    mbs::Vec2 eccentricity{0, 0};       ///< pin centre − bore centre, global [m]
+    mbs::Vec2 local_eccentricity{0, 0}; ///< the same in the bushing body's frame [m]
+    double    penetration      = 0;     ///< δ [m]
+    double    penetration_rate = 0;     ///< δ̇ [m/s] (0 out of contact)
+    double    sliding_velocity = 0;     ///< v_t [m/s] (0 out of contact)
+    double    normal_force     = 0;     ///< F_n [N]
+    double    friction_force   = 0;     ///< F_t [N]
+    mbs::Vec2 normal{1, 0};             ///< n, global
+    double    contact_angle    = 0;     ///< φ* [rad], global
+    mbs::Vec2 force_on_pin{0, 0};       ///< −F_n n + F_t t [N]
+    double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
+  };
+
+  class ClearanceJoint : public mbs::ForceElement
+  {
+  public:
+    ClearanceJoint(ClearanceJointDescription           description,
+                   std::unique_ptr<NormalForceLaw>     normal_law,
+                   std::unique_ptr<FrictionLaw>        friction_law);
+
+    const std::string &
+    name() const override
+    {
+      return description.name;
+    }
+
+    void
+    add_forces(double t, const mbs::StateView &s, mbs::ForceAccumulator &out) const override;
+
+    double
+    potential_energy(const mbs::StateView &s) const override;
+
+    bool
+    has_event() const override
+    {
+      return true;
+    }
+    double
+    event_value(const mbs::StateView &s) const override;
+    bool
+    mode() const override
+    {
+      return in_contact;
+    }
+    void
+    on_event(double t, const mbs::StateView &s, bool onset) override;
+
+    /** Full evaluation at a state (not counted as a force evaluation). */
+    JointDiagnostics
+    diagnostics(const mbs::StateView &s) const;
+
+    /** K [N/mⁿ] (seed eq. 10 with the chosen relative radius). */
+    double
+    stiffness() const
+    {
+      return contact_stiffness;
+    }
+    double
+    radial_clearance() const
+    {
+      return gap.nominal_clearance();
+    }
+    const ClearanceJointDescription &
+    get_description() const
+    {
+      return description;
+    }
+    /** Replace the profiles (worn geometry); the stiffness stays nominal. */
+    void
+    set_profiles(const Profile &bore, const Profile &pin);
+
+    long
+    n_force_evaluations() const
+    {
+      return force_evaluations;
+    }
+    long
+    n_impacts() const
+    {
+      return impacts;
+    }
+    double
+    impact_velocity() const
+    {
+      return captured_impact_velocity;
+    }
+    /** Restore the mode (checkpoint / continuation). */
+    void
+    set_mode(bool contact, double impact_velocity)
+    {
+      in_contact               = contact;
+      captured_impact_velocity = impact_velocity;
+    }
+
+  private:
+    /** Kinematics at the contact for state @p s; false if not penetrating. */
+    struct Contact
+    {
+      GapResult gap;
+      mbs::Vec2 q_bore, q_pin, t;
+      double    rate = 0, slide = 0;
+    };
+    void
+    contact_kinematics(const mbs::StateView &s, Contact &c) const;
+    void
+    forces(const Contact &c, double &fn, double &fel, double &ft) const;
+
+    ClearanceJointDescription       description;
+    std::unique_ptr<NormalForceLaw> normal_law;
+    std::unique_ptr<FrictionLaw>    friction_law;
+    Gap                             gap;
+    double                          contact_stiffness;
+
+    bool           in_contact               = false;
+    double         captured_impact_velocity = 0;
+    long           impacts                  = 0;
+    mutable long   force_evaluations        = 0;
+  };
+
+  /** K = 4/(3(σ1 + σ2)) √R* (seed eq. 10), R* per @p form from the nominal radii. */
+  double
+  contact_stiffness(double bore_radius,
+                    double pin_radius,
+                    const Material &bushing,
+                    const Material &pin,
+                    EffectiveRadius form);
+} // namespace wearlink::contact

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The gap between a (worn) bore and a (worn) pin (ARCHITECTURE.md `contact/`):
+//   g(φ) = R1*(φ − θ_bushing) − R2*(φ − θ_pin) − e·u(φ),   u(φ) = (cos φ, sin φ),
+// φ a global direction, R1* the bore profile in the bushing's frame, R2* the pin profile
+// in the pin's frame, e the eccentricity (pin centre − bore centre). The penetration is
+// δ = −min_φ g(φ), reached at the contact direction φ*. For round profiles this is
+// δ = |e| − c with φ* the direction of e (seed eqs 1–5), computed in closed form.
+//
+// For non-round profiles g is minimized over the directions that can touch at all
+// (e·u(φ) ≥ min R1* − max R2*), on a grid finer than both profiles' samples, then
+// refined by golden-section search. The contact normal is taken radial, u(φ*) — the
+// per-area model of seed eqs 28–33 with the exact gap; the profiles' slopes are small
+// (wear depths ≪ radii).
+#pragma once
+
+#include "base/profile.h"
+#include "mbs/types.h"
+
+namespace wearlink::contact
+{
+  struct GapResult
+  {
+    double    penetration = 0; ///< δ = −min g [m]; < 0 means free flight
+    double    angle       = 0; ///< global contact direction φ* [rad]
+    mbs::Vec2 normal{1, 0};    ///< u(φ*): from the bore centre towards the contact
+    double    bore_radius = 0; ///< R1*(φ* − θ_bushing) [m]
+    double    pin_radius  = 0; ///< R2*(φ* − θ_pin) [m]
+  };
+
+  class Gap
+  {
+  public:
+    Gap(const Profile &bore, const Profile &pin);
+
+    /** δ, φ* and the radii at the contact direction. */
+    GapResult
+    evaluate(const mbs::Vec2 &eccentricity, double bushing_angle, double pin_angle) const;
+
+    bool
+    round() const
+    {
+      return is_round;
+    }
+    /** Nominal radial clearance c = mean R1* − mean R2* [m]. */
+    double
+    nominal_clearance() const
+    {
+      return bore.mean_radius() - pin.mean_radius();
+    }
+
+  private:
+    double
+    gap(double phi, const mbs::Vec2 &e, double tb, double tp) const
+    {
+      return bore.radius(phi - tb) - pin.radius(phi - tp) - e.x() * std::cos(phi) -
+             e.y() * std::sin(phi);
+    }
+
+    Profile bore, pin;
+    bool    is_round;
+    double  r1, r2;          ///< radii when round
+    double  min_clearance;   ///< min R1* − max R2*
+    double  search_step;     ///< grid spacing of the search [rad]
+  };
+} // namespace wearlink::contact

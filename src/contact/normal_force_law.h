@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Normal force laws of the clearance joint (REFERENCE.md §1, seed eqs 9–11):
+//   hertz               F = K δⁿ
+//   lankarani-nikravesh F = K δⁿ (1 + 3(1 − c_e²) δ̇ / (4 δ̇⁻))
+//   flores              F = K δⁿ (1 + 8(1 − c_e) δ̇ / (5 c_e δ̇⁻))
+// δ penetration [m], δ̇ its rate [m/s], δ̇⁻ the penetration rate at contact onset, K the
+// stiffness [N/mⁿ] computed by the joint from geometry and materials (seed eq. 10).
+//
+// Guard against δ̇⁻ → 0: a contact that starts with (almost) no impact velocity — the
+// continuous-contact regime — would make the damping term unbounded. Below the law's
+// "Minimum impact velocity" v_min the damping uses v_min instead of δ̇⁻, i.e. the
+// hysteresis damping factor is capped at 3(1 − c_e²)/(4 v_min). The force is never
+// tensile (F ≥ 0): at the end of restitution the damping term may exceed the elastic one.
+#pragma once
+
+#include "base/registry.h"
+
+namespace wearlink::contact
+{
+  struct NormalContactInput
+  {
+    double penetration      = 0; ///< δ > 0 [m]
+    double penetration_rate = 0; ///< δ̇ [m/s]
+    double impact_velocity  = 0; ///< δ̇⁻ captured at onset (unguarded) [m/s]
+    double stiffness        = 0; ///< K [N/mⁿ]
+  };
+
+  struct NormalContactOutput
+  {
+    double force         = 0; ///< total normal force, ≥ 0 [N]
+    double elastic_force = 0; ///< K δⁿ, the conservative part [N]
+    double potential     = 0; ///< ∫ K δⁿ dδ = K δⁿ⁺¹/(n + 1) [J]
+  };
+
+  class NormalForceLaw
+  {
+  public:
+    virtual ~NormalForceLaw() = default;
+    virtual void
+    evaluate(const NormalContactInput &in, NormalContactOutput &out) const = 0;
+    /** The exponent n of K δⁿ. */
+    virtual double
+    exponent() const = 0;
+  };
+
+  Registry<NormalForceLaw> &
+  normal_force_laws();
+} // namespace wearlink::contact

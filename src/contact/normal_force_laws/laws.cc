@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The three normal force laws; see normal_force_law.h for the equations.
+#include "base/parameters.h"
+#include "contact/normal_force_law.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wearlink::contact
+{
+  namespace
+  {
+    void
+    declare_exponent(dealii::ParameterHandler &prm)
+    {
+      declare(prm,
+              "Exponent",
+              "1.5",
+              dealii::Patterns::Double(1.0, 3.0),
+              "Exponent n of the elastic term K δⁿ (1.5 for Hertzian contact).",
+              "none");
+    }
+
+    void
+    declare_dissipative(dealii::ParameterHandler &prm)
+    {
+      declare_exponent(prm);
+      declare_required(prm,
+                       "Restitution coefficient",
+                       dealii::Patterns::Double(0.0, 1.0),
+                       "Coefficient of restitution c_e of the impact (seed: 0.9).",
+                       "none");
+      declare(prm,
+              "Minimum impact velocity",
+              "1e-2",
+              dealii::Patterns::Double(1e-12),
+              "Guard for contacts that begin with almost no impact velocity (continuous "
+              "contact): below this value the damping term uses it in place of the "
+              "impact velocity δ̇⁻, which caps the damping factor.",
+              "m/s");
+    }
+
+    /** Elastic part shared by all three laws. */
+    void
+    elastic(const NormalContactInput &in, double n, NormalContactOutput &out)
+    {
+      const double dn   = std::pow(in.penetration, n);
+      out.elastic_force = in.stiffness * dn;
+      out.potential     = in.stiffness * dn * in.penetration / (n + 1);
+    }
+
+    class Hertz : public NormalForceLaw
+    {
+    public:
+      explicit Hertz(ParameterReader &r)
+        : n(r.get_double("Exponent"))
+      {}
+      void
+      evaluate(const NormalContactInput &in, NormalContactOutput &out) const override
+      {
+        elastic(in, n, out);
+        out.force = out.elastic_force;
+      }
+      double
+      exponent() const override
+      {
+        return n;
+      }
+
+    private:
+      const double n;
+    };
+
+    /** L-N and Flores differ only in the hysteresis factor χ: F = K δⁿ (1 + χ δ̇). */
+    class HysteresisDamping : public NormalForceLaw
+    {
+    public:
+      HysteresisDamping(ParameterReader &r, bool flores)
+        : n(r.get_double("Exponent"))
+        , restitution(r.get_double("Restitution coefficient"))
+        , min_impact_velocity(r.get_positive("Minimum impact velocity"))
+        , factor(flores ? 8 * (1 - restitution) / (5 * restitution) :
+                          3 * (1 - restitution * restitution) / 4)
+      {
+        if (flores && !(restitution > 0))
+          r.fail("Restitution coefficient", "the Flores law needs c_e > 0 (it divides by c_e)");
+      }
+      void
+      evaluate(const NormalContactInput &in, NormalContactOutput &out) const override
+      {
+        elastic(in, n, out);
+        const double v_impact = std::max(in.impact_velocity, min_impact_velocity);
+        out.force = std::max(0.0, out.elastic_force * (1 + factor * in.penetration_rate / v_impact));
+      }
+      double
+      exponent() const override
+      {
+        return n;
+      }
+
+    private:
+      const double n, restitution, min_impact_velocity, factor;
+    };
+  } // namespace
+
+  Registry<NormalForceLaw> &
+  normal_force_laws()
+  {
+    static Registry<NormalForceLaw> r("normal force law");
+    return r;
+  }
+
+  void
+  register_normal_force_laws()
+  {
+    auto &r = normal_force_laws();
+    r.add("hertz",
+          "F = K δⁿ, purely elastic (seed eq. 9 without damping).",
+          declare_exponent,
+          [](ParameterReader &p) { return std::make_unique<Hertz>(p); });
+    r.add("lankarani-nikravesh",
+          "F = K δⁿ (1 + 3(1 − c_e²) δ̇/(4 δ̇⁻)) (seed eqs 9–11).",
+          declare_dissipative,
+          [](ParameterReader &p) { return std::make_unique<HysteresisDamping>(p, false); });
+    r.add("flores",
+          "F = K δⁿ (1 + 8(1 − c_e) δ̇/(5 c_e δ̇⁻)) (Flores et al. 2011).",
+          declare_dissipative,
+          [](ParameterReader &p) { return std::make_unique<HysteresisDamping>(p, true); });
+  }
+} // namespace wearlink::contact

@@ -1,0 +1,351 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/run.h"
+
+#include "base/atomic_file.h"
+#include "base/effect_ledger.h"
+#include "base/exceptions.h"
+#include "mbs/assembly.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace wearlink::io
+{
+  namespace
+  {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+
+    struct BodyExtremes
+    {
+      double min_x = inf, max_x = -inf, min_y = inf, max_y = -inf;
+      double max_vx = 0, max_vy = 0, max_ax = 0, max_ay = 0;
+    };
+
+    struct JointStatistics
+    {
+      double max_normal_force   = 0;
+      double max_friction_force = 0;
+      double max_penetration    = -inf;
+      double contact_time       = 0;
+      bool   was_in_contact     = false;
+    };
+
+    /** Watches accepted steps: extremes, energy balance, time-series samples. */
+    class Recorder : public mbs::StepObserver
+    {
+    public:
+      Recorder(Scene &scene, std::ostream *csv, double interval, bool progress)
+        : scene(scene)
+        , mech(*scene.mechanism)
+        , csv(csv)
+        , interval(interval)
+        , progress(progress)
+        , bodies(mech.n_bodies())
+        , joints(scene.clearance_joints.size())
+      {}
+
+      void
+      on_start(const mbs::StepContext &c) override
+      {
+        const auto  n = mech.n_coordinates();
+        energy_start  = mech.kinetic_energy(c.y.data() + n) + mech.potential_energy(c.y.data(), c.y.data() + n);
+        t_start       = c.t;
+        next_sample   = c.t;
+        wall_start    = std::chrono::steady_clock::now();
+        next_progress = 0.1;
+        record(c.t, c.y, c.dydt, 0.0);
+        if (csv)
+          {
+            write_header();
+            sample(c.t, c.y, c.dydt, mech.multipliers());
+            next_sample = c.t + interval;
+          }
+      }
+
+      void
+      on_step(const mbs::StepContext &c) override
+      {
+        ++steps;
+        record(c.t, c.y, c.dydt, c.t - c.t_previous);
+        if (csv)
+          {
+            if (interval <= 0)
+              sample(c.t, c.y, c.dydt, mech.multipliers());
+            else
+              while (next_sample <= c.t + 1e-12 * std::abs(c.t))
+                {
+                  const double ts = std::min(next_sample, c.t);
+                  c.simulation.state_at(ts, y_sample);
+                  c.simulation.derivative_at(ts, y_sample, f_sample);
+                  sample(ts, y_sample, f_sample, mech.multipliers());
+                  next_sample = t_start + interval * (++n_samples);
+                }
+          }
+        if (progress)
+          {
+            const double fraction = (c.t - t_start) / (scene.end_time - t_start);
+            if (fraction >= next_progress - 1e-12)
+              {
+                long impacts = 0;
+                for (auto *j : scene.clearance_joints)
+                  impacts += j->n_impacts();
+                const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+                std::cerr << "[wearlink] " << std::setw(3) << static_cast<int>(std::round(100 * fraction))
+                          << "%  t = " << c.t << " s  steps " << steps << "  impacts " << impacts
+                          << "  wall " << std::setprecision(3) << wall << " s\n"
+                          << std::setprecision(6);
+                next_progress += 0.1;
+              }
+          }
+      }
+
+      Json
+      summary(const mbs::Simulation &sim, double wall_time) const
+      {
+        Json s = Json::object();
+        s["scene"]                  = scene.file;
+        s["title"]                  = scene.title;
+        s["wall_time_s"]            = wall_time;
+        s["simulated_time_s"]       = sim.time() - t_start;
+        s["integrator"]             = scene.simulation.integrator.type == mbs::IntegratorType::rk4 ? "rk4" : "dopri5";
+        s["steps"]                  = sim.get_integrator().n_accepted;
+        s["rejected_steps"]         = sim.get_integrator().n_rejected;
+        s["rhs_evaluations"]        = mech.n_evaluations();
+        s["contact_events"]         = sim.n_events();
+        s["event_restarts"]         = sim.n_event_restarts();
+        s["max_constraint_violation_m"] = max_violation;
+
+        // Energy balance: ΔT + ΔV = W_reactions − D_damping − D_friction, with the
+        // error relative to the energy that flowed (∫|P_reactions| dt + dissipation).
+        const auto &y = sim.state();
+        const auto  n = mech.n_coordinates();
+        const auto  z = 2 * n;
+        using Q       = mbs::MechanismOde;
+        const double kinetic   = mech.kinetic_energy(y.data() + n);
+        const double potential = mech.potential_energy(y.data(), y.data() + n);
+        const double throughput = y[z + Q::reaction_work_abs] + y[z + Q::damping_dissipation] +
+                                  y[z + Q::friction_dissipation];
+        Json e = Json::object();
+        e["kinetic_J"]              = kinetic;
+        e["potential_J"]            = potential;
+        e["change_J"]               = kinetic + potential - energy_start;
+        e["reaction_work_J"]        = y[z + Q::reaction_work];
+        e["reaction_work_abs_J"]    = y[z + Q::reaction_work_abs];
+        e["damping_dissipation_J"]  = y[z + Q::damping_dissipation];
+        e["friction_dissipation_J"] = y[z + Q::friction_dissipation];
+        e["max_residual_J"]         = max_energy_residual;
+        s["energy"]                 = e;
+        s["energy_balance_relative_error"] =
+          throughput > 0 ? max_energy_residual / throughput : max_energy_residual;
+
+        Json b = Json::object();
+        for (unsigned int i = 0; i < mech.n_bodies(); ++i)
+          {
+            const auto &x = bodies[i];
+            Json        o = Json::object();
+            o["min_x_m"]         = x.min_x;
+            o["max_x_m"]         = x.max_x;
+            o["min_y_m"]         = x.min_y;
+            o["max_y_m"]         = x.max_y;
+            o["max_abs_vx_m_s"]  = x.max_vx;
+            o["max_abs_vy_m_s"]  = x.max_vy;
+            o["max_abs_ax_m_s2"] = x.max_ax;
+            o["max_abs_ay_m_s2"] = x.max_ay;
+            b[mech.get_bodies()[i].name] = o;
+          }
+        s["bodies"] = b;
+
+        Json j = Json::object();
+        for (unsigned int i = 0; i < joints.size(); ++i)
+          {
+            const auto *cj = scene.clearance_joints[i];
+            const auto &x  = joints[i];
+            Json        o  = Json::object();
+            o["radial_clearance_m"]   = cj->radial_clearance();
+            o["stiffness_N_m1.5"]     = cj->stiffness();
+            o["max_normal_force_N"]   = x.max_normal_force;
+            o["max_friction_force_N"] = x.max_friction_force;
+            o["max_penetration_m"]    = std::max(0.0, x.max_penetration);
+            o["fraction_in_contact"]  = x.contact_time / std::max(1e-300, sim.time() - t_start);
+            o["impacts"]              = cj->n_impacts();
+            o["force_evaluations"]    = cj->n_force_evaluations();
+            j[cj->name()] = o;
+          }
+        s["clearance_joints"] = j;
+        return s;
+      }
+
+    private:
+      void
+      record(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, double h)
+      {
+        const auto n = mech.n_coordinates();
+        for (unsigned int i = 0; i < mech.n_bodies(); ++i)
+          {
+            auto &x = bodies[i];
+            x.min_x  = std::min(x.min_x, y[3 * i]);
+            x.max_x  = std::max(x.max_x, y[3 * i]);
+            x.min_y  = std::min(x.min_y, y[3 * i + 1]);
+            x.max_y  = std::max(x.max_y, y[3 * i + 1]);
+            x.max_vx = std::max(x.max_vx, std::abs(y[n + 3 * i]));
+            x.max_vy = std::max(x.max_vy, std::abs(y[n + 3 * i + 1]));
+            x.max_ax = std::max(x.max_ax, std::abs(f[n + 3 * i]));
+            x.max_ay = std::max(x.max_ay, std::abs(f[n + 3 * i + 1]));
+          }
+        max_violation = std::max(max_violation, mech.last_constraint_violation());
+        const mbs::StateView s(y.data(), y.data() + n);
+        for (unsigned int k = 0; k < joints.size(); ++k)
+          {
+            const auto d  = scene.clearance_joints[k]->diagnostics(s);
+            auto &     js = joints[k];
+            js.max_normal_force   = std::max(js.max_normal_force, d.normal_force);
+            js.max_friction_force = std::max(js.max_friction_force, std::abs(d.friction_force));
+            js.max_penetration    = std::max(js.max_penetration, d.penetration);
+            const bool in         = d.penetration > 0;
+            js.contact_time += 0.5 * h * ((in ? 1 : 0) + (js.was_in_contact ? 1 : 0));
+            js.was_in_contact = in;
+          }
+        using Q = mbs::MechanismOde;
+        const auto   z        = 2 * n;
+        const double energy   = mech.kinetic_energy(y.data() + n) + mech.potential_energy(y.data(), y.data() + n);
+        const double residual = energy - energy_start - y[z + Q::reaction_work] +
+                                y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation];
+        max_energy_residual = std::max(max_energy_residual, std::abs(residual));
+        (void)t;
+      }
+
+      void
+      write_header()
+      {
+        auto &os = *csv;
+        os << "time_s";
+        for (const auto &b : mech.get_bodies())
+          for (const char *q : {"_x_m", "_y_m", "_theta_rad", "_vx_m_s", "_vy_m_s",
+                                "_omega_rad_s", "_ax_m_s2", "_ay_m_s2", "_alpha_rad_s2"})
+            os << ',' << b.name << q;
+        for (const auto *j : scene.clearance_joints)
+          for (const char *q : {"_ex_m", "_ey_m", "_ex_local_m", "_ey_local_m",
+                                "_penetration_m", "_normal_force_N", "_friction_force_N",
+                                "_sliding_velocity_m_s", "_contact_angle_rad"})
+            os << ',' << j->name() << q;
+        for (const auto d : scene.drivers)
+          os << ',' << mech.get_constraints()[d]->name << "_torque_N_m";
+        os << ",kinetic_energy_J,potential_energy_J,reaction_work_J,dissipated_J\n";
+        os << std::setprecision(10);
+      }
+
+      void
+      sample(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, const Eigen::VectorXd &lambda)
+      {
+        auto &     os = *csv;
+        const auto n  = mech.n_coordinates();
+        os << t;
+        for (unsigned int i = 0; i < mech.n_bodies(); ++i)
+          {
+            for (unsigned int d = 0; d < 3; ++d)
+              os << ',' << y[3 * i + d];
+            for (unsigned int d = 0; d < 3; ++d)
+              os << ',' << y[n + 3 * i + d];
+            for (unsigned int d = 0; d < 3; ++d)
+              os << ',' << f[n + 3 * i + d];
+          }
+        const mbs::StateView s(y.data(), y.data() + n);
+        for (const auto *j : scene.clearance_joints)
+          {
+            const auto d = j->diagnostics(s);
+            os << ',' << d.eccentricity.x() << ',' << d.eccentricity.y() << ','
+               << d.local_eccentricity.x() << ',' << d.local_eccentricity.y() << ','
+               << d.penetration << ',' << d.normal_force << ',' << d.friction_force << ','
+               << d.sliding_velocity << ',' << d.contact_angle;
+          }
+        // The driver applies −λ to body 2's rotation (Φq row +1 on θ2).
+        for (const auto d : scene.drivers)
+          os << ',' << -lambda[mech.constraint_row(d)];
+        using Q      = mbs::MechanismOde;
+        const auto z = 2 * n;
+        os << ',' << mech.kinetic_energy(y.data() + n) << ','
+           << mech.potential_energy(y.data(), y.data() + n) << ',' << y[z + Q::reaction_work]
+           << ',' << y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation] << '\n';
+      }
+
+      Scene &                    scene;
+      mbs::Mechanism &           mech;
+      std::ostream *             csv;
+      double                     interval;
+      bool                       progress;
+      std::vector<BodyExtremes>  bodies;
+      std::vector<JointStatistics> joints;
+      double                     energy_start = 0, t_start = 0, next_sample = 0;
+      long                       n_samples = 0, steps = 0;
+      double                     max_violation = 0, max_energy_residual = 0;
+      double                     next_progress = 0.1;
+      std::chrono::steady_clock::time_point wall_start;
+      Eigen::VectorXd            y_sample, f_sample;
+    };
+  } // namespace
+
+  void
+  assemble_scene(const Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v)
+  {
+    mbs::assemble(*scene.mechanism, scene.start_time, scene.assembly_constraints, {}, q, v);
+  }
+
+  Json
+  run_scene(Scene &scene, const RunOptions &options)
+  {
+    const auto wall_start = std::chrono::steady_clock::now();
+    Eigen::VectorXd q0, v0;
+    assemble_scene(scene, q0, v0);
+
+    const bool                  write = !options.output_directory.empty();
+    std::unique_ptr<AtomicFile> csv;
+    if (write)
+      {
+        make_output_directory(options.output_directory);
+        if (scene.write_time_series)
+          csv = std::make_unique<AtomicFile>(options.output_directory + "/time_series.csv");
+      }
+
+    mbs::Simulation sim(*scene.mechanism, scene.simulation);
+    sim.initialize(scene.start_time, q0, v0);
+    Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
+    std::vector<mbs::StepObserver *> observers{&recorder};
+    observers.insert(observers.end(), options.observers.begin(), options.observers.end());
+    sim.run(scene.end_time, observers);
+
+    long evaluations = 0;
+    for (auto *j : scene.clearance_joints)
+      evaluations += j->n_force_evaluations();
+    EffectLedger::instance().add_calls("contact law evaluations", evaluations);
+    EffectLedger::instance().add_calls("rhs evaluations", scene.mechanism->n_evaluations());
+
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    Json summary = recorder.summary(sim, wall);
+    Json ledger  = Json::object();
+    for (const auto &[category, entries] : EffectLedger::instance().snapshot())
+      {
+        Json c = Json::object();
+        for (const auto &[key, count] : entries)
+          c[key] = count;
+        ledger[category] = c;
+      }
+    summary["effect_ledger"] = ledger;
+
+    if (write)
+      {
+        if (csv)
+          csv->commit();
+        std::ostringstream prm;
+        scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
+        write_file_atomically(options.output_directory + "/parameters.prm", prm.str());
+        write_file_atomically(options.output_directory + "/summary.json", summary.dump());
+      }
+    return summary;
+  }
+} // namespace wearlink::io

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Running a scene: assemble, integrate, record. The recorder watches every accepted
+// step (extremes of body motion, joint forces, constraint violation, energy balance)
+// and samples the time series on the dense output; results are written atomically into
+// the output directory: summary.json, time_series.csv, parameters.prm (the effective
+// scene, with overrides applied).
+#pragma once
+
+#include "base/json.h"
+#include "io/scene.h"
+#include "mbs/simulation.h"
+
+#include <string>
+#include <vector>
+
+namespace wearlink::io
+{
+  struct RunOptions
+  {
+    /** Where to write; empty: write nothing (library use, tests). */
+    std::string output_directory;
+    /** Progress lines on stderr. */
+    bool progress = false;
+    /** More observers to notify after every accepted step. */
+    std::vector<mbs::StepObserver *> observers;
+  };
+
+  /**
+   * Assemble and integrate @p scene from its start to its end time. Returns the run
+   * summary (see README: summary.json). Throws InputError for an impossible assembly,
+   * NumericalError for a failure of the numerics.
+   */
+  Json
+  run_scene(Scene &scene, const RunOptions &options);
+
+  /** Assemble @p scene at its start time (q, v); throws InputError if impossible. */
+  void
+  assemble_scene(const Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v);
+} // namespace wearlink::io

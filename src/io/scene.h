@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// A scene read from a .prm file: the mechanism it describes (bodies, joints, drivers,
+// clearance joints as force elements with the laws the scene chose), the numerics, and
+// the outputs it asks for. Mechanisms are data: nothing here knows a particular linkage.
+//
+// Reading follows STYLE.md B.4: pre-scan the body and joint names, declare one
+// subsection per name (every registry's plugins inside each clearance joint), strict
+// parse (typos are errors with file and line), apply --set overrides, check required
+// entries of the parts that are active, construct only the chosen plugins, cross-check.
+#pragma once
+
+#include "contact/clearance_joint.h"
+#include "mbs/mechanism.h"
+#include "mbs/simulation.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace wearlink::io
+{
+  struct Scene
+  {
+    std::string file;  ///< the scene file as given
+    std::string title;
+
+    std::unique_ptr<mbs::Mechanism> mechanism;
+    /** The clearance joints (owned by the mechanism as force elements). */
+    std::vector<contact::ClearanceJoint *> clearance_joints;
+    /** Clearance joints pinned at their initial eccentricity, for assembly only. */
+    std::vector<std::unique_ptr<mbs::Constraint>> assembly_constraints;
+    /** Indices (in mechanism->get_constraints()) of the angle drivers. */
+    std::vector<unsigned int> drivers;
+
+    mbs::SimulationSettings simulation;
+    double                  start_time = 0; ///< [s]
+    double                  end_time   = 0; ///< [s]
+
+    double output_interval  = 1e-3; ///< time-series sampling [s]; 0: every step
+    bool   write_time_series = true;
+
+    /** The parsed parameters (for echoing the effective scene next to the results). */
+    std::unique_ptr<dealii::ParameterHandler> parameters;
+  };
+
+  /**
+   * Read, validate and build the scene in @p file with command-line @p overrides
+   * ("Section/Entry=value"). Every problem with the input is an InputError naming the
+   * file, the entry and the allowed values.
+   */
+  Scene
+  read_scene(const std::string &file, const std::vector<std::string> &overrides = {});
+
+  /**
+   * Print every entry a scene can have, with documentation, units and defaults. With a
+   * scene file, its own bodies and joints are used; otherwise one placeholder of each.
+   */
+  void
+  print_scene_parameters(std::ostream &out, const std::string &file = "");
+} // namespace wearlink::io

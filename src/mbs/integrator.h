@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Time integrators for y' = f(t, y). A closed set (STYLE.md B.3: numerical methods are
+// an enum + switch whose default throws):
+//   rk4     classical fixed-step Runge–Kutta, the seed's 1e-4 s; cubic Hermite dense
+//           output from (y, f) at both ends.
+//   dopri5  Dormand–Prince 5(4) with embedded error estimate, PI step-size control
+//           (Hairer, Nørsett & Wanner, Solving ODE I, §II.4–5 and the dopri5 code) and
+//           the 4th-order continuous extension for dense output.
+// Both finish every step with f evaluated at the new point (FSAL for dopri5, the next
+// step's first stage for rk4), so an observer reading the system after step() sees the
+// accelerations and reactions of the accepted state.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wearlink::mbs
+{
+  class OdeSystem
+  {
+  public:
+    virtual ~OdeSystem() = default;
+    virtual unsigned int
+    size() const = 0;
+    virtual void
+    rhs(double t, const double *y, double *dydt) = 0;
+  };
+
+  enum class IntegratorType
+  {
+    rk4,
+    dopri5
+  };
+
+  /** "rk4" / "dopri5" → type; throws InputError on anything else. */
+  IntegratorType
+  parse_integrator_type(const std::string &name);
+  std::string
+  integrator_names();
+
+  struct IntegratorSettings
+  {
+    IntegratorType type       = IntegratorType::dopri5;
+    double         time_step  = 1e-4;  ///< rk4 step [s]
+    double         relative_tolerance = 1e-6;
+    /** Absolute tolerance per component; components with a value ≤ 0 are not error-controlled. */
+    std::vector<double> absolute_tolerance;
+    double         max_step   = 1e-3;  ///< [s]
+    double         min_step   = 1e-14; ///< below this a step is a NumericalError [s]
+    double         initial_step = 0;   ///< 0: automatic [s]
+  };
+
+  class Integrator
+  {
+  public:
+    virtual ~Integrator() = default;
+
+    /** Start (or restart after an event) at (t, y): evaluates f(t, y). */
+    void
+    reset(double t, const Eigen::VectorXd &y);
+
+    /** Take one accepted step that does not pass @p t_limit. */
+    virtual void
+    step(double t_limit) = 0;
+
+    /** Dense output of the last step at @p t ∈ [previous_time(), time()]. */
+    virtual void
+    dense_output(double t, double *y) const = 0;
+
+    double
+    time() const
+    {
+      return t;
+    }
+    double
+    previous_time() const
+    {
+      return t_prev;
+    }
+    const Eigen::VectorXd &
+    state() const
+    {
+      return y;
+    }
+    const Eigen::VectorXd &
+    previous_state() const
+    {
+      return y_prev;
+    }
+    /** f(time(), state()). */
+    const Eigen::VectorXd &
+    derivative() const
+    {
+      return f;
+    }
+
+    long n_accepted = 0;
+    long n_rejected = 0;
+    long n_evaluations = 0;
+
+  protected:
+    Integrator(OdeSystem &system, const IntegratorSettings &settings);
+
+    void
+    evaluate(double time, const Eigen::VectorXd &state, Eigen::VectorXd &derivative);
+
+    OdeSystem &        system;
+    IntegratorSettings settings;
+    double             t = 0, t_prev = 0;
+    Eigen::VectorXd    y, y_prev, f, f_prev;
+  };
+
+  std::unique_ptr<Integrator>
+  make_integrator(OdeSystem &system, const IntegratorSettings &settings);
+} // namespace wearlink::mbs

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "mbs/mechanism.h"
+
+#include "base/exceptions.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace wearlink::mbs
+{
+  int
+  Mechanism::add_body(const Body &body)
+  {
+    bodies.push_back(body);
+    return static_cast<int>(bodies.size()) - 1;
+  }
+
+  void
+  Mechanism::add_constraint(std::unique_ptr<Constraint> c)
+  {
+    constraints.push_back(std::move(c));
+  }
+
+  ForceElement *
+  Mechanism::add_force_element(std::unique_ptr<ForceElement> f)
+  {
+    force_elements.push_back(std::move(f));
+    return force_elements.back().get();
+  }
+
+  int
+  Mechanism::body_index(const std::string &name) const
+  {
+    if (name == "ground")
+      return ground;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b].name == name)
+        return static_cast<int>(b);
+    return -2;
+  }
+
+  void
+  Mechanism::finalize()
+  {
+    const unsigned int nb = n_bodies();
+    row_offset.resize(constraints.size());
+    n_equations = 0;
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      {
+        row_offset[c] = n_equations;
+        n_equations += constraints[c]->n_equations();
+      }
+    inverse_mass.resize(3 * nb);
+    for (unsigned int b = 0; b < nb; ++b)
+      {
+        inverse_mass[3 * b]     = 1.0 / bodies[b].mass;
+        inverse_mass[3 * b + 1] = 1.0 / bodies[b].mass;
+        inverse_mass[3 * b + 2] = 1.0 / bodies[b].inertia;
+      }
+    body_constraints.assign(nb, {});
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      {
+        if (constraints[c]->body_i != ground)
+          body_constraints[constraints[c]->body_i].emplace_back(c, 0);
+        if (constraints[c]->body_j != ground)
+          body_constraints[constraints[c]->body_j].emplace_back(c, 1);
+      }
+    rows.resize(constraints.size());
+    schur.setZero(n_equations, n_equations);
+    schur_factor = Eigen::LLT<Eigen::MatrixXd>(n_equations);
+    rhs.setZero(n_equations);
+    lambda.setZero(n_equations);
+    forces.setZero(3 * nb);
+  }
+
+  void
+  Mechanism::evaluate_constraints(double           t,
+                                  const double *   q,
+                                  const double *   v,
+                                  Eigen::VectorXd &phi,
+                                  Eigen::MatrixXd &jacobian,
+                                  Eigen::VectorXd &phi_t,
+                                  Eigen::VectorXd &gamma) const
+  {
+    const StateView s(q, v);
+    phi.setZero(n_equations);
+    phi_t.setZero(n_equations);
+    gamma.setZero(n_equations);
+    jacobian.setZero(n_equations, n_coordinates());
+    ConstraintRows r;
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      {
+        const auto &con = *constraints[c];
+        con.evaluate(t, s, r);
+        for (unsigned int k = 0; k < r.n; ++k)
+          {
+            const unsigned int row = row_offset[c] + k;
+            phi[row]               = r.phi[k];
+            phi_t[row]             = r.phi_t[k];
+            gamma[row]             = r.gamma[k];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                if (con.body_i != ground)
+                  jacobian(row, 3 * con.body_i + d) += r.jac_i[k][d];
+                jacobian(row, 3 * con.body_j + d) += r.jac_j[k][d];
+              }
+          }
+      }
+  }
+
+  void
+  Mechanism::accelerations(double t, const double *q, const double *v, double *a, PowerTerms &power)
+  {
+    ++evaluations;
+    const StateView    s(q, v);
+    const unsigned int nb = n_bodies();
+
+    // Applied forces g: gravity and force elements.
+    for (unsigned int b = 0; b < nb; ++b)
+      {
+        forces[3 * b]     = bodies[b].mass * gravity.x();
+        forces[3 * b + 1] = bodies[b].mass * gravity.y();
+        forces[3 * b + 2] = 0;
+      }
+    ForceAccumulator acc;
+    acc.g = forces.data();
+    for (const auto &f : force_elements)
+      f->add_forces(t, s, acc);
+    power.damping  = acc.damping_power;
+    power.friction = acc.friction_power;
+
+    // Constraint rows and the Baumgarte right-hand side γ̂ = γ − 2αΦ̇ − β²Φ.
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      constraints[c]->evaluate(t, s, rows[c]);
+
+    rhs.setZero();
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      {
+        const auto &con = *constraints[c];
+        const auto &r   = rows[c];
+        for (unsigned int k = 0; k < r.n; ++k)
+          {
+            double jv   = r.phi_t[k];
+            double jmg  = 0;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                if (con.body_i != ground)
+                  {
+                    const unsigned int col = 3 * con.body_i + d;
+                    jv += r.jac_i[k][d] * v[col];
+                    jmg += r.jac_i[k][d] * inverse_mass[col] * forces[col];
+                  }
+                const unsigned int col = 3 * con.body_j + d;
+                jv += r.jac_j[k][d] * v[col];
+                jmg += r.jac_j[k][d] * inverse_mass[col] * forces[col];
+              }
+            const double gamma_hat = r.gamma[k] - 2 * baumgarte_alpha * jv -
+                                     baumgarte_beta * baumgarte_beta * r.phi[k];
+            rhs[row_offset[c] + k] = jmg - gamma_hat;
+          }
+      }
+
+    // S = Φq M⁻¹ Φqᵀ from the per-body blocks.
+    schur.setZero();
+    for (unsigned int b = 0; b < nb; ++b)
+      {
+        const auto &list = body_constraints[b];
+        for (const auto &[c1, side1] : list)
+          {
+            const auto &r1 = rows[c1];
+            for (const auto &[c2, side2] : list)
+              {
+                const auto &r2 = rows[c2];
+                for (unsigned int k1 = 0; k1 < r1.n; ++k1)
+                  {
+                    const double *j1 = side1 == 0 ? r1.jac_i[k1] : r1.jac_j[k1];
+                    for (unsigned int k2 = 0; k2 < r2.n; ++k2)
+                      {
+                        const double *j2 = side2 == 0 ? r2.jac_i[k2] : r2.jac_j[k2];
+                        schur(row_offset[c1] + k1, row_offset[c2] + k2) +=
+                          j1[0] * inverse_mass[3 * b] * j2[0] +
+                          j1[1] * inverse_mass[3 * b + 1] * j2[1] +
+                          j1[2] * inverse_mass[3 * b + 2] * j2[2];
+                      }
+                  }
+              }
+          }
+      }
+    schur_factor.compute(schur);
+    if (schur_factor.info() != Eigen::Success)
+      {
+        std::ostringstream os;
+        os << "The constraint Jacobian lost rank at t = " << t
+           << " s (the mechanism locks up or passes a singular position); the "
+              "equations of motion cannot be solved. Check the joint geometry and the "
+              "drivers.";
+        throw NumericalError(os.str());
+      }
+    lambda = schur_factor.solve(rhs);
+
+    // q̈ = M⁻¹ (g − Φqᵀ λ), and the reaction power −q̇ᵀ Φqᵀ λ.
+    for (unsigned int i = 0; i < 3 * nb; ++i)
+      a[i] = forces[i];
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      {
+        const auto &con = *constraints[c];
+        const auto &r   = rows[c];
+        for (unsigned int k = 0; k < r.n; ++k)
+          {
+            const double l = lambda[row_offset[c] + k];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                if (con.body_i != ground)
+                  a[3 * con.body_i + d] -= r.jac_i[k][d] * l;
+                a[3 * con.body_j + d] -= r.jac_j[k][d] * l;
+              }
+          }
+      }
+    double p_reaction = 0;
+    for (unsigned int i = 0; i < 3 * nb; ++i)
+      {
+        p_reaction += v[i] * (a[i] - forces[i]); // = −q̇ᵀ Φqᵀ λ
+        a[i] *= inverse_mass[i];
+      }
+    power.constraint = p_reaction;
+  }
+
+  double
+  Mechanism::last_constraint_violation() const
+  {
+    double m = 0;
+    for (const auto &r : rows)
+      for (unsigned int k = 0; k < r.n; ++k)
+        m = std::max(m, std::abs(r.phi[k]));
+    return m;
+  }
+
+  double
+  Mechanism::kinetic_energy(const double *v) const
+  {
+    double t = 0;
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      t += 0.5 * bodies[b].mass * (v[3 * b] * v[3 * b] + v[3 * b + 1] * v[3 * b + 1]) +
+           0.5 * bodies[b].inertia * v[3 * b + 2] * v[3 * b + 2];
+    return t;
+  }
+
+  double
+  Mechanism::potential_energy(const double *q, const double *v) const
+  {
+    double e = 0;
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      e -= bodies[b].mass * (gravity.x() * q[3 * b] + gravity.y() * q[3 * b + 1]);
+    const StateView s(q, v);
+    for (const auto &f : force_elements)
+      e += f->potential_energy(s);
+    return e;
+  }
+} // namespace wearlink::mbs

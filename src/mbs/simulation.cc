@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "mbs/simulation.h"
+
+#include "base/exceptions.h"
+
+#include <cmath>
+#include <limits>
+
+namespace wearlink::mbs
+{
+  void
+  MechanismOde::rhs(double t, const double *y, double *dydt)
+  {
+    const unsigned int n = mechanism.n_coordinates();
+    const double *     q = y;
+    const double *     v = y + n;
+    for (unsigned int i = 0; i < n; ++i)
+      dydt[i] = v[i];
+    PowerTerms power;
+    mechanism.accelerations(t, q, v, dydt + n, power);
+    double *z = dydt + 2 * n;
+    z[reaction_work]        = power.constraint;
+    z[reaction_work_abs]    = std::abs(power.constraint);
+    z[damping_dissipation]  = power.damping;
+    z[friction_dissipation] = power.friction;
+  }
+
+  Simulation::Simulation(Mechanism &mechanism, const SimulationSettings &settings)
+    : mechanism(mechanism)
+    , settings(settings)
+    , system(mechanism)
+  {
+    auto s = settings.integrator;
+    // Error control on q and v only; the accumulators follow with the same order.
+    if (s.absolute_tolerance.size() != system.size())
+      {
+        const double pos = s.absolute_tolerance.empty() ? 1e-9 : s.absolute_tolerance[0];
+        const double vel = s.absolute_tolerance.size() < 2 ? 1e-6 : s.absolute_tolerance[1];
+        const unsigned int n = mechanism.n_coordinates();
+        s.absolute_tolerance.assign(system.size(), 0.0);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            s.absolute_tolerance[i]     = pos;
+            s.absolute_tolerance[n + i] = vel;
+          }
+      }
+    integrator    = make_integrator(system, s);
+    locate_events = s.type == IntegratorType::dopri5;
+    scratch.setZero(system.size());
+  }
+
+  void
+  Simulation::initialize(double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0)
+  {
+    Eigen::VectorXd y0 = Eigen::VectorXd::Zero(system.size());
+    y0.segment(system.q_offset(), q0.size()) = q0;
+    y0.segment(system.v_offset(), v0.size()) = v0;
+    initialize_state(t0, y0);
+  }
+
+  void
+  Simulation::initialize_state(double t0, const Eigen::VectorXd &y0)
+  {
+    // Modes consistent with the initial state (a joint starting in contact has no
+    // located onset: it takes its impact velocity from the initial state).
+    const unsigned int n = mechanism.n_coordinates();
+    const StateView    s(y0.data(), y0.data() + n);
+    for (const auto &e : mechanism.get_force_elements())
+      if (e->has_event() && (e->event_value(s) > 0) != e->mode())
+        e->on_event(t0, s, e->event_value(s) > 0);
+    integrator->reset(t0, y0);
+  }
+
+  void
+  Simulation::state_at(double t, Eigen::VectorXd &y) const
+  {
+    y.resize(system.size());
+    integrator->dense_output(t, y.data());
+  }
+
+  void
+  Simulation::derivative_at(double t, const Eigen::VectorXd &y, Eigen::VectorXd &dydt)
+  {
+    dydt.resize(system.size());
+    system.rhs(t, y.data(), dydt.data());
+  }
+
+  double
+  Simulation::locate(const ForceElement &e, bool onset) const
+  {
+    // Bracket [lo, hi] with the "before" sign at lo and the "after" sign at hi.
+    const unsigned int n   = mechanism.n_coordinates();
+    auto               val = [&](double t) {
+      integrator->dense_output(t, scratch.data());
+      return e.event_value(StateView(scratch.data(), scratch.data() + n));
+    };
+    auto after = [&](double f) { return onset ? f > 0 : f <= 0; };
+
+    double lo = integrator->previous_time();
+    double hi = integrator->time();
+    double f_lo = val(lo);
+    double f_hi = val(hi);
+    if (after(f_lo))
+      return lo; // the mode was already out of date at the start of the step
+    int side = 0;
+    for (unsigned int it = 0; it < 200 && hi - lo > settings.event_time_tolerance; ++it)
+      {
+        double tm = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        if (!(tm > lo && tm < hi))
+          tm = 0.5 * (lo + hi);
+        const double fm = val(tm);
+        if (after(fm))
+          {
+            hi   = tm;
+            f_hi = fm;
+            if (side == -1)
+              f_lo *= 0.5; // Illinois modification
+            side = -1;
+          }
+        else
+          {
+            lo   = tm;
+            f_lo = fm;
+            if (side == +1)
+              f_hi *= 0.5;
+            side = +1;
+          }
+      }
+    return hi;
+  }
+
+  void
+  Simulation::run(double t_end, const std::vector<StepObserver *> &observers)
+  {
+    const unsigned int n = mechanism.n_coordinates();
+    {
+      const StepContext c{*this, integrator->time(), integrator->time(), integrator->state(),
+                          integrator->derivative()};
+      for (auto *o : observers)
+        o->on_start(c);
+    }
+    std::vector<ForceElement *> event_elements;
+    for (const auto &e : mechanism.get_force_elements())
+      if (e->has_event())
+        event_elements.push_back(e.get());
+
+    Eigen::VectorXd y_start, y_event;
+    std::vector<ForceElement *> triggered;
+    std::vector<double>         roots;
+    while (integrator->time() < t_end)
+      {
+        const double t_start = integrator->time();
+        y_start              = integrator->state();
+        integrator->step(t_end);
+
+        // Which elements' modes no longer match the state at the end of the step?
+        double t_first = std::numeric_limits<double>::infinity();
+        triggered.clear();
+        roots.clear();
+        for (auto *e : event_elements)
+          {
+            const double f = e->event_value(
+              StateView(integrator->state().data(), integrator->state().data() + n));
+            const bool onset = !e->mode() && f > 0;
+            const bool sep   = e->mode() && f <= 0;
+            if (onset || sep)
+              {
+                triggered.push_back(e);
+                roots.push_back(locate(*e, onset));
+                t_first = std::min(t_first, roots.back());
+              }
+          }
+
+        // With event location, re-take the step so that it ends at the first event;
+        // only the events at that time switch now (later ones are found again).
+        bool at_root = false;
+        if (!triggered.empty() && locate_events && t_first - t_start > settings.event_time_tolerance &&
+            t_first < integrator->time() - settings.event_time_tolerance)
+          {
+            ++restarts;
+            integrator->reset(t_start, y_start);
+            integrator->step(t_first);
+            at_root = integrator->time() >= t_first - settings.event_time_tolerance;
+            std::vector<ForceElement *> now;
+            std::vector<double>         now_roots;
+            if (at_root)
+              for (std::size_t k = 0; k < triggered.size(); ++k)
+                if (roots[k] <= t_first + settings.event_time_tolerance)
+                  {
+                    now.push_back(triggered[k]);
+                    now_roots.push_back(integrator->time());
+                  }
+            triggered.swap(now);
+            roots.swap(now_roots);
+          }
+
+        if (!integrator->state().allFinite())
+          throw NumericalError("The state became non-finite at t = " +
+                               std::to_string(integrator->time()) + " s.");
+        {
+          const StepContext c{*this, integrator->previous_time(), integrator->time(),
+                              integrator->state(), integrator->derivative()};
+          for (auto *o : observers)
+            o->on_step(c);
+        }
+
+        // Switch the modes; the impact velocity is read from the state at the root.
+        if (!triggered.empty())
+          {
+            for (std::size_t k = 0; k < triggered.size(); ++k)
+              {
+                integrator->dense_output(roots[k], scratch.data());
+                y_event = scratch;
+                triggered[k]->on_event(roots[k],
+                                       StateView(y_event.data(), y_event.data() + n),
+                                       !triggered[k]->mode());
+                ++events;
+              }
+            // f at the current point changes with the modes.
+            const Eigen::VectorXd y_now = integrator->state();
+            integrator->reset(integrator->time(), y_now);
+          }
+      }
+  }
+} // namespace wearlink::mbs

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Time integration of a Mechanism: the ODE y = [q | v | z] with z the energy
+// accumulators (reaction work, its absolute value, damping and friction dissipation),
+// integrated by the chosen integrator, with events of the force elements (contact
+// onset and separation) located on the dense output:
+//   - an event is a change of the sign of a force element's event function against its
+//     mode (free → penetration > 0, contact → penetration ≤ 0);
+//   - its time t* is found by Illinois regula falsi on the dense output;
+//   - with `locate` (dopri5) the step is re-taken to end exactly at t*, the mode is
+//     switched there, and integration restarts; without it (rk4, fixed grid as in the
+//     seed) the mode switches at the end of the step, but the impact velocity is still
+//     read from the interpolated state at t* (seed eq. 11's δ̇⁽⁻⁾).
+// Observers see every accepted step (never a step that was discarded for an event).
+#pragma once
+
+#include "mbs/integrator.h"
+#include "mbs/mechanism.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+namespace wearlink::mbs
+{
+  /** y' = f(t, y) for a mechanism, with the energy accumulators. */
+  class MechanismOde : public OdeSystem
+  {
+  public:
+    /** Offsets of the accumulators after q and v. */
+    enum Quadrature : unsigned int
+    {
+      reaction_work = 0,   ///< ∫ −q̇ᵀΦqᵀλ dt [J]
+      reaction_work_abs,   ///< ∫ |q̇ᵀΦqᵀλ| dt [J]
+      damping_dissipation, ///< ∫ P_damping dt [J]
+      friction_dissipation,///< ∫ P_friction dt [J]
+      n_quadratures
+    };
+
+    explicit MechanismOde(Mechanism &mechanism)
+      : mechanism(mechanism)
+    {}
+
+    unsigned int
+    size() const override
+    {
+      return 2 * mechanism.n_coordinates() + n_quadratures;
+    }
+
+    void
+    rhs(double t, const double *y, double *dydt) override;
+
+    unsigned int
+    q_offset() const
+    {
+      return 0;
+    }
+    unsigned int
+    v_offset() const
+    {
+      return mechanism.n_coordinates();
+    }
+    unsigned int
+    z_offset() const
+    {
+      return 2 * mechanism.n_coordinates();
+    }
+
+    Mechanism &mechanism;
+  };
+
+  struct SimulationSettings
+  {
+    IntegratorSettings integrator;
+    /** Time resolution of located events [s]. */
+    double event_time_tolerance = 1e-12;
+  };
+
+  class Simulation;
+
+  /** What an observer sees after each accepted step. */
+  struct StepContext
+  {
+    Simulation &simulation;
+    double            t_previous; ///< start of the step [s]
+    double            t;          ///< end of the step [s]
+    /** State at t: [q | v | z]. */
+    const Eigen::VectorXd &y;
+    /** f(t, y): [q̇ | q̈ | ż]. */
+    const Eigen::VectorXd &dydt;
+  };
+
+  class StepObserver
+  {
+  public:
+    virtual ~StepObserver() = default;
+    /** Called once before the first step with the initial state. */
+    virtual void
+    on_start(const StepContext &) {}
+    virtual void
+    on_step(const StepContext &context) = 0;
+  };
+
+  class Simulation
+  {
+  public:
+    Simulation(Mechanism &mechanism, const SimulationSettings &settings);
+
+    /** Start at time @p t0 from assembled (q0, v0); the accumulators start at 0. */
+    void
+    initialize(double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0);
+
+    /** Start from a full state vector (checkpoint / continuation). */
+    void
+    initialize_state(double t0, const Eigen::VectorXd &y0);
+
+    /** Integrate up to @p t_end, notifying @p observers after every accepted step. */
+    void
+    run(double t_end, const std::vector<StepObserver *> &observers);
+
+    /** Dense output at @p t within the last accepted step. */
+    void
+    state_at(double t, Eigen::VectorXd &y) const;
+
+    /** Recompute f at @p t for state @p y (clobbers the mechanism's workspace). */
+    void
+    derivative_at(double t, const Eigen::VectorXd &y, Eigen::VectorXd &dydt);
+
+    double
+    time() const
+    {
+      return integrator->time();
+    }
+    const Eigen::VectorXd &
+    state() const
+    {
+      return integrator->state();
+    }
+    const MechanismOde &
+    ode() const
+    {
+      return system;
+    }
+    Mechanism &
+    get_mechanism() const
+    {
+      return mechanism;
+    }
+    const Integrator &
+    get_integrator() const
+    {
+      return *integrator;
+    }
+
+    long
+    n_events() const
+    {
+      return events;
+    }
+    /** Steps re-taken to land on an event. */
+    long
+    n_event_restarts() const
+    {
+      return restarts;
+    }
+
+  private:
+    /** Locate the root of element @p e's event function in the last step. */
+    double
+    locate(const ForceElement &e, bool onset) const;
+
+    Mechanism &                 mechanism;
+    SimulationSettings          settings;
+    MechanismOde                system;
+    std::unique_ptr<Integrator> integrator;
+    bool                        locate_events;
+    long                        events   = 0;
+    long                        restarts = 0;
+    mutable Eigen::VectorXd     scratch;
+  };
+} // namespace wearlink::mbs
