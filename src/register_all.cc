@@ -8,6 +8,11 @@ namespace wearlink
     void
     register_contact_effects();
   }
+  namespace fe
+  {
+    void
+    register_fe_effects();
+  }
 
   void
   register_all()
@@ -17,5 +22,6 @@ namespace wearlink
       return;
     done = true;
     contact::register_contact_effects();
+    fe::register_fe_effects();
   }
 } // namespace wearlink

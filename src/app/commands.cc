@@ -5,12 +5,14 @@ namespace wearlink::app
 {
   // Each sub-command lives in app/commands/<name>.cc and exposes its Command entry.
   extern const Command run_scene_command;
+  extern const Command contact_command;
 
   const std::vector<Command> &
   commands()
   {
     static const std::vector<Command> table = {
       run_scene_command,
+      contact_command,
     };
     return table;
   }

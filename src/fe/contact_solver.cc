@@ -1,0 +1,590 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "fe/contact_solver.h"
+
+#include "base/effect_ledger.h"
+#include "base/exceptions.h"
+#include "fe/boundary_ids.h"
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace wearlink::fe
+{
+  using namespace dealii;
+
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    Tensor<1, 2>
+    rotate(const Tensor<1, 2> &v, double angle)
+    {
+      const double c = std::cos(angle), s = std::sin(angle);
+      Tensor<1, 2> r;
+      r[0] = c * v[0] - s * v[1];
+      r[1] = s * v[0] + c * v[1];
+      return r;
+    }
+
+    /** Lagrange basis on p+1 equidistant points of [0, 1], evaluated at @p xi. */
+    std::array<double, 3>
+    lagrange_weights(unsigned int n_points, double xi)
+    {
+      std::array<double, 3> w{};
+      const unsigned int    p = n_points - 1;
+      for (unsigned int k = 0; k < n_points; ++k)
+        {
+          double v = 1;
+          for (unsigned int l = 0; l < n_points; ++l)
+            if (l != k)
+              v *= (xi - double(l) / p) / (double(k) - double(l)) * p;
+          w[k] = v;
+        }
+      return w;
+    }
+
+    /** A gap this small [m] counts as closed: round-off of the gap formula. */
+    double
+    gap_tolerance(const ContactKinematics &kin)
+    {
+      double scale = 0;
+      for (const double g : kin.g0)
+        scale = std::max(scale, std::abs(g));
+      return 1e-12 * std::max(scale, 1e-9);
+    }
+
+    /**
+     * The primal–dual active-set update: an active candidate stays active while its
+     * force is compressive; an inactive one becomes active when its gap is negative.
+     * If the plain update would revisit an earlier active set (cycling), only the single
+     * worst violation is corrected, which makes the iteration monotone.
+     */
+    std::vector<unsigned int>
+    update_active_set(const std::vector<unsigned int> &             active,
+                      const std::vector<double> &                   lambda,
+                      const std::vector<double> &                   gap,
+                      double                                        tolerance,
+                      std::set<std::vector<unsigned int>> &         history)
+    {
+      std::vector<char> is_active(gap.size(), 0);
+      for (const auto i : active)
+        is_active[i] = 1;
+      std::vector<unsigned int> next;
+      unsigned int              worst_lambda = 0, worst_gap = 0;
+      double                    min_lambda = 0, min_gap = -tolerance;
+      for (unsigned int i = 0; i < gap.size(); ++i)
+        {
+          if (is_active[i])
+            {
+              if (lambda[i] > 0)
+                next.push_back(i);
+              else if (lambda[i] < min_lambda)
+                {
+                  min_lambda   = lambda[i];
+                  worst_lambda = i;
+                }
+            }
+          else if (gap[i] < -tolerance)
+            {
+              next.push_back(i);
+              if (gap[i] < min_gap)
+                {
+                  min_gap   = gap[i];
+                  worst_gap = i;
+                }
+            }
+        }
+      std::sort(next.begin(), next.end());
+      if (next != active && history.count(next))
+        {
+          next = active;
+          if (min_lambda < 0)
+            next.erase(std::find(next.begin(), next.end(), worst_lambda));
+          else if (min_gap < -tolerance)
+            next.insert(std::upper_bound(next.begin(), next.end(), worst_gap), worst_gap);
+        }
+      history.insert(active);
+      return next;
+    }
+
+    /**
+     * Force control needs at least two active candidates with different normals: with
+     * one, the frictionless pin could slide sideways freely. Add the closest candidates.
+     */
+    void
+    ensure_two_active(std::vector<unsigned int> &active, const std::vector<double> &gap_estimate)
+    {
+      while (active.size() < 2 && active.size() < gap_estimate.size())
+        {
+          unsigned int best = 0;
+          double       g    = std::numeric_limits<double>::max();
+          for (unsigned int i = 0; i < gap_estimate.size(); ++i)
+            if (gap_estimate[i] < g && std::find(active.begin(), active.end(), i) == active.end())
+              {
+                g    = gap_estimate[i];
+                best = i;
+              }
+          active.insert(std::upper_bound(active.begin(), active.end(), best), best);
+        }
+    }
+
+    [[noreturn]] void
+    not_converged(const char *solver, unsigned int iterations)
+    {
+      throw NumericalError(std::string("The ") + solver + " contact solver did not converge in " +
+                           std::to_string(iterations) +
+                           " active-set iterations. Raise 'Maximum active-set iterations' or "
+                           "refine the contact surfaces ('Surface element size').");
+    }
+  } // namespace
+
+
+  // The ray from the pin candidate x_i along its normal n_i meets the bore profile
+  // r = R1*(ψ) where |x + t n| = R1*(atan2(x + t n)). For a round bore the circle
+  // formula is exact; otherwise a few Newton steps on t follow.
+  ContactKinematics
+  compute_kinematics(const ElasticityProblem &problem,
+                     const Profile &          bore,
+                     double                   relative_angle,
+                     const Tensor<1, 2> &     eccentricity)
+  {
+    const auto &       nodes = problem.pin_nodes;
+    const auto &       faces = problem.bore_faces;
+    const unsigned int m     = nodes.size();
+    const bool         round = bore.is_round();
+
+    ContactKinematics k;
+    k.relative_angle = relative_angle;
+    k.eccentricity   = eccentricity;
+    k.g0.resize(m);
+    k.normal.resize(m);
+    k.bore_angle.resize(m);
+    k.masters.resize(m);
+    k.weights.resize(m);
+    k.n_masters.resize(m);
+
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        const Tensor<1, 2> x = eccentricity + rotate(nodes[i].point, relative_angle);
+        const Tensor<1, 2> n = rotate(nodes[i].normal, relative_angle);
+        const double       radius = bore.radius(std::atan2(x[1], x[0]));
+        const double       b      = x * n;
+        double t = -b + std::sqrt(std::max(b * b - x * x + radius * radius, 0.0));
+        if (!round)
+          for (unsigned int it = 0; it < 20; ++it)
+            {
+              const Tensor<1, 2> y     = x + t * n;
+              const double       rho   = y.norm();
+              const double       alpha = std::atan2(y[1], y[0]);
+              const double       f     = rho - bore.radius(alpha);
+              if (std::abs(f) < 1e-14 * rho)
+                break;
+              const double df = (y * n) / rho - bore.slope(alpha) * (y[0] * n[1] - y[1] * n[0]) / (rho * rho);
+              t -= f / df;
+            }
+        const Tensor<1, 2> y     = x + t * n;
+        const double       alpha = std::atan2(y[1], y[0]);
+        k.g0[i]                  = t;
+        k.normal[i]              = n;
+        k.bore_angle[i]          = alpha;
+
+        auto it = std::upper_bound(faces.begin(), faces.end(), alpha,
+                                   [](double a, const SurfaceFace &f) { return a < f.begin; });
+        unsigned int f = it == faces.begin() ? faces.size() - 1 : (it - faces.begin()) - 1;
+        double d = alpha - faces[f].begin;
+        d -= 2 * pi * std::floor(d / (2 * pi));
+        if (d > faces[f].span)
+          {
+            // Between the end of this face and the start of the next (round-off):
+            // take the nearer one.
+            const unsigned int g  = (f + 1) % faces.size();
+            double             dg = alpha - faces[g].begin;
+            dg -= 2 * pi * std::round(dg / (2 * pi));
+            if (std::abs(dg) < d - faces[f].span)
+              {
+                f = g;
+                d = 0;
+              }
+            else
+              d = faces[f].span;
+          }
+        const double xi = std::clamp(d / faces[f].span, 0.0, 1.0);
+        const auto   n_points = static_cast<unsigned int>(faces[f].nodes.size());
+        const auto   w        = lagrange_weights(n_points, xi);
+        k.n_masters[i]        = n_points;
+        for (unsigned int a = 0; a < n_points; ++a)
+          {
+            k.masters[i][a] = faces[f].nodes[a];
+            k.weights[i][a] = w[a];
+          }
+      }
+    return k;
+  }
+
+
+  std::vector<unsigned int>
+  initial_active_set(const ContactKinematics &kinematics, bool force_control)
+  {
+    std::vector<unsigned int> active;
+    const double              tol = gap_tolerance(kinematics);
+    for (unsigned int i = 0; i < kinematics.g0.size(); ++i)
+      if (kinematics.g0[i] < -tol)
+        active.push_back(i);
+    if (force_control)
+      {
+        const double g_min = *std::min_element(kinematics.g0.begin(), kinematics.g0.end());
+        for (unsigned int i = 0; i < kinematics.g0.size(); ++i)
+          if (kinematics.g0[i] <= g_min + tol && std::find(active.begin(), active.end(), i) == active.end())
+            active.push_back(i);
+        std::sort(active.begin(), active.end());
+        ensure_two_active(active, kinematics.g0);
+      }
+    return active;
+  }
+
+
+  CondensedContactSolver::CondensedContactSolver(const ElasticityProblem &problem,
+                                                 BoundaryCompliance &     compliance,
+                                                 unsigned int             max_iterations)
+    : problem(problem)
+    , compliance(compliance)
+    , max_iterations(max_iterations)
+  {}
+
+
+  // One load state of the condensed problem. With the active set 𝒜 fixed, the
+  // conditions g_𝒜 = 0 and Σ λ n = P form the KKT system
+  //     A_𝒜𝒜 λ − N_𝒜ᵀ U = −g0_𝒜,   N_𝒜 λ = P,
+  // solved through the Cholesky factor of A_𝒜𝒜 and the 2×2 Schur complement
+  // S = N A⁻¹ Nᵀ: U = S⁻¹ (P + N A⁻¹ g0), λ = A⁻¹ (Nᵀ U − g0). The gaps of all
+  // candidates then follow from the cached compliance columns of the active ones, and
+  // the active set is updated until it repeats. The last active set warm-starts the
+  // next load state (consecutive states of a mechanism are close).
+  ContactSolution
+  CondensedContactSolver::solve(const ContactKinematics &kin,
+                                bool                     force_control,
+                                const Tensor<1, 2> &     load)
+  {
+    const auto &       bore_nodes = problem.bore_nodes;
+    const unsigned int m          = problem.pin_nodes.size();
+    const unsigned int q          = bore_nodes.size();
+    const double       tolerance  = gap_tolerance(kin);
+
+    std::vector<unsigned int> active =
+      previous_active.empty() ? initial_active_set(kin, force_control) : previous_active;
+    if (force_control)
+      ensure_two_active(active, kin.g0);
+
+    // Bore displacement (all bore candidates) for a unit λ_j: the force +n_j is
+    // interpolated onto the bore nodes of the face that candidate j meets.
+    std::unordered_map<unsigned int, std::vector<double>> bore_fields;
+    auto bore_field = [&](unsigned int j) -> const std::vector<double> & {
+      auto it = bore_fields.find(j);
+      if (it != bore_fields.end())
+        return it->second;
+      std::vector<double> v(2 * q, 0.0);
+      for (unsigned int a = 0; a < kin.n_masters[j]; ++a)
+        {
+          const auto & col = compliance.bore_column(kin.masters[j][a]);
+          const double fx  = kin.weights[j][a] * kin.normal[j][0];
+          const double fy  = kin.weights[j][a] * kin.normal[j][1];
+          for (unsigned int r = 0; r < 2 * q; ++r)
+            v[r] += fx * col[r] + fy * col[2 * q + r];
+        }
+      return bore_fields.emplace(j, std::move(v)).first->second;
+    };
+    // Normal displacement of the bore at candidate i's contact point for a bore field.
+    auto bore_normal = [&](unsigned int i, const std::vector<double> &field) {
+      double u = 0;
+      for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+        {
+          const unsigned int b = kin.masters[i][a];
+          u += kin.weights[i][a] * (kin.normal[i][0] * field[2 * b] + kin.normal[i][1] * field[2 * b + 1]);
+        }
+      return u;
+    };
+
+    ContactSolution                     sol;
+    std::vector<double>                 lambda(m, 0.0), gap(m, 0.0);
+    std::set<std::vector<unsigned int>> history;
+    Tensor<1, 2>                        U;
+    bool                                converged = false;
+    for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
+      {
+        sol.iterations = iteration;
+        const unsigned int k = active.size();
+        std::vector<const std::vector<double> *> pin_cols(k), bore_cols(k);
+        for (unsigned int s = 0; s < k; ++s)
+          {
+            pin_cols[s]  = &compliance.pin_column(active[s]);
+            bore_cols[s] = &bore_field(active[s]);
+          }
+        Eigen::MatrixXd A(k, k);
+        Eigen::MatrixXd N(k, 2);
+        Eigen::VectorXd g0(k);
+        for (unsigned int s = 0; s < k; ++s)
+          {
+            for (unsigned int r = 0; r < k; ++r)
+              A(r, s) = (*pin_cols[s])[active[r]] + bore_normal(active[r], *bore_cols[s]);
+            N(s, 0) = kin.normal[active[s]][0];
+            N(s, 1) = kin.normal[active[s]][1];
+            g0(s)   = kin.g0[active[s]];
+          }
+        const Eigen::MatrixXd        As = 0.5 * (A + A.transpose());
+        const Eigen::LLT<Eigen::MatrixXd> llt(As);
+        AssertThrow(llt.info() == Eigen::Success,
+                    ExcMessage("The contact compliance on the active set is not positive definite."));
+        Eigen::VectorXd lambda_active;
+        U = 0;
+        if (force_control)
+          {
+            const Eigen::MatrixXd Y = llt.solve(N);
+            const Eigen::VectorXd z = llt.solve(g0);
+            const Eigen::Matrix2d S = N.transpose() * Y;
+            const Eigen::Vector2d rhs = Eigen::Vector2d(load[0], load[1]) + N.transpose() * z;
+            const Eigen::Vector2d u   = S.fullPivLu().solve(rhs);
+            U[0]                      = u[0];
+            U[1]                      = u[1];
+            lambda_active             = Y * u - z;
+          }
+        else
+          lambda_active = -llt.solve(g0);
+
+        // Gaps of every candidate: g = g0 − n·U + (pin part + bore part) of A λ.
+        std::fill(lambda.begin(), lambda.end(), 0.0);
+        std::vector<double> bore_total(2 * q, 0.0);
+        for (unsigned int s = 0; s < k; ++s)
+          {
+            lambda[active[s]] = lambda_active[s];
+            const auto &f     = *bore_cols[s];
+            for (unsigned int r = 0; r < 2 * q; ++r)
+              bore_total[r] += lambda_active[s] * f[r];
+          }
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            double g = kin.g0[i] - kin.normal[i] * U + bore_normal(i, bore_total);
+            for (unsigned int s = 0; s < k; ++s)
+              g += (*pin_cols[s])[i] * lambda_active[s];
+            gap[i] = g;
+          }
+        auto next = update_active_set(active, lambda, gap, tolerance, history);
+        if (force_control)
+          ensure_two_active(next, gap);
+        if (next == active)
+          {
+            converged = true;
+            break;
+          }
+        active = next;
+      }
+    if (!converged)
+      not_converged("condensed", max_iterations);
+
+    previous_active = active;
+    sol.lambda      = lambda;
+    sol.gap         = gap;
+    sol.pin_translation = U;
+    sol.n_active    = active.size();
+    for (unsigned int i = 0; i < m; ++i)
+      sol.resultant += lambda[i] * kin.normal[i];
+    return sol;
+  }
+
+
+  // The displacement field for a condensed solution: the contact forces −λ_i ν_i on
+  // the pin and +λ_i n_i (interpolated) on the bore, one solve with the clamped
+  // factorization, plus the pin's rigid translation U (in the pin frame) on its DoFs.
+  Vector<double>
+  CondensedContactSolver::displacement_field(const ContactKinematics &kin,
+                                             const ContactSolution &  sol) const
+  {
+    Vector<double> u(problem.dof_handler.n_dofs());
+    for (unsigned int i = 0; i < problem.pin_nodes.size(); ++i)
+      if (sol.lambda[i] != 0)
+        {
+          const auto &node = problem.pin_nodes[i];
+          u(node.dofs[0]) -= sol.lambda[i] * node.normal[0];
+          u(node.dofs[1]) -= sol.lambda[i] * node.normal[1];
+          for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+            {
+              const auto &b = problem.bore_nodes[kin.masters[i][a]];
+              u(b.dofs[0]) += sol.lambda[i] * kin.weights[i][a] * kin.normal[i][0];
+              u(b.dofs[1]) += sol.lambda[i] * kin.weights[i][a] * kin.normal[i][1];
+            }
+        }
+    compliance.solve_clamped(u);
+    const Tensor<1, 2> U_pin = rotate(sol.pin_translation, -kin.relative_angle);
+    std::vector<char>  done(u.size(), 0);
+    std::vector<global_dof_index> dofs(problem.fe.n_dofs_per_cell());
+    for (const auto &cell : problem.dof_handler.active_cell_iterators())
+      if (cell->material_id() == material_ids::pin)
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (!done[dofs[i]])
+              {
+                done[dofs[i]] = 1;
+                u(dofs[i]) += U_pin[problem.fe.system_to_component_index(i).first];
+              }
+        }
+    return u;
+  }
+
+
+  ReferenceContactSolver::ReferenceContactSolver(const ElasticityProblem &problem,
+                                                 unsigned int             max_iterations)
+    : problem(problem)
+    , max_iterations(max_iterations)
+  {}
+
+
+  // The reference: semismooth Newton (primal–dual active set) on the full FE system of
+  // both bodies, in the spirit of deal.II's step-41. For the current active set every
+  // active pin candidate i gets the affine constraint
+  //     ν_i · u_i = g0_i + n_i · Σ_a w_a u_a        (gap closed; ν_i pin frame),
+  // solved for the DoF of its larger normal component; the core DoFs are tied to one
+  // core node (force control: loaded by P in the pin frame) or fixed (displacement
+  // control); the bushing's outer edge is fixed. The constrained system is condensed
+  // and factored with UMFPACK; λ_i = −ν_i · (K u)_i are the reaction forces of the
+  // unconstrained operator, and the gaps follow from u.
+  ContactSolution
+  ReferenceContactSolver::solve(const ContactKinematics &kin,
+                                bool                     force_control,
+                                const Tensor<1, 2> &     load) const
+  {
+    const auto &       K     = problem.stiffness_matrix;
+    const auto &       pin   = problem.pin_nodes;
+    const auto &       bore  = problem.bore_nodes;
+    const auto &       core  = problem.core_nodes;
+    const unsigned int m     = pin.size();
+    const auto         n     = problem.dof_handler.n_dofs();
+    const double       tolerance = gap_tolerance(kin);
+    const Tensor<1, 2> P_pin = rotate(load, -kin.relative_angle);
+
+    std::vector<unsigned int>           active = initial_active_set(kin, force_control);
+    std::set<std::vector<unsigned int>> history;
+    ContactSolution                     sol;
+    std::vector<double>                 lambda(m), gap(m);
+    Vector<double>                      u(n), residual(n);
+    bool                                converged = false;
+    for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
+      {
+        sol.iterations = iteration;
+        AffineConstraints<double> constraints;
+        for (const auto d : problem.outer_dofs)
+          constraints.add_line(d);
+        for (unsigned int c = 0; c < core.size(); ++c)
+          for (unsigned int d = 0; d < 2; ++d)
+            if (!force_control)
+              constraints.add_line(core[c][d]);
+            else if (c > 0)
+              {
+                constraints.add_line(core[c][d]);
+                constraints.add_entry(core[c][d], core[0][d], 1.0);
+              }
+        for (const auto i : active)
+          {
+            const auto &       nu   = pin[i].normal;
+            const auto &       nb   = kin.normal[i];
+            const unsigned int comp = std::abs(nu[0]) >= std::abs(nu[1]) ? 0 : 1;
+            const unsigned int other = 1 - comp;
+            const auto         dof  = pin[i].dofs[comp];
+            constraints.add_line(dof);
+            constraints.add_entry(dof, pin[i].dofs[other], -nu[other] / nu[comp]);
+            for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+              {
+                const auto &b = bore[kin.masters[i][a]];
+                const double w = kin.weights[i][a] / nu[comp];
+                if (w != 0)
+                  {
+                    constraints.add_entry(dof, b.dofs[0], w * nb[0]);
+                    constraints.add_entry(dof, b.dofs[1], w * nb[1]);
+                  }
+              }
+            constraints.set_inhomogeneity(dof, kin.g0[i] / nu[comp]);
+          }
+        constraints.close();
+
+        DynamicSparsityPattern dsp(n);
+        for (types::global_dof_index row = 0; row < n; ++row)
+          for (auto e = problem.sparsity_pattern.begin(row); e != problem.sparsity_pattern.end(row); ++e)
+            dsp.add(row, e->column());
+        constraints.condense(dsp);
+        SparsityPattern pattern;
+        pattern.copy_from(dsp);
+        SparseMatrix<double> matrix(pattern);
+        for (types::global_dof_index row = 0; row < n; ++row)
+          for (auto e = K.begin(row); e != K.end(row); ++e)
+            matrix.add(row, e->column(), e->value());
+        Vector<double> rhs(n);
+        if (force_control)
+          {
+            rhs(core[0][0]) += P_pin[0];
+            rhs(core[0][1]) += P_pin[1];
+          }
+        constraints.condense(matrix, rhs);
+        SparseDirectUMFPACK direct;
+        direct.initialize(matrix);
+        EffectLedger::instance().add_resource("factorizations");
+        u = rhs;
+        direct.solve(u);
+        constraints.distribute(u);
+
+        K.vmult(residual, u);
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            const auto &nu = pin[i].normal;
+            lambda[i]      = -(nu[0] * residual(pin[i].dofs[0]) + nu[1] * residual(pin[i].dofs[1]));
+            double g       = kin.g0[i] - (nu[0] * u(pin[i].dofs[0]) + nu[1] * u(pin[i].dofs[1]));
+            for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+              {
+                const auto &b = bore[kin.masters[i][a]];
+                g += kin.weights[i][a] * (kin.normal[i][0] * u(b.dofs[0]) + kin.normal[i][1] * u(b.dofs[1]));
+              }
+            gap[i] = g;
+          }
+        auto next = update_active_set(active, lambda, gap, tolerance, history);
+        if (force_control)
+          ensure_two_active(next, gap);
+        if (next == active)
+          {
+            converged = true;
+            break;
+          }
+        active = next;
+      }
+    if (!converged)
+      not_converged("reference", max_iterations);
+
+    std::vector<char> is_active(m, 0);
+    for (const auto i : active)
+      is_active[i] = 1;
+    for (unsigned int i = 0; i < m; ++i)
+      if (!is_active[i])
+        lambda[i] = 0;
+    sol.lambda   = lambda;
+    sol.gap      = gap;
+    sol.n_active = active.size();
+    if (force_control)
+      {
+        Tensor<1, 2> U_pin;
+        U_pin[0]            = u(core[0][0]);
+        U_pin[1]            = u(core[0][1]);
+        sol.pin_translation = rotate(U_pin, kin.relative_angle);
+      }
+    for (unsigned int i = 0; i < m; ++i)
+      sol.resultant += lambda[i] * kin.normal[i];
+    sol.displacement = u;
+    return sol;
+  }
+} // namespace wearlink::fe

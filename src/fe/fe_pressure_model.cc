@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "fe/fe_pressure_model.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "fe/pin_bushing_model.h"
+
+#include <filesystem>
+
+#include <unistd.h>
+
+namespace wearlink::fe
+{
+  FePressureModel::FePressureModel(const FeSettings &settings)
+    : settings(settings)
+  {}
+
+  FePressureModel::~FePressureModel() = default;
+
+  // A new mesh per geometry: worn profiles change the domain, so the mesh, the
+  // stiffness, its factorization and the cached compliance are all rebuilt.
+  void
+  FePressureModel::update_geometry(const contact::JointGeometry &g)
+  {
+    if (mesh_directory.empty())
+      {
+        namespace fs   = std::filesystem;
+        mesh_directory = settings.mesh_directory.empty() ?
+                           (fs::temp_directory_path() /
+                            ("wearlink-fe-" + std::to_string(::getpid()) + "-" +
+                             std::to_string(reinterpret_cast<std::uintptr_t>(this))))
+                             .string() :
+                           settings.mesh_directory;
+        make_output_directory(mesh_directory);
+      }
+    model.reset();
+    geometry = g;
+    const std::string msh = mesh_directory + "/pin_bushing_" + std::to_string(mesh_counter++) + ".msh";
+    model = std::make_unique<PinBushingModel>(geometry, settings, msh);
+    model->prepare_condensed();
+  }
+
+  void
+  FePressureModel::evaluate(const contact::ContactLoad &load, contact::SurfacePressure &out)
+  {
+    AssertThrow(model != nullptr,
+                dealii::ExcMessage("The fe pressure model was evaluated before update_geometry()."));
+    out.pin.assign(geometry.pin.n_points(), 0.0);
+    out.bore.assign(geometry.bore.n_points(), 0.0);
+    if (load.force[0] == 0 && load.force[1] == 0)
+      return;
+    LoadCase lc;
+    lc.control       = Control::force;
+    lc.bushing_angle = load.bushing_angle;
+    lc.pin_angle     = load.pin_angle;
+    lc.load          = {-load.force[0], -load.force[1]};
+    const ContactResult r = model->solve(lc, SolverKind::condensed);
+    out                   = model->surface_pressure(r);
+  }
+} // namespace wearlink::fe

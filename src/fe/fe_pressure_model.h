@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The `fe` pressure model: contact pressure on both surfaces of a shaft–bushing pair from
+// the 2D plane-strain contact FE model of the actual (worn) pin and bushing
+// (REFERENCE.md §5; ARCHITECTURE.md fe/). It is constructed only when a scene selects
+// it; nothing is meshed or factored before update_geometry(). Each load state is solved
+// under force control with the condensed solver: the pin is pushed into the bore by
+// −ContactLoad::force (the bushing's force on the pin), and the resulting pressure is
+// returned per discrete area of each profile, each in its own body frame. The
+// eccentricity of the rigid-body model is not used: the FE model finds the elastic
+// equilibrium position itself. No deal.II type leaks out (pimpl in PinBushingModel).
+#pragma once
+
+#include "contact/pressure_model.h"
+#include "fe/fe_settings.h"
+
+#include <memory>
+
+namespace wearlink::fe
+{
+  class PinBushingModel;
+
+  class FePressureModel : public contact::PressureModel
+  {
+  public:
+    explicit FePressureModel(const FeSettings &settings);
+    ~FePressureModel() override;
+
+    void
+    update_geometry(const contact::JointGeometry &geometry) override;
+
+    void
+    evaluate(const contact::ContactLoad &load, contact::SurfacePressure &out) override;
+
+    bool
+    requires_fe_geometry() const override
+    {
+      return true;
+    }
+
+    /** Number of meshes built so far (one per update_geometry()). */
+    unsigned int
+    n_meshes() const
+    {
+      return mesh_counter;
+    }
+
+  private:
+    const FeSettings                 settings;
+    std::string                      mesh_directory;
+    unsigned int                     mesh_counter = 0;
+    contact::JointGeometry           geometry;
+    std::unique_ptr<PinBushingModel> model;
+  };
+} // namespace wearlink::fe

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The numerical knobs of the FE contact model of one shaft–bushing pair (mesh sizes,
+// element degree, refinement, rigid pin core, contact-solver limits), declared once
+// with their units. The same declarations serve the `fe` pressure-model plugin
+// ("…/Pressure model/fe/…") and the `wearlink contact` command ("FE model/…").
+// No deal.II types beyond the ParameterHandler appear here, so app/ may include it.
+#pragma once
+
+#include "base/parameters.h"
+
+#include <string>
+
+namespace wearlink::fe
+{
+  /** Numerical settings of the pin–bushing FE model (all lengths in m). */
+  struct FeSettings
+  {
+    /** Element size along both contact surfaces [m]. */
+    double surface_element_size = 25e-6;
+    /** Largest element size away from the contact surfaces [m]. */
+    double max_element_size = 1.5e-3;
+    /**
+     * Growth of the element size with the distance d from the nearest contact surface:
+     * h(d) = min(h_surface + growth · d, h_max) [-].
+     */
+    double size_growth = 0.3;
+    /** Radius of the rigid core of the pin as a fraction of its smallest radius [-]. */
+    double core_radius_fraction = 0.4;
+    /**
+     * Outer radius of the bushing ring [m]; 0 means "outer radius ratio × mean bore
+     * radius" (the plugin's case, where the ring is part of a link).
+     */
+    double outer_radius = 0;
+    /** Outer radius / mean bore radius, used when outer_radius = 0 [-]. */
+    double outer_radius_ratio = 2;
+    /** Polynomial degree of the FE_Q elements (1 or 2). */
+    unsigned int degree = 1;
+    /** Global refinements of the gmsh mesh (each halves every element size). */
+    unsigned int refinements = 0;
+    /** Iteration limit of the active-set contact solvers. */
+    unsigned int max_active_set_iterations = 100;
+    /** Directory for the generated .msh files ("" = a temporary directory). */
+    std::string mesh_directory;
+
+    /** InputError if a size is not positive or the fractions are out of range. */
+    void
+    check(const std::string &where) const;
+  };
+
+  /** Declare the FE numerics in the current subsection of @p prm. */
+  void
+  declare_fe_settings(dealii::ParameterHandler &prm);
+
+  /** Read what declare_fe_settings() declared; @p reader is in the same subsection. */
+  FeSettings
+  read_fe_settings(const ParameterReader &reader);
+} // namespace wearlink::fe

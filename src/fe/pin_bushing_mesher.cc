@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "fe/pin_bushing_mesher.h"
+
+#include "base/atomic_file.h"
+#include "base/effect_ledger.h"
+#include "base/exceptions.h"
+#include "fe/boundary_ids.h"
+
+#include <gmsh.h>
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace wearlink::fe
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    std::string
+    number(double v)
+    {
+      std::ostringstream os;
+      os.precision(6);
+      os << v;
+      return os.str();
+    }
+
+    /**
+     * A gmsh session: initialize on construction, finalize on destruction (also when
+     * an exception leaves the mesher), so that the next session — or deal.II's
+     * GridIn::read_msh, which opens its own — starts clean.
+     */
+    class GmshSession
+    {
+    public:
+      GmshSession()
+      {
+        gmsh::initialize(0, nullptr, false);
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.Verbosity", 1);
+        EffectLedger::instance().add_resource("gmsh sessions");
+      }
+      ~GmshSession()
+      {
+        gmsh::finalize();
+      }
+      GmshSession(const GmshSession &) = delete;
+      GmshSession &
+      operator=(const GmshSession &) = delete;
+    };
+
+    /** Arc length of the polar curve r(ψ) between samples i0 and i1 (i1 may wrap). */
+    double
+    arc_length(const Profile &p, unsigned int i0, unsigned int i1)
+    {
+      const unsigned int n = p.n_points();
+      double             s = 0;
+      for (unsigned int i = i0; i < i1; ++i)
+        {
+          const double a0 = p.angle(i % n), r0 = p[i % n];
+          const double a1 = a0 + 2 * pi / n, r1 = p[(i + 1) % n];
+          const double dx = r1 * std::cos(a1) - r0 * std::cos(a0);
+          const double dy = r1 * std::sin(a1) - r0 * std::sin(a0);
+          s += std::sqrt(dx * dx + dy * dy);
+        }
+      return s;
+    }
+
+    /**
+     * The closed surface curve of @p profile as four splines (quarter turns), each with
+     * a uniform transfinite node distribution of spacing ≈ @p h. Returns the curve tags
+     * in counter-clockwise order; @p n_nodes receives the number of distinct nodes.
+     */
+    std::vector<int>
+    add_profile_curve(const Profile &profile, double h, unsigned long &n_nodes)
+    {
+      const unsigned int n = profile.n_points();
+      std::vector<int>   points(n);
+      for (unsigned int k = 0; k < n; ++k)
+        points[k] = gmsh::model::geo::addPoint(profile[k] * std::cos(profile.angle(k)),
+                                               profile[k] * std::sin(profile.angle(k)),
+                                               0,
+                                               h);
+      std::vector<int> curves;
+      n_nodes = 0;
+      for (unsigned int q = 0; q < 4; ++q)
+        {
+          const unsigned int i0 = (q * n) / 4;
+          const unsigned int i1 = ((q + 1) * n) / 4;
+          std::vector<int>   piece;
+          for (unsigned int i = i0; i <= i1; ++i)
+            piece.push_back(points[i % n]);
+          const int c = gmsh::model::geo::addSpline(piece);
+          const int segments =
+            std::max(2, static_cast<int>(std::lround(arc_length(profile, i0, i1) / h)));
+          gmsh::model::geo::mesh::setTransfiniteCurve(c, segments + 1);
+          n_nodes += segments;
+          curves.push_back(c);
+        }
+      return curves;
+    }
+
+    /** A circle of radius @p r about the origin as four arcs (counter-clockwise). */
+    std::vector<int>
+    add_circle(double r, double h)
+    {
+      const int        centre = gmsh::model::geo::addPoint(0, 0, 0, h);
+      std::vector<int> p;
+      for (unsigned int q = 0; q < 4; ++q)
+        p.push_back(gmsh::model::geo::addPoint(r * std::cos(q * pi / 2), r * std::sin(q * pi / 2), 0, h));
+      std::vector<int> arcs;
+      for (unsigned int q = 0; q < 4; ++q)
+        arcs.push_back(gmsh::model::geo::addCircleArc(p[q], centre, p[(q + 1) % 4]));
+      return arcs;
+    }
+
+    void
+    name_group(int dim, const std::vector<int> &tags, const std::string &name)
+    {
+      const int g = gmsh::model::addPhysicalGroup(dim, tags);
+      gmsh::model::setPhysicalName(dim, g, name);
+    }
+  } // namespace
+
+
+  void
+  check_pin_bushing_geometry(const Profile &bore, const Profile &pin, const MeshSpecification &spec)
+  {
+    bore.check("bore profile");
+    pin.check("pin profile");
+    const auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+    if (!positive(spec.surface_element_size) || !positive(spec.max_element_size) ||
+        !positive(spec.size_growth))
+      throw InputError("The FE mesh sizes must be finite and > 0 (surface element size " +
+                       number(spec.surface_element_size) + " m, maximum element size " +
+                       number(spec.max_element_size) + " m, size growth " +
+                       number(spec.size_growth) + ").");
+    if (!(pin.max_radius() < bore.min_radius()))
+      throw InputError("The pin is not inside the bore: the largest pin radius (" +
+                       number(pin.max_radius()) + " m) must be smaller than the smallest bore "
+                       "radius (" + number(bore.min_radius()) +
+                       " m) so that the pin fits at any relative rotation. Check the radii "
+                       "(bore radius > pin radius) and the profile files.");
+    if (!(positive(spec.core_radius) && spec.core_radius < pin.min_radius()))
+      throw InputError("The rigid core of the pin (radius " + number(spec.core_radius) +
+                       " m) must have a positive radius smaller than the smallest pin radius (" +
+                       number(pin.min_radius()) + " m).");
+    if (!(positive(spec.outer_radius) && spec.outer_radius > bore.max_radius()))
+      throw InputError("The bushing outer radius (" + number(spec.outer_radius) +
+                       " m) must be larger than the largest bore radius (" +
+                       number(bore.max_radius()) + " m).");
+  }
+
+
+  MeshStatistics
+  write_pin_bushing_mesh(const Profile &bore,
+                         const Profile &pin,
+                         const MeshSpecification &spec,
+                         const std::string &msh_path)
+  {
+    check_pin_bushing_geometry(bore, pin, spec);
+    const double h = spec.surface_element_size;
+    const double H = spec.max_element_size;
+
+    GmshSession session;
+    gmsh::model::add("pin_bushing");
+    MeshStatistics stats;
+
+    // Pin annulus: surface (outer) loop and rigid-core hole.
+    const auto pin_curves  = add_profile_curve(pin, h, stats.n_pin_surface_nodes);
+    const auto core_curves = add_circle(spec.core_radius, H);
+    const int  pin_loop    = gmsh::model::geo::addCurveLoop(pin_curves);
+    const int  core_loop   = gmsh::model::geo::addCurveLoop(core_curves);
+    const int  pin_area    = gmsh::model::geo::addPlaneSurface({pin_loop, core_loop});
+
+    // Bushing ring: fixed outer circle and the bore as its hole.
+    const auto bore_curves  = add_profile_curve(bore, h, stats.n_bore_surface_nodes);
+    const auto outer_curves = add_circle(spec.outer_radius, H);
+    const int  outer_loop   = gmsh::model::geo::addCurveLoop(outer_curves);
+    const int  bore_loop    = gmsh::model::geo::addCurveLoop(bore_curves);
+    const int  ring_area    = gmsh::model::geo::addPlaneSurface({outer_loop, bore_loop});
+    gmsh::model::geo::synchronize();
+
+    name_group(2, {pin_area}, "MaterialID:" + std::to_string(material_ids::pin));
+    name_group(2, {ring_area}, "MaterialID:" + std::to_string(material_ids::bushing));
+    name_group(1, core_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_core));
+    name_group(1, pin_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_surface));
+    name_group(1, bore_curves, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
+    name_group(1, outer_curves, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
+
+    // Element size: h at the contact surfaces, growing linearly with the distance d
+    // from them, h(d) = min(h + growth d, H).
+    std::vector<double> surface_curves;
+    for (const int c : pin_curves)
+      surface_curves.push_back(c);
+    for (const int c : bore_curves)
+      surface_curves.push_back(c);
+    const double samples = std::max<double>(stats.n_pin_surface_nodes, stats.n_bore_surface_nodes) / 4 + 10;
+    const int distance = gmsh::model::mesh::field::add("Distance");
+    gmsh::model::mesh::field::setNumbers(distance, "CurvesList", surface_curves);
+    gmsh::model::mesh::field::setNumber(distance, "NumPointsPerCurve", samples);
+    const int threshold = gmsh::model::mesh::field::add("Threshold");
+    gmsh::model::mesh::field::setNumber(threshold, "IField", distance);
+    gmsh::model::mesh::field::setNumber(threshold, "LcMin", h);
+    gmsh::model::mesh::field::setNumber(threshold, "LcMax", H);
+    gmsh::model::mesh::field::setNumber(threshold, "DistMin", 0);
+    gmsh::model::mesh::field::setNumber(threshold, "DistMax", std::max((H - h) / spec.size_growth, h));
+    gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
+
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::option::setNumber("Mesh.Algorithm", 6); // Frontal-Delaunay (algorithm 8 crashes in gmsh 4.8 with a background field)
+    gmsh::option::setNumber("Mesh.RecombineAll", 1);
+    gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::model::mesh::generate(2);
+
+    // deal.II needs quadrilaterals only: refuse a mixed mesh rather than pass it on.
+    std::vector<int>                      types;
+    std::vector<std::vector<std::size_t>> element_tags, node_tags;
+    gmsh::model::mesh::getElements(types, element_tags, node_tags, 2);
+    for (std::size_t t = 0; t < types.size(); ++t)
+      {
+        if (types[t] == 3)
+          stats.n_quadrilaterals += element_tags[t].size();
+        else if (!element_tags[t].empty())
+          throw NumericalError("gmsh left " + std::to_string(element_tags[t].size()) +
+                               " non-quadrilateral elements (type " + std::to_string(types[t]) +
+                               ") in the pin–bushing mesh; change 'Surface element size' or "
+                               "'Size growth' slightly.");
+      }
+    std::vector<std::size_t> all_nodes;
+    std::vector<double>      coords, params;
+    gmsh::model::mesh::getNodes(all_nodes, coords, params, -1, -1, false, false);
+    stats.n_nodes = all_nodes.size();
+
+    const std::string tmp = temporary_name_for(msh_path);
+    gmsh::write(tmp);
+    commit_external_file(tmp, msh_path);
+    return stats;
+  }
+} // namespace wearlink::fe

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Geometry and mesh of one shaft–bushing pair with the gmsh C++ API.
+//
+// From the two discrete profiles (bore R1*(ψ) in the bushing frame, pin R2*(ψ) in the
+// pin frame) this builds, each body in its own frame and centred at its joint centre:
+//   - the pin annulus between a rigid core circle (radius r_core) and the pin surface;
+//   - the bushing ring between the bore and a fixed outer circle (radius r_out).
+// At zero eccentricity and zero relative rotation the two bodies do not overlap (the pin
+// must lie inside the bore), so one mesh holds both; the eccentricity and relative angle
+// of a load state enter only through the contact kinematics (non-matching meshes).
+//
+// The contact surfaces are splines through the profile samples, each split into four
+// quarter arcs with a uniform (transfinite) node spacing equal to the surface element
+// size, so that a round pair gets a mirror-symmetric surface discretization. Away from
+// the surfaces the size grows linearly with the distance (gmsh Distance + Threshold
+// fields). Quadrilaterals (Frontal-Delaunay for quads + Blossom recombination) for
+// deal.II; physical groups are named "MaterialID:n" / "BoundaryID:n" with the ids of
+// fe/boundary_ids.h, which GridIn::read_msh understands.
+#pragma once
+
+#include "base/profile.h"
+
+#include <string>
+
+namespace wearlink::fe
+{
+  /** What the mesher needs besides the two profiles (all lengths in m). */
+  struct MeshSpecification
+  {
+    double core_radius          = 0; ///< rigid core of the pin
+    double outer_radius         = 0; ///< fixed outer edge of the bushing
+    double surface_element_size = 0; ///< along both contact surfaces
+    double max_element_size     = 0; ///< far from the surfaces
+    double size_growth          = 0; ///< dh/dd away from the surfaces [-]
+  };
+
+  /** Counts of the generated mesh. */
+  struct MeshStatistics
+  {
+    unsigned long n_nodes         = 0;
+    unsigned long n_quadrilaterals = 0;
+    unsigned long n_pin_surface_nodes = 0;
+    unsigned long n_bore_surface_nodes = 0;
+  };
+
+  /**
+   * Check that the two profiles and the specification describe a valid pair: every
+   * size positive and finite, the pin strictly inside the bore for any relative
+   * rotation (max R2* < min R1*), the core inside the pin, the outer edge outside the
+   * bore. An InputError says what is wrong and how to fix it.
+   */
+  void
+  check_pin_bushing_geometry(const Profile &bore, const Profile &pin, const MeshSpecification &spec);
+
+  /**
+   * Mesh the pair and write it as a gmsh .msh file to @p msh_path (atomically). Each
+   * call is one gmsh session (counted in the EffectLedger as "gmsh sessions").
+   */
+  MeshStatistics
+  write_pin_bushing_mesh(const Profile &bore,
+                         const Profile &pin,
+                         const MeshSpecification &spec,
+                         const std::string &msh_path);
+} // namespace wearlink::fe

@@ -1,0 +1,360 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "fe/pin_bushing_model.h"
+
+#include "base/effect_ledger.h"
+#include "base/exceptions.h"
+#include "fe/boundary_compliance.h"
+#include "fe/contact_solver.h"
+#include "fe/elasticity_problem.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+namespace wearlink::fe
+{
+  using namespace dealii;
+
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    using Clock = std::chrono::steady_clock;
+    double
+    seconds_since(Clock::time_point start)
+    {
+      return std::chrono::duration<double>(Clock::now() - start).count();
+    }
+
+    Tensor<1, 2>
+    rotate(const Tensor<1, 2> &v, double angle)
+    {
+      const double c = std::cos(angle), s = std::sin(angle);
+      Tensor<1, 2> r;
+      r[0] = c * v[0] - s * v[1];
+      r[1] = s * v[0] + c * v[1];
+      return r;
+    }
+
+    Tensor<1, 2>
+    tensor(const std::array<double, 2> &a)
+    {
+      Tensor<1, 2> t;
+      t[0] = a[0];
+      t[1] = a[1];
+      return t;
+    }
+
+    /** Wrap an angle to (−π, π]. */
+    double
+    wrap(double a)
+    {
+      return a - 2 * pi * std::ceil((a - pi) / (2 * pi));
+    }
+
+    /**
+     * One edge of the contact zone along the coordinate @p x (ordered candidates):
+     * the pressure of a frictionless contact of smooth profiles vanishes like
+     * √(distance to the edge), so p² is linear there and is extrapolated to zero from
+     * the two outermost active candidates, clamped between the last active and the
+     * first inactive candidate.
+     */
+    double
+    contact_edge(double x_last, double p_last, double x_inner, double p_inner, double x_outside)
+    {
+      const double p2_last = p_last * p_last, p2_inner = p_inner * p_inner;
+      double       edge    = 0.5 * (x_last + x_outside);
+      if (p2_inner > p2_last)
+        edge = x_last + p2_last * (x_last - x_inner) / (p2_inner - p2_last);
+      const double lo = std::min(x_last, x_outside), hi = std::max(x_last, x_outside);
+      return std::clamp(edge, lo, hi);
+    }
+  } // namespace
+
+
+  class PinBushingModel::Impl
+  {
+  public:
+    Impl(const contact::JointGeometry &geometry, const FeSettings &settings, const std::string &msh_path)
+      : geometry(geometry)
+      , settings(settings)
+    {
+      settings.check("the FE model settings");
+      for (const auto *m : {&geometry.bushing, &geometry.pin_material})
+        if (!(std::isfinite(m->youngs_modulus) && m->youngs_modulus > 0 &&
+              std::isfinite(m->poisson_ratio) && m->poisson_ratio > -1 && m->poisson_ratio < 0.5))
+          throw InputError("The FE model needs Young's moduli > 0 Pa and Poisson ratios in "
+                           "(−1, 0.5) for both bodies.");
+      if (!(std::isfinite(geometry.axial_length) && geometry.axial_length > 0))
+        throw InputError("The axial length of the joint must be > 0 m.");
+
+      MeshSpecification spec;
+      spec.core_radius          = settings.core_radius_fraction * geometry.pin.min_radius();
+      spec.outer_radius         = settings.outer_radius > 0 ? settings.outer_radius :
+                                                              settings.outer_radius_ratio * geometry.bore.mean_radius();
+      spec.surface_element_size = settings.surface_element_size;
+      spec.max_element_size     = settings.max_element_size;
+      spec.size_growth          = settings.size_growth;
+      check_pin_bushing_geometry(geometry.bore, geometry.pin, spec);
+
+      auto start       = Clock::now();
+      stats.mesh       = write_pin_bushing_mesh(geometry.bore, geometry.pin, spec, msh_path);
+      stats.mesh_time  = seconds_since(start);
+      start            = Clock::now();
+      problem          = std::make_unique<ElasticityProblem>(msh_path,
+                                                    settings.degree,
+                                                    settings.refinements,
+                                                    geometry.pin_material,
+                                                    geometry.bushing,
+                                                    geometry.pin,
+                                                    geometry.bore);
+      problem->run();
+      stats.assembly_time     = seconds_since(start);
+      stats.n_dofs            = problem->dof_handler.n_dofs();
+      stats.n_pin_candidates  = problem->pin_nodes.size();
+      stats.n_bore_candidates = problem->bore_nodes.size();
+      reference = std::make_unique<ReferenceContactSolver>(*problem, settings.max_active_set_iterations);
+    }
+
+    void
+    prepare_condensed()
+    {
+      if (compliance)
+        return;
+      const auto start         = Clock::now();
+      compliance               = std::make_unique<BoundaryCompliance>(*problem);
+      stats.factorization_time = seconds_since(start);
+      condensed = std::make_unique<CondensedContactSolver>(*problem, *compliance, settings.max_active_set_iterations);
+    }
+
+    // Force control: the pin starts at the rigid-contact position along the load
+    // direction (radial gap of the two profiles there) and the solver finds the
+    // elastic translation U. The gap is linearized in U; if U is large enough for the
+    // neglected term |U|²/(2R) to matter (worn profiles guide the pin sideways), the
+    // kinematics are recomputed about e + U and the state solved again.
+    ContactResult
+    solve(const LoadCase &load, SolverKind kind, const std::string &vtu_path)
+    {
+      const auto start = Clock::now();
+      if (kind == SolverKind::condensed)
+        prepare_condensed();
+      const double       L              = geometry.axial_length;
+      const double       relative_angle = load.pin_angle - load.bushing_angle;
+      const bool         force_control  = load.control == Control::force;
+      Tensor<1, 2>       P, e;
+      if (force_control)
+        {
+          const Tensor<1, 2> F = rotate(tensor(load.load), -load.bushing_angle);
+          if (!(F.norm() > 0) || !std::isfinite(F.norm()))
+            throw InputError("A force-controlled load state needs a finite, non-zero load.");
+          P                 = F / L;
+          const double phi  = std::atan2(F[1], F[0]);
+          const double s    = geometry.bore.radius(phi) - geometry.pin.radius(phi - relative_angle);
+          e                 = s * F / F.norm();
+        }
+      else
+        e = rotate(tensor(load.eccentricity), -load.bushing_angle);
+
+      ContactKinematics kin;
+      ContactSolution   sol;
+      unsigned int      iterations = 0;
+      const double      R          = geometry.pin.min_radius();
+      for (unsigned int update = 0; update < 6; ++update)
+        {
+          kin = compute_kinematics(*problem, geometry.bore, relative_angle, e);
+          sol = kind == SolverKind::condensed ? condensed->solve(kin, force_control, P) :
+                                                reference->solve(kin, force_control, P);
+          iterations += sol.iterations;
+          const double U = sol.pin_translation.norm();
+          if (!force_control || U < 2e-4 * R)
+            break;
+          e += sol.pin_translation;
+        }
+      ++n_solves;
+
+      ContactResult r;
+      r.iterations = iterations;
+      r.n_active   = sol.n_active;
+      const auto &nodes = problem->pin_nodes;
+      const unsigned int m = nodes.size();
+      r.pin_angle.resize(m);
+      r.bore_angle = kin.bore_angle;
+      r.pressure.resize(m);
+      r.force.resize(m);
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          r.pin_angle[i] = nodes[i].angle;
+          r.pressure[i]  = sol.lambda[i] / nodes[i].weight;
+          r.force[i]     = sol.lambda[i] * L;
+          r.peak_pressure = std::max(r.peak_pressure, r.pressure[i]);
+        }
+      const Tensor<1, 2> resultant = rotate(sol.resultant * L, load.bushing_angle);
+      const Tensor<1, 2> ecc       = rotate(e + sol.pin_translation, load.bushing_angle);
+      r.resultant        = {resultant[0], resultant[1]};
+      r.pin_displacement = {ecc[0], ecc[1]};
+      if (force_control)
+        r.equilibrium_relative_residual = (resultant - tensor(load.load)).norm() / tensor(load.load).norm();
+      contact_extent(kin, sol, r);
+
+      if (!vtu_path.empty())
+        {
+          const Vector<double> u =
+            kind == SolverKind::reference ? sol.displacement : condensed->displacement_field(kin, sol);
+          problem->output_results(u, vtu_path);
+        }
+      r.solve_time = seconds_since(start);
+      return r;
+    }
+
+    // Half-angle (seen from the bore centre) and half-width (arc length along the pin)
+    // of the contact zone, measured about the direction of the resultant, with the
+    // edges extrapolated as in contact_edge().
+    void
+    contact_extent(const ContactKinematics &kin, const ContactSolution &sol, ContactResult &r) const
+    {
+      if (sol.resultant.norm() == 0)
+        return;
+      const double       direction = std::atan2(sol.resultant[1], sol.resultant[0]);
+      const unsigned int m         = kin.g0.size();
+      std::vector<double> beta(m), s(m);
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          beta[i] = wrap(kin.bore_angle[i] - direction);
+          const double psi = wrap(problem->pin_nodes[i].angle - (direction - kin.relative_angle));
+          s[i]             = psi * geometry.pin.radius(problem->pin_nodes[i].angle);
+        }
+      std::vector<unsigned int> order(m);
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) { return beta[a] < beta[b]; });
+      int first = -1, last = -1;
+      for (unsigned int k = 0; k < m; ++k)
+        if (sol.lambda[order[k]] > 0)
+          {
+            if (first < 0)
+              first = k;
+            last = k;
+          }
+      if (first < 0)
+        return;
+      auto edge = [&](int k_last, int k_inner, int k_out, const std::vector<double> &x) {
+        const auto at = [&](int k) { return order[(k + m) % m]; };
+        return contact_edge(x[at(k_last)], r.pressure[at(k_last)],
+                            x[at(k_inner)], r.pressure[at(k_inner)], x[at(k_out)]);
+      };
+      const bool single = first == last;
+      const int  inner_right = single ? last : last - 1;
+      const int  inner_left  = single ? first : first + 1;
+      const double beta_r = edge(last, inner_right, last + 1, beta);
+      const double beta_l = edge(first, inner_left, first - 1, beta);
+      const double s_r    = edge(last, inner_right, last + 1, s);
+      const double s_l    = edge(first, inner_left, first - 1, s);
+      r.half_angle        = 0.5 * (beta_r - beta_l);
+      r.half_width        = 0.5 * (s_r - s_l);
+    }
+
+    // Tributary arcs of the nodal forces, collected on the discrete areas of each
+    // profile.
+    contact::SurfacePressure
+    surface_pressure(const ContactResult &r) const
+    {
+      contact::SurfacePressure out;
+      const unsigned int       m = r.force.size();
+      auto collect = [&](const std::vector<double> &angle, const Profile &profile) {
+        const unsigned int  n  = profile.n_points();
+        const double        da = 2 * pi / n;
+        std::vector<double> p(n, 0.0);
+        for (unsigned int i = 0; i < m; ++i)
+          if (r.force[i] > 0)
+            {
+              const double a  = angle[i];
+              const double lo = a - 0.5 * std::abs(wrap(a - angle[(i + m - 1) % m]));
+              const double hi = a + 0.5 * std::abs(wrap(angle[(i + 1) % m] - a));
+              if (!(hi > lo))
+                continue;
+              // Areas k whose interval [ψ_k − da/2, ψ_k + da/2] may overlap [lo, hi].
+              const long k0 = static_cast<long>(std::floor((lo + 0.5 * da) / da)) - 1;
+              const long k1 = static_cast<long>(std::floor((hi + 0.5 * da) / da)) + 1;
+              for (long k = k0; k <= k1; ++k)
+                {
+                  const double a0 = k * da - 0.5 * da, a1 = a0 + da;
+                  const double overlap = std::min(hi, a1) - std::max(lo, a0);
+                  if (overlap > 0)
+                    p[((k % long(n)) + n) % n] += r.force[i] * overlap / (hi - lo);
+                }
+            }
+        for (unsigned int k = 0; k < n; ++k)
+          p[k] /= geometry.axial_length * profile[k] * da;
+        return p;
+      };
+      out.pin  = collect(r.pin_angle, geometry.pin);
+      out.bore = collect(r.bore_angle, geometry.bore);
+      return out;
+    }
+
+    const contact::JointGeometry             geometry;
+    const FeSettings                         settings;
+    SetupStatistics                          stats;
+    std::unique_ptr<ElasticityProblem>       problem;
+    std::unique_ptr<BoundaryCompliance>      compliance;
+    std::unique_ptr<CondensedContactSolver>  condensed;
+    std::unique_ptr<ReferenceContactSolver>  reference;
+    unsigned long                            n_solves = 0;
+  };
+
+
+  PinBushingModel::PinBushingModel(const contact::JointGeometry &geometry,
+                                   const FeSettings &            settings,
+                                   const std::string &           msh_path)
+    : impl(std::make_unique<Impl>(geometry, settings, msh_path))
+  {}
+
+  PinBushingModel::~PinBushingModel()
+  {
+    if (impl && impl->n_solves > 0)
+      EffectLedger::instance().add_calls("fe solves", impl->n_solves);
+  }
+
+  ContactResult
+  PinBushingModel::solve(const LoadCase &load, SolverKind solver, const std::string &vtu_path)
+  {
+    return impl->solve(load, solver, vtu_path);
+  }
+
+  void
+  PinBushingModel::prepare_condensed()
+  {
+    impl->prepare_condensed();
+  }
+
+  void
+  PinBushingModel::precompute_compliance()
+  {
+    impl->prepare_condensed();
+    impl->compliance->precompute_all();
+  }
+
+  double
+  PinBushingModel::compliance_time() const
+  {
+    return impl->compliance ? impl->compliance->column_time() : 0.0;
+  }
+
+  unsigned long
+  PinBushingModel::n_compliance_solves() const
+  {
+    return impl->compliance ? impl->compliance->n_back_substitutions() : 0;
+  }
+
+  const SetupStatistics &
+  PinBushingModel::statistics() const
+  {
+    return impl->stats;
+  }
+
+  contact::SurfacePressure
+  PinBushingModel::surface_pressure(const ContactResult &result) const
+  {
+    return impl->surface_pressure(result);
+  }
+} // namespace wearlink::fe
