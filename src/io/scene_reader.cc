@@ -648,7 +648,7 @@ namespace wearlink::io
     for (const auto &j : joints)
       {
         prm.enter_subsection("Joint " + j);
-        const bool clearance = prm.get("Model") == "clearance";
+        const bool clearance = prm.get("Model") == "clearance" && prm.get("Type") == "revolute";
         if (!clearance)
           inactive.push_back("Joint " + j + "/Clearance/");
         else

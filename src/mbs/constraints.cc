@@ -59,8 +59,8 @@ namespace wearlink::mbs
       evaluate(double, const StateView &s, ConstraintRows &out) const override
       {
         out.n          = 2;
-        const Vec2 a_i = body_i == ground ? s_i : rotate(s_i, s.angle(body_i));
-        const Vec2 a_j = rotate(s_j, s.angle(body_j));
+        const Vec2 a_i = s.to_global(body_i, s_i);
+        const Vec2 a_j = s.to_global(body_j, s_j);
         const Vec2 p_i = body_i == ground ? s_i : Vec2(s.position(body_i) + a_i);
         const Vec2 p_j = s.position(body_j) + a_j;
         const Vec2 phi = p_j - p_i - offset;
@@ -123,9 +123,9 @@ namespace wearlink::mbs
         const double th_i = s.angle(body_i);
         const double wi   = s.angular_velocity(body_i);
         const double wj   = s.angular_velocity(body_j);
-        const Vec2   a_i  = body_i == ground ? s_i : rotate(s_i, th_i);
-        const Vec2   a_j  = rotate(s_j, s.angle(body_j));
-        const Vec2   n    = body_i == ground ? normal_i : rotate(normal_i, th_i);
+        const Vec2   a_i  = s.to_global(body_i, s_i);
+        const Vec2   a_j  = s.to_global(body_j, s_j);
+        const Vec2   n    = s.to_global(body_i, normal_i);
         const Vec2   p_i  = body_i == ground ? s_i : Vec2(s.position(body_i) + a_i);
         const Vec2   p_j  = s.position(body_j) + a_j;
         const Vec2   d    = p_j - p_i;

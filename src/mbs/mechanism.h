@@ -18,7 +18,6 @@
 #include "mbs/force_element.h"
 #include "mbs/types.h"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include <memory>
@@ -182,9 +181,19 @@ namespace wearlink::mbs
 
     // Workspace (no allocation in accelerations()).
     std::vector<ConstraintRows> rows;
-    Eigen::MatrixXd             schur;
-    Eigen::LLT<Eigen::MatrixXd> schur_factor;
+    /**
+     * S = Φq M⁻¹ Φqᵀ in a permuted order (reverse Cuthill–McKee on the coupling graph of
+     * the constraint rows), lower triangle, row-major m × m, factored in place. Only the
+     * envelope (columns first_column[i]..i of row i) is ever non-zero, so assembly,
+     * factorization and solves skip everything outside it.
+     */
+    std::vector<double>         schur;
+    std::vector<unsigned int>   permuted;     ///< row r of Φ sits at position permuted[r] in S
+    std::vector<unsigned int>   first_column; ///< envelope start per permuted row
     Eigen::VectorXd             rhs, lambda, forces;
+    std::vector<double>         trig; ///< cos θ, sin θ per body
+    std::vector<double>         work; ///< permuted right-hand side / solution
+
     long                        evaluations = 0;
   };
 } // namespace wearlink::mbs

@@ -44,10 +44,27 @@ namespace wearlink::mbs
   class StateView
   {
   public:
-    StateView(const double *q, const double *v)
+    /**
+     * @param trig optional (cos θ_b, sin θ_b) per body, precomputed by the caller so that
+     * the many rotations of one right-hand side share one sincos per body.
+     */
+    StateView(const double *q, const double *v, const double *trig = nullptr)
       : q(q)
       , v(v)
+      , trig(trig)
     {}
+
+    /** A(θ_b) s: body-frame vector @p s of body @p b in global axes. */
+    Vec2
+    to_global(int b, const Vec2 &s) const
+    {
+      if (b == ground)
+        return s;
+      if (trig == nullptr)
+        return rotate(s, q[3 * b + 2]);
+      const double c = trig[2 * b], si = trig[2 * b + 1];
+      return {c * s.x() - si * s.y(), si * s.x() + c * s.y()};
+    }
 
     Vec2
     position(int b) const
@@ -74,18 +91,19 @@ namespace wearlink::mbs
     Vec2
     point(int b, const Vec2 &s) const
     {
-      return b == ground ? s : Vec2(position(b) + rotate(s, angle(b)));
+      return b == ground ? s : Vec2(position(b) + to_global(b, s));
     }
     /** Global velocity of the body-fixed point @p s of body @p b. */
     Vec2
     point_velocity(int b, const Vec2 &s) const
     {
       return b == ground ? Vec2(0, 0) :
-                           Vec2(velocity(b) + angular_velocity(b) * perp(rotate(s, angle(b))));
+                           Vec2(velocity(b) + angular_velocity(b) * perp(to_global(b, s)));
     }
 
   private:
     const double *q;
     const double *v;
+    const double *trig;
   };
 } // namespace wearlink::mbs
