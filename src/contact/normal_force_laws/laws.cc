@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace wearlink::contact
 {
@@ -32,11 +33,14 @@ namespace wearlink::contact
                        "none");
       declare(prm,
               "Minimum impact velocity",
-              "1e-2",
+              "1e-4",
               dealii::Patterns::Double(1e-12),
               "Guard for contacts that begin with almost no impact velocity (continuous "
-              "contact): below this value the damping term uses it in place of the "
-              "impact velocity δ̇⁻, which caps the damping factor.",
+              "contact): the hysteresis term uses max(δ̇⁻, this value, |δ̇|) in place of "
+              "the impact velocity δ̇⁻, so its factor 3(1 − c_e²)/(4 δ̇⁻) stays bounded "
+              "and the damping force never exceeds 3(1 − c_e²)/4 of the elastic one once "
+              "a contact is loaded faster than it began. Genuine impacts (|δ̇| ≤ δ̇⁻) are "
+              "unaffected.",
               "m/s");
     }
 
@@ -89,7 +93,10 @@ namespace wearlink::contact
       evaluate(const NormalContactInput &in, NormalContactOutput &out) const override
       {
         elastic(in, n, out);
-        const double v_impact = std::max(in.impact_velocity, min_impact_velocity);
+        // Reference velocity of the hysteresis term: the captured impact velocity,
+        // but never below the guard nor below the current |δ̇| (see the header).
+        const double v_impact =
+          std::max({in.impact_velocity, min_impact_velocity, std::abs(in.penetration_rate)});
         out.force = std::max(0.0, out.elastic_force * (1 + factor * in.penetration_rate / v_impact));
       }
       double
