@@ -1,0 +1,666 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "analysis/lyapunov.h"
+
+#include "analysis/kd_tree.h"
+#include "base/exceptions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace wearlink::analysis
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    /** Fewest neighbour candidates a method needs beyond the Theiler window [-]. */
+    constexpr std::size_t min_vectors_beyond_window = 32;
+
+    /** Delay vector y_i of @p series into @p y (m coordinates). */
+    void
+    delay_vector(const std::vector<double> &series,
+                 const Embedding &          emb,
+                 const std::size_t          i,
+                 std::vector<double> &      y)
+    {
+      y.resize(emb.dimension);
+      for (unsigned int d = 0; d < emb.dimension; ++d)
+        y[d] = series[i + d * emb.delay];
+    }
+
+    /** |y_i - y_j| without forming the vectors [units of the series]. */
+    double
+    distance(const std::vector<double> &series,
+             const Embedding &          emb,
+             const std::size_t          i,
+             const std::size_t          j)
+    {
+      double s = 0.0;
+      for (unsigned int d = 0; d < emb.dimension; ++d)
+        {
+          const double diff = series[i + d * emb.delay] - series[j + d * emb.delay];
+          s += diff * diff;
+        }
+      return std::sqrt(s);
+    }
+
+    void
+    check_length(const std::string &method,
+                 const std::size_t  n_samples,
+                 const Embedding &  emb,
+                 const std::size_t  reserved,
+                 const std::size_t  theiler_window)
+    {
+      const std::size_t needed = emb.window() + reserved + 2 * theiler_window + min_vectors_beyond_window;
+      if (n_samples < needed)
+        throw InputError("The " + method + " method with embedding dimension " +
+                         std::to_string(emb.dimension) + ", delay " + std::to_string(emb.delay) +
+                         " and Theiler window " + std::to_string(theiler_window) +
+                         " samples needs at least " + std::to_string(needed) +
+                         " samples; the series has " + std::to_string(n_samples) +
+                         ". Give a longer series or a smaller --embedding/--delay.");
+    }
+
+    double
+    series_extent(const std::vector<double> &series)
+    {
+      const auto [lo, hi] = std::minmax_element(series.begin(), series.end());
+      return *hi - *lo;
+    }
+  } // namespace
+
+  std::string
+  method_name(const LyapunovMethod method)
+  {
+    switch (method)
+      {
+        case LyapunovMethod::wolf:
+          return "wolf";
+        case LyapunovMethod::rosenstein:
+          return "rosenstein";
+      }
+    return "unknown";
+  }
+
+  ResolvedEmbedding
+  resolve_embedding(const std::vector<double> &series, const EmbeddingSettings &settings)
+  {
+    ResolvedEmbedding out;
+    if (settings.delay)
+      {
+        if (*settings.delay < 1)
+          throw InputError("The delay must be at least 1 sample (given: 0).");
+        out.embedding.delay = *settings.delay;
+      }
+    else
+      {
+        out.delay_choice    = choose_delay(series, settings.mutual_information);
+        out.embedding.delay = out.delay_choice->delay;
+      }
+    if (settings.dimension)
+      {
+        if (*settings.dimension < 1 || *settings.dimension > 64)
+          throw InputError("The embedding dimension must be between 1 and 64 (given: " +
+                           std::to_string(*settings.dimension) + ").");
+        out.embedding.dimension = *settings.dimension;
+      }
+    else
+      {
+        FalseNearestNeighbourOptions fnn = settings.false_nearest_neighbours;
+        if (!fnn.theiler_window && settings.theiler_window)
+          fnn.theiler_window = settings.theiler_window;
+        out.dimension_choice    = choose_dimension(series, out.embedding.delay, fnn);
+        out.embedding.dimension = out.dimension_choice->dimension;
+      }
+    out.theiler_window = settings.theiler_window.value_or(default_theiler_window(out.embedding));
+    return out;
+  }
+
+  // Wolf et al. 1985, fixed evolution time (their program FET1). The reference
+  // trajectory starts at the first delay vector; its neighbour is the nearest
+  // admissible point. Each segment evolves both for E samples and adds ln(d_E / d_0).
+  // The replacement search then follows FET1: among candidate points within the
+  // maximum scale (and beyond the minimum scale), take the one whose separation from
+  // the reference makes the smallest angle with the evolved separation; accept it if
+  // the angle is below max_angle; otherwise widen the scale (x2 .. x5), then double the
+  // angle limit; if still nothing qualifies, keep the evolved neighbour.
+  WolfResult
+  wolf_exponent(const std::vector<double> &series,
+                const Embedding &          emb,
+                const std::size_t          theiler_window,
+                const WolfOptions &        options)
+  {
+    WolfResult out;
+    const std::size_t E = options.evolution_steps.value_or(6 * emb.delay);
+    if (E < 1)
+      throw InputError("The Wolf evolution time must be at least 1 sample.");
+    check_length("Wolf", series.size(), emb, 2 * E, theiler_window);
+    const std::size_t M      = emb.n_vectors(series.size());
+    const std::size_t n_tree = M - E; // points that can be evolved for E samples
+    const KdTree      tree(series, emb.dimension, emb.delay, n_tree);
+    const double      extent = series_extent(series);
+    out.evolution_steps      = E;
+    out.min_scale            = options.min_scale * extent;
+    out.max_scale            = options.max_scale * extent;
+    constexpr unsigned int max_scale_multiplier = 5;
+
+    std::vector<double> y_ref, y_old;
+    NeighbourFilter     filter;
+    filter.theiler_window = theiler_window;
+    filter.min_distance   = out.min_scale;
+
+    std::size_t i = 0;
+    delay_vector(series, emb, i, y_ref);
+    filter.query_index = i;
+    Neighbour first    = tree.nearest(y_ref.data(), filter);
+    if (!first.found())
+      throw InputError("The Wolf method found no neighbour of the first point beyond the "
+                       "Theiler window; the series is too short or constant.");
+    std::size_t j = first.index;
+
+    double      sum_log = 0.0, sum_angle = 0.0;
+    std::size_t n_replaced = 0;
+    while (i + E < M && i < n_tree && j < n_tree)
+      {
+        const double d0 = distance(series, emb, i, j);
+        const double d1 = distance(series, emb, i + E, j + E);
+        if (d0 > 0.0 && d1 > 0.0)
+          {
+            sum_log += std::log(d1 / d0);
+            ++out.n_segments;
+            out.running_time.push_back(static_cast<double>(out.n_segments * E));
+            out.running_exponent.push_back(sum_log / (out.n_segments * E));
+          }
+        i += E;
+        if (i >= n_tree)
+          break;
+
+        // Replacement: orientation of the evolved separation, candidates near y_i.
+        delay_vector(series, emb, i, y_ref);
+        delay_vector(series, emb, j + E, y_old);
+        double v_norm = 0.0;
+        for (unsigned int d = 0; d < emb.dimension; ++d)
+          {
+            y_old[d] -= y_ref[d];
+            v_norm += y_old[d] * y_old[d];
+          }
+        v_norm = std::sqrt(v_norm);
+        filter.query_index  = i;
+        filter.max_distance = max_scale_multiplier * out.max_scale;
+        const std::vector<Neighbour> candidates =
+          tree.k_nearest(y_ref.data(), options.n_candidates, filter);
+        std::vector<double> angles(candidates.size());
+        for (std::size_t c = 0; c < candidates.size(); ++c)
+          {
+            double dot = 0.0;
+            for (unsigned int d = 0; d < emb.dimension; ++d)
+              dot += (series[candidates[c].index + d * emb.delay] - y_ref[d]) * y_old[d];
+            const double cosine = v_norm > 0.0 ? dot / (v_norm * candidates[c].distance) : 1.0;
+            angles[c]           = std::acos(std::clamp(cosine, -1.0, 1.0));
+          }
+        std::size_t chosen = candidates.size();
+        for (double angle_limit = options.max_angle; angle_limit < pi && chosen == candidates.size();
+             angle_limit *= 2.0)
+          for (unsigned int mult = 1; mult <= max_scale_multiplier && chosen == candidates.size(); ++mult)
+            {
+              double best = angle_limit;
+              for (std::size_t c = 0; c < candidates.size(); ++c)
+                if (candidates[c].distance < mult * out.max_scale && angles[c] <= best)
+                  {
+                    best   = angles[c];
+                    chosen = c;
+                  }
+            }
+        if (chosen < candidates.size())
+          {
+            j = candidates[chosen].index;
+            sum_angle += angles[chosen];
+            ++n_replaced;
+          }
+        else
+          {
+            ++out.n_kept_neighbours;
+            j = j + E;
+            if (j >= n_tree)
+              {
+                filter.max_distance = std::numeric_limits<double>::infinity();
+                const Neighbour any = tree.nearest(y_ref.data(), filter);
+                if (!any.found())
+                  break;
+                j = any.index;
+              }
+          }
+      }
+    if (out.n_segments == 0)
+      throw InputError("The Wolf method could not follow any neighbour pair (all separations "
+                       "were zero); the series may be constant or repeat exactly.");
+    out.exponent_per_sample    = sum_log / (out.n_segments * E);
+    out.mean_replacement_angle = n_replaced > 0 ? sum_angle / n_replaced : 0.0;
+    return out;
+  }
+
+  namespace
+  {
+    struct LineFit
+    {
+      double slope = 0.0, intercept = 0.0, rms = 0.0;
+    };
+
+    LineFit
+    fit_line(const std::vector<double> &y, const std::size_t a, const std::size_t b)
+    {
+      LineFit           f;
+      const std::size_t n = b - a + 1;
+      if (n < 2)
+        {
+          f.intercept = y[a];
+          return f;
+        }
+      double sx = 0, sy = 0, sxx = 0, sxy = 0;
+      for (std::size_t k = a; k <= b; ++k)
+        {
+          sx += k;
+          sy += y[k];
+          sxx += double(k) * k;
+          sxy += k * y[k];
+        }
+      const double den = n * sxx - sx * sx;
+      f.slope          = (n * sxy - sx * sy) / den;
+      f.intercept      = (sy - f.slope * sx) / n;
+      double ss        = 0.0;
+      for (std::size_t k = a; k <= b; ++k)
+        {
+          const double r = y[k] - (f.intercept + f.slope * k);
+          ss += r * r;
+        }
+      f.rms = std::sqrt(ss / n);
+      return f;
+    }
+  } // namespace
+
+  namespace
+  {
+    /** Centred moving average of @p y with half-width @p h (truncated at the ends). */
+    std::vector<double>
+    moving_average(const std::vector<double> &y, const std::size_t h)
+    {
+      std::vector<double> prefix(y.size() + 1, 0.0);
+      for (std::size_t k = 0; k < y.size(); ++k)
+        prefix[k + 1] = prefix[k] + y[k];
+      std::vector<double> out(y.size());
+      for (std::size_t k = 0; k < y.size(); ++k)
+        {
+          const std::size_t a = k > h ? k - h : 0;
+          const std::size_t b = std::min(y.size() - 1, k + h);
+          out[k]              = (prefix[b + 1] - prefix[a]) / (b - a + 1);
+        }
+      return out;
+    }
+
+    /** Smallest rise of <ln d(k)> that counts as exponential divergence [nats]. */
+    constexpr double min_divergence = 1.0;
+    /** Largest ratio of local slopes accepted inside the fitted (linear) region [-]. */
+    constexpr double max_slope_ratio = 1.2;
+    /**
+     * Mean sample-to-sample step of the delay vectors below this fraction of the
+     * attractor extent: the series resolves a continuous trajectory [-].
+     */
+    constexpr double max_flow_step = 0.1;
+
+    /**
+     * Rise of the smoothed curve from sample @p start to its later peak [nats]. The
+     * start skips the first samples, where the curve jumps up from its minimum at k = 0
+     * (the neighbour was chosen to be closest there), even for a periodic signal.
+     */
+    double
+    rise_after(const std::vector<double> &smoothed, const std::size_t start)
+    {
+      return *std::max_element(smoothed.begin() + start, smoothed.end()) - smoothed[start];
+    }
+
+    /** Index where rise_after() starts: two delays, at most a quarter of the curve. */
+    std::size_t
+    rise_start(const std::size_t n_curve, const std::size_t delay)
+    {
+      return std::min(2 * delay, (n_curve - 1) / 4);
+    }
+
+    /**
+     * True once the smoothed curve has levelled off: it rose by at least
+     * min_divergence and its second half stays within 10 % of that rise below its peak.
+     */
+    bool
+    has_saturated(const std::vector<double> &smoothed, const std::size_t delay)
+    {
+      const std::size_t start = rise_start(smoothed.size(), delay);
+      const double      rise  = rise_after(smoothed, start);
+      if (rise < min_divergence)
+        return false;
+      const double peak = *std::max_element(smoothed.begin() + start, smoothed.end());
+      const double low_second_half =
+        *std::min_element(smoothed.begin() + smoothed.size() / 2, smoothed.end());
+      return low_second_half >= peak - 0.1 * rise;
+    }
+
+    /**
+     * A reference point i and its neighbour on the trajectory through sample j: the point
+     * (1 - f) y_j + f y_{j+1}, 0 <= f < 1.
+     */
+    struct NeighbourPair
+    {
+      std::size_t i;
+      std::size_t j;
+      double      f;
+    };
+
+    /** |y_{i+k} - ((1 - f) y_{j+k} + f y_{j+k+1})| [units of the series]. */
+    double
+    pair_distance(const std::vector<double> &series,
+                  const Embedding &          emb,
+                  const NeighbourPair &      pair,
+                  const std::size_t          k)
+    {
+      if (pair.f == 0.0)
+        return distance(series, emb, pair.i + k, pair.j + k);
+      double s = 0.0;
+      for (unsigned int d = 0; d < emb.dimension; ++d)
+        {
+          const std::size_t o    = d * emb.delay;
+          const double      diff = series[pair.i + k + o] - (1.0 - pair.f) * series[pair.j + k + o] -
+                              pair.f * series[pair.j + k + 1 + o];
+          s += diff * diff;
+        }
+      return std::sqrt(s);
+    }
+
+    /**
+     * Move the neighbour y_j of @p y to the closest point of the sampled trajectory
+     * through it, on the segments y_{j-1}..y_j and y_j..y_{j+1} (linear interpolation in
+     * time). Returns the pair unchanged if no point of the segments is closer.
+     */
+    NeighbourPair
+    refine_along_trajectory(const std::vector<double> &series,
+                            const Embedding &          emb,
+                            const std::vector<double> &y,
+                            const std::size_t          i,
+                            const Neighbour &          nb)
+    {
+      NeighbourPair best{i, nb.index, 0.0};
+      double        best_sq = nb.distance * nb.distance;
+      for (std::size_t start = nb.index > 0 ? nb.index - 1 : 0; start <= nb.index; ++start)
+        {
+          double along = 0.0, length_sq = 0.0;
+          for (unsigned int d = 0; d < emb.dimension; ++d)
+            {
+              const std::size_t o       = d * emb.delay;
+              const double      segment = series[start + 1 + o] - series[start + o];
+              along += (y[d] - series[start + o]) * segment;
+              length_sq += segment * segment;
+            }
+          if (!(length_sq > 0.0))
+            continue;
+          const double f = std::clamp(along / length_sq, 0.0, 1.0);
+          if (f <= 0.0 || f >= 1.0)
+            continue; // an end point: the sample itself, already considered
+          double d_sq = 0.0;
+          for (unsigned int d = 0; d < emb.dimension; ++d)
+            {
+              const std::size_t o    = d * emb.delay;
+              const double      diff = y[d] - (1.0 - f) * series[start + o] - f * series[start + 1 + o];
+              d_sq += diff * diff;
+            }
+          if (d_sq > 0.0 && d_sq < best_sq)
+            {
+              best_sq = d_sq;
+              best    = {i, start, f};
+            }
+        }
+      return best;
+    }
+
+    /**
+     * True if consecutive delay vectors are, on average, closer than max_flow_step times
+     * the attractor extent: the samples resolve a continuous trajectory, so
+     * interpolating between them is meaningful (false for maps such as Hénon).
+     */
+    bool
+    resolves_trajectory(const std::vector<double> &series, const Embedding &emb, const std::size_t M)
+    {
+      const std::size_t stride = std::max<std::size_t>(1, M / 10000);
+      double            step = 0.0;
+      std::size_t       n    = 0;
+      for (std::size_t i = 0; i + 1 < M; i += stride, ++n)
+        step += distance(series, emb, i, i + 1);
+      const double extent = series_extent(series) * std::sqrt(static_cast<double>(emb.dimension));
+      return n > 0 && step / n < max_flow_step * extent;
+    }
+
+    struct FitRegion
+    {
+      std::size_t begin = 0, end = 0;
+      std::string rule;
+    };
+
+    /** The automatic fit region of RosensteinOptions (see the comment of rosenstein_exponent). */
+    FitRegion
+    choose_fit_region(const std::vector<double> &smoothed, const std::size_t delay)
+    {
+      FitRegion         region;
+      const std::size_t K     = smoothed.size() - 1;
+      const std::size_t start = rise_start(smoothed.size(), delay);
+      region.begin            = start;
+      region.end              = K;
+      if (rise_after(smoothed, start) < min_divergence)
+        {
+          region.rule = "no exponential divergence (the separation grows less than e-fold over the "
+                        "horizon): whole curve after 2 delays";
+          return region;
+        }
+      // Local slope of the smoothed curve over +-2 tau.
+      const std::size_t   h = 2 * delay;
+      std::vector<double> slope(K + 1);
+      for (std::size_t k = 0; k <= K; ++k)
+        {
+          const std::size_t lo = k > h ? k - h : 0, hi = std::min(K, k + h);
+          slope[k]             = (smoothed[hi] - smoothed[lo]) / (hi - lo);
+        }
+      double best_rise = 0.0;
+      for (std::size_t a = 0; a < K; ++a)
+        {
+          if (!(slope[a] > 0.0))
+            continue;
+          double lo = slope[a], hi = slope[a];
+          for (std::size_t b = a + 1; b <= K; ++b)
+            {
+              lo = std::min(lo, slope[b]);
+              hi = std::max(hi, slope[b]);
+              if (!(lo > 0.0) || hi > max_slope_ratio * lo)
+                break;
+              if (b >= a + 2 && smoothed[b] - smoothed[a] > best_rise)
+                {
+                  best_rise    = smoothed[b] - smoothed[a];
+                  region.begin = a;
+                  region.end   = b;
+                }
+            }
+        }
+      region.rule = best_rise > 0.0 ?
+                      "straightest rise: the window with the largest rise in which the local "
+                      "slope varies by less than 20%" :
+                      "no straight part found: whole curve after 2 delays";
+      return region;
+    }
+  } // namespace
+
+  // Rosenstein et al. 1993. Each reference point y_i (evenly spaced, at most
+  // max_references) gets its nearest neighbour y_j with |i - j| > w once; then
+  // <ln d(k)> = mean over pairs of ln |y_{i+k} - y_{j+k}|.
+  //
+  // Refinement along the trajectory (on when the samples resolve a continuous
+  // trajectory, see RosensteinOptions::interpolate): with a coarse sample interval the
+  // nearest sample of a neighbouring trajectory is offset along the flow by up to half a
+  // sample step, often more than the distance between the trajectories themselves. That
+  // offset does not grow, so ln d(k) first rises slower than lambda and bends the
+  // curve (Rössler: -10 % to -15 %). The neighbour is therefore moved to the closest
+  // point of the segments y_{j-1}..y_j..y_{j+1} and followed by linear interpolation.
+  //
+  // The curve is computed k by k; with the automatic horizon it stops at the first
+  // power of two (at least 64 and 16 tau samples) at which it has saturated, or at the
+  // cap.
+  //
+  // Automatic fit region: the curve is smoothed with a centred moving average over
+  // 4 tau + 1 samples (tau is about a quarter of the dominant period, so this spans one
+  // orbit and removes the orbital ripple). If the smoothed curve rises by less than
+  // 1 nat after its first 2 tau samples, there is no exponential divergence and the
+  // line is fitted over [2 tau, K] (about 0 for a periodic signal). Otherwise the fit
+  // region is the "straightest rise": among all windows in which the local slope of
+  // the smoothed curve stays positive and varies by less than a factor 1.2, the one
+  // whose smoothed curve rises most. This excludes the initial alignment of the
+  // separation with the unstable direction (steeper or flatter) and the bend into
+  // saturation, without fixed levels. The least-squares line is fitted to the
+  // unsmoothed curve.
+  RosensteinResult
+  rosenstein_exponent(const std::vector<double> &series,
+                      const Embedding &          emb,
+                      const std::size_t          theiler_window,
+                      const RosensteinOptions &  options)
+  {
+    RosensteinResult out;
+    check_length("Rosenstein", series.size(), emb, 8, theiler_window);
+    const std::size_t M = emb.n_vectors(series.size());
+    std::size_t       K_cap;
+    if (options.horizon)
+      {
+        K_cap = *options.horizon;
+        if (K_cap < 2)
+          throw InputError("The Rosenstein horizon must be at least 2 samples.");
+      }
+    else
+      {
+        const std::size_t cap = options.max_horizon.value_or(std::max<std::size_t>(64, 256 * emb.delay));
+        K_cap                 = std::max<std::size_t>(8, std::min(cap, M / 4));
+      }
+    check_length("Rosenstein", series.size(), emb, K_cap + 1, theiler_window);
+    // Neighbours need K_cap + 1 samples of future (the +1 for the interpolation).
+    const std::size_t n_tree = M - K_cap - 1;
+    const KdTree      tree(series, emb.dimension, emb.delay, n_tree);
+    out.interpolated         = options.interpolate.value_or(resolves_trajectory(series, emb, M));
+
+    const std::size_t          n_ref = std::min(n_tree, std::max<std::size_t>(1, options.max_references));
+    std::vector<NeighbourPair> pairs;
+    pairs.reserve(n_ref);
+    std::vector<double> y;
+    NeighbourFilter     filter;
+    filter.theiler_window = theiler_window;
+    for (std::size_t r = 0; r < n_ref; ++r)
+      {
+        const std::size_t i = r * n_tree / n_ref;
+        delay_vector(series, emb, i, y);
+        filter.query_index = i;
+        const Neighbour nb = tree.nearest(y.data(), filter);
+        if (!nb.found())
+          continue;
+        pairs.push_back(out.interpolated ? refine_along_trajectory(series, emb, y, i, nb) :
+                                           NeighbourPair{i, nb.index, 0.0});
+      }
+    if (pairs.empty())
+      throw InputError("The Rosenstein method found no neighbour pairs beyond the Theiler "
+                       "window; the series is too short or constant.");
+    out.n_references = pairs.size();
+
+    const std::size_t smoothing  = 2 * emb.delay;
+    const std::size_t min_length = std::max<std::size_t>(64, 16 * emb.delay);
+    auto &            curve      = out.mean_log_divergence;
+    for (std::size_t k = 0; k <= K_cap; ++k)
+      {
+        double      sum = 0.0;
+        std::size_t n   = 0;
+        for (const NeighbourPair &pair : pairs)
+          {
+            const double d = pair_distance(series, emb, pair, k);
+            if (d > 0.0)
+              {
+                sum += std::log(d);
+                ++n;
+              }
+          }
+        curve.push_back(n > 0 ? sum / n : curve.empty() ? 0.0 : curve.back());
+        const bool checkpoint = k + 1 >= min_length && ((k + 1) & k) == 0;
+        if (!options.horizon && checkpoint &&
+            has_saturated(moving_average(curve, smoothing), emb.delay))
+          break;
+      }
+
+    const std::vector<double> smooth = moving_average(curve, smoothing);
+    out.saturated                    = has_saturated(smooth, emb.delay);
+    const std::size_t K              = curve.size() - 1;
+    FitRegion         region;
+    if (options.fit_begin || options.fit_end)
+      {
+        region.begin = options.fit_begin.value_or(0);
+        region.end   = std::min(options.fit_end.value_or(K), K);
+        if (region.begin >= region.end)
+          throw InputError("The Rosenstein fit region [" + std::to_string(region.begin) + ", " +
+                           std::to_string(region.end) + "] samples is empty; the divergence "
+                           "curve has " + std::to_string(curve.size()) + " samples.");
+        region.rule = "given by the caller";
+      }
+    else
+      region = choose_fit_region(smooth, emb.delay);
+    const LineFit f         = fit_line(curve, region.begin, region.end);
+    out.fit_begin           = region.begin;
+    out.fit_end             = region.end;
+    out.fit_rule            = region.rule;
+    out.exponent_per_sample = f.slope;
+    out.intercept           = f.intercept;
+    out.fit_residual        = f.rms;
+    return out;
+  }
+
+  double
+  LyapunovEstimate::exponent() const
+  {
+    return sample_interval ? exponent_per_sample / *sample_interval : exponent_per_sample;
+  }
+
+  std::string
+  LyapunovEstimate::unit() const
+  {
+    return sample_interval ? "1/s (natural log, per second)" : "1/sample (natural log, per sample = per iteration)";
+  }
+
+  LyapunovEstimate
+  estimate_largest_lyapunov_exponent(const std::vector<double> &series, const LyapunovSettings &settings)
+  {
+    for (std::size_t i = 0; i < series.size(); ++i)
+      if (!std::isfinite(series[i]))
+        throw InputError("Sample " + std::to_string(i) + " of the series is not a finite number; "
+                         "the Lyapunov exponent needs a complete series.");
+    if (settings.sample_interval && !(*settings.sample_interval > 0.0))
+      throw InputError("The sample interval dt must be > 0 s (given: " +
+                       std::to_string(*settings.sample_interval) + ").");
+    LyapunovEstimate out;
+    out.method          = settings.method;
+    out.sample_interval = settings.sample_interval;
+    out.embedding       = resolve_embedding(series, settings.embedding);
+    switch (settings.method)
+      {
+        case LyapunovMethod::wolf:
+          out.wolf = wolf_exponent(series, out.embedding.embedding, out.embedding.theiler_window, settings.wolf);
+          out.exponent_per_sample = out.wolf->exponent_per_sample;
+          break;
+        case LyapunovMethod::rosenstein:
+          out.rosenstein = rosenstein_exponent(series,
+                                               out.embedding.embedding,
+                                               out.embedding.theiler_window,
+                                               settings.rosenstein);
+          out.exponent_per_sample = out.rosenstein->exponent_per_sample;
+          break;
+        default:
+          throw InputError("Unknown Lyapunov method; the methods are wolf and rosenstein.");
+      }
+    return out;
+  }
+} // namespace wearlink::analysis
