@@ -5,6 +5,7 @@ namespace wearlink::app
 {
   // Each sub-command lives in app/commands/<name>.cc and exposes its Command entry.
   extern const Command run_scene_command;
+  extern const Command lyapunov_command;
   extern const Command contact_command;
 
   const std::vector<Command> &
@@ -12,6 +13,7 @@ namespace wearlink::app
   {
     static const std::vector<Command> table = {
       run_scene_command,
+      lyapunov_command,
       contact_command,
     };
     return table;
