@@ -280,8 +280,12 @@ namespace wearlink::fe
     const unsigned int q          = bore_nodes.size();
     const double       tolerance  = gap_tolerance(kin);
 
-    std::vector<unsigned int> active =
-      previous_active.empty() ? initial_active_set(kin, force_control) : previous_active;
+    // Warm start from the previous load state's active set when the load is close to
+    // it (consecutive states of a mechanism cycle); otherwise start from the first
+    // touching candidates, as the reference solver does.
+    const bool warm = force_control && !previous_active.empty() &&
+                      (load - previous_load).norm() <= 0.25 * load.norm();
+    std::vector<unsigned int> active = warm ? previous_active : initial_active_set(kin, force_control);
     if (force_control)
       ensure_two_active(active, kin.g0);
 
@@ -391,6 +395,7 @@ namespace wearlink::fe
       not_converged("condensed", max_iterations);
 
     previous_active = active;
+    previous_load   = load;
     sol.lambda      = lambda;
     sol.gap         = gap;
     sol.pin_translation = U;

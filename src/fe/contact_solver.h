@@ -115,6 +115,7 @@ namespace wearlink::fe
     BoundaryCompliance &       compliance;
     const unsigned int         max_iterations;
     std::vector<unsigned int>  previous_active;
+    dealii::Tensor<1, 2>       previous_load;
   };
 
   class ReferenceContactSolver

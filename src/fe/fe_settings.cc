@@ -15,6 +15,8 @@ namespace wearlink::fe
       fail("'Surface element size' must be > 0 m.");
     if (!(max_element_size >= surface_element_size))
       fail("'Maximum element size' must be ≥ 'Surface element size' (both in m).");
+    if (!(refined_layer_thickness >= 0))
+      fail("'Refined layer thickness' must be ≥ 0 m.");
     if (!(size_growth > 0))
       fail("'Size growth' must be > 0.");
     if (!(core_radius_fraction > 0 && core_radius_fraction < 0.95))
@@ -38,6 +40,11 @@ namespace wearlink::fe
             "m");
     declare(prm, "Maximum element size", "1.5e-3", Double(0),
             "Largest element size, reached far from the contact surfaces.", "m");
+    declare(prm, "Refined layer thickness", "0.1e-3", Double(0),
+            "Depth below both contact surfaces over which the element size stays at "
+            "'Surface element size' before growing: the contact stresses decay over about "
+            "one contact half-width, which must be resolved too.",
+            "m");
     declare(prm, "Size growth", "0.3", Double(0),
             "Growth rate of the element size with the distance d from the nearest "
             "contact surface: h(d) = min(h_surface + growth d, h_max).",
@@ -75,6 +82,7 @@ namespace wearlink::fe
     s.surface_element_size      = reader.get_positive("Surface element size");
     s.max_element_size          = reader.get_positive("Maximum element size");
     s.size_growth               = reader.get_positive("Size growth");
+    s.refined_layer_thickness   = reader.get_double("Refined layer thickness");
     s.core_radius_fraction      = reader.get_positive("Pin core radius fraction");
     s.outer_radius_ratio        = reader.get_double("Bushing outer radius ratio");
     s.degree                    = static_cast<unsigned int>(reader.get_integer("Element degree"));

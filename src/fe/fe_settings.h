@@ -24,6 +24,12 @@ namespace wearlink::fe
      * h(d) = min(h_surface + growth · d, h_max) [-].
      */
     double size_growth = 0.3;
+    /**
+     * Depth below both contact surfaces over which the element size stays at the
+     * surface size before it starts to grow [m]: the contact stresses decay over a
+     * depth of about the contact half-width, which must be resolved as well.
+     */
+    double refined_layer_thickness = 0.1e-3;
     /** Radius of the rigid core of the pin as a fraction of its smallest radius [-]. */
     double core_radius_fraction = 0.4;
     /**
@@ -39,6 +45,14 @@ namespace wearlink::fe
     unsigned int refinements = 0;
     /** Iteration limit of the active-set contact solvers. */
     unsigned int max_active_set_iterations = 100;
+    /**
+     * Half-angle of the refined arc of each contact surface [rad] (≥ π: the whole
+     * circumference, needed when the load direction changes, as in a wear loop). Set
+     * by the `contact` command for its fixed load direction; not a plugin parameter.
+     */
+    double refined_arc_half_angle = 4;
+    double refined_arc_bore_centre = 0; ///< bushing-frame centre of the refined arc [rad]
+    double refined_arc_pin_centre  = 0; ///< pin-frame centre of the refined arc [rad]
     /** Directory for the generated .msh files ("" = a temporary directory). */
     std::string mesh_directory;
 

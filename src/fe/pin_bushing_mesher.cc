@@ -69,34 +69,66 @@ namespace wearlink::fe
     }
 
     /**
-     * The closed surface curve of @p profile as four splines (quarter turns), each with
-     * a uniform transfinite node distribution of spacing ≈ @p h. Returns the curve tags
-     * in counter-clockwise order; @p n_nodes receives the number of distinct nodes.
+     * The closed surface curve of @p profile. If @p half_angle ≥ π: four splines
+     * (quarter turns), each with a uniform transfinite node spacing ≈ @p h. Otherwise a
+     * refined spline over the samples spanning [centre − half_angle, centre +
+     * half_angle] with that spacing, and one spline for the rest, meshed by the size
+     * field. Returns all curve tags in counter-clockwise order; @p refined receives the
+     * uniformly spaced ones and @p n_segments their segment count.
      */
     std::vector<int>
-    add_profile_curve(const Profile &profile, double h, unsigned long &n_nodes)
+    add_profile_curve(const Profile &    profile,
+                      double             h,
+                      double             centre,
+                      double             half_angle,
+                      std::vector<int> & refined,
+                      unsigned long &    n_segments)
     {
-      const unsigned int n = profile.n_points();
-      std::vector<int>   points(n);
-      for (unsigned int k = 0; k < n; ++k)
+      const int        n = static_cast<int>(profile.n_points());
+      std::vector<int> points(n);
+      for (int k = 0; k < n; ++k)
         points[k] = gmsh::model::geo::addPoint(profile[k] * std::cos(profile.angle(k)),
                                                profile[k] * std::sin(profile.angle(k)),
                                                0,
                                                h);
-      std::vector<int> curves;
-      n_nodes = 0;
-      for (unsigned int q = 0; q < 4; ++q)
+      // Pieces as ranges of sample indices [i0, i1] (i1 may exceed n: wrap).
+      std::vector<std::pair<int, int>> pieces;
+      std::vector<bool>                uniform;
+      const double                     step = 2 * pi / n;
+      int i0 = static_cast<int>(std::floor((centre - half_angle) / step));
+      int i1 = static_cast<int>(std::ceil((centre + half_angle) / step));
+      if (half_angle >= pi || i1 - i0 + 2 > n)
+        for (int q = 0; q < 4; ++q)
+          {
+            pieces.emplace_back((q * n) / 4, ((q + 1) * n) / 4);
+            uniform.push_back(true);
+          }
+      else
         {
-          const unsigned int i0 = (q * n) / 4;
-          const unsigned int i1 = ((q + 1) * n) / 4;
-          std::vector<int>   piece;
-          for (unsigned int i = i0; i <= i1; ++i)
+          i0 = ((i0 % n) + n) % n;
+          i1 = i0 + std::max(i1 - static_cast<int>(std::floor((centre - half_angle) / step)), 2);
+          pieces.emplace_back(i0, i1);
+          uniform.push_back(true);
+          pieces.emplace_back(i1, i0 + n);
+          uniform.push_back(false);
+        }
+      std::vector<int> curves;
+      n_segments = 0;
+      for (std::size_t p = 0; p < pieces.size(); ++p)
+        {
+          std::vector<int> piece;
+          for (int i = pieces[p].first; i <= pieces[p].second; ++i)
             piece.push_back(points[i % n]);
           const int c = gmsh::model::geo::addSpline(piece);
-          const int segments =
-            std::max(2, static_cast<int>(std::lround(arc_length(profile, i0, i1) / h)));
-          gmsh::model::geo::mesh::setTransfiniteCurve(c, segments + 1);
-          n_nodes += segments;
+          if (uniform[p])
+            {
+              const int segments = std::max(
+                2,
+                static_cast<int>(std::lround(arc_length(profile, pieces[p].first, pieces[p].second) / h)));
+              gmsh::model::geo::mesh::setTransfiniteCurve(c, segments + 1);
+              n_segments += segments;
+              refined.push_back(c);
+            }
           curves.push_back(c);
         }
       return curves;
@@ -132,7 +164,7 @@ namespace wearlink::fe
     pin.check("pin profile");
     const auto positive = [](double v) { return std::isfinite(v) && v > 0; };
     if (!positive(spec.surface_element_size) || !positive(spec.max_element_size) ||
-        !positive(spec.size_growth))
+        !positive(spec.size_growth) || !(spec.layer_thickness >= 0))
       throw InputError("The FE mesh sizes must be finite and > 0 (surface element size " +
                        number(spec.surface_element_size) + " m, maximum element size " +
                        number(spec.max_element_size) + " m, size growth " +
@@ -161,22 +193,26 @@ namespace wearlink::fe
                          const std::string &msh_path)
   {
     check_pin_bushing_geometry(bore, pin, spec);
-    const double h = spec.surface_element_size;
-    const double H = spec.max_element_size;
+    // Sizes before the final split of every element into quadrilaterals (see below).
+    const double h = 2 * spec.surface_element_size;
+    const double H = 2 * spec.max_element_size;
 
     GmshSession session;
     gmsh::model::add("pin_bushing");
     MeshStatistics stats;
 
     // Pin annulus: surface (outer) loop and rigid-core hole.
-    const auto pin_curves  = add_profile_curve(pin, h, stats.n_pin_surface_nodes);
+    std::vector<int> refined;
+    unsigned long    pin_segments = 0, bore_segments = 0;
+    const auto pin_curves = add_profile_curve(pin, h, spec.pin_refined_centre, spec.refined_half_angle, refined, pin_segments);
     const auto core_curves = add_circle(spec.core_radius, H);
     const int  pin_loop    = gmsh::model::geo::addCurveLoop(pin_curves);
     const int  core_loop   = gmsh::model::geo::addCurveLoop(core_curves);
     const int  pin_area    = gmsh::model::geo::addPlaneSurface({pin_loop, core_loop});
 
     // Bushing ring: fixed outer circle and the bore as its hole.
-    const auto bore_curves  = add_profile_curve(bore, h, stats.n_bore_surface_nodes);
+    const auto bore_curves = add_profile_curve(bore, h, spec.bore_refined_centre, spec.refined_half_angle, refined, bore_segments);
+    stats.n_refined_surface_segments = 2 * (pin_segments + bore_segments);
     const auto outer_curves = add_circle(spec.outer_radius, H);
     const int  outer_loop   = gmsh::model::geo::addCurveLoop(outer_curves);
     const int  bore_loop    = gmsh::model::geo::addCurveLoop(bore_curves);
@@ -190,14 +226,11 @@ namespace wearlink::fe
     name_group(1, bore_curves, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
     name_group(1, outer_curves, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
 
-    // Element size: h at the contact surfaces, growing linearly with the distance d
-    // from them, h(d) = min(h + growth d, H).
-    std::vector<double> surface_curves;
-    for (const int c : pin_curves)
-      surface_curves.push_back(c);
-    for (const int c : bore_curves)
-      surface_curves.push_back(c);
-    const double samples = std::max<double>(stats.n_pin_surface_nodes, stats.n_bore_surface_nodes) / 4 + 10;
+    // Element size: h within the layer of thickness t below the contact surfaces, then
+    // growing linearly with the distance d from them, h(d) = min(h + growth (d − t), H).
+    // (Distance from the refined, uniformly spaced arcs of both surfaces.)
+    const std::vector<double> surface_curves(refined.begin(), refined.end());
+    const double samples = static_cast<double>(std::max(pin_segments, bore_segments)) + 10;
     const int distance = gmsh::model::mesh::field::add("Distance");
     gmsh::model::mesh::field::setNumbers(distance, "CurvesList", surface_curves);
     gmsh::model::mesh::field::setNumber(distance, "NumPointsPerCurve", samples);
@@ -205,8 +238,9 @@ namespace wearlink::fe
     gmsh::model::mesh::field::setNumber(threshold, "IField", distance);
     gmsh::model::mesh::field::setNumber(threshold, "LcMin", h);
     gmsh::model::mesh::field::setNumber(threshold, "LcMax", H);
-    gmsh::model::mesh::field::setNumber(threshold, "DistMin", 0);
-    gmsh::model::mesh::field::setNumber(threshold, "DistMax", std::max((H - h) / spec.size_growth, h));
+    gmsh::model::mesh::field::setNumber(threshold, "DistMin", spec.layer_thickness);
+    gmsh::model::mesh::field::setNumber(threshold, "DistMax",
+                                        spec.layer_thickness + std::max((H - h) / (2 * spec.size_growth), h));
     gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
 
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -215,8 +249,19 @@ namespace wearlink::fe
     gmsh::option::setNumber("Mesh.Algorithm", 6); // Frontal-Delaunay (algorithm 8 crashes in gmsh 4.8 with a background field)
     gmsh::option::setNumber("Mesh.RecombineAll", 1);
     gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
+    // Blossom recombination can leave a few triangles; splitting every element
+    // (triangle → 3 quads, quad → 4 quads) guarantees an all-quadrilateral mesh. The
+    // split halves all sizes, so the geometry is meshed at twice the target sizes.
+    gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::model::mesh::generate(2);
+    try
+      {
+        gmsh::model::mesh::generate(2);
+      }
+    catch (const std::string &message)
+      {
+        throw NumericalError("gmsh could not mesh the pin–bushing pair: " + message);
+      }
 
     // deal.II needs quadrilaterals only: refuse a mixed mesh rather than pass it on.
     std::vector<int>                      types;

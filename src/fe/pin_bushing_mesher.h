@@ -11,7 +11,9 @@
 //
 // The contact surfaces are splines through the profile samples, each split into four
 // quarter arcs with a uniform (transfinite) node spacing equal to the surface element
-// size, so that a round pair gets a mirror-symmetric surface discretization. Away from
+// size, so that a round pair gets a mirror-symmetric surface discretization (or, for a
+// fixed load direction, one uniformly spaced refined arc centred on it and a graded
+// rest). Away from
 // the surfaces the size grows linearly with the distance (gmsh Distance + Threshold
 // fields). Quadrilaterals (Frontal-Delaunay for quads + Blossom recombination) for
 // deal.II; physical groups are named "MaterialID:n" / "BoundaryID:n" with the ids of
@@ -32,6 +34,17 @@ namespace wearlink::fe
     double surface_element_size = 0; ///< along both contact surfaces
     double max_element_size     = 0; ///< far from the surfaces
     double size_growth          = 0; ///< dh/dd away from the surfaces [-]
+    double layer_thickness      = 0; ///< depth kept at the surface size [m]
+    /**
+     * Half-angle of the arc of each contact surface meshed at the surface element size
+     * [rad]; ≥ π (the default) refines the whole circumference, as a wear loop with a
+     * rotating load needs. A smaller arc (for a fixed load direction, as in the
+     * `contact` command) is centred on the angles below, and the size grows with the
+     * distance from the arc elsewhere.
+     */
+    double refined_half_angle = 4;
+    double bore_refined_centre = 0; ///< centre of the refined arc, bushing frame [rad]
+    double pin_refined_centre  = 0; ///< centre of the refined arc, pin frame [rad]
   };
 
   /** Counts of the generated mesh. */
@@ -39,8 +52,7 @@ namespace wearlink::fe
   {
     unsigned long n_nodes         = 0;
     unsigned long n_quadrilaterals = 0;
-    unsigned long n_pin_surface_nodes = 0;
-    unsigned long n_bore_surface_nodes = 0;
+    unsigned long n_refined_surface_segments = 0; ///< both surfaces, at the surface size
   };
 
   /**

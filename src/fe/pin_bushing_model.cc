@@ -96,6 +96,10 @@ namespace wearlink::fe
       spec.surface_element_size = settings.surface_element_size;
       spec.max_element_size     = settings.max_element_size;
       spec.size_growth          = settings.size_growth;
+      spec.layer_thickness      = settings.refined_layer_thickness;
+      spec.refined_half_angle   = settings.refined_arc_half_angle;
+      spec.bore_refined_centre  = settings.refined_arc_bore_centre;
+      spec.pin_refined_centre   = settings.refined_arc_pin_centre;
       check_pin_bushing_geometry(geometry.bore, geometry.pin, spec);
 
       auto start       = Clock::now();

@@ -84,6 +84,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       prm.leave_subsection();
       prm.enter_subsection("FE model");
       fe::declare_fe_settings(prm);
+      declare(prm, "Refined arc half-angle", "180", Double(0, 180), "Half-angle of the arc of each contact surface, centred on the load direction, that is meshed at 'Surface element size'; elsewhere the size grows with the distance from it. 180: the whole circumference.", "deg");
       declare(prm, "Solvers", "condensed, reference", MultipleSelection("condensed|reference"), "Which contact solvers to run (both: their pressures are compared).", "none");
       prm.leave_subsection();
       prm.enter_subsection("Output");
@@ -202,6 +203,15 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       reader.enter("FE model");
       fe::FeSettings settings = fe::read_fe_settings(reader);
       settings.outer_radius   = outer_radius;
+      settings.refined_arc_half_angle = reader.get_double("Refined arc half-angle") * pi / 180;
+      if (settings.refined_arc_half_angle >= pi)
+        settings.refined_arc_half_angle = 4; // whole circumference
+      if (!loads.empty())
+        {
+          const double direction_angle = std::atan2(direction[1], direction[0]);
+          settings.refined_arc_bore_centre = direction_angle - loads[0].bushing_angle;
+          settings.refined_arc_pin_centre  = direction_angle - loads[0].pin_angle;
+        }
       const auto solvers      = reader.get_list("Solvers");
       reader.leave();
       reader.enter("Output");
@@ -212,16 +222,16 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
 
       const std::string out = a.value("--output", "output/" + std::filesystem::path(file).stem().string());
       make_output_directory(out);
-      {
-        std::ostringstream os;
-        prm.print_parameters(os, dealii::ParameterHandler::ShortText);
-        write_file_atomically(out + "/parameters.prm", os.str());
-      }
 
       // Set-up (mesh + assembly, then the condensed factorization).
       std::cout << "Meshing and assembling the pin–bushing pair (surface element size "
                 << settings.surface_element_size * 1e3 << " mm)...\n";
       fe::PinBushingModel model(geometry, settings, out + "/pin_bushing.msh");
+      {
+        std::ostringstream os;
+        prm.print_parameters(os, dealii::ParameterHandler::ShortText);
+        write_file_atomically(out + "/parameters.prm", os.str());
+      }
       const auto &st = model.statistics();
       std::cout << "  " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs << " DoFs, "
                 << st.n_pin_candidates << " pin + " << st.n_bore_candidates

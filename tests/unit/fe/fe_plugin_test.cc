@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The `fe` pressure model as the contact layer sees it: registered by name, constructed
+// without meshing anything (gmsh and deal.II are touched only by update_geometry()),
+// returning per-area pressures on both profiles, each in its own body frame, that
+// balance the joint force.
+#include "base/effect_ledger.h"
+#include "fe_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace wearlink;
+using namespace wearlink::fe::testing;
+
+namespace
+{
+  std::unique_ptr<contact::PressureModel>
+  create_fe_model(double surface_size)
+  {
+    dealii::ParameterHandler prm;
+    contact::pressure_models().declare_all(prm);
+    prm.enter_subsection("fe");
+    prm.set("Surface element size", std::to_string(surface_size));
+    prm.set("Refined layer thickness", "0");
+    prm.leave_subsection();
+    ParameterReader reader(prm, "test");
+    return contact::pressure_models().create("fe", reader, "Pressure model");
+  }
+
+  /** L Σ p_k ΔA_k n_k over a profile (outward radial normals at the samples) [N]. */
+  std::array<double, 2>
+  resultant(const Profile &profile, const std::vector<double> &p, double frame_angle)
+  {
+    std::array<double, 2> f{};
+    const double          da = 2 * pi / profile.n_points();
+    for (unsigned int k = 0; k < profile.n_points(); ++k)
+      {
+        const double a = profile.angle(k) + frame_angle;
+        f[0] += p[k] * L * profile[k] * da * std::cos(a);
+        f[1] += p[k] * L * profile[k] * da * std::sin(a);
+      }
+    return f;
+  }
+} // namespace
+
+
+TEST(FePlugin, RegisteredAndBuildsNothingUntilGeometry)
+{
+  ASSERT_TRUE(contact::pressure_models().has("fe"));
+  auto &     ledger   = EffectLedger::instance();
+  const long sessions = ledger.resources("gmsh sessions");
+  const long trias    = ledger.resources("triangulations");
+  auto       model    = create_fe_model(1e-4);
+  EXPECT_TRUE(model->requires_fe_geometry());
+  EXPECT_EQ(ledger.resources("gmsh sessions"), sessions) << "constructing must not mesh";
+  EXPECT_EQ(ledger.resources("triangulations"), trias);
+  model->update_geometry(steel_pair(72));
+  EXPECT_EQ(ledger.resources("gmsh sessions"), sessions + 1);
+  EXPECT_EQ(ledger.resources("triangulations"), trias + 1);
+}
+
+
+TEST(FePlugin, PressurePerAreaBalancesLoadInBodyFrames)
+{
+  // Bushing turned by −20°, pin by +30°; the bushing pushes the pin up with 1 kN, so the
+  // pin is pressed down (−y) and touches the bore at the global angle −90°: sample
+  // −90° − θ of each profile in its own frame (5° areas, N = 72).
+  auto model    = create_fe_model(1e-4);
+  auto geometry = steel_pair(72);
+  model->update_geometry(geometry);
+  contact::ContactLoad load;
+  load.bushing_angle = -20 * pi / 180;
+  load.pin_angle     = 30 * pi / 180;
+  load.force         = {0.0, 1000.0};
+  contact::SurfacePressure out;
+  model->evaluate(load, out);
+  ASSERT_EQ(out.pin.size(), 72u);
+  ASSERT_EQ(out.bore.size(), 72u);
+
+  auto peak = [](const std::vector<double> &p) {
+    return static_cast<int>(std::max_element(p.begin(), p.end()) - p.begin());
+  };
+  auto expected_sample = [](double angle_deg) {
+    return static_cast<int>(std::lround(std::remainder(angle_deg, 360.0) / 5 + 72)) % 72;
+  };
+  EXPECT_NEAR(peak(out.pin), expected_sample(-90 - 30), 1) << "pin pressure in the pin frame";
+  EXPECT_NEAR(peak(out.bore), expected_sample(-90 + 20), 1) << "bore pressure in the bushing frame";
+
+  // Equilibrium of the per-area pressures: the pin is pushed along −y by 1 kN and the
+  // bore carries the same force. Each area's force is attributed to its centre normal
+  // while it spreads over ±2.5°, so the balance holds to ~1 − cos 2.5° ≈ 1e-3.
+  const auto fp = resultant(geometry.pin, out.pin, load.pin_angle);
+  const auto fb = resultant(geometry.bore, out.bore, load.bushing_angle);
+  EXPECT_NEAR(fp[0], 0.0, 2e-3 * 1000);
+  EXPECT_NEAR(fp[1], -1000.0, 2e-3 * 1000);
+  EXPECT_NEAR(fb[0], 0.0, 2e-3 * 1000);
+  EXPECT_NEAR(fb[1], -1000.0, 2e-3 * 1000);
+
+  // No load, no pressure.
+  load.force = {0.0, 0.0};
+  model->evaluate(load, out);
+  EXPECT_EQ(*std::max_element(out.pin.begin(), out.pin.end()), 0.0);
+}
