@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Benchmark: the nine-bar press mechanism over N crank cycles (default 100 = 50 s of
+// motion at 120 rpm), with clearance joints A and B (params/nine_bar_clearance.prm) and
+// with ideal joints (params/nine_bar_ideal.prm at the clearance scene's tolerances), in
+// one process. Prints wall time, accepted/rejected steps, right-hand-side evaluations,
+// contact events, and the clearance/ideal ratio. No time is asserted.
+//   usage: bench_mbs [cycles]
+#include "base/effect_ledger.h"
+#include "base/parameters.h"
+#include "io/run.h"
+#include "io/scene.h"
+#include "register_all.h"
+#include "support/test_support.h"
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+using namespace wearlink;
+
+namespace
+{
+  Json
+  run(const std::string &file, const std::vector<std::string> &overrides)
+  {
+    EffectLedger::instance().reset();
+    io::Scene scene = io::read_scene(testing::source_path(file), overrides);
+    return io::run_scene(scene, io::RunOptions());
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  register_all();
+  const int    cycles = argc > 1 ? std::stoi(argv[1]) : 100;
+  const double end    = 0.5 * cycles;
+  const std::vector<std::string> common = {"Simulation/End time=" + format_number(end),
+                                           "Output/Time series=false"};
+  // The ideal run uses the clearance scene's integrator settings, so the ratio measures
+  // the cost of the clearance joints, not of a tighter tolerance.
+  auto ideal_overrides = common;
+  for (const auto &o : {"Integrator/Relative tolerance=1e-6", "Integrator/Position tolerance=1e-9",
+                        "Integrator/Velocity tolerance=1e-6"})
+    ideal_overrides.push_back(o);
+
+  const Json c = run("params/nine_bar_clearance.prm", common);
+  const Json i = run("params/nine_bar_ideal.prm", ideal_overrides);
+
+  auto row = [](const char *name, const Json &s) {
+    long events = static_cast<long>(s.at("contact_events").as_number());
+    std::printf("%-22s %10.3f %10.0f %10.0f %12.0f %8ld %14.3e\n", name, s.at("wall_time_s").as_number(),
+                s.at("steps").as_number(), s.at("rejected_steps").as_number(),
+                s.at("rhs_evaluations").as_number(), events,
+                s.at("wall_time_s").as_number() / s.at("rhs_evaluations").as_number());
+  };
+  std::printf("nine-bar press mechanism, %d crank cycles (%.1f s simulated)\n", cycles, end);
+  std::printf("%-22s %10s %10s %10s %12s %8s %14s\n", "run", "wall [s]", "steps", "rejected",
+              "rhs evals", "events", "wall/rhs [s]");
+  row("clearance A and B", c);
+  row("ideal joints", i);
+  std::printf("ratio clearance/ideal wall time: %.1f\n",
+              c.at("wall_time_s").as_number() / i.at("wall_time_s").as_number());
+  std::printf("joint A: %.0f impacts, in contact %.1f%%; joint B: %.0f impacts, in contact %.1f%%\n",
+              c.at("clearance_joints").at("A").at("impacts").as_number(),
+              100 * c.at("clearance_joints").at("A").at("fraction_in_contact").as_number(),
+              c.at("clearance_joints").at("B").at("impacts").as_number(),
+              100 * c.at("clearance_joints").at("B").at("fraction_in_contact").as_number());
+  std::printf("energy balance relative error: clearance %.2e, ideal %.2e\n",
+              c.at("energy_balance_relative_error").as_number(),
+              i.at("energy_balance_relative_error").as_number());
+  return 0;
+}
