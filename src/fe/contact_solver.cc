@@ -5,8 +5,17 @@
 #include "base/exceptions.h"
 #include "fe/boundary_ids.h"
 
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/petsc_solver.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
 
 #include <Eigen/Dense>
@@ -253,6 +262,58 @@ namespace wearlink::fe
   }
 
 
+  namespace
+  {
+    /**
+     * The distributed solve of the reference solver (see solve_constrained()): METIS
+     * partitions (subdomain ids, DoFs numbered subdomain-wise), each rank assembling its
+     * own cells through the constraints, MUMPS on the PETSc matrix, the solution
+     * gathered on every rank.
+     */
+    Vector<double>
+    solve_distributed(const ElasticityProblem &               problem,
+                      const AffineConstraints<double> &       constraints,
+                      const std::array<global_dof_index, 2> & load_dofs,
+                      const Tensor<1, 2> &                    load)
+    {
+      const MPI_Comm     comm  = MPI_COMM_WORLD;
+      const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
+      const auto         owned = DoFTools::locally_owned_dofs_per_subdomain(problem.dof_handler)[rank];
+      DynamicSparsityPattern dsp(problem.dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(problem.dof_handler, dsp, constraints, false);
+      PETScWrappers::MPI::SparseMatrix matrix;
+      matrix.reinit(owned, owned, dsp, comm);
+      PETScWrappers::MPI::Vector rhs(owned, comm), solution(owned, comm);
+
+      FEValues<2>        fe_values(problem.fe, problem.quadrature(), update_gradients | update_JxW_values);
+      const unsigned int dofs_per_cell = problem.fe.n_dofs_per_cell();
+      FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+      Vector<double>     cell_rhs(dofs_per_cell);
+      std::vector<global_dof_index> dof_indices(dofs_per_cell);
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->subdomain_id() == rank)
+          {
+            problem.cell_stiffness(cell, fe_values, cell_matrix);
+            cell_rhs = 0;
+            cell->get_dof_indices(dof_indices);
+            constraints.distribute_local_to_global(cell_matrix, cell_rhs, dof_indices, matrix, rhs);
+          }
+      for (unsigned int d = 0; d < 2; ++d)
+        if (owned.is_element(load_dofs[d]))
+          rhs(load_dofs[d]) += load[d];
+      matrix.compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
+
+      SolverControl                    control(1, 0);
+      PETScWrappers::SparseDirectMUMPS mumps(control, comm);
+      mumps.solve(matrix, solution, rhs);
+      Vector<double> u(solution);
+      constraints.distribute(u);
+      return u;
+    }
+  } // namespace
+
+
   CondensedContactSolver::CondensedContactSolver(const ElasticityProblem &problem,
                                                  BoundaryCompliance &     compliance,
                                                  unsigned int             max_iterations)
@@ -447,10 +508,52 @@ namespace wearlink::fe
 
 
   ReferenceContactSolver::ReferenceContactSolver(const ElasticityProblem &problem,
-                                                 unsigned int             max_iterations)
+                                                 unsigned int             max_iterations,
+                                                 bool                     distributed)
     : problem(problem)
     , max_iterations(max_iterations)
+    , distributed(distributed)
   {}
+
+
+  // Serial: copy K into a pattern with room for the constraints' couplings, condense,
+  // factor with UMFPACK. Distributed: every rank assembles the cells of its METIS
+  // partition through the constraints into a PETSc matrix (rows of its own DoFs) and
+  // MUMPS factors the distributed system; the solution is gathered on every rank.
+  Vector<double>
+  ReferenceContactSolver::solve_constrained(const AffineConstraints<double> &       constraints,
+                                            const std::array<global_dof_index, 2> & load_dofs,
+                                            const Tensor<1, 2> &                    load) const
+  {
+    const auto n = problem.dof_handler.n_dofs();
+    EffectLedger::instance().add_resource("factorizations");
+    if (!distributed)
+      {
+        const auto &           K = problem.stiffness_matrix;
+        DynamicSparsityPattern dsp(n);
+        for (types::global_dof_index row = 0; row < n; ++row)
+          for (auto e = problem.sparsity_pattern.begin(row); e != problem.sparsity_pattern.end(row); ++e)
+            dsp.add(row, e->column());
+        constraints.condense(dsp);
+        SparsityPattern pattern;
+        pattern.copy_from(dsp);
+        SparseMatrix<double> matrix(pattern);
+        for (types::global_dof_index row = 0; row < n; ++row)
+          for (auto e = K.begin(row); e != K.end(row); ++e)
+            matrix.add(row, e->column(), e->value());
+        Vector<double> rhs(n);
+        rhs(load_dofs[0]) += load[0];
+        rhs(load_dofs[1]) += load[1];
+        constraints.condense(matrix, rhs);
+        SparseDirectUMFPACK direct;
+        direct.initialize(matrix);
+        Vector<double> u = rhs;
+        direct.solve(u);
+        constraints.distribute(u);
+        return u;
+      }
+    return solve_distributed(problem, constraints, load_dofs, load);
+  }
 
 
   // The reference: semismooth Newton (primal–dual active set) on the full FE system of
@@ -520,30 +623,7 @@ namespace wearlink::fe
           }
         constraints.close();
 
-        DynamicSparsityPattern dsp(n);
-        for (types::global_dof_index row = 0; row < n; ++row)
-          for (auto e = problem.sparsity_pattern.begin(row); e != problem.sparsity_pattern.end(row); ++e)
-            dsp.add(row, e->column());
-        constraints.condense(dsp);
-        SparsityPattern pattern;
-        pattern.copy_from(dsp);
-        SparseMatrix<double> matrix(pattern);
-        for (types::global_dof_index row = 0; row < n; ++row)
-          for (auto e = K.begin(row); e != K.end(row); ++e)
-            matrix.add(row, e->column(), e->value());
-        Vector<double> rhs(n);
-        if (force_control)
-          {
-            rhs(core[0][0]) += P_pin[0];
-            rhs(core[0][1]) += P_pin[1];
-          }
-        constraints.condense(matrix, rhs);
-        SparseDirectUMFPACK direct;
-        direct.initialize(matrix);
-        EffectLedger::instance().add_resource("factorizations");
-        u = rhs;
-        direct.solve(u);
-        constraints.distribute(u);
+        u = solve_constrained(constraints, core[0], force_control ? P_pin : Tensor<1, 2>());
 
         K.vmult(residual, u);
         for (unsigned int i = 0; i < m; ++i)

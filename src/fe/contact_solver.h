@@ -44,6 +44,7 @@
 #include "fe/elasticity_problem.h"
 
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
@@ -121,14 +122,31 @@ namespace wearlink::fe
   class ReferenceContactSolver
   {
   public:
-    ReferenceContactSolver(const ElasticityProblem &problem, unsigned int max_iterations);
+    /**
+     * @param distributed assemble and solve each constrained system over the MPI ranks
+     *        of MPI_COMM_WORLD: every rank holds the (replicated) mesh, partitioned
+     *        with METIS (ElasticityProblem with n_partitions = number of ranks), and
+     *        assembles the cells of its partition into a PETSc matrix that MUMPS
+     *        factors in parallel (deal.II step-17 style). The active-set decisions are
+     *        made on the gathered solution, identically on every rank.
+     */
+    ReferenceContactSolver(const ElasticityProblem &problem,
+                           unsigned int             max_iterations,
+                           bool                     distributed = false);
 
     ContactSolution
     solve(const ContactKinematics &kinematics, bool force_control, const dealii::Tensor<1, 2> &load) const;
 
   private:
+    /** Solve K u = f under @p constraints; f = @p load at the DoFs @p load_dofs. */
+    dealii::Vector<double>
+    solve_constrained(const dealii::AffineConstraints<double> &constraints,
+                      const std::array<global_dof_index, 2> &  load_dofs,
+                      const dealii::Tensor<1, 2> &             load) const;
+
     const ElasticityProblem &problem;
     const unsigned int       max_iterations;
+    const bool               distributed;
   };
 
   /** Initial active set shared by both solvers (so that they take the same path). */

@@ -7,7 +7,9 @@
 #include "fe/boundary_ids.h"
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
@@ -120,11 +122,13 @@ namespace wearlink::fe
                                        const contact::Material & pin_material,
                                        const contact::Material & bushing_material,
                                        const Profile &           pin_profile,
-                                       const Profile &           bore_profile)
+                                       const Profile &           bore_profile,
+                                       unsigned int              n_partitions)
     : fe(FE_Q<2>(degree), 2)
     , dof_handler(triangulation)
     , msh_file(msh_file)
     , refinements(refinements)
+    , n_partitions(n_partitions)
     , pin_material(pin_material)
     , bushing_material(bushing_material)
     , pin_profile(pin_profile)
@@ -151,6 +155,8 @@ namespace wearlink::fe
     grid_in.read_msh(file);
     EffectLedger::instance().add_resource("triangulations");
     triangulation.refine_global(n_refinements);
+    if (n_partitions > 1)
+      GridTools::partition_triangulation(n_partitions, triangulation, SparsityTools::Partitioner::metis);
   }
 
 
@@ -158,6 +164,8 @@ namespace wearlink::fe
   ElasticityProblem::setup_system()
   {
     dof_handler.distribute_dofs(fe);
+    if (n_partitions > 1)
+      DoFRenumbering::subdomain_wise(dof_handler);
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp);
     sparsity_pattern.copy_from(dsp);
@@ -168,35 +176,53 @@ namespace wearlink::fe
   // Plane-strain elasticity, per unit axial length: a(u, v) = ∫ λ div u div v +
   // 2 μ ε(u) : ε(v) dx, with the Lamé constants of the cell's body (material id).
   // The matrix is assembled without any boundary condition; each solver imposes its own.
+  QGauss<2>
+  ElasticityProblem::quadrature() const
+  {
+    return QGauss<2>(fe.degree + 1);
+  }
+
+
+  void
+  ElasticityProblem::cell_stiffness(const DoFHandler<2>::active_cell_iterator &cell,
+                                    FEValues<2> &                               fe_values,
+                                    FullMatrix<double> &                        cell_matrix) const
+  {
+    const auto [l, m] =
+      lame(cell->material_id() == material_ids::pin ? pin_material : bushing_material);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    fe_values.reinit(cell);
+    cell_matrix = 0;
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const unsigned int ci = fe.system_to_component_index(i).first;
+          const auto         gi = fe_values.shape_grad(i, q);
+          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+            {
+              const unsigned int cj = fe.system_to_component_index(j).first;
+              const auto         gj = fe_values.shape_grad(j, q);
+              cell_matrix(i, j) += (l * gi[ci] * gj[cj] + m * gi[cj] * gj[ci] +
+                                    (ci == cj ? m * (gi * gj) : 0.0)) *
+                                   fe_values.JxW(q);
+            }
+        }
+  }
+
+
+  // Plane-strain elasticity, per unit axial length: a(u, v) = ∫ λ div u div v +
+  // 2 μ ε(u) : ε(v) dx, with the Lamé constants of the cell's body (material id).
+  // The matrix is assembled without any boundary condition; each solver imposes its own.
   void
   ElasticityProblem::assemble_system()
   {
-    const QGauss<2>    quadrature(fe.degree + 1);
-    FEValues<2>        fe_values(fe, quadrature, update_gradients | update_JxW_values);
+    FEValues<2>        fe_values(fe, quadrature(), update_gradients | update_JxW_values);
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<global_dof_index> dof_indices(dofs_per_cell);
-
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        const auto [l, m] =
-          lame(cell->material_id() == material_ids::pin ? pin_material : bushing_material);
-        fe_values.reinit(cell);
-        cell_matrix = 0;
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            {
-              const unsigned int ci = fe.system_to_component_index(i).first;
-              const auto         gi = fe_values.shape_grad(i, q);
-              for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                {
-                  const unsigned int cj = fe.system_to_component_index(j).first;
-                  const auto         gj = fe_values.shape_grad(j, q);
-                  cell_matrix(i, j) += (l * gi[ci] * gj[cj] + m * gi[cj] * gj[ci] +
-                                        (ci == cj ? m * (gi * gj) : 0.0)) *
-                                       fe_values.JxW(q);
-                }
-            }
+        cell_stiffness(cell, fe_values, cell_matrix);
         cell->get_dof_indices(dof_indices);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < dofs_per_cell; ++j)

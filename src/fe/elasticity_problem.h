@@ -20,7 +20,10 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -68,9 +71,14 @@ namespace wearlink::fe
                       const contact::Material &  pin_material,
                       const contact::Material &  bushing_material,
                       const Profile &            pin_profile,
-                      const Profile &            bore_profile);
+                      const Profile &            bore_profile,
+                      unsigned int               n_partitions = 1);
 
-    /** Read the mesh, set up DoFs, assemble K, extract the contact candidates. */
+    /**
+     * Read the mesh (and, for n_partitions > 1, partition it with METIS and number the
+     * DoFs subdomain by subdomain), set up DoFs, assemble K, extract the contact
+     * candidates.
+     */
     void
     run();
 
@@ -81,6 +89,20 @@ namespace wearlink::fe
      */
     void
     output_results(const dealii::Vector<double> &displacement, const std::string &vtu_path) const;
+
+    /**
+     * The stiffness matrix of one cell: plane-strain elasticity with the Lamé constants
+     * of the cell's body. @p fe_values must use quadrature() and update gradients and
+     * JxW values.
+     */
+    void
+    cell_stiffness(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                   dealii::FEValues<2> &                               fe_values,
+                   dealii::FullMatrix<double> &                        matrix) const;
+
+    /** The cell quadrature of cell_stiffness(). */
+    dealii::QGauss<2>
+    quadrature() const;
 
     dealii::Triangulation<2>    triangulation;
     dealii::FESystem<2>         fe;
@@ -108,6 +130,7 @@ namespace wearlink::fe
 
     const std::string        msh_file;
     const unsigned int       refinements;
+    const unsigned int       n_partitions;
     const contact::Material  pin_material;
     const contact::Material  bushing_material;
     const Profile            pin_profile;

@@ -53,6 +53,11 @@ namespace wearlink::fe
     double refined_arc_half_angle = 4;
     double refined_arc_bore_centre = 0; ///< bushing-frame centre of the refined arc [rad]
     double refined_arc_pin_centre  = 0; ///< pin-frame centre of the refined arc [rad]
+    /**
+     * Distribute the reference solver over the MPI ranks of MPI_COMM_WORLD (METIS
+     * partitions; MPI must be initialized by the program). Not a scene parameter.
+     */
+    bool distribute_reference = false;
     /** Directory for the generated .msh files ("" = a temporary directory). */
     std::string mesh_directory;
 

@@ -7,6 +7,8 @@
 #include "fe/contact_solver.h"
 #include "fe/elasticity_problem.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -102,9 +104,16 @@ namespace wearlink::fe
       spec.pin_refined_centre   = settings.refined_arc_pin_centre;
       check_pin_bushing_geometry(geometry.bore, geometry.pin, spec);
 
-      auto start       = Clock::now();
-      stats.mesh       = write_pin_bushing_mesh(geometry.bore, geometry.pin, spec, msh_path);
-      stats.mesh_time  = seconds_since(start);
+      // Under MPI every rank holds the whole mesh (replicated, partitioned by METIS
+      // for the distributed reference solver); rank 0 writes it, the others wait.
+      const unsigned int n_ranks =
+        settings.distribute_reference ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
+      auto start = Clock::now();
+      if (n_ranks == 1 || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        stats.mesh = write_pin_bushing_mesh(geometry.bore, geometry.pin, spec, msh_path);
+      if (n_ranks > 1)
+        MPI_Barrier(MPI_COMM_WORLD);
+      stats.mesh_time = seconds_since(start);
       start            = Clock::now();
       problem          = std::make_unique<ElasticityProblem>(msh_path,
                                                     settings.degree,
@@ -112,13 +121,14 @@ namespace wearlink::fe
                                                     geometry.pin_material,
                                                     geometry.bushing,
                                                     geometry.pin,
-                                                    geometry.bore);
+                                                    geometry.bore,
+                                                    n_ranks);
       problem->run();
       stats.assembly_time     = seconds_since(start);
       stats.n_dofs            = problem->dof_handler.n_dofs();
       stats.n_pin_candidates  = problem->pin_nodes.size();
       stats.n_bore_candidates = problem->bore_nodes.size();
-      reference = std::make_unique<ReferenceContactSolver>(*problem, settings.max_active_set_iterations);
+      reference = std::make_unique<ReferenceContactSolver>(*problem, settings.max_active_set_iterations, n_ranks > 1);
     }
 
     void
