@@ -51,14 +51,20 @@ namespace wearlink::contact
     Material pin_material;
   };
 
-  /** One load state of the joint, as the multibody model saw it. */
+  /**
+   * One load state of the joint, as the multibody model saw it. The pressure models are
+   * frictionless, so the wear layer passes the normal part of the contact force only:
+   * force = −normal_force · (cos φ*, sin φ*).
+   */
   struct ContactLoad
   {
     double bushing_angle = 0;           ///< θ of the body holding the bore [rad]
     double pin_angle     = 0;           ///< θ of the body holding the pin [rad]
     std::array<double, 2> eccentricity{}; ///< pin centre − bore centre, global [m]
     std::array<double, 2> force{};        ///< force of the bushing on the pin, global [N]
-    double penetration = 0;             ///< δ of the rigid-body contact model [m]
+    double penetration   = 0;           ///< δ of the rigid-body contact model [m]
+    double normal_force  = 0;           ///< F_n ≥ 0 [N]
+    double contact_angle = 0;           ///< φ*, global direction from bore centre to contact [rad]
   };
 
   /** Contact pressure per discrete area of each surface. */

@@ -10,6 +10,10 @@ namespace wearlink::contact
   register_normal_force_laws();
   void
   register_friction_laws();
+  void
+  register_hertz_strip();
+  void
+  register_winkler();
 
   Registry<PressureModel> &
   pressure_models()
@@ -23,5 +27,7 @@ namespace wearlink::contact
   {
     register_normal_force_laws();
     register_friction_laws();
+    register_hertz_strip();
+    register_winkler();
   }
 } // namespace wearlink::contact
