@@ -44,24 +44,45 @@ namespace wearlink::testing
     }
   } // namespace
 
+  namespace
+  {
+    ProgramResult
+    run_shell(const std::string &command)
+    {
+      ProgramResult r;
+      FILE *        pipe = ::popen((command + " 2>&1").c_str(), "r");
+      if (pipe == nullptr)
+        throw std::runtime_error("cannot start " + command);
+      std::array<char, 4096> buf;
+      std::size_t            n;
+      while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0)
+        r.output.append(buf.data(), n);
+      const int status = ::pclose(pipe);
+      r.exit_status    = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      return r;
+    }
+
+    std::string
+    quoted_arguments(const std::vector<std::string> &args)
+    {
+      std::string s = shell_quote(WEARLINK_BINARY);
+      for (const auto &a : args)
+        s += " " + shell_quote(a);
+      return s;
+    }
+  } // namespace
+
   ProgramResult
   run_wearlink(const std::vector<std::string> &args)
   {
-    std::string cmd = shell_quote(WEARLINK_BINARY);
-    for (const auto &a : args)
-      cmd += " " + shell_quote(a);
-    cmd += " 2>&1";
-    ProgramResult r;
-    FILE *        pipe = ::popen(cmd.c_str(), "r");
-    if (pipe == nullptr)
-      throw std::runtime_error("cannot start " + cmd);
-    std::array<char, 4096> buf;
-    std::size_t            n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0)
-      r.output.append(buf.data(), n);
-    const int status = ::pclose(pipe);
-    r.exit_status    = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return run_shell(quoted_arguments(args));
+  }
+
+  ProgramResult
+  run_wearlink_mpi(unsigned int n_ranks, const std::vector<std::string> &args)
+  {
+    return run_shell(shell_quote(WEARLINK_MPIEXEC) + " -np " + std::to_string(n_ranks) +
+                     " --oversubscribe " + quoted_arguments(args));
   }
 
   std::vector<std::string>

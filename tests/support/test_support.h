@@ -28,6 +28,13 @@ namespace wearlink::testing
   ProgramResult
   run_wearlink(const std::vector<std::string> &args);
 
+  /**
+   * Run the wearlink executable on @p n_ranks MPI ranks (mpiexec found by CMake's
+   * FindMPI, with --oversubscribe so that a 2-core machine can host the ranks).
+   */
+  ProgramResult
+  run_wearlink_mpi(unsigned int n_ranks, const std::vector<std::string> &args);
+
   /** Files (recursively) in @p dir. */
   std::vector<std::string>
   files_in(const std::string &dir);

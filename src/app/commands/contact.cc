@@ -14,6 +14,8 @@
 #include "fe/fe_settings.h"
 #include "fe/pin_bushing_model.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -50,6 +52,11 @@ Options:
   --output DIR        output directory
   --set S/E=V         override an entry, e.g. --set "FE model/Surface element size=2e-5"
   --print-parameters  print every entry with its unit, default and meaning
+
+MPI: `mpirun -np N wearlink contact CASE.prm` distributes the reference solver over N
+ranks (METIS partitions of the mesh, a PETSc matrix factored by MUMPS); the condensed
+solver runs on every rank (it is small and serial) and rank 0 writes all outputs. The
+answer is the serial one.
 
 Exit status: 0 success, 2 bad input, 3 numerical failure.
 )";
@@ -125,12 +132,24 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
     int
     run(const std::vector<std::string> &args)
     {
+      // MPI (and PETSc) for the distributed reference solver; a plain run is one rank.
+      int                                      mpi_argc   = 1;
+      char                                     program[]  = "wearlink";
+      char *                                   mpi_argv[] = {program, nullptr};
+      char **                                  argv_ptr   = mpi_argv;
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(mpi_argc, argv_ptr, 1);
+      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      const bool         root    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      std::ostream       muted(nullptr);
+      std::ostream &     log = root ? std::cout : muted;
+
       const auto a = parse_arguments(args, {{"--output", true}, {"--set", true, true}, {"--print-parameters", false}}, "contact");
       dealii::ParameterHandler prm;
       declare_case(prm);
       if (a.has("--print-parameters"))
         {
-          prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+          if (root)
+            prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
           return 0;
         }
       if (a.positional.size() != 1)
@@ -221,19 +240,24 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       const bool run_reference = std::find(solvers.begin(), solvers.end(), "reference") != solvers.end();
 
       const std::string out = a.value("--output", "output/" + std::filesystem::path(file).stem().string());
-      make_output_directory(out);
+      if (root)
+        make_output_directory(out);
+      settings.distribute_reference = n_ranks > 1;
+      if (n_ranks > 1)
+        log << "Reference solver distributed over " << n_ranks << " MPI ranks (METIS partitions, MUMPS).\n";
 
       // Set-up (mesh + assembly, then the condensed factorization).
-      std::cout << "Meshing and assembling the pin–bushing pair (surface element size "
+      log << "Meshing and assembling the pin–bushing pair (surface element size "
                 << settings.surface_element_size * 1e3 << " mm)...\n";
       fe::PinBushingModel model(geometry, settings, out + "/pin_bushing.msh");
       {
         std::ostringstream os;
         prm.print_parameters(os, dealii::ParameterHandler::ShortText);
-        write_file_atomically(out + "/parameters.prm", os.str());
+        if (root)
+          write_file_atomically(out + "/parameters.prm", os.str());
       }
       const auto &st = model.statistics();
-      std::cout << "  " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs << " DoFs, "
+      log << "  " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs << " DoFs, "
                 << st.n_pin_candidates << " pin + " << st.n_bore_candidates
                 << " bore contact candidates; mesh " << fmt(st.mesh_time, 3) << " s, assembly "
                 << fmt(st.assembly_time, 3) << " s\n";
@@ -321,7 +345,8 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
             for (std::size_t k = 0; k < results->size(); ++k)
               {
                 cases.push_back(case_json((*results)[k], loads[k]));
-                write_pressure_csv(out + "/pressure_" + std::to_string(k) + "_" + name + ".csv", (*results)[k]);
+                if (root)
+                  write_pressure_csv(out + "/pressure_" + std::to_string(k) + "_" + name + ".csv", (*results)[k]);
               }
             solvers_json[name]["load_cases"] = cases;
           }
@@ -329,7 +354,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
 
       // Hertz numbers and the comparison table.
       Json hertz = Json::array();
-      std::cout << "\n  load [N]   solver     half-angle [deg]  half-width [mm]  peak p [MPa]  "
+      log << "\n  load [N]   solver     half-angle [deg]  half-width [mm]  peak p [MPa]  "
                    "equilibrium res.  time [ms]\n";
       double max_difference = 0;
       for (std::size_t k = 0; k < loads.size(); ++k)
@@ -346,13 +371,13 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           h["half_angle_deg"] = b / R2 * 180 / pi;
           h["peak_pressure_Pa"] = p0;
           hertz.push_back(h);
-          std::cout << "  " << std::setw(9) << fmt(F, 6) << "  Hertz      " << std::setw(16) << fmt(b / R2 * 180 / pi)
+          log << "  " << std::setw(9) << fmt(F, 6) << "  Hertz      " << std::setw(16) << fmt(b / R2 * 180 / pi)
                     << "  " << std::setw(15) << fmt(b * 1e3) << "  " << std::setw(12) << fmt(p0 / 1e6) << '\n';
           for (auto [name, results] : {std::pair{"condensed", &condensed}, std::pair{"reference", &reference}})
             if (!results->empty())
               {
                 const auto &r = (*results)[k];
-                std::cout << "  " << std::setw(9) << "" << "  " << std::setw(9) << std::left << name << std::right
+                log << "  " << std::setw(9) << "" << "  " << std::setw(9) << std::left << name << std::right
                           << "  " << std::setw(16) << fmt(r.half_angle * 180 / pi) << "  " << std::setw(15)
                           << fmt(r.half_width * 1e3) << "  " << std::setw(12) << fmt(r.peak_pressure / 1e6)
                           << "  " << std::setw(16) << fmt(r.equilibrium_relative_residual, 2) << "  "
@@ -373,7 +398,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           const double ratio = solvers_json["reference"]["mean_solve_time_s"].as_number() /
                                solvers_json["condensed"]["mean_solve_time_s"].as_number();
           summary["reference_to_condensed_time_ratio"] = ratio;
-          std::cout << "\n  condensed vs reference: max |Δp| / p_peak = " << fmt(max_difference, 3)
+          log << "\n  condensed vs reference: max |Δp| / p_peak = " << fmt(max_difference, 3)
                     << "; time per load state " << fmt(solvers_json["condensed"]["mean_solve_time_s"].as_number() * 1e3, 3)
                     << " ms vs " << fmt(solvers_json["reference"]["mean_solve_time_s"].as_number() * 1e3, 4)
                     << " ms (ratio " << fmt(ratio, 4) << ")\n";
@@ -382,7 +407,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       if (write_vtu)
         for (std::size_t k = 0; k < loads.size(); ++k)
           model.solve(loads[k], run_condensed ? fe::SolverKind::condensed : fe::SolverKind::reference,
-                      out + "/fields_" + std::to_string(k) + ".vtu");
+                      root ? out + "/fields_" + std::to_string(k) + ".vtu" : std::string());
 
       Json ledger = Json::object();
       for (const auto &[category, entries] : EffectLedger::instance().snapshot())
@@ -393,8 +418,10 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           ledger[category] = c;
         }
       summary["ledger"] = ledger;
-      write_file_atomically(out + "/summary.json", summary.dump() + "\n");
-      std::cout << "\nWrote " << out << "/summary.json\n";
+      summary["mpi_ranks"] = n_ranks;
+      if (root)
+        write_file_atomically(out + "/summary.json", summary.dump() + "\n");
+      log << "\nWrote " << out << "/summary.json\n";
       return 0;
     }
   } // namespace
