@@ -116,11 +116,27 @@ namespace wearlink::fe
       std::sort(next.begin(), next.end());
       if (next != active && history.count(next))
         {
-          next = active;
-          if (min_lambda < 0)
-            next.erase(std::find(next.begin(), next.end(), worst_lambda));
-          else if (min_gap < -tolerance)
-            next.insert(std::upper_bound(next.begin(), next.end(), worst_gap), worst_gap);
+          // Cycling: correct one kind of violation only — drop every tensile candidate
+          // if there are any, otherwise add every penetrating one. If that set was seen
+          // too, correct the single worst violation (monotone, but one at a time).
+          std::vector<unsigned int> partial;
+          for (const auto i : active)
+            if (min_lambda >= 0 || lambda[i] > 0)
+              partial.push_back(i);
+          if (min_lambda >= 0)
+            for (unsigned int i = 0; i < gap.size(); ++i)
+              if (!is_active[i] && gap[i] < -tolerance)
+                partial.push_back(i);
+          std::sort(partial.begin(), partial.end());
+          next = partial;
+          if (next == active || history.count(next))
+            {
+              next = active;
+              if (min_lambda < 0)
+                next.erase(std::find(next.begin(), next.end(), worst_lambda));
+              else if (min_gap < -tolerance)
+                next.insert(std::upper_bound(next.begin(), next.end(), worst_gap), worst_gap);
+            }
         }
       history.insert(active);
       return next;
@@ -242,7 +258,10 @@ namespace wearlink::fe
 
 
   std::vector<unsigned int>
-  initial_active_set(const ContactKinematics &kinematics, bool force_control)
+  initial_active_set(const ContactKinematics &kinematics,
+                     bool                     force_control,
+                     double                   load_per_length,
+                     double                   effective_modulus)
   {
     std::vector<unsigned int> active;
     const double              tol = gap_tolerance(kinematics);
@@ -251,9 +270,11 @@ namespace wearlink::fe
         active.push_back(i);
     if (force_control)
       {
-        const double g_min = *std::min_element(kinematics.g0.begin(), kinematics.g0.end());
+        const double g_min    = *std::min_element(kinematics.g0.begin(), kinematics.g0.end());
+        const double approach = 2 * load_per_length / (pi * effective_modulus);
         for (unsigned int i = 0; i < kinematics.g0.size(); ++i)
-          if (kinematics.g0[i] <= g_min + tol && std::find(active.begin(), active.end(), i) == active.end())
+          if (kinematics.g0[i] <= g_min + std::max(tol, approach) &&
+              std::find(active.begin(), active.end(), i) == active.end())
             active.push_back(i);
         std::sort(active.begin(), active.end());
         ensure_two_active(active, kinematics.g0);
@@ -346,7 +367,8 @@ namespace wearlink::fe
     // touching candidates, as the reference solver does.
     const bool warm = force_control && !previous_active.empty() &&
                       (load - previous_load).norm() <= 0.25 * load.norm();
-    std::vector<unsigned int> active = warm ? previous_active : initial_active_set(kin, force_control);
+    std::vector<unsigned int> active =
+      warm ? previous_active : initial_active_set(kin, force_control, load.norm(), problem.effective_modulus());
     if (force_control)
       ensure_two_active(active, kin.g0);
 
@@ -579,7 +601,8 @@ namespace wearlink::fe
     const double       tolerance = gap_tolerance(kin);
     const Tensor<1, 2> P_pin = rotate(load, -kin.relative_angle);
 
-    std::vector<unsigned int>           active = initial_active_set(kin, force_control);
+    std::vector<unsigned int>           active =
+      initial_active_set(kin, force_control, load.norm(), problem.effective_modulus());
     std::set<std::vector<unsigned int>> history;
     ContactSolution                     sol;
     std::vector<double>                 lambda(m), gap(m);

@@ -100,6 +100,13 @@ namespace wearlink::fe
                    dealii::FEValues<2> &                               fe_values,
                    dealii::FullMatrix<double> &                        matrix) const;
 
+    /** 1/E* = Σ (1 − ν²)/E of the two bodies [Pa] (REFERENCE.md §5). */
+    double
+    effective_modulus() const
+    {
+      return contact::effective_modulus(pin_material, bushing_material);
+    }
+
     /** The cell quadrature of cell_stiffness(). */
     dealii::QGauss<2>
     quadrature() const;
