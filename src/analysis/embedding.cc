@@ -264,7 +264,7 @@ namespace wearlink::analysis
                        " with a delay of " + std::to_string(delay) + " samples need at least " +
                        std::to_string(2 * w + min_samples + dimension * delay) +
                        " samples; the series has " + std::to_string(series.size()) +
-                       ". Give a longer series or a smaller --delay/--embedding.");
+                       ". Give a longer series, or a smaller delay or embedding dimension.");
     const KdTree tree(series, emb.dimension, emb.delay, n);
     const double r_a = standard_deviation(series);
 

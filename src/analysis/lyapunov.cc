@@ -60,7 +60,7 @@ namespace wearlink::analysis
                          " and Theiler window " + std::to_string(theiler_window) +
                          " samples needs at least " + std::to_string(needed) +
                          " samples; the series has " + std::to_string(n_samples) +
-                         ". Give a longer series or a smaller --embedding/--delay.");
+                         ". Give a longer series, or a smaller embedding dimension or delay.");
     }
 
     double
