@@ -268,8 +268,14 @@ namespace wearlink::analysis
     const KdTree tree(series, emb.dimension, emb.delay, n);
     const double r_a = standard_deviation(series);
 
+    // Exact recurrences (a periodic signal sampled commensurately repeats its samples to
+    // rounding) are the same state, not a neighbour: in dimension 1 the repeat of x_i
+    // on the same branch would always be found first, hiding the point of the other
+    // branch with nearly the same value and making a sine look one-dimensional. So the
+    // search skips points within rounding distance and takes the nearest distinct one
+    // (as Wolf's minimum scale does), and the test is made on that neighbour.
     const std::size_t n_queries = std::min(n, std::max<std::size_t>(1, options.max_queries));
-    std::size_t       n_false = 0, n_tested = 0, n_exact = 0;
+    std::size_t       n_false = 0, n_tested = 0;
     std::vector<double> query(dimension);
     for (std::size_t q = 0; q < n_queries; ++q)
       {
@@ -279,27 +285,22 @@ namespace wearlink::analysis
         NeighbourFilter filter;
         filter.query_index    = i;
         filter.theiler_window = w;
+        filter.min_distance   = exact_recurrence * r_a;
         const Neighbour nb = tree.nearest(query.data(), filter);
         if (!nb.found())
-          continue;
+          continue; // every admissible point repeats this one: nothing to test
         const std::size_t j      = nb.index;
         const double      extra  = std::abs(series[i + dimension * delay] - series[j + dimension * delay]);
         const double      r_next = std::sqrt(nb.distance * nb.distance + extra * extra);
-        // A neighbour within rounding distance is an exact recurrence (a periodic signal
-        // sampled commensurately): it says nothing about the dimension, and criterion 1
-        // would compare two rounding errors. Such queries are not counted.
-        if (nb.distance <= exact_recurrence * r_a)
-          {
-            ++n_exact;
-            continue;
-          }
         ++n_tested;
         if (extra / nb.distance > options.distance_ratio_threshold ||
             r_next / r_a > options.attractor_size_threshold)
           ++n_false;
       }
     if (n_tested == 0)
-      return n_exact > 0 ? 0.0 : 1.0; // only exact recurrences: exactly periodic
+      throw InputError("False nearest neighbours in dimension " + std::to_string(dimension) +
+                       ": no query point has a distinct neighbour beyond the Theiler window (the "
+                       "series repeats one state). Give the embedding dimension explicitly.");
     return static_cast<double>(n_false) / n_tested;
   }
 

@@ -15,6 +15,9 @@ namespace wearlink::analysis
   {
     constexpr double pi = 3.14159265358979323846;
 
+    /** Points closer than this fraction of the attractor extent coincide [-]. */
+    constexpr double exact_recurrence = 1e-9;
+
     /** Fewest neighbour candidates a method needs beyond the Theiler window [-]. */
     constexpr std::size_t min_vectors_beyond_window = 32;
 
@@ -554,6 +557,11 @@ namespace wearlink::analysis
     std::vector<double> y;
     NeighbourFilter     filter;
     filter.theiler_window = theiler_window;
+    // An exact recurrence (a commensurately sampled periodic signal repeats its samples
+    // to rounding) is the same state, not a neighbour: its "separation" is rounding
+    // noise, whose logarithm wanders by nats and would fake a divergence. Such points are
+    // skipped and the nearest distinct point is taken.
+    filter.min_distance = exact_recurrence * series_extent(series);
     for (std::size_t r = 0; r < n_ref; ++r)
       {
         const std::size_t i = r * n_tree / n_ref;

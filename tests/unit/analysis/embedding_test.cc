@@ -19,8 +19,9 @@ TEST(MutualInformation, SineDelayIsAQuarterPeriod)
   // x_n = sin(2 pi n / P). The pair (x_n, x_{n+tau}) lies on an ellipse that becomes a
   // circle at tau = P/4 (the two samples are in quadrature), where x_{n+tau} tells least
   // about x_n: the first minimum of I(tau) is at P/4 (Fraser & Swinney 1986). Periods
-  // of 61.7 and 123.45 samples (not commensurate with the sampling, so the phases fill
-  // the circle). Tolerance: 10 % of P/4; I(tau) is flat near its minimum (quadratic in
+  // of 61.7 and 123.45 samples (not whole numbers of samples: the series repeats only
+  // every 617 and 2469 samples, so the phases fill the circle densely). Tolerance: 10 %
+  // of P/4; I(tau) is flat near its minimum (quadratic in
   // tau - P/4), so the histogram estimate can place it a sample or two off.
   for (const double period : {61.7, 123.45})
     {
@@ -89,6 +90,11 @@ TEST(FalseNearestNeighbours, SineNeedsTwoDimensions)
 {
   // A sine embedded with a quarter-period delay is a circle: a closed curve needs two
   // coordinates (in one, the rising and falling halves overlap: about half false).
+  // The period, 61.7 samples, makes the series repeat exactly (to rounding) every 617
+  // samples: each point has exact recurrences, which are the same state and must not
+  // count as its nearest neighbour (they would make every neighbour in dimension 1 a
+  // "true" one and the sine one-dimensional). The nearest distinct point in dimension
+  // 1 is then on the other branch, half a phase step away, hence mostly false.
   const std::vector<double> x      = ref::sine(20000, 1.0, 61.7);
   const DimensionChoice     choice = choose_dimension(x, 15);
   EXPECT_EQ(choice.dimension, 2u);

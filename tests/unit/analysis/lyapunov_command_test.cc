@@ -77,7 +77,9 @@ TEST(LyapunovCommand, HenonPerIterationWithOutputs)
   EXPECT_EQ(summary.at("exponent_unit").as_string(), "1/sample (natural log)");
   EXPECT_EQ(summary.at("embedding_dimension").as_number(), 2);
   if (wearlink::gnuplot_available())
-    EXPECT_TRUE(std::filesystem::exists(dir + "/out/lyapunov_x_rosenstein.png"));
+    {
+      EXPECT_TRUE(std::filesystem::exists(dir + "/out/lyapunov_x_rosenstein.png"));
+    }
 }
 
 TEST(LyapunovCommand, TimeColumnGivesPerSecond)

@@ -132,6 +132,23 @@ TEST(LargestLyapunovExponent, PeriodicSignalsGiveZero)
     }
 }
 
+TEST(LargestLyapunovExponent, ExactlyRepeatingSineGivesZeroToRounding)
+{
+  // sin(2 pi t / 1.2345 s) sampled every 0.01 s repeats exactly (to rounding) every 12345
+  // samples, so a point's nearest neighbour could be its own repeat, at a distance of
+  // 1e-16: the same state. Its "separation" is rounding noise whose logarithm wanders by
+  // nats, which fakes a slope (|lambda| P = 0.016 measured when repeats were taken as
+  // neighbours). With repeats skipped, every neighbour is a distinct point of the same
+  // circle, whose distance stays constant: |lambda| P must vanish to the level of the
+  // fit noise. Bound 1e-3 per period, i.e. a separation that changes by less than 0.1 %
+  // per period (measured: 4e-7 Rosenstein, 1.3e-4 Wolf).
+  const double        period = 1.2345, dt = 0.01;
+  const BothMethods   b      = estimate_both(ref::sine(20000, dt, period), dt);
+  EXPECT_EQ(b.wolf.embedding.embedding.dimension, 2u);
+  EXPECT_NEAR(b.wolf.exponent() * period, 0.0, 1e-3);
+  EXPECT_NEAR(b.rosenstein.exponent() * period, 0.0, 1e-3);
+}
+
 TEST(LargestLyapunovExponent, RosensteinFitRegionIsInsideTheLinearPart)
 {
   // Lorenz, 5e4 samples: the automatic fit region must start after the initial

@@ -21,7 +21,7 @@ namespace wearlink::testing
   rk4_step(const F &f, const State3 &x, const double h)
   {
     auto axpy = [](const State3 &a, const double s, const State3 &b) {
-      return State3{a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]};
+      return State3{{a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]}};
     };
     const State3 k1 = f(x);
     const State3 k2 = f(axpy(x, 0.5 * h, k1));
@@ -65,9 +65,9 @@ namespace wearlink::testing
   lorenz_x(const std::size_t n, const double dt = 0.01)
   {
     const auto f = [](const State3 &s) {
-      return State3{10.0 * (s[1] - s[0]), s[0] * (28.0 - s[2]) - s[1], s[0] * s[1] - 8.0 / 3.0 * s[2]};
+      return State3{{10.0 * (s[1] - s[0]), s[0] * (28.0 - s[2]) - s[1], s[0] * s[1] - 8.0 / 3.0 * s[2]}};
     };
-    return sample_flow(f, {1.0, 1.0, 1.0}, dt, n, 2, 50.0);
+    return sample_flow(f, {{1.0, 1.0, 1.0}}, dt, n, 2, 50.0);
   }
 
   /** Rössler x(t), a = b = 0.2, c = 5.7; LLE about 0.071 per time unit. */
@@ -75,17 +75,17 @@ namespace wearlink::testing
   roessler_x(const std::size_t n, const double dt = 0.1)
   {
     const auto f = [](const State3 &s) {
-      return State3{-s[1] - s[2], s[0] + 0.2 * s[1], 0.2 + s[2] * (s[0] - 5.7)};
+      return State3{{-s[1] - s[2], s[0] + 0.2 * s[1], 0.2 + s[2] * (s[0] - 5.7)}};
     };
-    return sample_flow(f, {1.0, 1.0, 0.0}, dt, n, 4, 500.0);
+    return sample_flow(f, {{1.0, 1.0, 0.0}}, dt, n, 4, 500.0);
   }
 
   /** Van der Pol x(t), x'' - mu (1 - x^2) x' + x = 0: a limit cycle, LLE 0. */
   inline std::vector<double>
   van_der_pol_x(const std::size_t n, const double dt = 0.05, const double mu = 1.0)
   {
-    const auto f = [mu](const State3 &s) { return State3{s[1], mu * (1 - s[0] * s[0]) * s[1] - s[0], 0.0}; };
-    return sample_flow(f, {2.0, 0.0, 0.0}, dt, n, 4, 200.0);
+    const auto f = [mu](const State3 &s) { return State3{{s[1], mu * (1 - s[0] * s[0]) * s[1] - s[0], 0.0}}; };
+    return sample_flow(f, {{2.0, 0.0, 0.0}}, dt, n, 4, 200.0);
   }
 
   /** Hénon x_n, a 1.4, b 0.3; LLE 0.420 per iteration. */
