@@ -10,6 +10,7 @@
 #pragma once
 
 #include "contact/clearance_joint.h"
+#include "io/analyses.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
 
@@ -41,6 +42,9 @@ namespace wearlink::io
 
     double output_interval  = 1e-3; ///< time-series sampling [s]; 0: every step
     bool   write_time_series = true;
+
+    /** The nonlinear-dynamics analyses the scene lists (io/analyses.h). */
+    AnalysesSettings analyses;
 
     /** The parsed parameters (for echoing the effective scene next to the results). */
     std::unique_ptr<dealii::ParameterHandler> parameters;

@@ -321,6 +321,7 @@ namespace wearlink::io
           prm.leave_subsection();
         }
       declare_numerics(prm);
+      declare_analyses(prm);
     }
 
     // ------------------------------------------------------------------------------
@@ -667,6 +668,7 @@ namespace wearlink::io
     check_active_required_entries(prm, file, inactive);
 
     build_scene(scene, prm, bodies, joints);
+    scene.analyses = parse_analyses(prm, scene);
     return scene;
   }
 
