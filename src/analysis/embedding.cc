@@ -127,6 +127,27 @@ namespace wearlink::analysis
       std::vector<double>                    joint, p_first, p_second;
     };
 
+    /**
+     * Mean |x_{n+1} - x_n| below this fraction of the range: successive samples are
+     * close, the series resolves a continuous trajectory (a flow) [-].
+     */
+    constexpr double max_flow_step = 0.1;
+
+    /**
+     * True if the series is a sampled flow rather than a map: consecutive samples
+     * differ on average by less than max_flow_step of the range (Hénon x: about 40 %;
+     * a flow sampled 20 times per oscillation: about 5 %).
+     */
+    bool
+    is_sampled_flow(const std::vector<double> &x)
+    {
+      const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+      double     step     = 0.0;
+      for (std::size_t i = 1; i < x.size(); ++i)
+        step += std::abs(x[i] - x[i - 1]);
+      return step / (x.size() - 1) < max_flow_step * (*hi - *lo);
+    }
+
     double
     standard_deviation(const std::vector<double> &x)
     {
@@ -152,8 +173,9 @@ namespace wearlink::analysis
           return "mutual information decays below 5% of I(0) without a minimum (map-like "
                  "series): delay 1";
         case DelayRule::one_over_e:
-          return "no minimum of the mutual information up to the largest delay examined: "
-                 "first delay with I <= I(0)/e";
+          return "no minimum of the mutual information before it decayed (a slowly "
+                 "decorrelating flow) or up to the largest delay examined: first delay "
+                 "with I <= I(0)/e";
       }
     return "";
   }
@@ -221,6 +243,8 @@ namespace wearlink::analysis
       {
         if (at(tau) < floor)
           {
+            if (is_sampled_flow(series))
+              break; // a flow that decorrelates slowly: the 1/e rule below
             out.delay = 1;
             out.rule  = DelayRule::decorrelated;
             return out;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace wearlink::analysis;
 namespace ref = wearlink::testing;
@@ -53,6 +54,34 @@ TEST(MutualInformation, HenonMapGetsDelayOne)
   const DelayChoice choice = choose_delay(ref::henon_x(20000));
   EXPECT_EQ(choice.rule, DelayRule::decorrelated);
   EXPECT_EQ(choice.delay, 1u);
+}
+
+TEST(MutualInformation, SlowlyDecorrelatingFlowIsNotAMap)
+{
+  // A smooth random signal, x_{n+1} = rho x_n + sqrt(1 - rho^2) xi_n (Gaussian AR(1) =
+  // an Ornstein-Uhlenbeck process sampled every dt, correlation time tc = -dt/ln rho),
+  // has no minimum in I(tau): it decays below 5 % of I(0) after a few correlation times.
+  // Consecutive samples are close (mean step ~ 4 % of the range at tc = 20 samples), so
+  // it is a sampled flow, not a map: the delay must follow the correlation time (1/e
+  // rule), not be 1 sample. Sampled 4 times finer, the delay in samples must grow by
+  // about 4 (tolerance 25 %: the histogram estimate and the finite sample), so that the
+  // delay in seconds does not depend on the sampling.
+  auto ou = [](const double tc_samples, const std::size_t n) {
+    std::mt19937                     rng(12345);
+    std::normal_distribution<double> xi(0.0, 1.0);
+    const double                     rho = std::exp(-1.0 / tc_samples);
+    std::vector<double>              x(n);
+    for (std::size_t i = 1; i < n; ++i)
+      x[i] = rho * x[i - 1] + std::sqrt(1.0 - rho * rho) * xi(rng);
+    return x;
+  };
+  const DelayChoice coarse = choose_delay(ou(20.0, 30000));
+  const DelayChoice fine   = choose_delay(ou(80.0, 120000));
+  EXPECT_EQ(coarse.rule, DelayRule::one_over_e);
+  EXPECT_EQ(fine.rule, DelayRule::one_over_e);
+  EXPECT_GT(coarse.delay, 3u);
+  EXPECT_NEAR(static_cast<double>(fine.delay) / coarse.delay, 4.0, 1.0)
+    << "coarse " << coarse.delay << ", fine " << fine.delay;
 }
 
 TEST(FalseNearestNeighbours, HenonNeedsTwoDimensions)
