@@ -381,17 +381,23 @@ namespace wearlink::analysis
     /**
      * Move the neighbour y_j of @p y to the closest point of the sampled trajectory
      * through it, on the segments y_{j-1}..y_j and y_j..y_{j+1} (linear interpolation in
-     * time). Returns the pair unchanged if no point of the segments is closer.
+     * time). Returns the pair unchanged if no point of the segments is closer. A point
+     * within @p min_distance is not taken: on an exactly periodic orbit the closest
+     * point of the neighbouring segment is the reference state itself (one period
+     * later), and its "separation" would be integration drift (1e-13 m for the ideal
+     * nine-bar), whose slow growth would pass for divergence.
      */
     NeighbourPair
     refine_along_trajectory(const std::vector<double> &series,
                             const Embedding &          emb,
                             const std::vector<double> &y,
                             const std::size_t          i,
-                            const Neighbour &          nb)
+                            const Neighbour &          nb,
+                            const double               min_distance)
     {
       NeighbourPair best{i, nb.index, 0.0};
       double        best_sq = nb.distance * nb.distance;
+      const double  min_sq  = min_distance * min_distance;
       for (std::size_t start = nb.index > 0 ? nb.index - 1 : 0; start <= nb.index; ++start)
         {
           double along = 0.0, length_sq = 0.0;
@@ -414,7 +420,7 @@ namespace wearlink::analysis
               const double      diff = y[d] - (1.0 - f) * series[start + o] - f * series[start + 1 + o];
               d_sq += diff * diff;
             }
-          if (d_sq > 0.0 && d_sq < best_sq)
+          if (d_sq > min_sq && d_sq < best_sq)
             {
               best_sq = d_sq;
               best    = {i, start, f};
@@ -570,7 +576,7 @@ namespace wearlink::analysis
         const Neighbour nb = tree.nearest(y.data(), filter);
         if (!nb.found())
           continue;
-        pairs.push_back(out.interpolated ? refine_along_trajectory(series, emb, y, i, nb) :
+        pairs.push_back(out.interpolated ? refine_along_trajectory(series, emb, y, i, nb, filter.min_distance) :
                                            NeighbourPair{i, nb.index, 0.0});
       }
     if (pairs.empty())
