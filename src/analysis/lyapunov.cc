@@ -15,7 +15,12 @@ namespace wearlink::analysis
   {
     constexpr double pi = 3.14159265358979323846;
 
-    /** Points closer than this fraction of the attractor extent coincide [-]. */
+    /**
+     * Points closer than this fraction of the attractor extent coincide: an exact
+     * recurrence, the same state, not a neighbour [-]. Periodic motion computed to
+     * ~1e-10 relative repeats within it; one integrated much more loosely (relative
+     * drift per period above 1e-9) would need a larger value.
+     */
     constexpr double exact_recurrence = 1e-9;
 
     /** Fewest neighbour candidates a method needs beyond the Theiler window [-]. */
