@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -202,15 +203,17 @@ namespace wearlink::io
             "Directions",
             "x",
             P::MultipleSelection("x|y"),
-            "Journal-centre coordinates analysed (global axes): x is the seed's choice "
-            "(Figs 11–12).",
+            "Coordinates analysed (global axes): of each analysed joint's journal centre "
+            "relative to its bushing, and of each analysed body's centre of mass. x is the "
+            "seed's choice (Figs 11–12).",
             "none");
     declare(prm,
             "Delay",
             "0",
             P::Integer(0),
-            "Delay of the embedding in samples; 0: first minimum of the average mutual "
-            "information.",
+            "Delay of the embedding in samples; 0: from the average mutual information "
+            "(its first minimum; a map-like series: 1; a flow that decorrelates without a "
+            "minimum: the first delay with I <= I(0)/e).",
             "samples");
     declare(prm,
             "Embedding dimension",
@@ -463,6 +466,18 @@ namespace wearlink::io
 
     const bool have_section = run.section.points.n_samples() > 0;
 
+    // The recorded data, whenever there is some: read_recorded_run() reads it back.
+    if (write && run.series.n_samples() > 0)
+      {
+        write_sampled_csv(run.series, dir + "analysis_series.csv", false);
+        files.push_back("analysis_series.csv");
+      }
+    if (run.series.n_samples() > 0)
+      {
+        out["series_sample_interval_s"] = run.sample_interval;
+        out["series_samples"]           = run.series.n_samples();
+      }
+
     // Phase portraits: the series, and one PNG per position-velocity pair with the
     // Poincaré points of the same pair in red (seed Figs 9-10).
     if (settings.phase_portrait)
@@ -472,8 +487,6 @@ namespace wearlink::io
         pp["sample_interval_s"] = run.sample_interval;
         if (write)
           {
-            write_sampled_csv(run.series, dir + "phase_portrait.csv", false);
-            files.push_back("phase_portrait.csv");
             for (const auto &pair : phase_pairs(settings))
               {
                 const std::size_t ip = run.series.index(pair.position), iv = run.series.index(pair.velocity);
@@ -604,5 +617,83 @@ namespace wearlink::io
     if (write)
       out["files"] = files;
     return out;
+  }
+
+  namespace
+  {
+    /** The unit of a channel from its name's suffix (analysis/channels.h). */
+    std::string
+    unit_of(const std::string &name)
+    {
+      for (const auto &[suffix, unit] : std::vector<std::pair<std::string, std::string>>{
+             {"_rad_s", "rad/s"}, {"_m_s", "m/s"}, {"_rad", "rad"}, {"_m", "m"}})
+        if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+          return unit;
+      return "";
+    }
+
+    /** A CSV written by write_sampled_csv(); @p skip leading columns before time_s. */
+    analysis::SampledChannels
+    read_sampled_csv(const std::string &path, const std::size_t skip)
+    {
+      std::ifstream in(path);
+      if (!in)
+        throw InputError("Cannot read the recorded run file '" + path + "'.");
+      analysis::SampledChannels s;
+      std::string               line;
+      std::getline(in, line);
+      const auto header = dealii::Utilities::split_string_list(line, ',');
+      if (header.size() < skip + 1 || header[skip] != "time_s")
+        throw InputError("'" + path + "' is not a recorded series of wearlink (no time_s column).");
+      for (std::size_t c = skip + 1; c < header.size(); ++c)
+        {
+          s.names.push_back(header[c]);
+          s.units.push_back(unit_of(header[c]));
+        }
+      s.values.assign(s.names.size(), {});
+      std::size_t line_no = 1;
+      while (std::getline(in, line))
+        {
+          ++line_no;
+          if (line.empty())
+            continue;
+          const auto fields = dealii::Utilities::split_string_list(line, ',');
+          if (fields.size() != header.size())
+            throw InputError("'" + path + "', line " + std::to_string(line_no) + ": " +
+                             std::to_string(fields.size()) + " fields, the header has " +
+                             std::to_string(header.size()) + ".");
+          s.time.push_back(std::stod(fields[skip]));
+          for (std::size_t c = 0; c < s.names.size(); ++c)
+            s.values[c].push_back(std::stod(fields[skip + 1 + c]));
+        }
+      return s;
+    }
+  } // namespace
+
+  analysis::RecordedRun
+  read_recorded_run(const std::string &output_directory, const std::string &label)
+  {
+    const std::string dir     = output_directory + "/";
+    const Json        summary = read_json_file(dir + "summary.json");
+    if (!summary.contains("analyses"))
+      throw InputError("The run in '" + output_directory +
+                       "' recorded no analyses ('Analyses/List of analyses' was empty).");
+    const Json &          a = summary.at("analyses");
+    analysis::RecordedRun run;
+    run.label = label;
+    if (a.contains("driving_period_s"))
+      run.driving_period = a.at("driving_period_s").as_number();
+    if (a.contains("series_sample_interval_s"))
+      {
+        run.sample_interval = a.at("series_sample_interval_s").as_number();
+        run.series          = read_sampled_csv(dir + "analysis_series.csv", 0);
+      }
+    if (a.contains("poincare"))
+      {
+        run.section.period     = a.at("poincare").at("period_s").as_number();
+        run.section.first_time = a.at("poincare").at("first_time_s").as_number();
+        run.section.points     = read_sampled_csv(dir + "poincare_section.csv", 1);
+      }
+    return run;
   }
 } // namespace wearlink::io

@@ -133,7 +133,7 @@ namespace wearlink::io
   /**
    * The outputs of @p settings' analyses for a recorded run: phase portraits (PNG per
    * position–velocity pair, Poincaré points overlaid in red if recorded, data in
-   * phase_portrait.csv), the Poincaré section (poincare_section.csv, PNG per pair, the
+   * the recorded series in analysis_series.csv), the Poincaré section (poincare_section.csv, PNG per pair, the
    * spread of each channel), the Lyapunov exponents (lyapunov_<channel>_<method>.csv and
    * .png, values in the returned JSON). Files only if @p output_directory is not empty;
    * every file atomically.
@@ -142,4 +142,14 @@ namespace wearlink::io
   analyse_recorded_run(const analysis::RecordedRun &run,
                        const AnalysesSettings &     settings,
                        const std::string &          output_directory);
+
+  /**
+   * The RecordedRun of a run that wrote its analyses into @p output_directory
+   * (summary.json, analysis_series.csv, poincare_section.csv), labelled @p label: a
+   * run recorded earlier (say before wear) can be analysed or compared again without
+   * re-running it. Values are read back as written (12 significant digits).
+   * InputError if the directory holds no recorded analyses.
+   */
+  analysis::RecordedRun
+  read_recorded_run(const std::string &output_directory, const std::string &label = "");
 } // namespace wearlink::io

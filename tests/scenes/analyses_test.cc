@@ -176,7 +176,8 @@ TEST(Analyses, OutputFilesOnlyForListedAnalyses)
   const Json s             = io::run_scene(scene, options);
   EXPECT_TRUE(std::filesystem::exists(dir + "/poincare_section.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/lyapunov_A_ex_m_rosenstein.csv"));
-  EXPECT_FALSE(std::filesystem::exists(dir + "/phase_portrait.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/analysis_series.csv")); // the Lyapunov series
+  EXPECT_FALSE(std::filesystem::exists(dir + "/phase_portrait_A_ex_m.png"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/lyapunov_B_ex_m_rosenstein.csv"));
   const Json &l = s.at("analyses").at("lyapunov");
   ASSERT_EQ(l.size(), 1u);
@@ -207,4 +208,57 @@ TEST(Analyses, IdealMechanismHasZeroLyapunovExponent)
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     EXPECT_NEAR(l[k].at("exponent_per_s").as_number() * 0.5, 0.0, 0.05) << l[k].at("method").as_string();
+}
+
+TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
+{
+  // A run's analyses can be redone later from its output directory (for comparisons of
+  // runs made at different times, e.g. before and after wear): read_recorded_run() gives
+  // back the series and the section, and analysing them again reproduces the summary's
+  // Poincaré spread and Lyapunov exponent. Tolerances: the files hold 12 significant
+  // digits, so a spread agrees to 1e-11 of the channel's magnitude; the exponent, a mean over thousands of
+  // neighbour pairs whose distances (~1e-6 m) are perturbed by ~1e-15 m, to 1e-6.
+  const std::string dir   = wl::fresh_directory("analyses_read_back");
+  auto              scene = wl::scene("params/nine_bar_clearance.prm",
+                                {"Simulation/End time=3.0",
+                                 "Analyses/List of analyses=poincare, lyapunov",
+                                 "Analyses/Joints=A",
+                                 "Analyses/Transient=0.5",
+                                 "Analyses/Lyapunov/Methods=rosenstein",
+                                 "Output/Time series=false"});
+  io::RunOptions options;
+  options.output_directory = dir;
+  const Json  s            = io::run_scene(scene, options);
+  const Json &original     = s.at("analyses");
+
+  const analysis::RecordedRun run = io::read_recorded_run(dir, "read back");
+  EXPECT_EQ(run.series.n_samples(), 2501u); // 0.5 .. 3.0 s every 1 ms
+  EXPECT_EQ(run.series.names.size(), 4u);   // A_ex_m, A_ey_m, A_vex_m_s, A_vey_m_s
+  EXPECT_EQ(run.series.units[2], "m/s");
+  EXPECT_EQ(run.section.points.n_samples(), 6u);
+  EXPECT_DOUBLE_EQ(run.driving_period, 0.5);
+
+  const Json again = io::analyse_recorded_run(run, scene.analyses, "");
+  for (const char *c : {"A_ex_m", "A_vey_m_s", "rod2_y_m"})
+    {
+      // Each value is rounded to 5e-12 of itself, so a difference of two moves by at
+      // most 1e-11 of the largest magnitude.
+      double largest = 0.0;
+      for (const double v : run.section.points.values[run.section.points.index(c)])
+        largest = std::max(largest, std::abs(v));
+      EXPECT_NEAR(again.at("poincare").at("spread").at(c).as_number(),
+                  original.at("poincare").at("spread").at(c).as_number(),
+                  1e-11 * largest)
+        << c;
+    }
+  const double l0 = original.at("lyapunov")[0].at("exponent_per_s").as_number();
+  EXPECT_NEAR(again.at("lyapunov")[0].at("exponent_per_s").as_number(), l0, 1e-6 * std::abs(l0));
+
+  // A run that recorded no analyses has nothing to read back.
+  const std::string plain = wl::fresh_directory("analyses_read_back_none");
+  auto              none  = wl::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.1"});
+  io::RunOptions    o2;
+  o2.output_directory = plain;
+  io::run_scene(none, o2);
+  EXPECT_THROW(io::read_recorded_run(plain), InputError);
 }

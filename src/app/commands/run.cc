@@ -29,7 +29,7 @@ examples) and writes into DIR (default: output/<scene name>):
   time_series.csv   sampled every 'Output/Time series interval' seconds
   parameters.prm    the effective scene (with --set overrides applied)
 and, for the analyses listed in 'Analyses/List of analyses' (phase-portrait, poincare,
-lyapunov; see --print-parameters): phase_portrait.csv and phase_portrait_*.png,
+lyapunov; see --print-parameters): analysis_series.csv and phase_portrait_*.png,
 poincare_section.csv and poincare_*.png, lyapunov_<channel>_<method>.csv/.png, with
 their results (Poincaré spread, exponents in 1/s, natural log) in summary.json
 Every file is written under a temporary name and renamed when complete.
