@@ -10,6 +10,7 @@
 #include "base/plot.h"
 #include "io/lyapunov_report.h"
 #include "io/scene.h"
+#include "io/shadow_trajectory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -194,11 +195,28 @@ namespace wearlink::io
     declare(prm,
             "Methods",
             "wolf, rosenstein",
-            P::MultipleSelection("wolf|rosenstein"),
+            P::MultipleSelection("wolf|rosenstein|two-trajectory"),
             "Estimators of the largest Lyapunov exponent: wolf (Wolf et al. 1985, fixed "
-            "evolution time, the seed's method), rosenstein (Rosenstein et al. 1993). Only "
-            "used if List of analyses has lyapunov.",
+            "evolution time, the seed's method) and rosenstein (Rosenstein et al. 1993) from "
+            "the journal-centre series; two-trajectory (Benettin et al. 1980) from the "
+            "simulation itself: a shadow copy of the scene a small distance away, "
+            "renormalized every Renormalization interval (doubles the simulation cost). "
+            "Only used if List of analyses has lyapunov.",
             "none");
+    declare(prm,
+            "Two-trajectory separation",
+            "1e-6",
+            P::Double(0),
+            "two-trajectory: distance d0 of the shadow from the reference (positions, and "
+            "velocities times T/2π); far above the integration tolerance, far below the "
+            "clearance.",
+            "m");
+    declare(prm,
+            "Renormalization interval",
+            "0.02",
+            P::Double(0),
+            "two-trajectory: the shadow is put back at distance d0 this often.",
+            "s");
     declare(prm,
             "Directions",
             "x",
@@ -280,10 +298,19 @@ namespace wearlink::io
 
     r.enter("Lyapunov");
     for (const auto &m : r.get_list("Methods"))
-      s.methods.push_back(m == "wolf" ? analysis::LyapunovMethod::wolf : analysis::LyapunovMethod::rosenstein);
+      if (m == "two-trajectory")
+        s.two_trajectory = true;
+      else
+        s.methods.push_back(m == "wolf" ? analysis::LyapunovMethod::wolf : analysis::LyapunovMethod::rosenstein);
+    s.two_trajectory_separation = r.get_double("Two-trajectory separation");
+    s.renormalization_interval  = r.get_double("Renormalization interval");
+    if (s.lyapunov && s.two_trajectory && !(s.two_trajectory_separation > 0.0))
+      r.fail("Two-trajectory separation", "it must be > 0 m");
+    if (s.lyapunov && s.two_trajectory && !(s.renormalization_interval > 0.0))
+      r.fail("Renormalization interval", "it must be > 0 s");
     s.directions = r.get_list("Directions");
-    if (s.lyapunov && s.methods.empty())
-      r.fail("Methods", "at least one of wolf, rosenstein is needed when lyapunov is listed");
+    if (s.lyapunov && s.methods.empty() && !s.two_trajectory)
+      r.fail("Methods", "at least one of wolf, rosenstein, two-trajectory is needed when lyapunov is listed");
     if (s.lyapunov && s.directions.empty())
       r.fail("Directions", "at least one of x, y is needed when lyapunov is listed");
     if (const long d = r.get_integer("Delay"); d > 0)
@@ -294,7 +321,7 @@ namespace wearlink::io
     r.leave();
     if (s.poincare)
       driving_period(scene, s); // throws if there is none, or the phase exceeds it
-    if (s.lyapunov && s.joints.empty() && s.bodies.empty())
+    if (s.lyapunov && !s.methods.empty() && s.joints.empty() && s.bodies.empty())
       throw InputError("In " + scene.file +
                        ", 'Analyses/List of analyses' has lyapunov but there is nothing to "
                        "analyse: the scene has no clearance joints and 'Analyses/Bodies' is empty.");
@@ -377,6 +404,26 @@ namespace wearlink::io
         ledger.add_resource("analysis channels", static_cast<long>(channels.size()));
         series = std::make_unique<analysis::SeriesRecorder>(std::move(channels), record_from, settings.sample_interval);
       }
+    if (settings.lyapunov && settings.two_trajectory)
+      {
+        ShadowTrajectorySettings st;
+        st.begin_time = record_from;
+        st.separation = settings.two_trajectory_separation;
+        st.interval   = settings.renormalization_interval;
+        double T      = period;
+        if (!(T > 0.0))
+          try
+            {
+              T = driving_period(scene);
+            }
+          catch (const InputError &)
+            {
+              T = 0.0;
+            }
+        st.velocity_scale = T > 0.0 ? T / two_pi : 1.0;
+        ledger.record_construction("analysis", "two-trajectory shadow");
+        shadow = std::make_unique<ShadowTrajectory>(scene, st);
+      }
     if (settings.poincare)
       {
         // Every state channel: a section point is the whole state at t_k.
@@ -399,6 +446,8 @@ namespace wearlink::io
       out.push_back(series.get());
     if (section)
       out.push_back(section.get());
+    if (shadow)
+      out.push_back(shadow.get());
     return out;
   }
 
@@ -439,7 +488,47 @@ namespace wearlink::io
       ledger.add_calls("analysis samples", static_cast<long>(series->series().n_samples()));
     if (section)
       ledger.add_calls("poincare points", static_cast<long>(section->section().points.n_samples()));
-    return analyse_recorded_run(recorded_run(), settings, output_directory);
+    Json out = analyse_recorded_run(recorded_run(), settings, output_directory);
+    if (shadow)
+      {
+        ledger.add_calls("lyapunov estimates", 1);
+        Json j                        = Json::object();
+        j["channel"]                  = "state";
+        j["method"]                   = "two-trajectory";
+        j["exponent_per_s"]           = shadow->exponent();
+        j["unit"]                     = "1/s (natural log)";
+        const double T                = recorded_run().driving_period;
+        if (T > 0.0)
+          j["exponent_per_driving_period"] = shadow->exponent() * T;
+        j["renormalizations"]         = shadow->n_renormalizations();
+        j["renormalization_interval_s"] = settings.renormalization_interval;
+        j["separation_m"]             = settings.two_trajectory_separation;
+        if (!out.contains("lyapunov"))
+          out["lyapunov"] = Json::array();
+        out["lyapunov"].push_back(j);
+        if (!output_directory.empty())
+          {
+            std::ostringstream csv;
+            csv << std::setprecision(10) << "time_s,running_exponent_per_s\n";
+            PlotSeries running;
+            running.title = "running estimate";
+            for (std::size_t k = 0; k < shadow->running_time().size(); ++k)
+              {
+                csv << shadow->running_time()[k] << ',' << shadow->running_exponent()[k] << '\n';
+                running.x.push_back(shadow->running_time()[k]);
+                running.y.push_back(shadow->running_exponent()[k]);
+              }
+            write_file_atomically(output_directory + "/lyapunov_state_two-trajectory.csv", csv.str());
+            PlotSpec plot;
+            plot.title   = "Two-trajectory (Benettin) largest Lyapunov exponent of the state = " +
+                         format(shadow->exponent()) + " 1/s";
+            plot.x_label = "time [s]";
+            plot.y_label = "running estimate [1/s, natural log]";
+            plot.series  = {running};
+            plot_png(plot, output_directory + "/lyapunov_state_two-trajectory.png");
+          }
+      }
+    return out;
   }
 
   // -----------------------------------------------------------------------------------

@@ -40,6 +40,7 @@ namespace wearlink
 namespace wearlink::io
 {
   struct Scene;
+  class ShadowTrajectory;
 
   /** What the scene's `subsection Analyses` asked for (names resolved and checked). */
   struct AnalysesSettings
@@ -61,6 +62,10 @@ namespace wearlink::io
     double sample_interval = 1e-3;
     /** Lyapunov: methods, directions ("x", "y") and embedding. */
     std::vector<analysis::LyapunovMethod> methods;
+    /** Also the exponent of the simulation itself (io/shadow_trajectory.h). */
+    bool   two_trajectory            = false;
+    double two_trajectory_separation = 1e-6; ///< d0 [m]
+    double renormalization_interval  = 0.02; ///< τ [s]
     std::vector<std::string>              directions;
     std::optional<std::size_t>            delay;
     std::optional<unsigned int>           dimension;
@@ -128,6 +133,7 @@ namespace wearlink::io
     double                                      period = 0.0;
     std::unique_ptr<analysis::SeriesRecorder>   series;
     std::unique_ptr<analysis::PoincareRecorder> section;
+    std::unique_ptr<ShadowTrajectory>           shadow;
   };
 
   /**

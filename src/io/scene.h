@@ -26,6 +26,8 @@ namespace wearlink::io
   struct Scene
   {
     std::string file;  ///< the scene file as given
+    /** The --set overrides it was read with (to read the same scene again). */
+    std::vector<std::string> overrides;
     std::string title;
 
     std::unique_ptr<mbs::Mechanism> mechanism;

@@ -637,6 +637,7 @@ namespace wearlink::io
 
     Scene scene;
     scene.file       = file;
+    scene.overrides  = overrides;
     scene.parameters = std::make_unique<ParameterHandler>();
     auto &prm        = *scene.parameters;
     declare_scene(prm, bodies, joints);

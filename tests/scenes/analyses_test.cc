@@ -262,3 +262,42 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
   io::run_scene(none, o2);
   EXPECT_THROW(io::read_recorded_run(plain), InputError);
 }
+
+TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
+{
+  // The exponent from the simulation itself (io/shadow_trajectory.h), two checks with
+  // independent expectations:
+  //  - ideal nine-bar: 0 DOF, so every displacement of the shadow violates the
+  //    constraints and Baumgarte's γ − 2αΦ̇ − β²Φ with α = β = 5 1/s (a critically
+  //    damped double root at −5 1/s) pulls it back: λ = −5 1/s at most, a little less in
+  //    magnitude because of the double root's secular factor t e^(−5t) between
+  //    renormalizations (measured −4.5). Accepted: −5.0 … −4.0 1/s.
+  //  - clearance nine-bar: nearby trajectories separate, λ T > 1 per driving period (as
+  //    for Wolf and Rosenstein). Its value depends on d0 and on the integration tolerance
+  //    (82–238 1/s measured), which is why only the sign and scale are asserted.
+  {
+    auto       scene = wl::scene("params/nine_bar_ideal.prm",
+                                {"Simulation/End time=5.5",
+                                 "Analyses/List of analyses=lyapunov",
+                                 "Analyses/Transient=0.5",
+                                 "Analyses/Lyapunov/Methods=two-trajectory",
+                                 "Output/Time series=false"});
+    const Json s     = wl::run(scene);
+    const Json &l    = s.at("analyses").at("lyapunov");
+    ASSERT_EQ(l.size(), 1u);
+    EXPECT_EQ(l[0].at("method").as_string(), "two-trajectory");
+    EXPECT_EQ(l[0].at("renormalizations").as_number(), 250); // 5 s / 0.02 s
+    EXPECT_GE(l[0].at("exponent_per_s").as_number(), -5.0);
+    EXPECT_LE(l[0].at("exponent_per_s").as_number(), -4.0);
+  }
+  {
+    auto       scene = wl::scene("params/nine_bar_clearance.prm",
+                                {"Simulation/End time=3.5",
+                                 "Analyses/List of analyses=lyapunov",
+                                 "Analyses/Transient=0.5",
+                                 "Analyses/Lyapunov/Methods=two-trajectory",
+                                 "Output/Time series=false"});
+    const Json s = wl::run(scene);
+    EXPECT_GT(s.at("analyses").at("lyapunov")[0].at("exponent_per_s").as_number() * 0.5, 1.0);
+  }
+}

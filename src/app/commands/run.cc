@@ -89,10 +89,15 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
         {
           const Json &l = summary.at("analyses").at("lyapunov");
           for (std::size_t k = 0; k < l.size(); ++k)
-            std::cout << "  largest Lyapunov exponent of " << l[k].at("channel").as_string() << " ("
-                      << l[k].at("method").as_string() << "): " << l[k].at("exponent_per_s").as_number()
-                      << " 1/s (natural log) = " << l[k].at("exponent_per_sample").as_number()
-                      << " per sample of " << l[k].at("sample_interval_s").as_number() << " s\n";
+            {
+              std::cout << "  largest Lyapunov exponent of " << l[k].at("channel").as_string() << " ("
+                        << l[k].at("method").as_string() << "): " << l[k].at("exponent_per_s").as_number()
+                        << " 1/s (natural log)";
+              if (l[k].contains("exponent_per_sample"))
+                std::cout << " = " << l[k].at("exponent_per_sample").as_number() << " per sample of "
+                          << l[k].at("sample_interval_s").as_number() << " s";
+              std::cout << "\n";
+            }
         }
       return 0;
     }
