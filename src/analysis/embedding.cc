@@ -127,6 +127,27 @@ namespace wearlink::analysis
       std::vector<double>                    joint, p_first, p_second;
     };
 
+    /**
+     * Mean |x_{n+1} - x_n| below this fraction of the range: successive samples are
+     * close, the series resolves a continuous trajectory (a flow) [-].
+     */
+    constexpr double max_flow_step = 0.1;
+
+    /**
+     * True if the series is a sampled flow rather than a map: consecutive samples
+     * differ on average by less than max_flow_step of the range (Hénon x: about 40 %;
+     * a flow sampled 20 times per oscillation: about 5 %).
+     */
+    bool
+    is_sampled_flow(const std::vector<double> &x)
+    {
+      const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+      double     step     = 0.0;
+      for (std::size_t i = 1; i < x.size(); ++i)
+        step += std::abs(x[i] - x[i - 1]);
+      return step / (x.size() - 1) < max_flow_step * (*hi - *lo);
+    }
+
     double
     standard_deviation(const std::vector<double> &x)
     {
@@ -152,8 +173,9 @@ namespace wearlink::analysis
           return "mutual information decays below 5% of I(0) without a minimum (map-like "
                  "series): delay 1";
         case DelayRule::one_over_e:
-          return "no minimum of the mutual information up to the largest delay examined: "
-                 "first delay with I <= I(0)/e";
+          return "no minimum of the mutual information before it decayed (a slowly "
+                 "decorrelating flow) or up to the largest delay examined: first delay "
+                 "with I <= I(0)/e";
       }
     return "";
   }
@@ -221,6 +243,8 @@ namespace wearlink::analysis
       {
         if (at(tau) < floor)
           {
+            if (is_sampled_flow(series))
+              break; // a flow that decorrelates slowly: the 1/e rule below
             out.delay = 1;
             out.rule  = DelayRule::decorrelated;
             return out;
@@ -264,12 +288,18 @@ namespace wearlink::analysis
                        " with a delay of " + std::to_string(delay) + " samples need at least " +
                        std::to_string(2 * w + min_samples + dimension * delay) +
                        " samples; the series has " + std::to_string(series.size()) +
-                       ". Give a longer series or a smaller --delay/--embedding.");
+                       ". Give a longer series, or a smaller delay or embedding dimension.");
     const KdTree tree(series, emb.dimension, emb.delay, n);
     const double r_a = standard_deviation(series);
 
+    // Exact recurrences (a periodic signal sampled commensurately repeats its samples to
+    // rounding) are the same state, not a neighbour: in dimension 1 the repeat of x_i
+    // on the same branch would always be found first, hiding the point of the other
+    // branch with nearly the same value and making a sine look one-dimensional. So the
+    // search skips points within rounding distance and takes the nearest distinct one
+    // (as Wolf's minimum scale does), and the test is made on that neighbour.
     const std::size_t n_queries = std::min(n, std::max<std::size_t>(1, options.max_queries));
-    std::size_t       n_false = 0, n_tested = 0, n_exact = 0;
+    std::size_t       n_false = 0, n_tested = 0;
     std::vector<double> query(dimension);
     for (std::size_t q = 0; q < n_queries; ++q)
       {
@@ -279,27 +309,22 @@ namespace wearlink::analysis
         NeighbourFilter filter;
         filter.query_index    = i;
         filter.theiler_window = w;
+        filter.min_distance   = exact_recurrence * r_a;
         const Neighbour nb = tree.nearest(query.data(), filter);
         if (!nb.found())
-          continue;
+          continue; // every admissible point repeats this one: nothing to test
         const std::size_t j      = nb.index;
         const double      extra  = std::abs(series[i + dimension * delay] - series[j + dimension * delay]);
         const double      r_next = std::sqrt(nb.distance * nb.distance + extra * extra);
-        // A neighbour within rounding distance is an exact recurrence (a periodic signal
-        // sampled commensurately): it says nothing about the dimension, and criterion 1
-        // would compare two rounding errors. Such queries are not counted.
-        if (nb.distance <= exact_recurrence * r_a)
-          {
-            ++n_exact;
-            continue;
-          }
         ++n_tested;
         if (extra / nb.distance > options.distance_ratio_threshold ||
             r_next / r_a > options.attractor_size_threshold)
           ++n_false;
       }
     if (n_tested == 0)
-      return n_exact > 0 ? 0.0 : 1.0; // only exact recurrences: exactly periodic
+      throw InputError("False nearest neighbours in dimension " + std::to_string(dimension) +
+                       ": no query point has a distinct neighbour beyond the Theiler window (the "
+                       "series repeats one state). Give the embedding dimension explicitly.");
     return static_cast<double>(n_false) / n_tested;
   }
 

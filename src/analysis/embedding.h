@@ -72,12 +72,18 @@ namespace wearlink::analysis
     /** First minimum of the average mutual information (Fraser & Swinney 1986). */
     first_minimum,
     /**
-     * I(tau) fell below 5 % of I(0) before any minimum: successive samples are nearly
-     * independent after a few steps (a map, a Poincaré-section series); delay 1, as
-     * recommended for maps (Kantz & Schreiber 2004).
+     * I(tau) fell below 5 % of I(0) before any minimum, and successive samples are far
+     * apart (mean step above 10 % of the range): a map or a Poincaré-section series;
+     * delay 1, as recommended for maps (Kantz & Schreiber 2004).
      */
     decorrelated,
-    /** Neither within max_delay: the first tau with I(tau) <= I(0)/e (or max_delay). */
+    /**
+     * No minimum within max_delay, or I(tau) fell below 5 % of I(0) before any minimum
+     * although successive samples are close (a sampled flow that decorrelates slowly,
+     * e.g. a journal rattling in its bore): the first tau with I(tau) <= I(0)/e (or
+     * max_delay). A delay of 1 sample there would make the delay, and with it the
+     * exponent per second, depend on the sample interval.
+     */
     one_over_e
   };
 
@@ -113,7 +119,7 @@ namespace wearlink::analysis
    * Delay by the first minimum of the average mutual information (Fraser & Swinney
    * 1986): the smallest tau >= 1 with I(tau - 1) > I(tau) <= min(I(tau + 1),
    * I(tau + 2)), provided I(tau) is still above 5 % of I(0); see DelayRule for what
-   * happens otherwise. Throws
+   * happens otherwise (maps: delay 1; slowly decorrelating flows: I(0)/e). Throws
    * InputError if the series is constant or shorter than 16 samples.
    */
   DelayChoice

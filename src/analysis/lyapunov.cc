@@ -15,6 +15,14 @@ namespace wearlink::analysis
   {
     constexpr double pi = 3.14159265358979323846;
 
+    /**
+     * Points closer than this fraction of the attractor extent coincide: an exact
+     * recurrence, the same state, not a neighbour [-]. Periodic motion computed to
+     * ~1e-10 relative repeats within it; one integrated much more loosely (relative
+     * drift per period above 1e-9) would need a larger value.
+     */
+    constexpr double exact_recurrence = 1e-9;
+
     /** Fewest neighbour candidates a method needs beyond the Theiler window [-]. */
     constexpr std::size_t min_vectors_beyond_window = 32;
 
@@ -60,7 +68,7 @@ namespace wearlink::analysis
                          " and Theiler window " + std::to_string(theiler_window) +
                          " samples needs at least " + std::to_string(needed) +
                          " samples; the series has " + std::to_string(n_samples) +
-                         ". Give a longer series or a smaller --embedding/--delay.");
+                         ". Give a longer series, or a smaller embedding dimension or delay.");
     }
 
     double
@@ -378,17 +386,23 @@ namespace wearlink::analysis
     /**
      * Move the neighbour y_j of @p y to the closest point of the sampled trajectory
      * through it, on the segments y_{j-1}..y_j and y_j..y_{j+1} (linear interpolation in
-     * time). Returns the pair unchanged if no point of the segments is closer.
+     * time). Returns the pair unchanged if no point of the segments is closer. A point
+     * within @p min_distance is not taken: on an exactly periodic orbit the closest
+     * point of the neighbouring segment is the reference state itself (one period
+     * later), and its "separation" would be integration drift (1e-13 m for the ideal
+     * nine-bar), whose slow growth would pass for divergence.
      */
     NeighbourPair
     refine_along_trajectory(const std::vector<double> &series,
                             const Embedding &          emb,
                             const std::vector<double> &y,
                             const std::size_t          i,
-                            const Neighbour &          nb)
+                            const Neighbour &          nb,
+                            const double               min_distance)
     {
       NeighbourPair best{i, nb.index, 0.0};
       double        best_sq = nb.distance * nb.distance;
+      const double  min_sq  = min_distance * min_distance;
       for (std::size_t start = nb.index > 0 ? nb.index - 1 : 0; start <= nb.index; ++start)
         {
           double along = 0.0, length_sq = 0.0;
@@ -411,7 +425,7 @@ namespace wearlink::analysis
               const double      diff = y[d] - (1.0 - f) * series[start + o] - f * series[start + 1 + o];
               d_sq += diff * diff;
             }
-          if (d_sq > 0.0 && d_sq < best_sq)
+          if (d_sq > min_sq && d_sq < best_sq)
             {
               best_sq = d_sq;
               best    = {i, start, f};
@@ -554,6 +568,11 @@ namespace wearlink::analysis
     std::vector<double> y;
     NeighbourFilter     filter;
     filter.theiler_window = theiler_window;
+    // An exact recurrence (a commensurately sampled periodic signal repeats its samples
+    // to rounding) is the same state, not a neighbour: its "separation" is rounding
+    // noise, whose logarithm wanders by nats and would fake a divergence. Such points are
+    // skipped and the nearest distinct point is taken.
+    filter.min_distance = exact_recurrence * series_extent(series);
     for (std::size_t r = 0; r < n_ref; ++r)
       {
         const std::size_t i = r * n_tree / n_ref;
@@ -562,7 +581,7 @@ namespace wearlink::analysis
         const Neighbour nb = tree.nearest(y.data(), filter);
         if (!nb.found())
           continue;
-        pairs.push_back(out.interpolated ? refine_along_trajectory(series, emb, y, i, nb) :
+        pairs.push_back(out.interpolated ? refine_along_trajectory(series, emb, y, i, nb, filter.min_distance) :
                                            NeighbourPair{i, nb.index, 0.0});
       }
     if (pairs.empty())

@@ -164,8 +164,13 @@ namespace wearlink::analysis
      * attractor extent (a resolved flow), off otherwise (a map).
      */
     std::optional<bool> interpolate;
-    /** At most this many evenly spaced reference points (neighbours come from all) [-]. */
-    std::size_t max_references = 100000;
+    /**
+     * At most this many evenly spaced reference points [-]. Their neighbours are still
+     * searched among all points; the mean of ln d over 2e4 pairs is already known to
+     * about 0.01 nat, far below the rise of the curve (on Lorenz and Rössler, 1e4 and
+     * 1e5 references give the same exponent to 0.3 %).
+     */
+    std::size_t max_references = 20000;
     /**
      * Given fit region [first, last] sample of the curve; unset = automatic: the curve is
      * smoothed over 4 tau + 1 samples (one orbit, to remove orbital ripple). If it rises

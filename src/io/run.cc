@@ -315,7 +315,10 @@ namespace wearlink::io
     mbs::Simulation sim(*scene.mechanism, scene.simulation);
     sim.initialize(scene.start_time, q0, v0);
     Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
+    SceneAnalyses analyses(scene);
     std::vector<mbs::StepObserver *> observers{&recorder};
+    for (auto *o : analyses.observers())
+      observers.push_back(o);
     observers.insert(observers.end(), options.observers.begin(), options.observers.end());
     sim.run(scene.end_time, observers);
 
@@ -325,8 +328,11 @@ namespace wearlink::io
     EffectLedger::instance().add_calls("contact law evaluations", evaluations);
     EffectLedger::instance().add_calls("rhs evaluations", scene.mechanism->n_evaluations());
 
+    const Json analyses_summary = analyses.finish(options.output_directory);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     Json summary = recorder.summary(sim, wall);
+    if (analyses_summary.type() != Json::Type::null)
+      summary["analyses"] = analyses_summary;
     Json ledger  = Json::object();
     for (const auto &[category, entries] : EffectLedger::instance().snapshot())
       {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "contact/clearance_joint.h"
+#include "io/analyses.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
 
@@ -25,6 +26,8 @@ namespace wearlink::io
   struct Scene
   {
     std::string file;  ///< the scene file as given
+    /** The --set overrides it was read with (to read the same scene again). */
+    std::vector<std::string> overrides;
     std::string title;
 
     std::unique_ptr<mbs::Mechanism> mechanism;
@@ -41,6 +44,9 @@ namespace wearlink::io
 
     double output_interval  = 1e-3; ///< time-series sampling [s]; 0: every step
     bool   write_time_series = true;
+
+    /** The nonlinear-dynamics analyses the scene lists (io/analyses.h). */
+    AnalysesSettings analyses;
 
     /** The parsed parameters (for echoing the effective scene next to the results). */
     std::unique_ptr<dealii::ParameterHandler> parameters;

@@ -321,6 +321,7 @@ namespace wearlink::io
           prm.leave_subsection();
         }
       declare_numerics(prm);
+      declare_analyses(prm);
     }
 
     // ------------------------------------------------------------------------------
@@ -636,6 +637,7 @@ namespace wearlink::io
 
     Scene scene;
     scene.file       = file;
+    scene.overrides  = overrides;
     scene.parameters = std::make_unique<ParameterHandler>();
     auto &prm        = *scene.parameters;
     declare_scene(prm, bodies, joints);
@@ -667,6 +669,7 @@ namespace wearlink::io
     check_active_required_entries(prm, file, inactive);
 
     build_scene(scene, prm, bodies, joints);
+    scene.analyses = parse_analyses(prm, scene);
     return scene;
   }
 

@@ -28,6 +28,10 @@ examples) and writes into DIR (default: output/<scene name>):
                     and the effect ledger (what was constructed and called)
   time_series.csv   sampled every 'Output/Time series interval' seconds
   parameters.prm    the effective scene (with --set overrides applied)
+and, for the analyses listed in 'Analyses/List of analyses' (phase-portrait, poincare,
+lyapunov; see --print-parameters): analysis_series.csv and phase_portrait_*.png,
+poincare_section.csv and poincare_*.png, lyapunov_<channel>_<method>.csv/.png, with
+their results (Poincaré spread, exponents in 1/s, natural log) in summary.json
 Every file is written under a temporary name and renamed when complete.
 
 Options:
@@ -81,6 +85,20 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       const Json summary       = io::run_scene(scene, options);
       std::cout << "wrote " << out << "/summary.json (" << summary.at("steps").as_number()
                 << " steps, " << summary.at("wall_time_s").as_number() << " s wall)\n";
+      if (summary.contains("analyses") && summary.at("analyses").contains("lyapunov"))
+        {
+          const Json &l = summary.at("analyses").at("lyapunov");
+          for (std::size_t k = 0; k < l.size(); ++k)
+            {
+              std::cout << "  largest Lyapunov exponent of " << l[k].at("channel").as_string() << " ("
+                        << l[k].at("method").as_string() << "): " << l[k].at("exponent_per_s").as_number()
+                        << " 1/s (natural log)";
+              if (l[k].contains("exponent_per_sample"))
+                std::cout << " = " << l[k].at("exponent_per_sample").as_number() << " per sample of "
+                          << l[k].at("sample_interval_s").as_number() << " s";
+              std::cout << "\n";
+            }
+        }
       return 0;
     }
   } // namespace
