@@ -12,6 +12,7 @@
 #include "contact/clearance_joint.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
+#include "wear/wear_settings.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -41,6 +42,11 @@ namespace wearlink::io
 
     double output_interval  = 1e-3; ///< time-series sampling [s]; 0: every step
     bool   write_time_series = true;
+
+    /** Joints with Wear law = archard (their chosen pressure model inside). */
+    std::vector<std::unique_ptr<wear::JointWear>> wear;
+    /** The "Wear" section (used when wear is non-empty). */
+    wear::WearLoopSettings wear_loop;
 
     /** The parsed parameters (for echoing the effective scene next to the results). */
     std::unique_ptr<dealii::ParameterHandler> parameters;

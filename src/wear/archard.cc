@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "wear/archard.h"
 
+#include "base/effect_ledger.h"
+
 #include <cmath>
 
 namespace wearlink::wear
@@ -19,6 +21,7 @@ namespace wearlink::wear
     , k_pin(pin_coefficient)
     , model(model)
   {
+    EffectLedger::instance().add_resource("wear buffers");
     clear();
   }
 
@@ -26,6 +29,7 @@ namespace wearlink::wear
   ArchardAccumulator::set_geometry(const contact::JointGeometry &g)
   {
     geometry = g;
+    clear();
   }
 
   void
@@ -48,47 +52,34 @@ namespace wearlink::wear
     return geometry.axial_length * geometry.pin[k] * two_pi / geometry.pin.n_points();
   }
 
+  // The pressure is an area average per discrete area, so the wear of area k over the
+  // sample's weight w is w k_D p_k |v_t| and its volume that times A_k.
   void
-  ArchardAccumulator::rate(const contact::ContactLoad &load, double sliding_speed, WearRate &out)
+  ArchardAccumulator::add(const LoadSample &s)
   {
-    out.bore.assign(geometry.bore.n_points(), 0.0);
-    out.pin.assign(geometry.pin.n_points(), 0.0);
-    out.bore_volume = out.pin_volume = out.bore_archard = out.pin_archard = 0;
-    out.sliding_speed = std::abs(sliding_speed);
-    out.active        = load.normal_force > 0 && out.sliding_speed > 0;
-    if (!out.active)
+    const double speed = std::abs(s.sliding_speed);
+    if (!(s.load.normal_force > 0) || !(speed > 0) || !(s.weight > 0))
       return;
     ++pressure_evaluations;
-    model.evaluate(load, pressure);
-    for (unsigned int k = 0; k < out.bore.size(); ++k)
+    model.evaluate(s.load, pressure);
+    const double f_bore = s.weight * k_bore * speed;
+    const double f_pin  = s.weight * k_pin * speed;
+    for (unsigned int k = 0; k < bore_depth_.size(); ++k)
       if (pressure.bore[k] > 0)
         {
-          out.bore[k] = k_bore * pressure.bore[k] * out.sliding_speed;
-          out.bore_volume += out.bore[k] * bore_area(k);
+          const double dh = f_bore * pressure.bore[k];
+          bore_depth_[k] += dh;
+          bore_volume += dh * bore_area(k);
         }
-    for (unsigned int k = 0; k < out.pin.size(); ++k)
+    for (unsigned int k = 0; k < pin_depth_.size(); ++k)
       if (pressure.pin[k] > 0)
         {
-          out.pin[k] = k_pin * pressure.pin[k] * out.sliding_speed;
-          out.pin_volume += out.pin[k] * pin_area(k);
+          const double dh = f_pin * pressure.pin[k];
+          pin_depth_[k] += dh;
+          pin_volume += dh * pin_area(k);
         }
-    out.bore_archard = k_bore * load.normal_force * out.sliding_speed;
-    out.pin_archard  = k_pin * load.normal_force * out.sliding_speed;
-  }
-
-  void
-  ArchardAccumulator::add(const WearRate &r, double weight)
-  {
-    if (!r.active)
-      return;
-    for (unsigned int k = 0; k < bore_depth_.size(); ++k)
-      bore_depth_[k] += weight * r.bore[k];
-    for (unsigned int k = 0; k < pin_depth_.size(); ++k)
-      pin_depth_[k] += weight * r.pin[k];
-    bore_volume += weight * r.bore_volume;
-    pin_volume += weight * r.pin_volume;
-    bore_archard += weight * r.bore_archard;
-    pin_archard += weight * r.pin_archard;
-    sliding_distance += weight * r.sliding_speed;
+    bore_archard += f_bore * s.load.normal_force;
+    pin_archard += f_pin * s.load.normal_force;
+    sliding_distance += s.weight * speed;
   }
 } // namespace wearlink::wear
