@@ -7,6 +7,7 @@ namespace wearlink::app
   extern const Command run_scene_command;
   extern const Command lyapunov_command;
   extern const Command contact_command;
+  extern const Command compare_pressure_command;
 
   const std::vector<Command> &
   commands()
@@ -15,6 +16,7 @@ namespace wearlink::app
       run_scene_command,
       lyapunov_command,
       contact_command,
+      compare_pressure_command,
     };
     return table;
   }

@@ -192,7 +192,7 @@ namespace wearlink::io
           scene.clearance_joints[k]->set_mode(st.modes[2 * k] != 0, st.modes[2 * k + 1]);
         Eigen::VectorXd y0 = st.state, y1;
         y0.tail(mbs::MechanismOde::n_quadratures).setZero();
-        wear::LoadRecorder rec(recorded, ws.evaluation, period / ws.samples_per_cycle);
+        wear::LoadRecorder rec(recorded);
         RunOptions         ro;
         ro.initial_state = &y0;
         ro.start_time    = st.time;
@@ -222,8 +222,8 @@ namespace wearlink::io
               w.archard.pin_coefficient,
               *w.model));
             t0 = Clock::now();
-            for (const auto &s : rec.samples(i))
-              acc[i]->add(s);
+            acc[i]->add_history(rec.samples(i), ws.evaluation == wear::PressureEvaluation::every_step,
+                                period / ws.samples_per_cycle, ro.start_time);
             timings["pressure evaluation"] += seconds_since(t0);
             max_depth = std::max({max_depth, max_of(acc[i]->pin_depth()), max_of(acc[i]->bore_depth())});
           }

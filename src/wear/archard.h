@@ -31,6 +31,7 @@ namespace wearlink::wear
     contact::ContactLoad load;
     double               sliding_speed = 0; ///< |v_t| [m/s]
     double               weight        = 0; ///< quadrature weight [s]
+    double               time          = 0; ///< [s]
   };
 
   class ArchardAccumulator
@@ -49,6 +50,26 @@ namespace wearlink::wear
     /** Add the wear of one sample: weight × k_D p |v_t| on every area. */
     void
     add(const LoadSample &sample);
+
+    /**
+     * Add the wear of @p sample with the pressure shape the model computed for
+     * @p key (@p key_pressure): scaled by F_n/F_n,key and turned, on each surface, by
+     * the change of the contact direction in that surface's frame (fractional shift by
+     * linear interpolation, which conserves Σ p on a periodic grid). No model call.
+     */
+    void
+    add_shaped(const LoadSample &sample, const LoadSample &key, const contact::SurfacePressure &key_pressure);
+
+    /**
+     * Add a whole history. every_step: add() per sample. samples: the history is cut
+     * into windows of @p window seconds from @p t0; the model is evaluated once per
+     * window, at its sample of largest F_n, and every sample of the window uses that
+     * shape (add_shaped). This is the "N load samples per cycle" knob: N model calls per
+     * cycle, while the load magnitude, sliding and contact direction still follow every
+     * integrator step.
+     */
+    void
+    add_history(const std::vector<LoadSample> &history, bool every_step, double window, double t0);
 
     /** Forget the accumulated depths and volumes. */
     void
@@ -85,10 +106,13 @@ namespace wearlink::wear
     long   pressure_evaluations = 0;
 
   private:
+    void
+    deposit(const LoadSample &s, const std::vector<double> &bore, const std::vector<double> &pin);
+
     contact::JointGeometry   geometry;
     const double             k_bore, k_pin;
     contact::PressureModel & model;
     contact::SurfacePressure pressure;
-    std::vector<double>      bore_depth_, pin_depth_;
+    std::vector<double>      bore_depth_, pin_depth_, shifted_bore, shifted_pin;
   };
 } // namespace wearlink::wear

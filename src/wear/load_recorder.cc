@@ -34,12 +34,8 @@ namespace wearlink::wear
     return s;
   }
 
-  LoadRecorder::LoadRecorder(std::vector<const contact::ClearanceJoint *> j,
-                             PressureEvaluation                           m,
-                             double                                       sample_interval)
+  LoadRecorder::LoadRecorder(std::vector<const contact::ClearanceJoint *> j)
     : joints(std::move(j))
-    , mode(m)
-    , interval(sample_interval)
     , history(joints.size())
     , pending(joints.size())
     , relative_angle(joints.size(), 0.0)
@@ -60,7 +56,6 @@ namespace wearlink::wear
   LoadRecorder::on_start(const mbs::StepContext &c)
   {
     t_start = t_last = c.t;
-    n_taken          = 0;
     const auto n     = c.simulation.get_mechanism().n_coordinates();
     for (unsigned int j = 0; j < joints.size(); ++j)
       {
@@ -68,6 +63,7 @@ namespace wearlink::wear
         relative_angle[j] = d.pin_angle - d.bushing_angle;
         pending[j]        = load_sample(d);
         pending[j].weight = 0;
+        pending[j].time   = c.t;
       }
   }
 
@@ -82,34 +78,23 @@ namespace wearlink::wear
         const double rel = d.pin_angle - d.bushing_angle;
         rotation[j] += std::abs(rel - relative_angle[j]);
         relative_angle[j] = rel;
-        if (mode == PressureEvaluation::every_step)
-          {
-            // The previous sample's weight is complete with this step's half.
-            take(j, pending[j], pending[j].weight + 0.5 * h);
-            pending[j]        = load_sample(d);
-            pending[j].weight = 0.5 * h;
-          }
+        // The previous sample's weight is complete with this step's half.
+        take(j, pending[j], pending[j].weight + 0.5 * h);
+        pending[j]        = load_sample(d);
+        pending[j].weight = 0.5 * h;
+        pending[j].time   = c.t;
       }
-    if (mode == PressureEvaluation::samples)
-      for (double ts = t_start + (n_taken + 0.5) * interval; ts <= c.t; ts = t_start + (n_taken + 0.5) * interval)
-        {
-          c.simulation.state_at(ts, y_sample);
-          for (unsigned int j = 0; j < joints.size(); ++j)
-            take(j, load_sample(joints[j]->diagnostics(view(y_sample, n))), interval);
-          ++n_taken;
-        }
     t_last = c.t;
   }
 
   void
   LoadRecorder::finish()
   {
-    if (mode == PressureEvaluation::every_step)
-      for (unsigned int j = 0; j < joints.size(); ++j)
-        {
-          take(j, pending[j], pending[j].weight);
-          pending[j].weight = 0;
-        }
+    for (unsigned int j = 0; j < joints.size(); ++j)
+      {
+        take(j, pending[j], pending[j].weight);
+        pending[j].weight = 0;
+      }
   }
 
   double

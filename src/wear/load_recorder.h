@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The load history of the wearing clearance joints over one wear iteration, recorded by
-// an observer of the accepted integrator steps (mbs/simulation.h):
-//  - every step: the joint state at the end of every accepted step; sample i carries
-//    the trapezoidal weight (t_{i+1} − t_{i−1})/2, so Σ_i w_i f(t_i) is the trapezoidal
-//    rule on the integrator's own (contact-adapted, event-located) grid;
-//  - samples per cycle: the state on the dense output at the midpoints
-//    t0 + (j + ½)Δ, Δ = T/N, each with weight Δ (midpoint rule; what happens between
-//    samples is not seen — that is the knob's price).
-// Only loaded samples (F_n > 0 and sliding) are kept. The recorder also integrates the
-// relative rotation |d(θ_pin − θ_bushing)| of each joint (relative revolutions).
+// an observer of the accepted integrator steps (mbs/simulation.h): the joint state at
+// the end of every accepted step; sample i carries the trapezoidal weight
+// (t_{i+1} − t_{i−1})/2, so Σ_i w_i f(t_i) is the trapezoidal rule on the integrator's
+// own (contact-adapted, event-located) grid. Only loaded samples (F_n > 0 and sliding)
+// are kept. How often the pressure model is evaluated on this history is the
+// accumulator's business (ArchardAccumulator::add_history). The recorder also
+// integrates the relative rotation |d(θ_pin − θ_bushing)| of each joint.
 #pragma once
 
 #include "contact/clearance_joint.h"
@@ -27,13 +25,8 @@ namespace wearlink::wear
   class LoadRecorder : public mbs::StepObserver
   {
   public:
-    /**
-     * @param joints the joints to record (not owned).
-     * @param sample_interval Δ for PressureEvaluation::samples [s].
-     */
-    LoadRecorder(std::vector<const contact::ClearanceJoint *> joints,
-                 PressureEvaluation                           mode,
-                 double                                       sample_interval);
+    /** @param joints the joints to record (not owned). */
+    explicit LoadRecorder(std::vector<const contact::ClearanceJoint *> joints);
 
     void
     on_start(const mbs::StepContext &c) override;
@@ -59,13 +52,9 @@ namespace wearlink::wear
     take(unsigned int j, const LoadSample &s, double weight);
 
     std::vector<const contact::ClearanceJoint *> joints;
-    const PressureEvaluation                     mode;
-    const double                                 interval;
     double                                       t_start = 0, t_last = 0;
-    long                                         n_taken = 0;
     std::vector<std::vector<LoadSample>>         history;
     std::vector<LoadSample>                      pending;
     std::vector<double>                          relative_angle, rotation;
-    Eigen::VectorXd                              y_sample;
   };
 } // namespace wearlink::wear

@@ -133,10 +133,13 @@ namespace wearlink::wear
             "Pressure evaluation",
             "every step",
             P::Selection("every step|samples per cycle"),
-            "When the pressure model is evaluated: at every accepted integrator step "
-            "while in contact (trapezoidal rule in time), or at Load samples per cycle "
-            "uniformly spaced instants (midpoint rule; cheaper with the fe model, misses "
-            "what happens between samples).",
+            "When the pressure model is evaluated. The load history is always taken at "
+            "every accepted integrator step (trapezoidal rule in time). 'every step': the "
+            "model is evaluated for each loaded step; 'samples per cycle': once per "
+            "window of 1/N cycle, at the window's largest load, and the steps of the "
+            "window reuse that pressure shape, scaled to their own F_n and turned to their "
+            "own contact direction in each body's frame (N model calls per cycle: the "
+            "affordable setting for fe).",
             "none");
     declare(prm,
             "Load samples per cycle",

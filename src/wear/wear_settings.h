@@ -48,8 +48,8 @@ namespace wearlink::wear
 
   enum class PressureEvaluation
   {
-    every_step, ///< at every accepted integrator step (trapezoidal rule in time)
-    samples     ///< at N uniformly spaced instants per cycle (midpoint rule)
+    every_step, ///< the pressure model at every loaded integrator step
+    samples     ///< once per 1/N cycle; the window's steps reuse that shape
   };
 
   /** The wear loop of a scene ("Wear" section). */
