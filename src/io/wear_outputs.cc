@@ -234,8 +234,9 @@ namespace wearlink::io
           {
             if ((n_it - 1 - it) % stride != 0)
               continue;
-            PlotSeries p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + std::to_string(it % 8 + 1)};
-            PlotSeries b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + std::to_string(it % 8 + 1)};
+            const std::string colour = std::to_string(spec.series.size() / 2 + 1); // distinct per curve pair
+            PlotSeries p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + colour};
+            PlotSeries b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + colour};
             for (unsigned k = 0; k < n; ++k)
               {
                 p.x.push_back(360.0 * k / n);
