@@ -260,6 +260,10 @@ namespace wearlink::io
              << j.pin[k] << '\n';
         write_file_atomically(dir + "/profiles_" + j.name + ".csv", ps.str());
         write_profiles_msh(dir + "/profiles_" + j.name + ".msh", j.bore, j.pin);
+        // The worn profiles in the scene's profile-file format, so that a scene can
+        // start from them ('Bore profile file', 'Pin profile file').
+        j.bore.write_csv(dir + "/bore_" + j.name + ".csv", "worn bore of joint " + j.name + ", bushing frame");
+        j.pin.write_csv(dir + "/pin_" + j.name + ".csv", "worn pin of joint " + j.name + ", pin frame");
         const double depth = std::max(n_it ? j.history.back().max_depth_pin : 0.0, n_it ? j.history.back().max_depth_bore : 0.0);
         double       m     = scene.wear_loop.magnification;
         if (!(m > 0))
