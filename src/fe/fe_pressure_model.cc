@@ -15,7 +15,18 @@ namespace wearlink::fe
     : settings(settings)
   {}
 
-  FePressureModel::~FePressureModel() = default;
+  // A temporary mesh directory is the model's own: it goes with the model (the meshes
+  // a user wants to keep are written where 'Mesh directory' says, and the wear layer
+  // writes the worn geometry's .msh into the run's output directory itself).
+  FePressureModel::~FePressureModel()
+  {
+    model.reset();
+    if (owns_mesh_directory)
+      {
+        std::error_code ignored;
+        std::filesystem::remove_all(mesh_directory, ignored);
+      }
+  }
 
   // A new mesh per geometry: worn profiles change the domain, so the mesh, the
   // stiffness, its factorization and the cached compliance are all rebuilt.
@@ -31,6 +42,7 @@ namespace wearlink::fe
                              std::to_string(reinterpret_cast<std::uintptr_t>(this))))
                              .string() :
                            settings.mesh_directory;
+        owns_mesh_directory = settings.mesh_directory.empty();
         make_output_directory(mesh_directory);
       }
     if (model)

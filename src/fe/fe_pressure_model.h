@@ -51,6 +51,7 @@ namespace wearlink::fe
     const FeSettings                 settings;
     std::string                      mesh_directory;
     unsigned int                     mesh_counter = 0;
+    bool                             owns_mesh_directory = false; ///< a temporary directory, removed with the model
     contact::JointGeometry           geometry;
     std::unique_ptr<PinBushingModel> model;
     /** Set-up times of the models already replaced [s]. */

@@ -10,6 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+
+#include <unistd.h>
 
 using namespace wearlink;
 using namespace wearlink::fe::testing;
@@ -102,4 +105,28 @@ TEST(FePlugin, PressurePerAreaBalancesLoadInBodyFrames)
   load.force = {0.0, 0.0};
   model->evaluate(load, out);
   EXPECT_EQ(*std::max_element(out.pin.begin(), out.pin.end()), 0.0);
+}
+
+
+TEST(FePlugin, TemporaryMeshDirectoryGoesWithTheModel)
+{
+  // Without 'Mesh directory' the model meshes into a temporary directory of its own
+  // (wearlink-fe-<pid>-…); a wear run re-meshes every iteration, so the directory must
+  // not outlive the model.
+  namespace fs = std::filesystem;
+  const std::string prefix = "wearlink-fe-" + std::to_string(::getpid()) + "-";
+  auto count = [&] {
+    unsigned int n = 0;
+    for (const auto &e : fs::directory_iterator(fs::temp_directory_path()))
+      if (e.path().filename().string().rfind(prefix, 0) == 0)
+        ++n;
+    return n;
+  };
+  const unsigned int before = count();
+  auto               model  = create_fe_model(2e-4);
+  model->update_geometry(steel_pair(72));
+  model->update_geometry(steel_pair(72)); // a re-mesh
+  EXPECT_EQ(count(), before + 1);
+  model.reset();
+  EXPECT_EQ(count(), before);
 }
