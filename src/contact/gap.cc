@@ -19,7 +19,6 @@ namespace wearlink::contact
     , r1(bore_profile.mean_radius())
     , r2(pin_profile.mean_radius())
     , min_clearance(bore_profile.min_radius() - pin_profile.max_radius())
-    , search_step(two_pi / (2.0 * std::max(bore_profile.n_points(), pin_profile.n_points())))
   {}
 
   GapResult
@@ -50,55 +49,50 @@ namespace wearlink::contact
     // Directions with e·u(φ) ≥ min_clearance: |φ − φ_e| ≤ acos(min_clearance/|e|).
     const double half = min_clearance > 0 ? std::acos(std::min(1.0, min_clearance / ne)) :
                                             0.5 * two_pi;
-    const unsigned int n_grid =
-      std::max(3u, static_cast<unsigned int>(std::ceil(2 * half / search_step)) + 1);
-    const double dphi  = 2 * half / (n_grid - 1);
-    double       best  = std::numeric_limits<double>::infinity();
-    unsigned int k_min = 0;
-    for (unsigned int k = 0; k < n_grid; ++k)
+    const double lo = phi_e - half, hi = phi_e + half;
+
+    // Kinks of both profiles inside [lo, hi], merged in increasing order.
+    const unsigned int nb = bore.n_points(), np = pin.n_points();
+    const double       db = two_pi / nb, dp = two_pi / np;
+    double next_b = tb + std::ceil((lo - tb) / db) * db;
+    double next_p = tp + std::ceil((lo - tp) / dp) * dp;
+    // h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p), the part of g that is linear between kinks.
+    auto h = [&](double phi) { return bore.radius(phi - tb) - pin.radius(phi - tp); };
+    double       best = std::numeric_limits<double>::infinity(), phi = phi_e;
+    auto consider = [&](double x, double hx) {
+      const double g = hx - ne * std::cos(x - phi_e);
+      if (g < best)
+        {
+          best = g;
+          phi  = x;
+        }
+    };
+    double a = lo, ha = h(lo);
+    consider(a, ha);
+    while (a < hi)
       {
-        const double g = gap(phi_e - half + k * dphi, e, tb, tp);
-        if (g < best)
+        double bnext = std::min({next_b, next_p, hi});
+        if (bnext <= a) // a kink at a itself: step to the following one
           {
-            best  = g;
-            k_min = k;
+            if (next_b <= a)
+              next_b += db;
+            if (next_p <= a)
+              next_p += dp;
+            continue;
           }
-      }
-    // Golden-section refinement on the bracket around the grid minimum.
-    double a = phi_e - half + (k_min == 0 ? 0 : k_min - 1) * dphi;
-    double b = phi_e - half + std::min(n_grid - 1, k_min + 1) * dphi;
-    constexpr double invphi = 0.6180339887498948482;
-    double c  = b - invphi * (b - a);
-    double d  = a + invphi * (b - a);
-    double gc = gap(c, e, tb, tp);
-    double gd = gap(d, e, tb, tp);
-    for (unsigned int it = 0; it < 40 && b - a > 1e-10; ++it)
-      {
-        if (gc < gd)
+        const double hb    = h(bnext);
+        const double slope = (hb - ha) / (bnext - a);
+        if (std::abs(slope) < ne)
           {
-            b  = d;
-            d  = c;
-            gd = gc;
-            c  = b - invphi * (b - a);
-            gc = gap(c, e, tb, tp);
+            const double x = phi_e - std::asin(slope / ne);
+            if (x > a && x < bnext)
+              consider(x, ha + slope * (x - a));
           }
-        else
-          {
-            a  = c;
-            c  = d;
-            gc = gd;
-            d  = a + invphi * (b - a);
-            gd = gap(d, e, tb, tp);
-          }
+        consider(bnext, hb);
+        a  = bnext;
+        ha = hb;
       }
-    double phi = 0.5 * (a + b);
-    double g   = gap(phi, e, tb, tp);
-    const double grid_phi = phi_e - half + k_min * dphi;
-    if (best < g)
-      {
-        g   = best;
-        phi = grid_phi;
-      }
+    const double g = best;
     r.penetration = -g;
     r.angle       = phi;
     r.normal      = mbs::Vec2(std::cos(phi), std::sin(phi));
