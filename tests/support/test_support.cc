@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "support/test_support.h"
 
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -21,7 +23,9 @@ namespace wearlink::testing
   std::string
   fresh_directory(const std::string &name)
   {
-    const fs::path dir = fs::current_path() / "test-output" / name;
+    // Per process: CTest runs the cases of one executable in parallel processes, and a
+    // shared fixture (e.g. RoundPair's mesh) would otherwise be deleted under another.
+    const fs::path dir = fs::current_path() / "test-output" / (name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir.string();
