@@ -8,6 +8,7 @@ namespace wearlink::app
   extern const Command lyapunov_command;
   extern const Command contact_command;
   extern const Command sweep_command;
+  extern const Command compare_pressure_command;
 
   const std::vector<Command> &
   commands()
@@ -17,6 +18,7 @@ namespace wearlink::app
       lyapunov_command,
       contact_command,
       sweep_command,
+      compare_pressure_command,
     };
     return table;
   }

@@ -47,7 +47,15 @@ namespace wearlink::contact
     const int    pb = description.pin_body;
     const auto   p_bore = s.point(bb, description.bushing_point);
     const auto   p_pin  = s.point(pb, description.pin_point);
-    c.gap               = gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
+    const bool per_area = description.clearance_form == ClearanceForm::per_area && !gap.round();
+    c.gap               = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
+                                     gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
+    c.stiffness         = per_area ? wearlink::contact::contact_stiffness(c.gap.bore_radius,
+                                                                  c.gap.pin_radius,
+                                                                  description.geometry.bushing,
+                                                                  description.geometry.pin_material,
+                                                                  description.effective_radius) :
+                                     contact_stiffness;
     const auto &n       = c.gap.normal;
     c.t                 = mbs::perp(n);
     c.q_bore            = p_bore + c.gap.bore_radius * n;
@@ -69,7 +77,7 @@ namespace wearlink::contact
     in.penetration      = c.gap.penetration;
     in.penetration_rate = c.rate;
     in.impact_velocity  = in_contact ? captured_impact_velocity : c.rate;
-    in.stiffness        = contact_stiffness;
+    in.stiffness        = c.stiffness;
     NormalContactOutput out;
     normal_law->evaluate(in, out);
     fn  = out.force;
@@ -102,7 +110,7 @@ namespace wearlink::contact
     if (!(c.gap.penetration > 0))
       return 0;
     const double n = normal_law->exponent();
-    return contact_stiffness * std::pow(c.gap.penetration, n + 1) / (n + 1);
+    return c.stiffness * std::pow(c.gap.penetration, n + 1) / (n + 1);
   }
 
   double
@@ -110,9 +118,12 @@ namespace wearlink::contact
   {
     const auto p_bore = s.point(description.bushing_body, description.bushing_point);
     const auto p_pin  = s.point(description.pin_body, description.pin_point);
-    return gap
-      .evaluate(p_pin - p_bore, s.angle(description.bushing_body), s.angle(description.pin_body))
-      .penetration;
+    const auto e      = p_pin - p_bore;
+    const double tb   = s.angle(description.bushing_body);
+    const double tp   = s.angle(description.pin_body);
+    if (description.clearance_form == ClearanceForm::per_area && !gap.round())
+      return gap.evaluate_per_area(e, tb, tp).penetration;
+    return gap.evaluate(e, tb, tp).penetration;
   }
 
   void

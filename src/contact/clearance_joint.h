@@ -32,6 +32,20 @@ namespace wearlink::contact
     seed_printed ///< R* = R1 R2/(R1 + R2): as printed in seed eq. 10 (external form)
   };
 
+  /**
+   * How the gap of worn profiles is evaluated (REFERENCE.md §1):
+   *  - exact: g(φ) = R1*(φ − θ_bushing) − R2*(φ − θ_pin) − e·u(φ) minimized over φ,
+   *    stiffness K from the nominal radii (default);
+   *  - per_area: the seed's eqs 28–31, the area facing e decides: δ*(n) = |e| − c*(n),
+   *    K*(n) from R1*(n), R2*(n) (with the chosen effective-radius form).
+   * Both reduce to δ = |e| − c for round profiles.
+   */
+  enum class ClearanceForm
+  {
+    exact,
+    per_area
+  };
+
   struct ClearanceJointDescription
   {
     std::string   name;
@@ -41,6 +55,7 @@ namespace wearlink::contact
     mbs::Vec2     pin_point{0, 0};     ///< pin centre in the pin body's frame [m]
     JointGeometry geometry;
     EffectiveRadius effective_radius = EffectiveRadius::internal;
+    ClearanceForm   clearance_form   = ClearanceForm::exact;
   };
 
   /** Everything about the joint at one state, for recording and pressure models. */
@@ -113,9 +128,19 @@ namespace wearlink::contact
     {
       return description;
     }
-    /** Replace the profiles (worn geometry); the stiffness stays nominal. */
+    /**
+     * Replace the profiles (worn geometry). With ClearanceForm::exact the stiffness
+     * stays nominal; with per_area it follows the local radii (seed eq. 31).
+     */
     void
     set_profiles(const Profile &bore, const Profile &pin);
+
+    /** Select the gap form (see ClearanceForm). */
+    void
+    set_clearance_form(ClearanceForm form)
+    {
+      description.clearance_form = form;
+    }
 
     long
     n_force_evaluations() const
@@ -147,6 +172,7 @@ namespace wearlink::contact
       GapResult gap;
       mbs::Vec2 q_bore, q_pin, t;
       double    rate = 0, slide = 0;
+      double    stiffness = 0; ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
     };
     void
     contact_kinematics(const mbs::StateView &s, Contact &c) const;

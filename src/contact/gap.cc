@@ -106,4 +106,20 @@ namespace wearlink::contact
     r.pin_radius  = pin.radius(phi - tp);
     return r;
   }
+
+  GapResult
+  Gap::evaluate_per_area(const mbs::Vec2 &e, double tb, double tp) const
+  {
+    if (is_round)
+      return evaluate(e, tb, tp);
+    GapResult    r;
+    const double ne  = e.norm();
+    const double phi = ne > 0 ? std::atan2(e.y(), e.x()) : 0.0;
+    r.angle          = phi;
+    r.normal         = mbs::Vec2(std::cos(phi), std::sin(phi));
+    r.bore_radius    = bore.radius(phi - tb);
+    r.pin_radius     = pin.radius(phi - tp);
+    r.penetration    = ne - (r.bore_radius - r.pin_radius);
+    return r;
+  }
 } // namespace wearlink::contact

@@ -36,6 +36,18 @@ namespace wearlink::contact
     GapResult
     evaluate(const mbs::Vec2 &eccentricity, double bushing_angle, double pin_angle) const;
 
+    /**
+     * The seed's per-area form (eqs 28–29): the discrete area facing the eccentricity
+     * decides, c*(n) = R1*(n) − R2*(n), δ*(n) = |e| − c*(n), with n the area in the
+     * direction of e on each surface (bore: bushing frame, pin: pin frame) and the
+     * normal along e. The radii are interpolated linearly between area centres so that
+     * δ* is continuous in time (the integrator locates contact onsets on it). No
+     * minimization over directions: a worn pocket next to the facing area is not seen.
+     * Identical to evaluate() for round profiles.
+     */
+    GapResult
+    evaluate_per_area(const mbs::Vec2 &eccentricity, double bushing_angle, double pin_angle) const;
+
     bool
     round() const
     {

@@ -15,6 +15,7 @@
 #include "base/registry.h"
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,16 @@ namespace wearlink::contact
      */
     virtual void
     evaluate(const ContactLoad &load, SurfacePressure &out) = 0;
+
+    /**
+     * Wall time spent so far in the model's heavy phases, by name (the fe model:
+     * "meshing", "fe set-up", "fe compliance") [s]. Light models report nothing.
+     */
+    virtual std::map<std::string, double>
+    timings() const
+    {
+      return {};
+    }
 
     /** True for models that mesh and solve the actual geometry (gmsh + deal.II). */
     virtual bool

@@ -33,11 +33,32 @@ namespace wearlink::fe
                            settings.mesh_directory;
         make_output_directory(mesh_directory);
       }
+    if (model)
+      {
+        const auto &st = model->statistics();
+        past_mesh_time += st.mesh_time;
+        past_setup_time += st.assembly_time + st.factorization_time;
+        past_compliance_time += model->compliance_time();
+      }
     model.reset();
     geometry = g;
     const std::string msh = mesh_directory + "/pin_bushing_" + std::to_string(mesh_counter++) + ".msh";
     model = std::make_unique<PinBushingModel>(geometry, settings, msh);
     model->prepare_condensed();
+  }
+
+  std::map<std::string, double>
+  FePressureModel::timings() const
+  {
+    double mesh = past_mesh_time, setup = past_setup_time, compliance = past_compliance_time;
+    if (model)
+      {
+        const auto &st = model->statistics();
+        mesh += st.mesh_time;
+        setup += st.assembly_time + st.factorization_time;
+        compliance += model->compliance_time();
+      }
+    return {{"meshing", mesh}, {"fe set-up", setup}, {"fe compliance", compliance}};
   }
 
   void

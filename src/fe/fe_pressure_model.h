@@ -37,6 +37,9 @@ namespace wearlink::fe
       return true;
     }
 
+    std::map<std::string, double>
+    timings() const override;
+
     /** Number of meshes built so far (one per update_geometry()). */
     unsigned int
     n_meshes() const
@@ -50,5 +53,7 @@ namespace wearlink::fe
     unsigned int                     mesh_counter = 0;
     contact::JointGeometry           geometry;
     std::unique_ptr<PinBushingModel> model;
+    /** Set-up times of the models already replaced [s]. */
+    double past_mesh_time = 0, past_setup_time = 0, past_compliance_time = 0;
   };
 } // namespace wearlink::fe

@@ -301,7 +301,9 @@ namespace wearlink::io
   {
     const auto wall_start = std::chrono::steady_clock::now();
     Eigen::VectorXd q0, v0;
-    assemble_scene(scene, q0, v0);
+    if (options.initial_state == nullptr)
+      assemble_scene(scene, q0, v0);
+    const double end_time = std::isnan(options.end_time) ? scene.end_time : options.end_time;
 
     const bool                  write = !options.output_directory.empty();
     std::unique_ptr<AtomicFile> csv;
@@ -313,14 +315,19 @@ namespace wearlink::io
       }
 
     mbs::Simulation sim(*scene.mechanism, scene.simulation);
-    sim.initialize(scene.start_time, q0, v0);
+    if (options.initial_state != nullptr)
+      sim.initialize_state(options.start_time, *options.initial_state);
+    else
+      sim.initialize(scene.start_time, q0, v0);
     Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
     SceneAnalyses analyses(scene);
     std::vector<mbs::StepObserver *> observers{&recorder};
     for (auto *o : analyses.observers())
       observers.push_back(o);
     observers.insert(observers.end(), options.observers.begin(), options.observers.end());
-    sim.run(scene.end_time, observers);
+    sim.run(end_time, observers);
+    if (options.final_state != nullptr)
+      *options.final_state = sim.state();
 
     long evaluations = 0;
     for (auto *j : scene.clearance_joints)

@@ -10,6 +10,7 @@
 #include "io/scene.h"
 #include "mbs/simulation.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,15 @@ namespace wearlink::io
     bool progress = false;
     /** More observers to notify after every accepted step. */
     std::vector<mbs::StepObserver *> observers;
+    /**
+     * Continuation (wear iterations): start from this full state [q | v | z] at
+     * start_time instead of assembling, and stop at end_time (NaN: the scene's).
+     */
+    const Eigen::VectorXd *initial_state = nullptr;
+    double                 start_time    = std::numeric_limits<double>::quiet_NaN();
+    double                 end_time      = std::numeric_limits<double>::quiet_NaN();
+    /** If set, receives the state at the end of the run. */
+    Eigen::VectorXd *final_state = nullptr;
   };
 
   /**

@@ -13,6 +13,7 @@
 #include "io/analyses.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
+#include "wear/wear_settings.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -47,6 +48,10 @@ namespace wearlink::io
 
     /** The nonlinear-dynamics analyses the scene lists (io/analyses.h). */
     AnalysesSettings analyses;
+    /** Joints with Wear law = archard (their chosen pressure model inside). */
+    std::vector<std::unique_ptr<wear::JointWear>> wear;
+    /** The "Wear" section (used when wear is non-empty). */
+    wear::WearLoopSettings wear_loop;
 
     /** The parsed parameters (for echoing the effective scene next to the results). */
     std::unique_ptr<dealii::ParameterHandler> parameters;

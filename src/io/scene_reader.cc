@@ -228,6 +228,7 @@ namespace wearlink::io
               "none");
       contact::normal_force_laws().declare_all(prm);
       contact::friction_laws().declare_all(prm);
+      wear::declare_joint_wear(prm);
       prm.leave_subsection();
     }
 
@@ -322,6 +323,7 @@ namespace wearlink::io
         }
       declare_numerics(prm);
       declare_analyses(prm);
+      wear::declare_wear_loop(prm);
     }
 
     // ------------------------------------------------------------------------------
@@ -492,6 +494,8 @@ namespace wearlink::io
         r.fail("Initial eccentricity",
                "its length must be smaller than the radial clearance (" +
                  format_number(clearance) + " m)");
+      if (auto w = wear::read_joint_wear(r, joint))
+        scene.wear.push_back(std::move(w));
       r.leave();
 
       auto joint_element = std::make_unique<contact::ClearanceJoint>(std::move(d),
@@ -617,6 +621,10 @@ namespace wearlink::io
       scene.output_interval   = r.get_double("Time series interval");
       r.leave();
 
+      scene.wear_loop = wear::read_wear_loop(r);
+      for (auto *j : scene.clearance_joints)
+        j->set_clearance_form(scene.wear_loop.clearance_form);
+
       mech.finalize();
       unsigned int m = mech.n_constraint_equations();
       for (const auto &c : scene.assembly_constraints)
@@ -662,6 +670,8 @@ namespace wearlink::io
             for (const auto &law : contact::friction_laws().names())
               if (law != prm.get("Friction law"))
                 inactive.push_back("Joint " + j + "/Clearance/" + law + "/");
+            for (const auto &section : wear::inactive_wear_sections(prm))
+              inactive.push_back("Joint " + j + "/Clearance/" + section);
             prm.leave_subsection();
           }
         prm.leave_subsection();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "wear/archard.h"
 
+#include "base/effect_ledger.h"
+
 #include <cmath>
 
 namespace wearlink::wear
@@ -19,6 +21,7 @@ namespace wearlink::wear
     , k_pin(pin_coefficient)
     , model(model)
   {
+    EffectLedger::instance().add_resource("wear buffers");
     clear();
   }
 
@@ -26,6 +29,7 @@ namespace wearlink::wear
   ArchardAccumulator::set_geometry(const contact::JointGeometry &g)
   {
     geometry = g;
+    clear();
   }
 
   void
@@ -48,47 +52,106 @@ namespace wearlink::wear
     return geometry.axial_length * geometry.pin[k] * two_pi / geometry.pin.n_points();
   }
 
+  // The pressure is an area average per discrete area, so the wear of area k over the
+  // sample's weight w is w k_D p_k |v_t| and its volume that times A_k.
   void
-  ArchardAccumulator::rate(const contact::ContactLoad &load, double sliding_speed, WearRate &out)
+  ArchardAccumulator::add(const LoadSample &s)
   {
-    out.bore.assign(geometry.bore.n_points(), 0.0);
-    out.pin.assign(geometry.pin.n_points(), 0.0);
-    out.bore_volume = out.pin_volume = out.bore_archard = out.pin_archard = 0;
-    out.sliding_speed = std::abs(sliding_speed);
-    out.active        = load.normal_force > 0 && out.sliding_speed > 0;
-    if (!out.active)
+    if (!(s.load.normal_force > 0) || !(std::abs(s.sliding_speed) > 0) || !(s.weight > 0))
       return;
     ++pressure_evaluations;
-    model.evaluate(load, pressure);
-    for (unsigned int k = 0; k < out.bore.size(); ++k)
-      if (pressure.bore[k] > 0)
-        {
-          out.bore[k] = k_bore * pressure.bore[k] * out.sliding_speed;
-          out.bore_volume += out.bore[k] * bore_area(k);
-        }
-    for (unsigned int k = 0; k < out.pin.size(); ++k)
-      if (pressure.pin[k] > 0)
-        {
-          out.pin[k] = k_pin * pressure.pin[k] * out.sliding_speed;
-          out.pin_volume += out.pin[k] * pin_area(k);
-        }
-    out.bore_archard = k_bore * load.normal_force * out.sliding_speed;
-    out.pin_archard  = k_pin * load.normal_force * out.sliding_speed;
+    model.evaluate(s.load, pressure);
+    deposit(s, pressure.bore, pressure.pin);
   }
 
   void
-  ArchardAccumulator::add(const WearRate &r, double weight)
+  ArchardAccumulator::deposit(const LoadSample &s, const std::vector<double> &bore, const std::vector<double> &pin)
   {
-    if (!r.active)
-      return;
+    const double speed  = std::abs(s.sliding_speed);
+    const double f_bore = s.weight * k_bore * speed;
+    const double f_pin  = s.weight * k_pin * speed;
     for (unsigned int k = 0; k < bore_depth_.size(); ++k)
-      bore_depth_[k] += weight * r.bore[k];
+      if (bore[k] > 0)
+        {
+          const double dh = f_bore * bore[k];
+          bore_depth_[k] += dh;
+          bore_volume += dh * bore_area(k);
+        }
     for (unsigned int k = 0; k < pin_depth_.size(); ++k)
-      pin_depth_[k] += weight * r.pin[k];
-    bore_volume += weight * r.bore_volume;
-    pin_volume += weight * r.pin_volume;
-    bore_archard += weight * r.bore_archard;
-    pin_archard += weight * r.pin_archard;
-    sliding_distance += weight * r.sliding_speed;
+      if (pin[k] > 0)
+        {
+          const double dh = f_pin * pin[k];
+          pin_depth_[k] += dh;
+          pin_volume += dh * pin_area(k);
+        }
+    bore_archard += f_bore * s.load.normal_force;
+    pin_archard += f_pin * s.load.normal_force;
+    sliding_distance += s.weight * speed;
+  }
+
+  namespace
+  {
+    /** out[k] = scale · p(ψ_k − shift) on the periodic grid, linear between samples. */
+    void
+    shift_periodic(const std::vector<double> &p, double shift, double scale, std::vector<double> &out)
+    {
+      const auto n = static_cast<long>(p.size());
+      out.assign(p.size(), 0.0);
+      double x = shift / two_pi * n;
+      x -= n * std::floor(x / n);
+      const long   i = static_cast<long>(std::floor(x));
+      const double f = x - i;
+      for (long k = 0; k < n; ++k)
+        {
+          const long a = ((k - i) % n + n) % n;     // k − i
+          const long b = ((k - i - 1) % n + n) % n; // k − i − 1
+          out[k]       = scale * ((1 - f) * p[a] + f * p[b]);
+        }
+    }
+  } // namespace
+
+  void
+  ArchardAccumulator::add_shaped(const LoadSample &s, const LoadSample &key, const contact::SurfacePressure &p)
+  {
+    if (!(s.load.normal_force > 0) || !(std::abs(s.sliding_speed) > 0) || !(s.weight > 0) ||
+        !(key.load.normal_force > 0))
+      return;
+    const double scale = s.load.normal_force / key.load.normal_force;
+    // Contact direction in each body's frame, now and at the key.
+    const double d_bore = (s.load.contact_angle - s.load.bushing_angle) - (key.load.contact_angle - key.load.bushing_angle);
+    const double d_pin  = (s.load.contact_angle - s.load.pin_angle) - (key.load.contact_angle - key.load.pin_angle);
+    shift_periodic(p.bore, d_bore, scale, shifted_bore);
+    shift_periodic(p.pin, d_pin, scale, shifted_pin);
+    deposit(s, shifted_bore, shifted_pin);
+  }
+
+  void
+  ArchardAccumulator::add_history(const std::vector<LoadSample> &h, bool every_step, double window, double t0)
+  {
+    if (every_step)
+      {
+        for (const auto &s : h)
+          add(s);
+        return;
+      }
+    std::size_t begin = 0;
+    while (begin < h.size())
+      {
+        const double w   = std::floor((h[begin].time - t0) / window);
+        std::size_t  end = begin;
+        std::size_t  key = begin;
+        while (end < h.size() && std::floor((h[end].time - t0) / window) == w)
+          {
+            if (h[end].load.normal_force > h[key].load.normal_force)
+              key = end;
+            ++end;
+          }
+        ++pressure_evaluations;
+        model.evaluate(h[key].load, pressure);
+        const contact::SurfacePressure key_pressure = pressure;
+        for (std::size_t i = begin; i < end; ++i)
+          add_shaped(h[i], h[key], key_pressure);
+        begin = end;
+      }
   }
 } // namespace wearlink::wear

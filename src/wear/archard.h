@@ -7,12 +7,16 @@
 // passes through the contact once per relative revolution while the bore's loaded area
 // follows the load direction).
 //
-// Two volumes are kept per surface:
-//   - the local volume  Σ_k h_k A_k (A_k = L R Δψ, the area's surface), which the
-//     profile update removes, and which equals k_D ∫ (Σ_k p_k A_k) |v_t| dt exactly;
-//   - the global Archard volume k_D ∫ F_n |v_t| dt. The two agree when the contact arc
-//     is narrow (Σ p A = F_n); for wide conformal arcs Σ p A > F_n (the load is the
-//     vector sum of pressures), which is why the local form is the one that matters.
+// A load history is a list of samples (state of the joint + quadrature weight in time);
+// add() evaluates the pressure model for one sample and adds weight × dh/dt. Two volumes
+// are kept per surface:
+//   - the local volume  Σ_k h_k A_k (A_k = L R_k Δψ, the area's surface), which the
+//     profile update removes;
+//   - the global Archard volume k_D ∫ F_n |v_t| dt. The two agree when the pressure
+//     model conserves the force magnitude (Σ_k p_k A_k = F_n: exact for hertz-strip, to
+//     the equilibrium tolerance for fe; for wide conformal arcs the load is the vector
+//     sum of the pressures and Σ p A > F_n, which is why the local form is the one that
+//     is removed from the profiles).
 #pragma once
 
 #include "contact/pressure_model.h"
@@ -21,23 +25,20 @@
 
 namespace wearlink::wear
 {
-  /** Wear-rate of one joint state: dh/dt per area and the volume rates. */
-  struct WearRate
+  /** One state of a joint in a load history, with its weight in the time quadrature. */
+  struct LoadSample
   {
-    std::vector<double> bore;            ///< dh/dt per bore area [m/s]
-    std::vector<double> pin;             ///< dh/dt per pin area [m/s]
-    double              bore_volume = 0; ///< Σ dh/dt A (local) [m³/s]
-    double              pin_volume  = 0;
-    double              bore_archard = 0; ///< k_D F_n |v_t| (global) [m³/s]
-    double              pin_archard  = 0;
-    double              sliding_speed = 0; ///< |v_t| [m/s]
-    bool                active = false;    ///< in contact with a non-zero rate
+    contact::ContactLoad load;
+    double               sliding_speed = 0; ///< |v_t| [m/s]
+    double               weight        = 0; ///< quadrature weight [s]
+    double               time          = 0; ///< [s]
   };
 
   class ArchardAccumulator
   {
   public:
     /**
+     * @param geometry the joint's current geometry (sizes the depth buffers).
      * @param bore_coefficient, pin_coefficient k_D of each surface [m³/(N m)].
      * @param model the joint's pressure model (geometry already set).
      */
@@ -46,50 +47,72 @@ namespace wearlink::wear
                        double                        pin_coefficient,
                        contact::PressureModel &      model);
 
-    /** The wear rate at one state (evaluates the pressure model if loaded). */
+    /** Add the wear of one sample: weight × k_D p |v_t| on every area. */
     void
-    rate(const contact::ContactLoad &load, double sliding_speed, WearRate &out);
+    add(const LoadSample &sample);
 
-    /** Accumulate @p weight × @p r (weight: a time span [s]). */
+    /**
+     * Add the wear of @p sample with the pressure shape the model computed for
+     * @p key (@p key_pressure): scaled by F_n/F_n,key and turned, on each surface, by
+     * the change of the contact direction in that surface's frame (fractional shift by
+     * linear interpolation, which conserves Σ p on a periodic grid). No model call.
+     */
     void
-    add(const WearRate &r, double weight);
+    add_shaped(const LoadSample &sample, const LoadSample &key, const contact::SurfacePressure &key_pressure);
 
-    /** Forget the accumulated depths (start of a wear iteration). */
+    /**
+     * Add a whole history. every_step: add() per sample. samples: the history is cut
+     * into windows of @p window seconds from @p t0; the model is evaluated once per
+     * window, at its sample of largest F_n, and every sample of the window uses that
+     * shape (add_shaped). This is the "N load samples per cycle" knob: N model calls per
+     * cycle, while the load magnitude, sliding and contact direction still follow every
+     * integrator step.
+     */
+    void
+    add_history(const std::vector<LoadSample> &history, bool every_step, double window, double t0);
+
+    /** Forget the accumulated depths and volumes. */
     void
     clear();
 
-    /** Replace the geometry (after a profile update). */
+    /** Replace the geometry (after a profile update); clears. */
     void
     set_geometry(const contact::JointGeometry &g);
 
+    /** Depth per bore area [m] (bushing frame, area k at ψ_k = 2πk/N). */
     const std::vector<double> &
     bore_depth() const
     {
       return bore_depth_;
     }
+    /** Depth per pin area [m] (pin frame). */
     const std::vector<double> &
     pin_depth() const
     {
       return pin_depth_;
     }
-    double bore_volume  = 0; ///< local [m³]
-    double pin_volume   = 0;
-    double bore_archard = 0; ///< global k_D ∫F|v|dt [m³]
-    double pin_archard  = 0;
-    double sliding_distance = 0; ///< ∫|v_t| dt while loaded [m]
-    long   pressure_evaluations = 0;
 
-    /** Surface area of one bore / pin area, L R Δψ [m²]. */
+    /** Surface of one bore / pin area, L R_k Δψ [m²]. */
     double
     bore_area(unsigned int k) const;
     double
     pin_area(unsigned int k) const;
 
+    double bore_volume      = 0; ///< Σ_k h_k A_k of the bore, accumulated [m³]
+    double pin_volume       = 0; ///< Σ_k h_k A_k of the pin [m³]
+    double bore_archard     = 0; ///< k_D ∫ F_n |v_t| dt with the bore's k_D [m³]
+    double pin_archard      = 0; ///< the same with the pin's k_D [m³]
+    double sliding_distance = 0; ///< ∫ |v_t| dt over the loaded samples [m]
+    long   pressure_evaluations = 0;
+
   private:
-    contact::JointGeometry  geometry;
-    const double            k_bore, k_pin;
-    contact::PressureModel &model;
+    void
+    deposit(const LoadSample &s, const std::vector<double> &bore, const std::vector<double> &pin);
+
+    contact::JointGeometry   geometry;
+    const double             k_bore, k_pin;
+    contact::PressureModel & model;
     contact::SurfacePressure pressure;
-    std::vector<double>     bore_depth_, pin_depth_;
+    std::vector<double>      bore_depth_, pin_depth_, shifted_bore, shifted_pin;
   };
 } // namespace wearlink::wear

@@ -7,6 +7,7 @@
 #include "base/exceptions.h"
 #include "io/run.h"
 #include "io/scene.h"
+#include "io/wear_run.h"
 
 #include <filesystem>
 #include <iostream>
@@ -34,6 +35,16 @@ poincare_section.csv and poincare_*.png, lyapunov_<channel>_<method>.csv/.png, w
 their results (Poincaré spread, exponents in 1/s, natural log) in summary.json
 Every file is written under a temporary name and renamed when complete.
 
+A scene in which some clearance joint has 'Wear law = archard' runs the wear loop
+instead (section Wear; one progress line per iteration) and writes, besides
+summary.json (with per-joint wear volumes, depths, mass loss and revolutions) and
+parameters.prm: checkpoint.txt, wear_history.csv, wear_depth_<J>.csv/.png,
+profiles_<J>.csv/.msh, profile_<J>_bore.png, profile_<J>_pin.png, wear_volume.png,
+response_before.csv, response_after.csv, response.png.
+  --resume DIR        continue the wear run whose output directory is DIR from its
+                      last finished iteration (same scene; Wear/Number of iterations
+                      and Wear/Target revolutions may be raised with --set)
+
 Options:
   --output DIR        output directory
   --set S/E=V         override entry E of subsection S (repeatable), e.g.
@@ -53,7 +64,8 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
                                       {"--set", true, true},
                                       {"--validate", false},
                                       {"--print-parameters", false},
-                                      {"--quiet", false}},
+                                      {"--quiet", false},
+                                      {"--resume", true}},
                                      "run");
       if (a.has("--print-parameters"))
         {
@@ -77,6 +89,22 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           return 0;
         }
 
+      if (io::has_wear(scene) || a.has("--resume"))
+        {
+          if (!io::has_wear(scene))
+            throw InputError("--resume continues a wear run, but no clearance joint of " + file +
+                             " has a Wear law.");
+          io::WearRunOptions w;
+          w.resume           = a.has("--resume");
+          w.output_directory = a.has("--resume") ? a.value("--resume") :
+                                                   a.value("--output", "output/" + std::filesystem::path(file).stem().string());
+          w.progress         = !a.has("--quiet");
+          const auto r       = io::run_wear(scene, w);
+          std::cout << "wrote " << w.output_directory << "/summary.json (" << r.state.iterations_done
+                    << " wear iterations, " << r.state.revolutions << " revolutions, "
+                    << r.timings.at("total") << " s wall)\n";
+          return 0;
+        }
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string());
       io::RunOptions options;

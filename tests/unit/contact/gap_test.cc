@@ -82,3 +82,34 @@ TEST(Gap, PocketFacingTheEccentricityReducesPenetration)
   EXPECT_NEAR(d_round, 20e-6, 1e-15);
   EXPECT_NEAR(d_round - d_worn, 10e-6, 0.2e-6) << "the pocket depth (minus the flank effect)";
 }
+
+// The seed's per-area form (eqs 28–29): the area facing e decides, δ* = |e| − c*(n),
+// c*(n) = R1*(n) − R2*(n), with each radius read in its own body frame. Round profiles:
+// identical to the exact gap. A 30 µm bump on the pin 5.7° away from the direction of e:
+// the exact gap (minimum over φ) finds it and reports a larger penetration, the
+// per-area form does not — the difference the option exists to show.
+TEST(Gap, PerAreaFormReadsTheFacingArea)
+{
+  constexpr double pi = 3.14159265358979323846;
+  const Gap        round(Profile::round(0.012, 72), Profile::round(0.0115, 72));
+  const mbs::Vec2  e(3e-4, 4.2e-4);
+  EXPECT_EQ(round.evaluate_per_area(e, 0.4, -1.0).penetration, round.evaluate(e, 0.4, -1.0).penetration);
+
+  std::vector<double> bore(360, 0.012), pin(360, 0.0115);
+  for (unsigned k = 0; k < 360; ++k)
+    {
+      bore[k] += 5e-6 * std::cos(2.0 * k * pi / 180); // a smooth worn bore
+      pin[k] += 30e-6 * std::exp(-std::pow((k - 80.0) / 3.0, 2)); // a 30 µm bump at ψ = 80°
+    }
+  const Gap        worn(Profile::from_samples(bore), Profile::from_samples(pin));
+  const double     tb = 0.2, tp = -0.5;
+  const mbs::Vec2  e2 = 5.05e-4 * mbs::Vec2(std::cos(1.0), std::sin(1.0)); // facing φ = 1 rad
+  const auto       per_area = worn.evaluate_per_area(e2, tb, tp);
+  const double     r1 = Profile::from_samples(bore).radius(1.0 - tb);
+  const double     r2 = Profile::from_samples(pin).radius(1.0 - tp);
+  EXPECT_NEAR(per_area.penetration, e2.norm() - (r1 - r2), 1e-15);
+  EXPECT_NEAR(per_area.angle, 1.0, 1e-14);
+  // The bump at pin angle 80° sits at global 80° + tp ≈ 51.4°, 5.7° from e: the exact
+  // minimum over φ finds it, so the exact penetration is larger.
+  EXPECT_GT(worn.evaluate(e2, tb, tp).penetration, per_area.penetration + 1e-6);
+}

@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/wear_outputs.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace wearlink::io
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    /** Read a response CSV written by ResponseRecorder::write_csv (for the plot). */
+    bool
+    read_response(const std::string &path, std::vector<double> &t, std::vector<double> &ax, std::vector<double> &ay)
+    {
+      std::ifstream in(path);
+      if (!in)
+        return false;
+      std::string line;
+      std::getline(in, line);
+      while (std::getline(in, line))
+        {
+          std::replace(line.begin(), line.end(), ',', ' ');
+          std::istringstream ls(line);
+          double             a, b, c, d, e;
+          if (ls >> a >> b >> c >> d >> e)
+            {
+              t.push_back(a);
+              ax.push_back(d);
+              ay.push_back(e);
+            }
+        }
+      return true;
+    }
+
+    /** A "nice" magnification 1, 2, 5 × 10^k not above @p m. */
+    double
+    nice(double m)
+    {
+      const double p = std::pow(10.0, std::floor(std::log10(m)));
+      for (const double f : {5.0, 2.0, 1.0})
+        if (f * p <= m)
+          return f * p;
+      return p;
+    }
+
+    void
+    plot_profile(const std::string &path,
+                 const std::string &title,
+                 const Profile &    initial,
+                 const Profile &    worn,
+                 double             magnification)
+    {
+      PlotSpec spec;
+      spec.title  = title;
+      spec.polar  = true;
+      spec.width  = 800;
+      spec.height = 800;
+      PlotSeries a{"initial", {}, {}, "lines", "dt 2 lc rgb 'gray40'"};
+      PlotSeries b{"worn (wear magnified)", {}, {}, "lines", "lw 2 lc rgb 'red'"};
+      const unsigned n = initial.n_points();
+      for (unsigned k = 0; k <= n; ++k)
+        {
+          const unsigned i   = k % n;
+          const double   psi = 2 * pi * k / n;
+          a.x.push_back(psi);
+          a.y.push_back(initial[i]);
+          b.x.push_back(psi);
+          b.y.push_back(initial[i] + magnification * (worn[i] - initial[i]));
+        }
+      const double rmax = std::max(initial.max_radius(), initial.max_radius() + magnification * (worn.max_radius() - initial.min_radius()));
+      std::ostringstream extra;
+      extra << "set rrange [0:" << 1.05 * rmax << "]\nset xrange [" << -1.05 * rmax << ":" << 1.05 * rmax
+            << "]\nset yrange [" << -1.05 * rmax << ":" << 1.05 * rmax << "]\n";
+      spec.extra  = extra.str();
+      spec.series = {a, b};
+      plot_png(spec, path);
+    }
+  } // namespace
+
+  ResponseRecorder::ResponseRecorder(const mbs::Mechanism &m, int b, double dt, double d)
+    : body_name(m.get_bodies()[b].name)
+    , body(b)
+    , n(m.n_coordinates())
+    , interval(dt)
+    , duration(d)
+  {}
+
+  void
+  ResponseRecorder::on_start(const mbs::StepContext &c)
+  {
+    t_start = c.t;
+    t.clear();
+    x.clear();
+    y.clear();
+    ax.clear();
+    ay.clear();
+  }
+
+  void
+  ResponseRecorder::on_step(const mbs::StepContext &c)
+  {
+    for (double ts = t_start + t.size() * interval; ts <= c.t && ts - t_start <= duration * (1 + 1e-12);
+         ts = t_start + t.size() * interval)
+      {
+        c.simulation.state_at(ts, ys);
+        c.simulation.derivative_at(ts, ys, fs);
+        t.push_back(ts - t_start);
+        x.push_back(ys[3 * body]);
+        y.push_back(ys[3 * body + 1]);
+        ax.push_back(fs[n + 3 * body]);
+        ay.push_back(fs[n + 3 * body + 1]);
+      }
+  }
+
+  void
+  ResponseRecorder::write_csv(const std::string &path) const
+  {
+    std::ostringstream os;
+    os << "time_s," << body_name << "_x_m," << body_name << "_y_m," << body_name << "_ax_m_s2," << body_name
+       << "_ay_m_s2\n"
+       << std::setprecision(10);
+    for (std::size_t i = 0; i < t.size(); ++i)
+      os << t[i] << ',' << x[i] << ',' << y[i] << ',' << ax[i] << ',' << ay[i] << '\n';
+    write_file_atomically(path, os.str());
+  }
+
+  int
+  response_body(const Scene &scene)
+  {
+    const auto &name = scene.wear_loop.response_body;
+    const auto &mech = *scene.mechanism;
+    if (name.empty())
+      return static_cast<int>(mech.n_bodies()) - 1;
+    for (unsigned int i = 0; i < mech.n_bodies(); ++i)
+      if (mech.get_bodies()[i].name == name)
+        return static_cast<int>(i);
+    throw InputError("In " + scene.file + ", 'Wear/Response body' is '" + name +
+                     "', which is not one of Mechanism/Bodies.");
+  }
+
+  void
+  write_wear_history(const std::string &path, const Scene &scene, const wear::WearState &st)
+  {
+    std::ostringstream os;
+    os << "iteration,revolutions,extrapolation_factor";
+    for (const auto &j : st.joints)
+      for (const char *q : {"_volume_pin_mm3", "_volume_bushing_mm3", "_mass_loss_pin_mg", "_mass_loss_bushing_mg",
+                            "_max_depth_pin_um", "_max_depth_bushing_um", "_archard_volume_pin_mm3",
+                            "_archard_volume_bushing_mm3", "_mean_normal_force_N", "_sliding_distance_m"})
+        os << ',' << j.name << q;
+    os << '\n' << std::setprecision(10);
+    double revolutions = 0;
+    for (unsigned int it = 0; it < st.iterations_done; ++it)
+      {
+        revolutions += st.factors[it] * scene.wear_loop.cycles_per_iteration;
+        os << it + 1 << ',' << revolutions << ',' << st.factors[it];
+        for (unsigned int i = 0; i < st.joints.size(); ++i)
+          {
+            const auto &r = st.joints[i].history[it];
+            const auto &a = scene.wear[i]->archard;
+            os << ',' << r.volume_pin * 1e9 << ',' << r.volume_bore * 1e9 << ','
+               << r.volume_pin * a.pin_density * 1e6 << ',' << r.volume_bore * a.bushing_density * 1e6 << ','
+               << r.max_depth_pin * 1e6 << ',' << r.max_depth_bore * 1e6 << ',' << r.archard_pin * 1e9 << ','
+               << r.archard_bore * 1e9 << ',' << r.mean_normal_force << ',' << r.sliding_distance;
+          }
+        os << '\n';
+      }
+    write_file_atomically(path, os.str());
+  }
+
+  void
+  write_profiles_msh(const std::string &path, const Profile &bore, const Profile &pin)
+  {
+    std::ostringstream os;
+    os << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 1 \"bore\"\n1 2 \"pin\"\n$EndPhysicalNames\n";
+    const unsigned nb = bore.n_points(), np = pin.n_points();
+    os << "$Nodes\n" << nb + np << '\n' << std::setprecision(17);
+    for (unsigned k = 0; k < nb; ++k)
+      os << k + 1 << ' ' << bore[k] * std::cos(bore.angle(k)) << ' ' << bore[k] * std::sin(bore.angle(k)) << " 0\n";
+    for (unsigned k = 0; k < np; ++k)
+      os << nb + k + 1 << ' ' << pin[k] * std::cos(pin.angle(k)) << ' ' << pin[k] * std::sin(pin.angle(k)) << " 0\n";
+    os << "$EndNodes\n$Elements\n" << nb + np << '\n';
+    for (unsigned k = 0; k < nb; ++k)
+      os << k + 1 << " 1 2 1 1 " << k + 1 << ' ' << (k + 1) % nb + 1 << '\n';
+    for (unsigned k = 0; k < np; ++k)
+      os << nb + k + 1 << " 1 2 2 2 " << nb + k + 1 << ' ' << nb + (k + 1) % np + 1 << '\n';
+    os << "$EndElements\n";
+    write_file_atomically(path, os.str());
+  }
+
+  void
+  write_wear_outputs(const std::string &dir, const Scene &scene, const wear::WearState &st, const ResponseRecorder &after)
+  {
+    // Wear depth vs angle, per iteration (seed Fig 5).
+    for (const auto &j : st.joints)
+      {
+        const unsigned     n_it = static_cast<unsigned>(j.history.size());
+        std::ostringstream os;
+        os << "# cumulative wear depth after each iteration; pin angles in the pin's frame, bore angles in "
+              "the bushing's frame\nangle_deg";
+        for (unsigned it = 0; it < n_it; ++it)
+          os << ",pin_it" << it + 1 << "_m";
+        for (unsigned it = 0; it < n_it; ++it)
+          os << ",bushing_it" << it + 1 << "_m";
+        os << '\n' << std::setprecision(10);
+        const unsigned n = j.pin.n_points();
+        for (unsigned k = 0; k < n; ++k)
+          {
+            os << 360.0 * k / n;
+            for (unsigned it = 0; it < n_it; ++it)
+              os << ',' << j.history[it].depth_pin[k];
+            for (unsigned it = 0; it < n_it; ++it)
+              os << ',' << (k < j.history[it].depth_bore.size() ? j.history[it].depth_bore[k] : 0.0);
+            os << '\n';
+          }
+        write_file_atomically(dir + "/wear_depth_" + j.name + ".csv", os.str());
+
+        PlotSpec spec;
+        spec.title   = "Joint " + j.name + ": wear depth after each iteration (pin: solid, bushing: dashed)";
+        spec.x_label = "angle in the body's own frame [deg]";
+        spec.y_label = "wear depth [um]";
+        spec.extra   = "set xrange [0:360]\nset xtics 45\n";
+        const unsigned stride = std::max(1u, (n_it + 5) / 6);
+        for (unsigned it = 0; it < n_it; ++it)
+          {
+            if ((n_it - 1 - it) % stride != 0)
+              continue;
+            const std::string colour = std::to_string(spec.series.size() / 2 + 1); // distinct per curve pair
+            PlotSeries p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + colour};
+            PlotSeries b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + colour};
+            for (unsigned k = 0; k < n; ++k)
+              {
+                p.x.push_back(360.0 * k / n);
+                p.y.push_back(j.history[it].depth_pin[k] * 1e6);
+              }
+            for (unsigned k = 0; k < j.bore.n_points(); ++k)
+              {
+                b.x.push_back(360.0 * k / j.bore.n_points());
+                b.y.push_back(j.history[it].depth_bore[k] * 1e6);
+              }
+            spec.series.push_back(p);
+            spec.series.push_back(b);
+          }
+        plot_png(spec, dir + "/wear_depth_" + j.name + ".png");
+
+        // Reconstructed profiles (seed Figs 6–7).
+        std::ostringstream ps;
+        ps << "angle_rad,bore_initial_m,bore_worn_m,pin_initial_m,pin_worn_m\n" << std::setprecision(17);
+        for (unsigned k = 0; k < n; ++k)
+          ps << j.pin.angle(k) << ',' << j.initial_bore[k] << ',' << j.bore[k] << ',' << j.initial_pin[k] << ','
+             << j.pin[k] << '\n';
+        write_file_atomically(dir + "/profiles_" + j.name + ".csv", ps.str());
+        write_profiles_msh(dir + "/profiles_" + j.name + ".msh", j.bore, j.pin);
+        const double depth = std::max(n_it ? j.history.back().max_depth_pin : 0.0, n_it ? j.history.back().max_depth_bore : 0.0);
+        double       m     = scene.wear_loop.magnification;
+        if (!(m > 0))
+          m = depth > 0 ? nice(0.15 * j.initial_pin.mean_radius() / depth) : 1;
+        std::ostringstream mag;
+        mag << " (wear magnified x" << m << ")";
+        plot_profile(dir + "/profile_" + j.name + "_bore.png", "Joint " + j.name + ": bushing bore surface" + mag.str(),
+                     j.initial_bore, j.bore, m);
+        plot_profile(dir + "/profile_" + j.name + "_pin.png", "Joint " + j.name + ": pin surface" + mag.str(),
+                     j.initial_pin, j.pin, m);
+      }
+
+    // Worn volume vs revolutions.
+    {
+      PlotSpec spec;
+      spec.title   = "Worn volume";
+      spec.x_label = "revolutions";
+      spec.y_label = "worn volume [mm^3]";
+      for (const auto &j : st.joints)
+        {
+          PlotSeries p{j.name + " pin", {0}, {0}, "linespoints", "lw 2"};
+          PlotSeries b{j.name + " bushing", {0}, {0}, "linespoints", "dt 2 lw 2"};
+          double     revolutions = 0;
+          for (unsigned it = 0; it < j.history.size(); ++it)
+            {
+              revolutions += st.factors[it] * scene.wear_loop.cycles_per_iteration;
+              p.x.push_back(revolutions);
+              p.y.push_back(j.history[it].volume_pin * 1e9);
+              b.x.push_back(revolutions);
+              b.y.push_back(j.history[it].volume_bore * 1e9);
+            }
+          spec.series.push_back(p);
+          spec.series.push_back(b);
+        }
+      plot_png(spec, dir + "/wear_volume.png");
+    }
+
+    // Dynamic response before and after wear (seed Fig 8).
+    after.write_csv(dir + "/response_after.csv");
+    std::vector<double> tb, axb, ayb;
+    PlotSpec            spec;
+    spec.title   = after.body_name + ": acceleration before and after wear (same initial state)";
+    spec.x_label = "time from the start [s]";
+    spec.y_label = "acceleration [m/s^2]";
+    if (read_response(dir + "/response_before.csv", tb, axb, ayb))
+      {
+        spec.series.push_back({"a_y before wear", tb, ayb, "lines", "lw 1 lc rgb 'blue'"});
+        spec.series.push_back({"a_x before wear", tb, axb, "lines", "lw 1 lc rgb 'dark-green'"});
+      }
+    spec.series.push_back({"a_y after wear", after.t, after.ay, "lines", "lw 1 lc rgb 'red'"});
+    spec.series.push_back({"a_x after wear", after.t, after.ax, "lines", "lw 1 lc rgb 'orange'"});
+    plot_png(spec, dir + "/response.png");
+  }
+} // namespace wearlink::io

@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "wear/wear_settings.h"
+
+#include "base/effect_ledger.h"
+#include "base/exceptions.h"
+
+namespace wearlink::wear
+{
+  namespace P = dealii::Patterns;
+
+  void
+  declare_joint_wear(dealii::ParameterHandler &prm)
+  {
+    declare(prm,
+            "Wear law",
+            "none",
+            P::Selection("none|archard"),
+            "Wear of the pin and bore surfaces. 'none': no wear buffers, no pressure "
+            "model, no re-meshing; 'archard': dh = k_D p ds on each surface, accumulated "
+            "at its own material points (REFERENCE.md §4); the run becomes a wear loop "
+            "(section Wear).",
+            "none");
+    declare_required(prm,
+                     "Pressure model",
+                     P::Selection(contact::pressure_models().pattern()),
+                     "Contact pressure on both surfaces for Archard's law. Only used (and "
+                     "only constructed) if Wear law = archard." +
+                       contact::pressure_models().documentation(),
+                     "none");
+    contact::pressure_models().declare_all(prm);
+    prm.enter_subsection("archard");
+    declare_required(prm,
+                     "Pin wear coefficient",
+                     P::Double(0),
+                     "Dimensional wear coefficient k_D = K/H of the pin surface (REFERENCE.md "
+                     "§4: 1e-13 … 7e-11 m³/(N m) for Al alloys dry on steel; 1 mm³/(N m) = "
+                     "1e-9 m³/(N m)). Only used if Wear law = archard.",
+                     "m³/(N m)");
+    declare_required(prm,
+                     "Bushing wear coefficient",
+                     P::Double(0),
+                     "Dimensional wear coefficient k_D of the bore surface. Only used if Wear "
+                     "law = archard.",
+                     "m³/(N m)");
+    declare_required(prm,
+                     "Pin density",
+                     P::Double(0),
+                     "Density of the pin material, for the mass loss. Only used if Wear law = "
+                     "archard.",
+                     "kg/m³");
+    declare_required(prm,
+                     "Bushing density",
+                     P::Double(0),
+                     "Density of the bushing material, for the mass loss. Only used if Wear "
+                     "law = archard.",
+                     "kg/m³");
+    prm.leave_subsection();
+  }
+
+
+  void
+  declare_wear_loop(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Wear");
+    declare(prm,
+            "Cycle period",
+            "0",
+            P::Double(0),
+            "Duration of one mechanism cycle (one crank revolution); 0 takes 2π/|ω| of the "
+            "first angle driver. Only used by wear runs (some joint has Wear law = "
+            "archard), as are all entries of this section except Clearance model.",
+            "s");
+    declare(prm,
+            "Cycles per iteration",
+            "1",
+            P::Double(0),
+            "Mechanism cycles simulated per wear iteration (wear is accumulated over them, "
+            "then extrapolated).",
+            "cycles");
+    declare(prm,
+            "Number of iterations",
+            "1",
+            P::Integer(1),
+            "Wear iterations (Extrapolation = fixed); the largest number of iterations "
+            "(adaptive).",
+            "none");
+    declare(prm,
+            "Extrapolation",
+            "fixed",
+            P::Selection("fixed|adaptive"),
+            "'fixed': each iteration's wear is multiplied by Extrapolation factor (the "
+            "seed: 100 cycles × 500); 'adaptive': the factor is chosen so that the largest "
+            "depth increment of any surface is Maximum depth increment (at most Maximum "
+            "extrapolation factor), until Target revolutions are reached.",
+            "none");
+    declare(prm,
+            "Extrapolation factor",
+            "1",
+            P::Double(0),
+            "fixed: revolutions represented by one simulated cycle.",
+            "none");
+    declare(prm,
+            "Maximum depth increment",
+            "1e-6",
+            P::Double(0),
+            "adaptive: cap of the largest wear-depth increment per iteration on any "
+            "surface of any joint.",
+            "m");
+    declare(prm,
+            "Maximum extrapolation factor",
+            "1e6",
+            P::Double(0),
+            "adaptive: largest factor per iteration.",
+            "none");
+    declare(prm,
+            "Target revolutions",
+            "0",
+            P::Double(0),
+            "adaptive: total mechanism revolutions (cycles) to represent; required > 0 "
+            "with adaptive extrapolation.",
+            "cycles");
+    declare(prm,
+            "Clearance model",
+            "exact",
+            P::Selection("exact|per-area"),
+            "How the clearance joints see the worn profiles: 'exact' the gap "
+            "g(φ) = R1*(φ − θ_b) − R2*(φ − θ_p) − e·u(φ) minimized over φ, nominal "
+            "stiffness; 'per-area' the seed's eqs 28–33 (the area facing the eccentricity "
+            "decides c*(n), δ*(n), K*(n)). Applies to every clearance joint with a worn "
+            "profile (from a profile file or from a wear iteration).",
+            "none");
+    declare(prm,
+            "Pressure evaluation",
+            "every step",
+            P::Selection("every step|samples per cycle"),
+            "When the pressure model is evaluated. The load history is always taken at "
+            "every accepted integrator step (trapezoidal rule in time). 'every step': the "
+            "model is evaluated for each loaded step; 'samples per cycle': once per "
+            "window of 1/N cycle, at the window's largest load, and the steps of the "
+            "window reuse that pressure shape, scaled to their own F_n and turned to their "
+            "own contact direction in each body's frame (N model calls per cycle: the "
+            "affordable setting for fe).",
+            "none");
+    declare(prm,
+            "Load samples per cycle",
+            "100",
+            P::Integer(8),
+            "Pressure evaluations per cycle with Pressure evaluation = samples per cycle.",
+            "none");
+    declare(prm,
+            "Remesh interval",
+            "1",
+            P::Integer(1),
+            "Iterations between re-meshes of the fe pressure model's worn geometry "
+            "(other pressure models follow the profiles every iteration).",
+            "none");
+    declare(prm,
+            "Response cycles",
+            "1",
+            P::Double(0),
+            "Cycles of the dynamic response recorded before wear (start of the first "
+            "iteration) and after wear (a run with the final profiles from the same "
+            "initial state), for the before/after plot.",
+            "cycles");
+    declare(prm,
+            "Response body",
+            "",
+            P::Anything(),
+            "Body whose acceleration is compared before and after wear; empty: the last "
+            "body of Mechanism/Bodies.",
+            "none");
+    declare(prm,
+            "Profile magnification",
+            "0",
+            P::Double(0),
+            "Magnification of the wear in the reconstructed-profile plots (plotted radius "
+            "= R + M (R* − R)); 0 chooses M so that the deepest wear shows as 15 % of the "
+            "radius. The plot title states it.",
+            "none");
+    prm.leave_subsection();
+  }
+
+
+  std::vector<std::string>
+  inactive_wear_sections(const dealii::ParameterHandler &prm)
+  {
+    std::vector<std::string> inactive;
+    const bool               wear = prm.get("Wear law") == "archard";
+    if (!wear)
+      {
+        inactive.push_back("archard/");
+        inactive.push_back("Pressure model");
+      }
+    for (const auto &name : contact::pressure_models().names())
+      if (!wear || name != prm.get("Pressure model"))
+        inactive.push_back(name + "/");
+    return inactive;
+  }
+
+
+  std::unique_ptr<JointWear>
+  read_joint_wear(ParameterReader &r, const std::string &joint)
+  {
+    if (r.get("Wear law") != "archard")
+      return nullptr;
+    auto w   = std::make_unique<JointWear>();
+    w->joint = joint;
+    r.enter("archard");
+    w->archard.pin_coefficient     = r.get_double("Pin wear coefficient");
+    w->archard.bushing_coefficient = r.get_double("Bushing wear coefficient");
+    w->archard.pin_density         = r.get_positive("Pin density");
+    w->archard.bushing_density     = r.get_positive("Bushing density");
+    if (!(w->archard.pin_coefficient >= 0))
+      r.fail("Pin wear coefficient", "it must be ≥ 0 m³/(N m)");
+    if (!(w->archard.bushing_coefficient >= 0))
+      r.fail("Bushing wear coefficient", "it must be ≥ 0 m³/(N m)");
+    r.leave();
+    EffectLedger::instance().record_construction("wear law", "archard");
+    w->pressure_model = r.get("Pressure model");
+    w->model          = contact::pressure_models().create(w->pressure_model, r, "Pressure model");
+    return w;
+  }
+
+
+  WearLoopSettings
+  read_wear_loop(ParameterReader &r)
+  {
+    WearLoopSettings s;
+    r.enter("Wear");
+    s.cycle_period         = r.get_double("Cycle period");
+    s.cycles_per_iteration = r.get_double("Cycles per iteration");
+    if (!(s.cycles_per_iteration > 0))
+      r.fail("Cycles per iteration", "it must be > 0 cycles");
+    s.n_iterations  = static_cast<unsigned int>(r.get_integer("Number of iterations"));
+    s.extrapolation = r.get("Extrapolation") == "fixed" ? Extrapolation::fixed : Extrapolation::adaptive;
+    s.extrapolation_factor = r.get_double("Extrapolation factor");
+    s.max_depth_increment  = r.get_double("Maximum depth increment");
+    s.max_factor           = r.get_double("Maximum extrapolation factor");
+    s.target_revolutions   = r.get_double("Target revolutions");
+    if (s.extrapolation == Extrapolation::fixed && !(s.extrapolation_factor >= 1))
+      r.fail("Extrapolation factor", "it must be ≥ 1 (1: no extrapolation)");
+    if (s.extrapolation == Extrapolation::adaptive)
+      {
+        if (!(s.target_revolutions > 0))
+          r.fail("Target revolutions",
+                 "it must be > 0 cycles with Extrapolation = adaptive",
+                 "Set the number of mechanism revolutions the wear run should represent.");
+        if (!(s.max_depth_increment > 0))
+          r.fail("Maximum depth increment", "it must be > 0 m");
+        if (!(s.max_factor >= 1))
+          r.fail("Maximum extrapolation factor", "it must be ≥ 1");
+      }
+    s.clearance_form = r.get("Clearance model") == "exact" ? contact::ClearanceForm::exact :
+                                                             contact::ClearanceForm::per_area;
+    s.evaluation        = r.get("Pressure evaluation") == "every step" ? PressureEvaluation::every_step :
+                                                                         PressureEvaluation::samples;
+    s.samples_per_cycle = static_cast<unsigned int>(r.get_integer("Load samples per cycle"));
+    s.remesh_interval   = static_cast<unsigned int>(r.get_integer("Remesh interval"));
+    s.response_cycles   = r.get_double("Response cycles");
+    s.response_body     = r.get("Response body");
+    s.magnification     = r.get_double("Profile magnification");
+    r.leave();
+    return s;
+  }
+} // namespace wearlink::wear

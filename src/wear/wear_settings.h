@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// What a scene says about wear, declared once with units (STYLE.md B.4):
+//  - per clearance joint, inside "Joint <name>/Clearance":
+//      Wear law        none | archard        (none: no buffers, no pressure model)
+//      Pressure model  hertz-strip | winkler | fe   (only used, and only constructed,
+//                      when Wear law = archard; no default: the choice is the user's)
+//      archard/        Pin and Bushing wear coefficient k_D [m³/(N m)], Pin and
+//                      Bushing density [kg/m³] — physical data, required when active
+//  - once per scene, "Wear": the iteration loop (cycles per iteration, extrapolation,
+//    clearance model, load sampling, re-mesh interval, outputs).
+// Only deal.II's ParameterHandler is used here (no FE headers), so io/ and app/ may
+// include it.
+#pragma once
+
+#include "base/parameters.h"
+#include "contact/clearance_joint.h"
+#include "contact/pressure_model.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wearlink::wear
+{
+  /** Archard data of one joint (REFERENCE.md §4): dh = k_D p ds on each surface. */
+  struct ArchardData
+  {
+    double pin_coefficient     = 0; ///< k_D of the pin surface [m³/(N m)] = [1/Pa]
+    double bushing_coefficient = 0; ///< k_D of the bore surface [m³/(N m)]
+    double pin_density         = 0; ///< [kg/m³], for the mass loss
+    double bushing_density     = 0; ///< [kg/m³]
+  };
+
+  /** Wear of one clearance joint, as the scene chose it. */
+  struct JointWear
+  {
+    std::string                             joint;          ///< joint name
+    std::string                             pressure_model; ///< plugin name
+    ArchardData                             archard;
+    std::unique_ptr<contact::PressureModel> model;          ///< constructed plugin
+  };
+
+  enum class Extrapolation
+  {
+    fixed,   ///< every iteration stands for Cycles per iteration × Extrapolation factor
+    adaptive ///< the factor caps the largest depth increment per iteration
+  };
+
+  enum class PressureEvaluation
+  {
+    every_step, ///< the pressure model at every loaded integrator step
+    samples     ///< once per 1/N cycle; the window's steps reuse that shape
+  };
+
+  /** The wear loop of a scene ("Wear" section). */
+  struct WearLoopSettings
+  {
+    double             cycle_period         = 0; ///< [s]; 0: 2π/|ω| of the first angle driver
+    double             cycles_per_iteration = 1; ///< simulated cycles per iteration [-]
+    unsigned int       n_iterations         = 1; ///< iterations (fixed), cap (adaptive)
+    Extrapolation      extrapolation        = Extrapolation::fixed;
+    double             extrapolation_factor = 1; ///< fixed factor [-]
+    double             max_depth_increment  = 0; ///< adaptive: cap per iteration [m]
+    double             max_factor           = 0; ///< adaptive: largest factor [-]
+    double             target_revolutions   = 0; ///< adaptive: stop there [-]
+    contact::ClearanceForm clearance_form   = contact::ClearanceForm::exact;
+    PressureEvaluation evaluation           = PressureEvaluation::every_step;
+    unsigned int       samples_per_cycle    = 100;
+    unsigned int       remesh_interval      = 1; ///< iterations between FE re-meshes
+    double             response_cycles      = 1; ///< before/after response [cycles]
+    std::string        response_body;            ///< body whose response is plotted
+    double             magnification        = 0; ///< profile plots; 0: automatic
+  };
+
+  /** Declare the per-joint wear entries (inside "Joint <name>/Clearance"). */
+  void
+  declare_joint_wear(dealii::ParameterHandler &prm);
+
+  /** Declare the "Wear" section (at the top level). */
+  void
+  declare_wear_loop(dealii::ParameterHandler &prm);
+
+  /**
+   * Subsections of "Joint <joint>/Clearance/" whose required entries are not active:
+   * the archard data when Wear law = none, and every pressure model not chosen.
+   * @p prm must be inside that Clearance subsection.
+   */
+  std::vector<std::string>
+  inactive_wear_sections(const dealii::ParameterHandler &prm);
+
+  /**
+   * Read the wear of one joint (reader inside "Joint <joint>/Clearance"). Returns null
+   * for Wear law = none; otherwise constructs the chosen pressure model (only that one).
+   */
+  std::unique_ptr<JointWear>
+  read_joint_wear(ParameterReader &reader, const std::string &joint);
+
+  /** Read the "Wear" section (reader at the top level). */
+  WearLoopSettings
+  read_wear_loop(ParameterReader &reader);
+} // namespace wearlink::wear

@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The wear loop on the nine-bar (params/nine_bar_wear.prm, shortened):
+//  - Bookkeeping: after a wear iteration the volume removed from each surface,
+//    Σ_k h_k A_k, equals the integrated Archard volume k_D ∫ F_n |v_t| dt, where the
+//    integral is taken here by an independent observer (trapezoidal rule over the
+//    accepted steps, from the joint diagnostics). hertz-strip conserves the force
+//    exactly (Σ p A = F_n), so only rounding separates them: 1e-9 relative.
+//    The worn profiles carry the same volume: L (A_enclosed(before) − A_enclosed(after))
+//    differs from Σ h A only by the second-order term h²/2 per area and the linear
+//    interpolation between samples, O(h/R) ≈ 1e-4 relative here; we ask 1e-3.
+//  - Resume: a run stopped after 1 iteration and resumed to 3 ends with exactly the
+//    profiles, state and volumes of an uninterrupted 3-iteration run: the checkpoint
+//    holds everything the next iteration depends on, written in hexadecimal floating
+//    point, so the two runs do the same arithmetic (bitwise equality is asserted).
+//  - Effects: wear off → no wear law, no pressure model, no wear buffers, no gmsh;
+//    wear on with hertz-strip → only that pressure model, still no gmsh.
+#include "contact/clearance_joint.h"
+#include "io/wear_run.h"
+#include "scene_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace wearlink;
+
+namespace
+{
+  /** k_D-free ∫ F_n |v_t| dt per joint by the trapezoidal rule over accepted steps. */
+  class FrictionWorkObserver : public mbs::StepObserver
+  {
+  public:
+    explicit FrictionWorkObserver(std::vector<contact::ClearanceJoint *> j)
+      : joints(std::move(j))
+      , integral(joints.size(), 0.0)
+      , last(joints.size(), 0.0)
+    {}
+    void
+    on_start(const mbs::StepContext &c) override
+    {
+      t_last = c.t;
+      eval(c, last);
+    }
+    void
+    on_step(const mbs::StepContext &c) override
+    {
+      std::vector<double> now(joints.size());
+      eval(c, now);
+      for (unsigned i = 0; i < joints.size(); ++i)
+        integral[i] += 0.5 * (c.t - t_last) * (now[i] + last[i]);
+      last   = now;
+      t_last = c.t;
+    }
+    std::vector<contact::ClearanceJoint *> joints;
+    std::vector<double>                    integral, last;
+    double                                 t_last = 0;
+
+  private:
+    void
+    eval(const mbs::StepContext &c, std::vector<double> &out)
+    {
+      const auto n = c.simulation.get_mechanism().n_coordinates();
+      for (unsigned i = 0; i < joints.size(); ++i)
+        {
+          const auto d = joints[i]->diagnostics(mbs::StateView(c.y.data(), c.y.data() + n));
+          out[i]       = d.normal_force * std::abs(d.sliding_velocity);
+        }
+    }
+  };
+
+  const std::vector<std::string> short_run = {"Wear/Cycles per iteration=0.5", "Wear/Response cycles=0.1"};
+
+  std::vector<std::string>
+  with(std::vector<std::string> a, const std::vector<std::string> &b)
+  {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  }
+} // namespace
+
+TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
+{
+  // One iteration of half a cycle, factor 1: the summary's volumes are one iteration's.
+  auto scene2 = wearlink::testing::scene("params/nine_bar_wear.prm",
+                                         with(short_run, {"Wear/Number of iterations=1", "Wear/Extrapolation factor=1"}));
+  FrictionWorkObserver work(scene2.clearance_joints);
+  io::WearRunOptions   o;
+  o.progress      = false;
+  o.final_outputs = false;
+  o.observers     = {&work};
+  const auto r    = io::run_wear(scene2, o);
+  ASSERT_EQ(r.state.joints.size(), 2u);
+  for (unsigned i = 0; i < 2; ++i)
+    {
+      const auto &js = r.state.joints[i];
+      const auto &w  = *scene2.wear[i];
+      const auto &h  = js.history.back();
+      const double expected_pin  = w.archard.pin_coefficient * work.integral[i];
+      const double expected_bore = w.archard.bushing_coefficient * work.integral[i];
+      ASSERT_GT(expected_pin, 0) << js.name;
+      EXPECT_NEAR(h.volume_pin, expected_pin, 1e-9 * expected_pin) << js.name;
+      EXPECT_NEAR(h.volume_bore, expected_bore, 1e-9 * expected_bore) << js.name;
+      // Σ depth × area from the stored depths (areas of the profiles the wear was
+      // accumulated on: the initial ones).
+      const double length = scene2.clearance_joints[i]->get_description().geometry.axial_length;
+      const double dpsi   = 2 * M_PI / js.pin.n_points();
+      double       sum_pin = 0, sum_bore = 0;
+      for (unsigned k = 0; k < js.pin.n_points(); ++k)
+        {
+          sum_pin += h.depth_pin[k] * length * js.initial_pin[k] * dpsi;
+          sum_bore += h.depth_bore[k] * length * js.initial_bore[k] * dpsi;
+        }
+      // The stored depth is a difference of radii, R* − R, so each area carries a
+      // rounding error of up to 2 ε R: the sum may be off by 2 ε R (2π R L).
+      const double eps       = std::numeric_limits<double>::epsilon();
+      const double round_pin = 2 * eps * js.initial_pin[0] * 2 * M_PI * js.initial_pin[0] * length;
+      const double round_bore = 2 * eps * js.initial_bore[0] * 2 * M_PI * js.initial_bore[0] * length;
+      EXPECT_NEAR(sum_pin, expected_pin, 1e-9 * expected_pin + round_pin) << js.name;
+      EXPECT_NEAR(sum_bore, expected_bore, 1e-9 * expected_bore + round_bore) << js.name;
+      // The profiles: enclosed-area change × L.
+      const double v_pin  = length * (js.initial_pin.enclosed_area() - js.pin.enclosed_area());
+      const double v_bore = length * (js.bore.enclosed_area() - js.initial_bore.enclosed_area());
+      EXPECT_NEAR(v_pin, expected_pin, 1e-3 * expected_pin) << js.name;
+      EXPECT_NEAR(v_bore, expected_bore, 1e-3 * expected_bore) << js.name;
+    }
+}
+
+TEST(Wear, ResumedRunEqualsUninterruptedRun)
+{
+  const auto    base = with(short_run, {"Wear/Number of iterations=3", "Wear/Extrapolation factor=2000"});
+  io::WearRunOptions o;
+  o.progress      = false;
+  o.final_outputs = false;
+
+  auto straight_scene  = wearlink::testing::scene("params/nine_bar_wear.prm", base);
+  o.output_directory   = wearlink::testing::fresh_directory("wear_straight");
+  const auto straight  = io::run_wear(straight_scene, o);
+  ASSERT_EQ(straight.state.iterations_done, 3u);
+
+  // "Killed" after one iteration of three, then resumed by a fresh process state.
+  o.output_directory = wearlink::testing::fresh_directory("wear_resumed");
+  {
+    auto s       = wearlink::testing::scene("params/nine_bar_wear.prm", base);
+    o.stop_after = 1;
+    const auto k = io::run_wear(s, o);
+    EXPECT_FALSE(k.finished);
+    EXPECT_EQ(k.state.iterations_done, 1u);
+  }
+  auto s2      = wearlink::testing::scene("params/nine_bar_wear.prm", base);
+  o.stop_after = 0;
+  o.resume     = true;
+  const auto resumed = io::run_wear(s2, o);
+  ASSERT_TRUE(resumed.finished);
+  ASSERT_EQ(resumed.state.iterations_done, 3u);
+  EXPECT_EQ(resumed.state.revolutions, straight.state.revolutions);
+  EXPECT_EQ(resumed.state.time, straight.state.time);
+  for (unsigned i = 0; i < straight.state.joints.size(); ++i)
+    {
+      const auto &a = straight.state.joints[i];
+      const auto &b = resumed.state.joints[i];
+      EXPECT_EQ(a.pin.samples(), b.pin.samples()) << a.name;
+      EXPECT_EQ(a.bore.samples(), b.bore.samples()) << a.name;
+      EXPECT_EQ(a.history.back().volume_pin, b.history.back().volume_pin) << a.name;
+      // The wear is real, not zero (else equality would be trivial).
+      EXPECT_GT(a.history.back().max_depth_pin, 1e-8) << a.name;
+      EXPECT_GT(a.history.back().max_depth_bore, 1e-8) << a.name;
+    }
+  for (int k = 0; k < straight.state.state.size(); ++k)
+    EXPECT_EQ(straight.state.state[k], resumed.state.state[k]) << "state component " << k;
+}
+
+TEST(Wear, ResumeRefusesAnotherScene)
+{
+  io::WearRunOptions o;
+  o.progress         = false;
+  o.final_outputs    = false;
+  o.output_directory = wearlink::testing::fresh_directory("wear_other_scene");
+  o.stop_after       = 1;
+  {
+    auto s = wearlink::testing::scene("params/nine_bar_wear.prm", with(short_run, {"Wear/Number of iterations=2"}));
+    io::run_wear(s, o);
+  }
+  auto s = wearlink::testing::scene("params/nine_bar_wear.prm",
+                                    with(short_run, {"Wear/Number of iterations=2", "Joint A/Clearance/archard/Pin wear coefficient=1e-12"}));
+  o.stop_after = 0;
+  o.resume     = true;
+  EXPECT_THROW(io::run_wear(s, o), InputError);
+}
+
+TEST(Effects, WearOffConstructsNoWearCode)
+{
+  auto scene = wearlink::testing::scene("params/nine_bar_clearance.prm", {"Simulation/End time=0.05"});
+  EXPECT_FALSE(io::has_wear(scene));
+  wearlink::testing::run(scene);
+  auto &ledger = EffectLedger::instance();
+  EXPECT_EQ(ledger.constructions("wear law"), 0);
+  EXPECT_EQ(ledger.constructions("pressure model"), 0);
+  EXPECT_EQ(ledger.resources("wear buffers"), 0);
+  EXPECT_EQ(ledger.resources("gmsh sessions"), 0);
+  EXPECT_EQ(ledger.resources("triangulations"), 0);
+}
+
+TEST(Effects, HertzStripWearConstructsOnlyItsPressureModel)
+{
+  auto scene = wearlink::testing::scene("params/nine_bar_wear.prm",
+                                        with(short_run, {"Wear/Number of iterations=1"}));
+  io::WearRunOptions o;
+  o.progress      = false;
+  o.final_outputs = false;
+  io::run_wear(scene, o);
+  auto &ledger = EffectLedger::instance();
+  EXPECT_EQ(ledger.constructions("wear law", "archard"), 2);
+  EXPECT_EQ(ledger.constructions("pressure model", "hertz-strip"), 2);
+  EXPECT_EQ(ledger.constructions("pressure model", "winkler"), 0);
+  EXPECT_EQ(ledger.constructions("pressure model", "fe"), 0);
+  EXPECT_EQ(ledger.resources("wear buffers"), 2);
+  EXPECT_EQ(ledger.resources("gmsh sessions"), 0);
+  EXPECT_EQ(ledger.resources("triangulations"), 0);
+}
