@@ -61,7 +61,8 @@ namespace wearlink
                        "': it does not exist or is not readable.");
     std::vector<double> angles, radii;
     std::string         line;
-    unsigned int        line_no = 0;
+    unsigned int        line_no     = 0;
+    bool                header_seen = false;
     while (std::getline(in, line))
       {
         ++line_no;
@@ -81,8 +82,11 @@ namespace wearlink
         const bool numeric = !a_text.empty() && !r_text.empty() && *end_a == '\0' && *end_r == '\0';
         if (!numeric)
           {
-            if (angles.empty() && radii.empty() && line_no == 1)
-              continue; // header line
+            if (angles.empty() && radii.empty() && !header_seen)
+              {
+                header_seen = true; // one header line before the data (after comments)
+                continue;
+              }
             throw InputError("In profile file '" + filename + "' line " +
                              std::to_string(line_no) +
                              ": expected two numbers 'angle_rad, radius_m'.");

@@ -124,9 +124,10 @@ namespace wearlink::io
     for (const auto &r : rows)
       os << std::left << std::setw(6) << r.joint << std::setw(13) << r.model << std::right << std::scientific
          << std::setprecision(4) << std::setw(13) << r.volume_pin * 1e9 << std::setw(13) << r.volume_bore * 1e9
-         << std::setw(14) << r.archard_volume * 1e9 << std::fixed << std::setprecision(4) << std::setw(12)
-         << r.max_depth_pin * 1e6 << std::setprecision(1) << std::setw(9) << r.peak_angle_pin
-         << std::setprecision(4) << std::setw(12) << r.max_depth_bore * 1e6 << std::setprecision(1)
+         << std::setw(14) << r.archard_volume * 1e9 << std::setprecision(3) << std::setw(12)
+         << r.max_depth_pin * 1e6 << std::fixed << std::setprecision(1) << std::setw(9) << r.peak_angle_pin
+         << std::scientific << std::setprecision(3) << std::setw(12) << r.max_depth_bore * 1e6 << std::fixed
+         << std::setprecision(1)
          << std::setw(9) << r.peak_angle_bore << std::setprecision(3) << std::setw(11) << r.difference_pin
          << std::setw(11) << r.difference_bore << std::setw(10) << r.evaluations << std::setprecision(2)
          << std::setw(10) << r.wall_time << '\n';

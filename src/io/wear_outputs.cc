@@ -260,16 +260,28 @@ namespace wearlink::io
              << j.pin[k] << '\n';
         write_file_atomically(dir + "/profiles_" + j.name + ".csv", ps.str());
         write_profiles_msh(dir + "/profiles_" + j.name + ".msh", j.bore, j.pin);
-        const double depth = std::max(n_it ? j.history.back().max_depth_pin : 0.0, n_it ? j.history.back().max_depth_bore : 0.0);
-        double       m     = scene.wear_loop.magnification;
-        if (!(m > 0))
-          m = depth > 0 ? nice(0.15 * j.initial_pin.mean_radius() / depth) : 1;
-        std::ostringstream mag;
-        mag << " (wear magnified x" << m << ")";
-        plot_profile(dir + "/profile_" + j.name + "_bore.png", "Joint " + j.name + ": bushing bore surface" + mag.str(),
-                     j.initial_bore, j.bore, m);
-        plot_profile(dir + "/profile_" + j.name + "_pin.png", "Joint " + j.name + ": pin surface" + mag.str(),
-                     j.initial_pin, j.pin, m);
+        // The worn profiles in the scene's profile-file format, so that a scene can
+        // start from them ('Bore profile file', 'Pin profile file').
+        j.bore.write_csv(dir + "/bore_" + j.name + ".csv", "worn bore of joint " + j.name + ", bushing frame");
+        j.pin.write_csv(dir + "/pin_" + j.name + ".csv", "worn pin of joint " + j.name + ", pin frame");
+        // Each surface at its own magnification (stated in its title), unless fixed.
+        auto magnification = [&](double depth) {
+          const double m = scene.wear_loop.magnification;
+          if (m > 0)
+            return m;
+          return depth > 0 ? nice(0.15 * j.initial_pin.mean_radius() / depth) : 1.0;
+        };
+        auto title = [](const std::string &what, double m) {
+          std::ostringstream t;
+          t << what << " (wear magnified x" << m << ")";
+          return t.str();
+        };
+        const double m_bore = magnification(n_it ? j.history.back().max_depth_bore : 0.0);
+        const double m_pin  = magnification(n_it ? j.history.back().max_depth_pin : 0.0);
+        plot_profile(dir + "/profile_" + j.name + "_bore.png", title("Joint " + j.name + ": bushing bore surface", m_bore),
+                     j.initial_bore, j.bore, m_bore);
+        plot_profile(dir + "/profile_" + j.name + "_pin.png", title("Joint " + j.name + ": pin surface", m_pin),
+                     j.initial_pin, j.pin, m_pin);
       }
 
     // Worn volume vs revolutions.

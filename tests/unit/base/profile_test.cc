@@ -81,3 +81,19 @@ TEST(Profile, RejectsBadFiles)
   EXPECT_THROW(Profile::round(-1, 16), InputError);
   EXPECT_THROW(Profile::round(1, 4), InputError);
 }
+
+// A profile written by write_csv (comment line, then the header) reads back exactly:
+// the worn profiles of a wear run can start another scene.
+TEST(Profile, WrittenProfileReadsBack)
+{
+  std::vector<double> r(36);
+  for (unsigned k = 0; k < r.size(); ++k)
+    r[k] = 0.012 + 1e-6 * std::sin(0.3 * k);
+  const auto        p    = wearlink::Profile::from_samples(r);
+  const std::string dir  = wearlink::testing::fresh_directory("profile_round_trip");
+  p.write_csv(dir + "/p.csv", "a worn bore");
+  const auto q = wearlink::Profile::read_csv(dir + "/p.csv");
+  ASSERT_EQ(q.n_points(), p.n_points());
+  for (unsigned k = 0; k < r.size(); ++k)
+    EXPECT_EQ(q[k], p[k]);
+}
