@@ -93,6 +93,8 @@ namespace wearlink::io
         {"load-sampling", "Wear/Pressure evaluation and Load samples per cycle"},
         {"wear-step", "wear step: iterations × extrapolation factor at fixed revolutions (adaptive: Maximum "
                       "depth increment)"},
+        {"simulated-cycles", "Wear/Cycles per iteration × Extrapolation factor at fixed revolutions (how much of "
+                             "the chaotic load history is sampled)"},
         {"pressure-model", "Pressure model of every wearing joint"},
         {"fe-element-size", "fe Surface element size"},
         {"fe-degree", "fe Element degree"},
@@ -101,16 +103,23 @@ namespace wearlink::io
       return c;
     }
 
+    std::string
+    description_of(const std::string &name)
+    {
+      for (const auto &[n, d] : catalogue())
+        if (n == name)
+          return d;
+      return "";
+    }
+
     /** A knob whose single part is written to @p targets. */
     Knob
     make_knob(const std::string &name, const std::vector<std::string> &targets,
               const std::vector<std::string> &values, const std::string &reference)
     {
       Knob k;
-      k.name = name;
-      for (const auto &[n, d] : catalogue())
-        if (n == name)
-          k.description = d;
+      k.name        = name;
+      k.description = description_of(name);
       k.targets = {targets};
       for (const auto &v : values)
         k.values.push_back({v});
@@ -395,7 +404,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       {
         Knob k;
         k.name        = "integrator-tolerance";
-        k.description = catalogue()[0].second;
+        k.description = description_of("integrator-tolerance");
         k.targets     = {{"Integrator/Relative tolerance"}, {"Integrator/Position tolerance"},
                          {"Integrator/Velocity tolerance"}};
         const double rel = in.relative_tolerance;
@@ -468,7 +477,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         {
           Knob k;
           k.name        = "load-sampling";
-          k.description = catalogue()[5].second;
+          k.description = description_of("load-sampling");
           k.targets     = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
           const std::vector<int> n = quick ? std::vector<int>{25, 100} : std::vector<int>{25, 100, 400};
           if (fe.empty())
@@ -492,7 +501,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
             // The same revolutions in more, smaller steps.
             Knob k;
             k.name        = "wear-step";
-            k.description = catalogue()[6].second;
+            k.description = description_of("wear-step");
             k.targets     = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
             const double total = ws.n_iterations * ws.extrapolation_factor;
             std::vector<long> counts;
@@ -510,6 +519,23 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         else
           knobs.push_back(make_knob("wear-step", {"Wear/Maximum depth increment"},
                                     scaled(ws.max_depth_increment, false), "smallest depth increment"));
+
+        if (ws.extrapolation == wear::Extrapolation::fixed)
+          {
+            // The same revolutions from more simulated cycles per iteration.
+            Knob k;
+            k.name        = "simulated-cycles";
+            k.description = description_of("simulated-cycles");
+            k.targets     = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
+            const double per_iteration = ws.cycles_per_iteration * ws.extrapolation_factor;
+            for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.5, 1, 2, 4})
+              {
+                const double c = ws.cycles_per_iteration * f;
+                k.values.push_back({label(c), label(per_iteration / c)});
+              }
+            k.reference = "most simulated cycles";
+            knobs.push_back(k);
+          }
 
         if (!quick)
           {
@@ -781,9 +807,32 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         if (!s.x.empty())
           spec.series.push_back(s);
       }
+    // The worn volume alone: robust where depths and profiles meet the chaos floor.
+    PlotSpec volume = spec;
+    volume.series.clear();
+    volume.y_label  = "relative error of the worn volume (largest over surfaces and joints)";
+    point_type      = 4;
+    for (const auto &k : knobs)
+      {
+        PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
+        for (const auto &r : study.rows)
+          if (r.knob == k && !r.is_reference && r.ok)
+            {
+              const double e = max_error(r, " V_");
+              if (std::isfinite(e) && e > 0)
+                {
+                  s.x.push_back(r.wall_time);
+                  s.y.push_back(e);
+                }
+            }
+        if (!s.x.empty())
+          volume.series.push_back(s);
+      }
     write_file_atomically(dir + "/accuracy.csv", study.csv());
     write_file_atomically(dir + "/accuracy.md", study.markdown());
     if (!spec.series.empty())
       plot_png(spec, dir + "/accuracy_pareto.png");
+    if (study.wears && !volume.series.empty())
+      plot_png(volume, dir + "/accuracy_pareto_volume.png");
   }
 } // namespace wearlink::io

@@ -132,8 +132,8 @@ TEST(StudyAccuracy, QuickStudyVariesTheActiveKnobsAndTimesEveryRun)
                                "Wear/Cycles per iteration=0.5", "--output", dir, "--quiet"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   const auto rows = read_csv(dir + "/accuracy.csv");
-  // 5 knobs × 3 values in quick mode.
-  EXPECT_GE(rows.size(), 15u);
+  // 6 knobs × 3 values in quick mode.
+  EXPECT_GE(rows.size(), 18u);
   std::map<std::string, std::vector<Row>> by_knob;
   for (const auto &row : rows)
     {
@@ -143,7 +143,7 @@ TEST(StudyAccuracy, QuickStudyVariesTheActiveKnobsAndTimesEveryRun)
       EXPECT_TRUE(std::isfinite(t) && t > 0) << row.at("knob") << " = " << row.at("value") << ": " << t;
     }
   const std::set<std::string> expected = {"integrator-tolerance", "contact-law", "discrete-areas", "load-sampling",
-                                          "wear-step"};
+                                          "wear-step", "simulated-cycles"};
   std::set<std::string> got;
   for (const auto &[k, v] : by_knob)
     got.insert(k);

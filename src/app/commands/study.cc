@@ -21,7 +21,8 @@ namespace wearlink::app
 
 Shows what accuracy costs in time. Each accuracy knob that applies to the scene
 (integrator tolerance or step, Baumgarte factors, contact law, discrete areas per
-profile, load sampling of the pressure model, wear step, pressure model, and with
+profile, load sampling of the pressure model, wear step, simulated cycles per wear
+iteration, pressure model, and with
 Pressure model = fe: surface element size, element degree, re-mesh interval) is set
 to each of its values in turn, coarse to fine, while everything else keeps the
 scene's value. Every run is timed (reading, building and running) and compared with
@@ -30,8 +31,9 @@ scene's own): relative error of the worn volume and largest wear depth of pin an
 bushing, relative L2 difference of the worn-depth profiles, peak contact force per
 clearance joint and peak acceleration of the response body.
 One progress line per run. Writes into DIR (default: output/<scene name>_accuracy),
-each file atomically: accuracy.csv (every quantity and error), accuracy.md (the table)
-and accuracy_pareto.png (worst error vs wall time, log-log, one series per knob).
+each file atomically: accuracy.csv (every quantity and error), accuracy.md (the table),
+accuracy_pareto.png (worst error vs wall time, log-log, one series per knob) and, for
+wear scenes, accuracy_pareto_volume.png (the worn volume's error vs wall time).
 
 Options:
   --quick             fewer values and, for wear scenes, Wear/Cycles per iteration = 1,
