@@ -250,27 +250,64 @@ namespace wearlink::io
       return (1 - w) * h[i] + w * h[(i + 1) % h.size()];
     }
 
-    /** ‖h − h_ref‖/‖h_ref‖ on the reference's angles. */
+    /** Periodic moving average of @p h over @p window_deg degrees. */
+    std::vector<double>
+    smoothed(const std::vector<double> &h, double window_deg)
+    {
+      const long          n    = static_cast<long>(h.size());
+      const long          half = std::lround(0.5 * window_deg / 360.0 * n);
+      std::vector<double> out(h.size(), 0.0);
+      for (long k = 0; k < n; ++k)
+        {
+          for (long j = -half; j <= half; ++j)
+            out[k] += h[((k + j) % n + n) % n];
+          out[k] /= 2 * half + 1;
+        }
+      return out;
+    }
+
+    /**
+     * ‖h − h_ref‖/‖h_ref‖ on the reference's angles; with @p window_deg > 0 both are
+     * first smoothed over that window (the shape without the impact-to-impact spikes).
+     */
     double
-    profile_difference(const std::vector<double> &h, const std::vector<double> &ref)
+    profile_difference(const std::vector<double> &h, const std::vector<double> &ref, double window_deg = 0)
     {
       if (h.empty() || ref.empty())
         return nan;
-      double d = 0, n = 0;
+      std::vector<double> v(ref.size()), r = ref;
       for (std::size_t k = 0; k < ref.size(); ++k)
+        v[k] = periodic_interpolate(h, double(k) / ref.size());
+      if (window_deg > 0)
         {
-          const double v = periodic_interpolate(h, double(k) / ref.size());
-          d += (v - ref[k]) * (v - ref[k]);
-          n += ref[k] * ref[k];
+          v = smoothed(v, window_deg);
+          r = smoothed(r, window_deg);
+        }
+      double d = 0, n = 0;
+      for (std::size_t k = 0; k < r.size(); ++k)
+        {
+          d += (v[k] - r[k]) * (v[k] - r[k]);
+          n += r[k] * r[k];
         }
       return n > 0 ? std::sqrt(d / n) : (d > 0 ? nan : 0.0);
     }
 
+    /** Window of the "shape" comparison of worn profiles [deg]. */
+    constexpr double shape_window_deg = 10;
+
     bool
-    is_wear_quantity(const std::string &name)
+    is_profile(const std::string &name)
     {
-      return name.find(" V_") != std::string::npos || name.find(" h_") != std::string::npos ||
-             name.find(" profile_") != std::string::npos;
+      return name.find(" profile_") != std::string::npos || name.find(" shape_") != std::string::npos;
+    }
+
+    /** The quantities "worst" is taken over: see the header. */
+    bool
+    counts_for_worst(const std::string &name, bool wears)
+    {
+      if (wears)
+        return name.find(" V_") != std::string::npos || name.find(" shape_") != std::string::npos;
+      return name.find(" F_peak") != std::string::npos || name == "a_peak";
     }
 
     /** Largest error among names containing @p tag (NaN if none is finite). */
@@ -687,12 +724,17 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
               }
             for (const auto &[q, h] : ms[i].profiles)
               {
-                r.errors[q] = ref.profiles.count(q) ? profile_difference(h, ref.profiles.at(q)) : nan;
+                const bool  has   = ref.profiles.count(q) > 0;
+                std::string shape = q;
+                shape.replace(shape.find("profile_"), 8, "shape_");
+                r.errors[q]     = has ? profile_difference(h, ref.profiles.at(q)) : nan;
+                r.errors[shape] = has ? profile_difference(h, ref.profiles.at(q), shape_window_deg) : nan;
                 names.insert(q);
+                names.insert(shape);
               }
             double worst = 0;
             for (const auto &[q, e] : r.errors)
-              if (is_wear_quantity(q) == study.wears)
+              if (counts_for_worst(q, study.wears))
                 worst = std::isfinite(e) ? std::max(worst, e) : nan;
             r.worst = worst;
           }
@@ -714,12 +756,15 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       os << " with `" << join(base_overrides, "`, `") << "`";
     os << ". Each knob is varied alone (everything else at the scene's value); errors are relative to that "
           "knob's reference run (the row marked **ref**; 'reference' says what it is). "
-          "V: worn volume, h: largest wear depth (largest over pin and bushing of every wearing joint), "
-          "profile: ‖h − h_ref‖/‖h_ref‖ of the worn-depth profiles, F: peak contact force (largest over the "
-          "joints), a: peak acceleration of the response body; worst: the largest of "
-       << (wears ? "the wear errors (V, h, profile)" : "F and a") << ". time ratio: wall time / reference's.\n\n";
-    os << "| knob | value | reference | wall s | time ratio | V | h | profile | F | a | worst |\n"
-       << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+          "V: worn volume, h: largest wear depth (each the largest error over pin and bushing of every "
+          "wearing joint), profile: ‖h − h_ref‖/‖h_ref‖ of the worn-depth profiles point by point, shape: the "
+          "same after a "
+       << shape_window_deg
+       << "° moving average (the profile without its impact-to-impact spikes), F: peak contact force "
+          "(largest over the joints), a: peak acceleration of the response body; worst: the largest of "
+       << (wears ? "V and shape" : "F and a") << ". time ratio: wall time / reference's.\n\n";
+    os << "| knob | value | reference | wall s | time ratio | V | h | profile | shape | F | a | worst |\n"
+       << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     std::map<std::string, double> ref_time;
     for (const auto &r : rows)
       if (r.is_reference)
@@ -730,15 +775,15 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
            << " | " << number(r.wall_time) << " | " << number(r.wall_time / ref_time[r.knob], 2) << " | ";
         if (!r.ok)
           {
-            os << "failed: " << r.failure << " | | | | | |\n";
+            os << "failed: " << r.failure << " | | | | | | |\n";
             continue;
           }
         if (r.is_reference)
           {
-            os << "ref | ref | ref | ref | ref | ref |\n";
+            os << "ref | ref | ref | ref | ref | ref | ref |\n";
             continue;
           }
-        for (const char *tag : {" V_", " h_", " profile_", " F_peak", "a_peak"})
+        for (const char *tag : {" V_", " h_", " profile_", " shape_", " F_peak", "a_peak"})
           os << number(max_error(r, tag), 2) << " | ";
         os << number(r.worst, 2) << " |\n";
       }
@@ -752,7 +797,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     os << "knob,value,reference,is_reference,status,wall_time_s,worst_error";
     for (const auto &q : quantity_names)
       {
-        if (q.find("profile_") == std::string::npos)
+        if (!is_profile(q))
           os << ',' << q;
         os << ',' << q << " error";
       }
@@ -769,7 +814,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
            << quoted(r.ok ? "ok" : "failed: " + r.failure) << ',' << r.wall_time << ',' << r.worst;
         for (const auto &q : quantity_names)
           {
-            if (q.find("profile_") == std::string::npos)
+            if (!is_profile(q))
               os << ',' << (r.quantities.count(q) ? r.quantities.at(q) : nan);
             os << ',' << (r.errors.count(q) ? r.errors.at(q) : nan);
           }
@@ -786,7 +831,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     spec.title   = "What accuracy costs in time: " + study.scene_file + " (reference runs, error 0, not shown)";
     spec.x_label = "wall time of the run [s]";
     spec.y_label = std::string("worst relative error vs the knob's reference") +
-                   (study.wears ? " (wear volume, depth, profile)" : " (peak force, acceleration)");
+                   (study.wears ? " (worn volume, profile shape)" : " (peak force, acceleration)");
     spec.log_x   = true;
     spec.log_y   = true;
     spec.extra   = "set key outside right\nset grid\n";

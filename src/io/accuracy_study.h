@@ -21,8 +21,12 @@
 //  - per clearance joint: the peak normal contact force over the run;
 //  - the peak acceleration magnitude of the response body (Wear/Response body, or the
 //    last body) over the accepted steps.
-// "worst" is the largest of the wear errors when the scene wears (the tool's product),
-// else the largest of the force/acceleration errors.
+// The point-by-point profile difference includes the spikes single impacts leave in a
+// profile over a few simulated cycles; two runs that differ only in the chaotic
+// trajectory differ there by tens of percent. So each profile is also compared after a
+// 10° periodic moving average ("shape"). "worst" is the largest of the worn-volume and
+// shape errors when the scene wears (the tool's product), else the largest of the
+// force/acceleration errors.
 #pragma once
 
 #include <map>
