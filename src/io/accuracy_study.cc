@@ -381,7 +381,11 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       }
     catch (const InputError &e)
       {
-        throw InputError(e.message() + "\nA study file has one subsection 'Accuracy study' with 'Knobs' and one "
+        std::string m = e.message();
+        const auto  at = m.find("scene file");
+        if (at != std::string::npos)
+          m.replace(at, 10, "study file");
+        throw InputError(m + "\nA study file has one subsection 'Accuracy study' with 'Knobs' and one "
                                        "subsection per knob; the knobs are " +
                          join(known_knob_names(), ", ") + ".");
       }
@@ -496,7 +500,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
           if (law != l)
             k.values.push_back(e.empty() ? std::vector<std::string>{l} : std::vector<std::string>{l, e});
         k.values.push_back(e.empty() ? std::vector<std::string>{law} : std::vector<std::string>{law, e});
-        k.reference = "the scene's law (" + law + ")";
+        k.reference = "the scene's law";
         knobs.push_back(k);
       }
 
@@ -618,6 +622,16 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                     format_number(scene.start_time + std::min(1.0, scene.end_time - scene.start_time))};
         }
     }
+    // A --quick shortening of an entry the user sets anyway is left out.
+    base.erase(std::remove_if(base.begin(), base.end(),
+                              [&](const std::string &q) {
+                                const std::string entry = q.substr(0, q.find('='));
+                                for (const auto &o : request.overrides)
+                                  if (o.substr(0, o.find('=')) == entry)
+                                    return true;
+                                return false;
+                              }),
+               base.end());
     base.insert(base.end(), request.overrides.begin(), request.overrides.end());
     study.base_overrides = base;
 
@@ -695,7 +709,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
             StudyRow r;
             r.knob         = k.name;
             r.value        = join(k.values[i], "; ");
-            r.reference    = k.reference + ": " + join(k.values.back(), "; ");
+            r.reference    = join(k.values.back(), "; ") + " (" + k.reference + ")";
             r.is_reference = i + 1 == k.values.size();
             r.ok           = ms.back().ok;
             r.failure      = ms.back().failure;
@@ -755,16 +769,24 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     if (!base_overrides.empty())
       os << " with `" << join(base_overrides, "`, `") << "`";
     os << ". Each knob is varied alone (everything else at the scene's value); errors are relative to that "
-          "knob's reference run (the row marked **ref**; 'reference' says what it is). "
-          "V: worn volume, h: largest wear depth (each the largest error over pin and bushing of every "
-          "wearing joint), profile: ‖h − h_ref‖/‖h_ref‖ of the worn-depth profiles point by point, shape: the "
-          "same after a "
-       << shape_window_deg
-       << "° moving average (the profile without its impact-to-impact spikes), F: peak contact force "
-          "(largest over the joints), a: peak acceleration of the response body; worst: the largest of "
+          "knob's reference run (the row marked **ref**; 'reference' says what it is). ";
+    if (wears)
+      os << "V: worn volume, h: largest wear depth (each the largest error over pin and bushing of every "
+            "wearing joint), profile: ‖h − h_ref‖/‖h_ref‖ of the worn-depth profiles point by point, shape: "
+            "the same after a "
+         << shape_window_deg << "° moving average (the profile without its impact-to-impact spikes), ";
+    os << "F: peak contact force (largest over the joints), a: peak acceleration of the response body; "
+          "worst: the largest of "
        << (wears ? "V and shape" : "F and a") << ". time ratio: wall time / reference's.\n\n";
-    os << "| knob | value | reference | wall s | time ratio | V | h | profile | shape | F | a | worst |\n"
-       << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::vector<const char *> tags = {" F_peak", "a_peak"};
+    if (wears)
+      tags.insert(tags.begin(), {" V_", " h_", " profile_", " shape_"});
+    os << "| knob | value | reference | wall s | time ratio | " << (wears ? "V | h | profile | shape | " : "")
+       << "F | a | worst |\n"
+       << "|---|---|---|---:|---:|";
+    for (std::size_t i = 0; i <= tags.size(); ++i)
+      os << "---:|";
+    os << '\n';
     std::map<std::string, double> ref_time;
     for (const auto &r : rows)
       if (r.is_reference)
@@ -775,15 +797,20 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
            << " | " << number(r.wall_time) << " | " << number(r.wall_time / ref_time[r.knob], 2) << " | ";
         if (!r.ok)
           {
-            os << "failed: " << r.failure << " | | | | | | |\n";
+            os << "failed: " << r.failure << " |";
+            for (std::size_t i = 0; i < tags.size(); ++i)
+              os << " |";
+            os << '\n';
             continue;
           }
         if (r.is_reference)
           {
-            os << "ref | ref | ref | ref | ref | ref | ref |\n";
+            for (std::size_t i = 0; i <= tags.size(); ++i)
+              os << "ref | ";
+            os << '\n';
             continue;
           }
-        for (const char *tag : {" V_", " h_", " profile_", " shape_", " F_peak", "a_peak"})
+        for (const char *tag : tags)
           os << number(max_error(r, tag), 2) << " | ";
         os << number(r.worst, 2) << " |\n";
       }

@@ -209,3 +209,28 @@ TEST(StudyAccuracy, UnknownOrInapplicableKnobsAreInputErrorsAndWriteNothing)
       EXPECT_TRUE(files_in(out).empty()) << "case " << i;
     }
 }
+
+// A scene without wear: its knobs are the dynamics' alone (no discrete areas, load
+// sampling, wear step, …), the table has no wear columns, and the errors it does have
+// are finite for every non-reference row.
+TEST(StudyAccuracy, SceneWithoutWearHasOnlyDynamicsKnobs)
+{
+  const std::string dir = fresh_directory("study_no_wear");
+  const auto r = run_wearlink({"study", "accuracy", source_path("params/nine_bar_clearance.prm"), "--quick", "--set",
+                               "Simulation/End time=0.25", "--output", dir, "--quiet"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto            rows = read_csv(dir + "/accuracy.csv");
+  std::set<std::string> knobs;
+  for (const auto &row : rows)
+    {
+      knobs.insert(row.at("knob"));
+      EXPECT_EQ(row.count("A V_pin error"), 0u) << "no wear columns without a wear law";
+      if (row.at("is_reference") == "0")
+        {
+          EXPECT_TRUE(std::isfinite(number(row, "A F_peak error")));
+          EXPECT_TRUE(std::isfinite(number(row, "worst_error")));
+        }
+    }
+  EXPECT_EQ(knobs, (std::set<std::string>{"integrator-tolerance", "contact-law"}));
+  EXPECT_EQ(rows.size(), 6u);
+}
