@@ -9,6 +9,7 @@ namespace wearlink::app
   extern const Command contact_command;
   extern const Command sweep_command;
   extern const Command compare_pressure_command;
+  extern const Command study_command;
 
   const std::vector<Command> &
   commands()
@@ -19,6 +20,7 @@ namespace wearlink::app
       contact_command,
       sweep_command,
       compare_pressure_command,
+      study_command,
     };
     return table;
   }

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// `wearlink study accuracy SCENE.prm`: what accuracy costs in time (io/accuracy_study.h).
+// Every accuracy knob that applies to the scene is varied alone; the error of the
+// quantities that matter against the knob's reference and the wall time of every run
+// go into accuracy.csv, accuracy.md and accuracy_pareto.png.
+#include "app/command_line.h"
+#include "base/exceptions.h"
+#include "io/accuracy_study.h"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace wearlink::app
+{
+  namespace
+  {
+    const std::string help_text =
+      std::string(R"(wearlink study accuracy SCENE.prm [--output DIR] [--set "Section/Entry=value" ...]
+                     [--quick] [--knobs a,b,...] [--study STUDY.prm] [--quiet]
+
+Shows what accuracy costs in time. Each accuracy knob that applies to the scene
+(integrator tolerance or step, Baumgarte factors, contact law, discrete areas per
+profile, load sampling of the pressure model, wear step, simulated cycles per wear
+iteration, pressure model, and with
+Pressure model = fe: surface element size, element degree, re-mesh interval) is set
+to each of its values in turn, coarse to fine, while everything else keeps the
+scene's value. Every run is timed (reading, building and running) and compared with
+the knob's reference run (its finest value; for choices without a "finer" one, the
+scene's own): relative error of the worn volume and largest wear depth of pin and
+bushing, relative L2 difference of the worn-depth profiles, peak contact force per
+clearance joint and peak acceleration of the response body.
+One progress line per run. Writes into DIR (default: output/<scene name>_accuracy),
+each file atomically: accuracy.csv (every quantity and error), accuracy.md (the table),
+accuracy_pareto.png (worst error vs wall time, log-log, one series per knob) and, for
+wear scenes, accuracy_pareto_volume.png (the worn volume's error vs wall time).
+
+Options:
+  --quick             fewer values and, for wear scenes, Wear/Cycles per iteration = 1,
+                      Wear/Number of iterations = 2 (other scenes: at most 1 s
+                      simulated); --set overrides win
+  --knobs a,b         only these knobs
+  --study FILE        a study file (below); --knobs wins over its Knobs
+  --set S/E=V         override a scene entry in every run (repeatable)
+  --quiet             no progress lines
+
+)") + io::study_file_help() + R"(
+Exit status: 0 success (a run that fails is a row of the table), 2 bad input (nothing
+is written), 3 numerical failure.
+)";
+
+    int
+    run(const std::vector<std::string> &args)
+    {
+      if (args.empty() || args[0] != "accuracy")
+        throw InputError("`wearlink study` needs a study kind; the only one is `accuracy`: "
+                         "wearlink study accuracy SCENE.prm. See `wearlink study --help`.");
+      const std::vector<std::string> rest(args.begin() + 1, args.end());
+      const auto a = parse_arguments(rest,
+                                     {{"--output", true},
+                                      {"--set", true, true},
+                                      {"--quick", false},
+                                      {"--knobs", true},
+                                      {"--study", true},
+                                      {"--quiet", false}},
+                                     "study accuracy");
+      if (a.positional.size() != 1)
+        throw InputError("`wearlink study accuracy` needs exactly one scene file (given " +
+                         std::to_string(a.positional.size()) + "). See `wearlink study --help`.");
+      const std::string file = a.positional[0];
+      io::StudyRequest  request;
+      request.overrides = a.all("--set");
+      request.quick     = a.has("--quick");
+      request.progress  = !a.has("--quiet");
+      if (a.has("--study"))
+        io::read_study_file(a.value("--study"), request);
+      if (a.has("--knobs"))
+        {
+          request.knobs.clear();
+          std::stringstream ks(a.value("--knobs"));
+          for (std::string k; std::getline(ks, k, ',');)
+            if (!k.empty())
+              request.knobs.push_back(k);
+        }
+      const auto        study = io::run_accuracy_study(file, request);
+      const std::string out =
+        a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_accuracy");
+      io::write_accuracy_study(out, study);
+      std::cout << study.markdown() << "\nwrote " << out << "/accuracy.csv, accuracy.md, accuracy_pareto.png\n";
+      return 0;
+    }
+  } // namespace
+
+  extern const Command study_command;
+  const Command study_command = {"study",
+                                 "study accuracy SCENE.prm [--quick]  what accuracy costs in time "
+                                 "(every accuracy knob in turn: error vs wall time)",
+                                 help_text.c_str(),
+                                 run};
+} // namespace wearlink::app

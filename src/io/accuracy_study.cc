@@ -1,0 +1,910 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/accuracy_study.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/parameters.h"
+#include "base/plot.h"
+#include "io/run.h"
+#include "io/scene.h"
+#include "io/wear_outputs.h"
+#include "io/wear_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace wearlink::io
+{
+  namespace
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    // ------------------------------------------------------------------------------
+    // Small helpers.
+
+    std::vector<std::string>
+    split(const std::string &s, char sep)
+    {
+      std::vector<std::string> out;
+      std::stringstream        in(s);
+      for (std::string part; std::getline(in, part, sep);)
+        {
+          const auto b = part.find_first_not_of(" \t");
+          const auto e = part.find_last_not_of(" \t");
+          out.push_back(b == std::string::npos ? "" : part.substr(b, e - b + 1));
+        }
+      return out;
+    }
+
+    std::string
+    join(const std::vector<std::string> &v, const std::string &sep)
+    {
+      std::string s;
+      for (std::size_t i = 0; i < v.size(); ++i)
+        s += (i ? sep : "") + v[i];
+      return s;
+    }
+
+    /** The value of entry "Section/Sub/Entry" of the scene's parameters. */
+    std::string
+    entry_of(const Scene &scene, const std::string &path)
+    {
+      auto      &prm   = *scene.parameters;
+      const auto parts = split(path, '/');
+      for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+        prm.enter_subsection(parts[i]);
+      const std::string v = prm.get(parts.back());
+      for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+        prm.leave_subsection();
+      return v;
+    }
+
+    double
+    number_of(const Scene &scene, const std::string &path)
+    {
+      return std::stod(entry_of(scene, path));
+    }
+
+    /** A knob value as a user would type it: 1e-05, 0.0025, 250. */
+    std::string
+    label(double v)
+    {
+      std::ostringstream os;
+      os << std::setprecision(4) << v;
+      return os.str();
+    }
+
+    /** Every knob wearlink knows, in the order the study runs them. */
+    const std::vector<std::pair<std::string, std::string>> &
+    catalogue()
+    {
+      static const std::vector<std::pair<std::string, std::string>> c = {
+        {"integrator-tolerance", "dopri5 Relative tolerance (Position tolerance = 1e-3 m × it, Velocity = it m/s)"},
+        {"integrator-step", "rk4 Time step"},
+        {"baumgarte", "Baumgarte alpha = beta"},
+        {"contact-law", "Normal force law of every clearance joint"},
+        {"discrete-areas", "Number of discrete areas of every wearing joint's profiles"},
+        {"load-sampling", "Wear/Pressure evaluation and Load samples per cycle"},
+        {"wear-step", "wear step: iterations × extrapolation factor at fixed revolutions (adaptive: Maximum "
+                      "depth increment)"},
+        {"simulated-cycles", "Wear/Cycles per iteration × Extrapolation factor at fixed revolutions (how much of "
+                             "the chaotic load history is sampled)"},
+        {"pressure-model", "Pressure model of every wearing joint"},
+        {"fe-element-size", "fe Surface element size"},
+        {"fe-degree", "fe Element degree"},
+        {"remesh-interval", "Wear/Remesh interval (fe)"},
+      };
+      return c;
+    }
+
+    std::string
+    description_of(const std::string &name)
+    {
+      for (const auto &[n, d] : catalogue())
+        if (n == name)
+          return d;
+      return "";
+    }
+
+    /** A knob whose single part is written to @p targets. */
+    Knob
+    make_knob(const std::string &name, const std::vector<std::string> &targets,
+              const std::vector<std::string> &values, const std::string &reference)
+    {
+      Knob k;
+      k.name        = name;
+      k.description = description_of(name);
+      k.targets = {targets};
+      for (const auto &v : values)
+        k.values.push_back({v});
+      k.reference = reference;
+      return k;
+    }
+
+    std::vector<std::string>
+    paths(const std::vector<std::string> &joints, const std::string &tail)
+    {
+      std::vector<std::string> p;
+      for (const auto &j : joints)
+        p.push_back("Joint " + j + "/Clearance/" + tail);
+      return p;
+    }
+
+    /** "Entry=v" overrides of value @p v of knob @p k. */
+    std::vector<std::string>
+    settings_of(const Knob &k, const std::vector<std::string> &v)
+    {
+      std::vector<std::string> s;
+      for (std::size_t p = 0; p < k.targets.size(); ++p)
+        for (const auto &t : k.targets[p])
+          s.push_back(t + "=" + v[p]);
+      return s;
+    }
+
+    // ------------------------------------------------------------------------------
+    // What one run measures.
+
+    /** Peak normal force of every clearance joint and peak |a| of one body. */
+    class PeakObserver : public mbs::StepObserver
+    {
+    public:
+      PeakObserver(const Scene &scene, int body)
+        : scene(scene)
+        , body(body)
+        , force(scene.clearance_joints.size(), 0.0)
+      {}
+      void
+      on_step(const mbs::StepContext &c) override
+      {
+        const auto           n = scene.mechanism->n_coordinates();
+        const mbs::StateView s(c.y.data(), c.y.data() + n);
+        for (std::size_t k = 0; k < force.size(); ++k)
+          force[k] = std::max(force[k], scene.clearance_joints[k]->diagnostics(s).normal_force);
+        acceleration =
+          std::max(acceleration, std::hypot(c.dydt[n + 3 * body], c.dydt[n + 3 * body + 1]));
+      }
+      const Scene        &scene;
+      const int           body;
+      std::vector<double> force;
+      double              acceleration = 0;
+    };
+
+    struct Measurement
+    {
+      bool                                       ok = true;
+      std::string                                failure;
+      double                                     wall_time = 0;
+      std::map<std::string, double>              quantities;
+      std::map<std::string, std::vector<double>> profiles; ///< depth per area [m]
+    };
+
+    Measurement
+    measure(const std::string &file, const std::vector<std::string> &overrides)
+    {
+      Measurement m;
+      const auto  t0 = std::chrono::steady_clock::now();
+      try
+        {
+          Scene        scene = read_scene(file, overrides);
+          PeakObserver peaks(scene, response_body(scene));
+          if (has_wear(scene))
+            {
+              WearRunOptions w;
+              w.progress      = false;
+              w.final_outputs = false;
+              w.observers     = {&peaks};
+              const auto r    = run_wear(scene, w);
+              for (const auto &js : r.state.joints)
+                {
+                  const auto &h                      = js.history.back();
+                  m.quantities[js.name + " V_pin"]   = h.volume_pin;
+                  m.quantities[js.name + " V_bush"]  = h.volume_bore;
+                  m.quantities[js.name + " h_pin"]   = h.max_depth_pin;
+                  m.quantities[js.name + " h_bush"]  = h.max_depth_bore;
+                  m.profiles[js.name + " profile_pin"]  = h.depth_pin;
+                  m.profiles[js.name + " profile_bush"] = h.depth_bore;
+                }
+            }
+          else
+            {
+              RunOptions o;
+              o.observers = {&peaks};
+              run_scene(scene, o);
+            }
+          for (std::size_t k = 0; k < peaks.force.size(); ++k)
+            m.quantities[scene.clearance_joints[k]->name() + " F_peak"] = peaks.force[k];
+          m.quantities["a_peak"] = peaks.acceleration;
+        }
+      catch (const Error &e)
+        {
+          m.ok      = false;
+          m.failure = e.message();
+        }
+      m.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return m;
+    }
+
+    double
+    relative_error(double value, double reference)
+    {
+      if (!std::isfinite(value) || !std::isfinite(reference))
+        return nan;
+      if (reference == 0)
+        return value == 0 ? 0.0 : nan;
+      return std::abs(value - reference) / std::abs(reference);
+    }
+
+    /** @p h (periodic, N samples over 2π) at angle fraction @p s ∈ [0, 1). */
+    double
+    periodic_interpolate(const std::vector<double> &h, double s)
+    {
+      const double x  = s * h.size();
+      const auto   i  = static_cast<std::size_t>(std::floor(x)) % h.size();
+      const double w  = x - std::floor(x);
+      return (1 - w) * h[i] + w * h[(i + 1) % h.size()];
+    }
+
+    /** Periodic moving average of @p h over @p window_deg degrees. */
+    std::vector<double>
+    smoothed(const std::vector<double> &h, double window_deg)
+    {
+      const long          n    = static_cast<long>(h.size());
+      const long          half = std::lround(0.5 * window_deg / 360.0 * n);
+      std::vector<double> out(h.size(), 0.0);
+      for (long k = 0; k < n; ++k)
+        {
+          for (long j = -half; j <= half; ++j)
+            out[k] += h[((k + j) % n + n) % n];
+          out[k] /= 2 * half + 1;
+        }
+      return out;
+    }
+
+    /**
+     * ‖h − h_ref‖/‖h_ref‖ on the reference's angles; with @p window_deg > 0 both are
+     * first smoothed over that window (the shape without the impact-to-impact spikes).
+     */
+    double
+    profile_difference(const std::vector<double> &h, const std::vector<double> &ref, double window_deg = 0)
+    {
+      if (h.empty() || ref.empty())
+        return nan;
+      std::vector<double> v(ref.size()), r = ref;
+      for (std::size_t k = 0; k < ref.size(); ++k)
+        v[k] = periodic_interpolate(h, double(k) / ref.size());
+      if (window_deg > 0)
+        {
+          v = smoothed(v, window_deg);
+          r = smoothed(r, window_deg);
+        }
+      double d = 0, n = 0;
+      for (std::size_t k = 0; k < r.size(); ++k)
+        {
+          d += (v[k] - r[k]) * (v[k] - r[k]);
+          n += r[k] * r[k];
+        }
+      return n > 0 ? std::sqrt(d / n) : (d > 0 ? nan : 0.0);
+    }
+
+    /** Window of the "shape" comparison of worn profiles [deg]. */
+    constexpr double shape_window_deg = 10;
+
+    bool
+    is_profile(const std::string &name)
+    {
+      return name.find(" profile_") != std::string::npos || name.find(" shape_") != std::string::npos;
+    }
+
+    /** The quantities "worst" is taken over: see the header. */
+    bool
+    counts_for_worst(const std::string &name, bool wears)
+    {
+      if (wears)
+        return name.find(" V_") != std::string::npos || name.find(" shape_") != std::string::npos;
+      return name.find(" F_peak") != std::string::npos || name == "a_peak";
+    }
+
+    /** Largest error among names containing @p tag (NaN if none is finite). */
+    double
+    max_error(const StudyRow &r, const std::string &tag)
+    {
+      double m = nan;
+      for (const auto &[name, e] : r.errors)
+        if (name.find(tag) != std::string::npos && std::isfinite(e))
+          m = std::isfinite(m) ? std::max(m, e) : e;
+      return m;
+    }
+
+    std::string
+    number(double v, int precision = 3)
+    {
+      if (!std::isfinite(v))
+        return "–";
+      std::ostringstream os;
+      os << std::setprecision(precision) << v;
+      return os.str();
+    }
+  } // namespace
+
+  // --------------------------------------------------------------------------------
+  // Knobs.
+
+  std::vector<std::string>
+  known_knob_names()
+  {
+    std::vector<std::string> n;
+    for (const auto &[name, d] : catalogue())
+      n.push_back(name);
+    return n;
+  }
+
+  std::string
+  study_file_help()
+  {
+    return R"(A study file is a deal.II parameter file with one subsection:
+  subsection Accuracy study
+    set Knobs = integrator-tolerance, wear-step   # which knobs; empty: all that apply
+    subsection wear-step
+      set Values = 2;2500, 5;1000, 10;500          # coarse -> fine; the last is the reference
+    end
+  end
+A value has one part per setting of the knob, separated by ';' (see accuracy.md's
+'value' column for the parts of each knob). Knobs: )" +
+           join(known_knob_names(), ", ") + ".\n";
+  }
+
+  void
+  read_study_file(const std::string &file, StudyRequest &request)
+  {
+    dealii::ParameterHandler prm;
+    prm.enter_subsection("Accuracy study");
+    prm.declare_entry("Knobs", "", dealii::Patterns::Anything(),
+                      "Knobs to vary, comma-separated; empty: every knob that applies to the scene.");
+    for (const auto &name : known_knob_names())
+      {
+        prm.enter_subsection(name);
+        prm.declare_entry("Values", "", dealii::Patterns::Anything(),
+                          "Values of the knob, comma-separated, coarse to fine (the last is the "
+                          "reference); the parts of one value are separated by ';'. Empty: built-in.");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+    try
+      {
+        read_prm_file(prm, file, false);
+      }
+    catch (const InputError &e)
+      {
+        std::string m = e.message();
+        const auto  at = m.find("scene file");
+        if (at != std::string::npos)
+          m.replace(at, 10, "study file");
+        throw InputError(m + "\nA study file has one subsection 'Accuracy study' with 'Knobs' and one "
+                                       "subsection per knob; the knobs are " +
+                         join(known_knob_names(), ", ") + ".");
+      }
+    prm.enter_subsection("Accuracy study");
+    const auto known = known_knob_names();
+    for (const auto &k : split(prm.get("Knobs"), ','))
+      {
+        if (k.empty())
+          continue;
+        if (std::find(known.begin(), known.end(), k) == known.end())
+          throw InputError("In " + file + ", 'Accuracy study/Knobs' names '" + k +
+                           "', which is not a knob; the knobs are " + join(known, ", ") + ".");
+        request.knobs.push_back(k);
+      }
+    for (const auto &name : known)
+      {
+        prm.enter_subsection(name);
+        const std::string v = prm.get("Values");
+        prm.leave_subsection();
+        if (!v.empty())
+          request.values[name] = split(v, ',');
+      }
+    prm.leave_subsection();
+  }
+
+  std::vector<Knob>
+  knobs_for(const Scene &scene, bool quick)
+  {
+    std::vector<Knob> knobs;
+    std::vector<std::string> clearance, wearing, fe;
+    for (const auto *j : scene.clearance_joints)
+      clearance.push_back(j->name());
+    for (const auto &w : scene.wear)
+      {
+        wearing.push_back(w->joint);
+        if (w->pressure_model == "fe")
+          fe.push_back(w->joint);
+      }
+    const bool wears = !wearing.empty();
+    // Scale factors, coarse -> fine, around the scene's value (×1 is the scene's).
+    const std::vector<double> coarsen = quick ? std::vector<double>{4, 2, 1} : std::vector<double>{4, 2, 1, 0.5};
+    auto scaled = [&](double base, bool integer) {
+      std::vector<std::string> v;
+      for (const double f : coarsen)
+        {
+          const double x = base * f;
+          const std::string s = integer ? std::to_string(std::max(1L, std::lround(x))) : label(x);
+          if (std::find(v.begin(), v.end(), s) == v.end())
+            v.push_back(s);
+        }
+      return v;
+    };
+
+    // Integrator: tolerance (dopri5) or step (rk4).
+    const auto &in = scene.simulation.integrator;
+    if (in.type == mbs::IntegratorType::dopri5)
+      {
+        Knob k;
+        k.name        = "integrator-tolerance";
+        k.description = description_of("integrator-tolerance");
+        k.targets     = {{"Integrator/Relative tolerance"}, {"Integrator/Position tolerance"},
+                         {"Integrator/Velocity tolerance"}};
+        const double rel = in.relative_tolerance;
+        for (const double f : quick ? std::vector<double>{100, 10, 1} : std::vector<double>{100, 10, 1, 0.1})
+          {
+            const double r = rel * f;
+            k.values.push_back({label(r), label(r * 1e-3), label(r)});
+          }
+        k.reference = "tightest tolerance";
+        knobs.push_back(k);
+      }
+    else
+      knobs.push_back(make_knob("integrator-step", {"Integrator/Time step"}, scaled(in.time_step, false),
+                                "smallest step"));
+
+    // Baumgarte factors: no "finer" value; the scene's is the reference.
+    if (!quick)
+      {
+        Knob k;
+        k.name        = "baumgarte";
+        k.description = "Baumgarte alpha = beta";
+        k.targets     = {{"Integrator/Baumgarte alpha"}, {"Integrator/Baumgarte beta"}};
+        const double a = number_of(scene, "Integrator/Baumgarte alpha");
+        const double b = number_of(scene, "Integrator/Baumgarte beta");
+        k.values       = {{label(a / 2), label(b / 2)},
+                          {label(a * 2), label(b * 2)},
+                          {label(a), label(b)}};
+        k.reference    = "the scene's factors";
+        knobs.push_back(k);
+      }
+
+    // Contact law of every clearance joint; the scene's (first joint's) law last.
+    if (!clearance.empty())
+      {
+        const std::string law = entry_of(scene, "Joint " + clearance[0] + "/Clearance/Normal force law");
+        std::string       e   = "";
+        for (const char *section : {"lankarani-nikravesh", "flores"})
+          if (law == section)
+            e = entry_of(scene, "Joint " + clearance[0] + "/Clearance/" + law + "/Restitution coefficient");
+        Knob k;
+        k.name        = "contact-law";
+        k.description = "Normal force law of every clearance joint";
+        k.targets     = {paths(clearance, "Normal force law")};
+        if (!e.empty())
+          {
+            auto t = paths(clearance, "lankarani-nikravesh/Restitution coefficient");
+            auto f = paths(clearance, "flores/Restitution coefficient");
+            t.insert(t.end(), f.begin(), f.end());
+            k.targets.push_back(t);
+          }
+        for (const char *l : {"hertz", "flores", "lankarani-nikravesh"})
+          if (law != l)
+            k.values.push_back(e.empty() ? std::vector<std::string>{l} : std::vector<std::string>{l, e});
+        k.values.push_back(e.empty() ? std::vector<std::string>{law} : std::vector<std::string>{law, e});
+        k.reference = "the scene's law";
+        knobs.push_back(k);
+      }
+
+    if (wears)
+      {
+        const auto &ws = scene.wear_loop;
+        {
+          const double n = number_of(scene, "Joint " + wearing[0] + "/Clearance/Number of discrete areas");
+          std::vector<std::string> v;
+          for (const double f : quick ? std::vector<double>{0.25, 0.5, 1} : std::vector<double>{0.25, 0.5, 1, 2})
+            v.push_back(std::to_string(std::max(8L, std::lround(n * f))));
+          knobs.push_back(make_knob("discrete-areas", paths(wearing, "Number of discrete areas"), v, "most areas"));
+        }
+
+        {
+          Knob k;
+          k.name        = "load-sampling";
+          k.description = description_of("load-sampling");
+          k.targets     = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
+          const std::vector<int> n = quick ? std::vector<int>{25, 100} : std::vector<int>{25, 100, 400};
+          if (fe.empty())
+            {
+              for (const int s : n)
+                k.values.push_back({"samples per cycle", std::to_string(s)});
+              k.values.push_back({"every step", std::to_string(ws.samples_per_cycle)});
+              k.reference = "every step";
+            }
+          else // the fe model at every loaded step is what samples per cycle avoids
+            {
+              for (const int s : {25, 50, 100, 200})
+                k.values.push_back({"samples per cycle", std::to_string(s)});
+              k.reference = "200 samples per cycle";
+            }
+          knobs.push_back(k);
+        }
+
+        if (ws.extrapolation == wear::Extrapolation::fixed)
+          {
+            // The same revolutions in more, smaller steps.
+            Knob k;
+            k.name        = "wear-step";
+            k.description = description_of("wear-step");
+            k.targets     = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
+            const double total = ws.n_iterations * ws.extrapolation_factor;
+            std::vector<long> counts;
+            for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.2, 0.5, 1, 2})
+              {
+                const long c = std::max(1L, std::lround(ws.n_iterations * f));
+                if (std::find(counts.begin(), counts.end(), c) == counts.end())
+                  counts.push_back(c);
+              }
+            for (const long c : counts)
+              k.values.push_back({std::to_string(c), label(total / c)});
+            k.reference = "most iterations";
+            knobs.push_back(k);
+          }
+        else
+          knobs.push_back(make_knob("wear-step", {"Wear/Maximum depth increment"},
+                                    scaled(ws.max_depth_increment, false), "smallest depth increment"));
+
+        if (ws.extrapolation == wear::Extrapolation::fixed)
+          {
+            // The same revolutions from more simulated cycles per iteration.
+            Knob k;
+            k.name        = "simulated-cycles";
+            k.description = description_of("simulated-cycles");
+            k.targets     = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
+            const double per_iteration = ws.cycles_per_iteration * ws.extrapolation_factor;
+            for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.5, 1, 2, 4})
+              {
+                const double c = ws.cycles_per_iteration * f;
+                k.values.push_back({label(c), label(per_iteration / c)});
+              }
+            k.reference = "most simulated cycles";
+            knobs.push_back(k);
+          }
+
+        if (!quick)
+          {
+            Knob k = make_knob("pressure-model", paths(wearing, "Pressure model"), {"hertz-strip", "winkler", "fe"},
+                               "fe");
+            knobs.push_back(k);
+          }
+      }
+
+    if (!fe.empty())
+      {
+        knobs.push_back(make_knob("fe-element-size", paths(fe, "fe/Surface element size"),
+                                  scaled(number_of(scene, "Joint " + fe[0] + "/Clearance/fe/Surface element size"),
+                                         false),
+                                  "smallest elements"));
+        knobs.push_back(make_knob("fe-degree", paths(fe, "fe/Element degree"), {"1", "2"}, "degree 2"));
+        knobs.push_back(make_knob("remesh-interval", {"Wear/Remesh interval"}, {"5", "2", "1"},
+                                  "re-mesh every iteration"));
+      }
+    return knobs;
+  }
+
+  // --------------------------------------------------------------------------------
+  // The study.
+
+  AccuracyStudy
+  run_accuracy_study(const std::string &scene_file, const StudyRequest &request)
+  {
+    AccuracyStudy study;
+    study.scene_file = scene_file;
+
+    // The scene as the user gave it (an InputError here is the user's), then --quick's
+    // shortening in front of the user's overrides (which win).
+    std::vector<std::string> base;
+    {
+      Scene scene = read_scene(scene_file, request.overrides);
+      if (request.quick)
+        {
+          if (has_wear(scene))
+            base = {"Wear/Cycles per iteration=1", "Wear/Number of iterations=2"};
+          else
+            base = {"Simulation/End time=" +
+                    format_number(scene.start_time + std::min(1.0, scene.end_time - scene.start_time))};
+        }
+    }
+    // A --quick shortening of an entry the user sets anyway is left out.
+    base.erase(std::remove_if(base.begin(), base.end(),
+                              [&](const std::string &q) {
+                                const std::string entry = q.substr(0, q.find('='));
+                                for (const auto &o : request.overrides)
+                                  if (o.substr(0, o.find('=')) == entry)
+                                    return true;
+                                return false;
+                              }),
+               base.end());
+    base.insert(base.end(), request.overrides.begin(), request.overrides.end());
+    study.base_overrides = base;
+
+    Scene             scene = read_scene(scene_file, base);
+    study.wears             = has_wear(scene);
+    std::vector<Knob> all   = knobs_for(scene, request.quick);
+
+    // Selection and replacement values, all checked before the first run.
+    std::vector<Knob> knobs;
+    const auto        known = known_knob_names();
+    std::vector<std::string> applicable;
+    for (const auto &k : all)
+      applicable.push_back(k.name);
+    for (const auto &name : request.knobs)
+      {
+        if (std::find(known.begin(), known.end(), name) == known.end())
+          throw InputError("Unknown accuracy knob '" + name + "'; the knobs are " + join(known, ", ") + ".");
+        if (std::find(applicable.begin(), applicable.end(), name) == applicable.end())
+          throw InputError("The accuracy knob '" + name + "' does not apply to " + scene_file +
+                           " (an effect the scene does not use is not a knob); the knobs of this scene are " +
+                           join(applicable, ", ") + ".");
+      }
+    for (auto &k : all)
+      if (request.knobs.empty() ||
+          std::find(request.knobs.begin(), request.knobs.end(), k.name) != request.knobs.end())
+        knobs.push_back(k);
+    for (const auto &[name, values] : request.values)
+      {
+        auto it = std::find_if(knobs.begin(), knobs.end(), [&](const Knob &k) { return k.name == name; });
+        if (it == knobs.end())
+          throw InputError("Values are given for the accuracy knob '" + name +
+                           "', which is not studied here; the knobs studied are " +
+                           join(request.knobs.empty() ? applicable : request.knobs, ", ") + ".");
+        it->values.clear();
+        for (const auto &v : values)
+          {
+            const auto parts = split(v, ';');
+            if (parts.size() != it->targets.size())
+              throw InputError("A value of the accuracy knob '" + name + "' is '" + v + "'; it needs " +
+                               std::to_string(it->targets.size()) + " part(s) separated by ';' (" +
+                               std::to_string(it->targets.size()) + " settings: first entries " +
+                               [&] {
+                                 std::vector<std::string> f;
+                                 for (const auto &t : it->targets)
+                                   f.push_back(t.front());
+                                 return join(f, ", ");
+                               }() + ").");
+            it->values.push_back(parts);
+            // A value the user typed must make a valid scene.
+            auto o = base;
+            for (const auto &s : settings_of(*it, parts))
+              o.push_back(s);
+            read_scene(scene_file, o);
+          }
+        if (it->values.size() < 2)
+          throw InputError("The accuracy knob '" + name + "' needs at least 2 values (the last is the reference).");
+        it->reference = "the last value given";
+      }
+
+    std::size_t total = 0, done = 0;
+    for (const auto &k : knobs)
+      total += k.values.size();
+
+    std::set<std::string> names;
+    for (const auto &k : knobs)
+      {
+        std::vector<Measurement> ms;
+        std::vector<StudyRow>    rows;
+        for (std::size_t i = 0; i < k.values.size(); ++i)
+          {
+            auto o = base;
+            for (const auto &s : settings_of(k, k.values[i]))
+              o.push_back(s);
+            ms.push_back(measure(scene_file, o));
+            StudyRow r;
+            r.knob         = k.name;
+            r.value        = join(k.values[i], "; ");
+            r.reference    = join(k.values.back(), "; ") + " (" + k.reference + ")";
+            r.is_reference = i + 1 == k.values.size();
+            r.ok           = ms.back().ok;
+            r.failure      = ms.back().failure;
+            r.wall_time    = ms.back().wall_time;
+            r.quantities   = ms.back().quantities;
+            rows.push_back(r);
+            ++done;
+            if (request.progress)
+              std::cerr << "[wearlink] study " << done << '/' << total << "  " << k.name << " = " << r.value
+                        << "  " << std::setprecision(3) << r.wall_time << " s"
+                        << (r.ok ? "" : "  FAILED: " + r.failure) << '\n';
+          }
+        const Measurement &ref = ms.back();
+        for (std::size_t i = 0; i < rows.size(); ++i)
+          {
+            auto &r = rows[i];
+            if (!r.ok || !ref.ok)
+              {
+                r.worst = nan;
+                continue;
+              }
+            for (const auto &[q, v] : r.quantities)
+              {
+                r.errors[q] = ref.quantities.count(q) ? relative_error(v, ref.quantities.at(q)) : nan;
+                names.insert(q);
+              }
+            for (const auto &[q, h] : ms[i].profiles)
+              {
+                const bool  has   = ref.profiles.count(q) > 0;
+                std::string shape = q;
+                shape.replace(shape.find("profile_"), 8, "shape_");
+                r.errors[q]     = has ? profile_difference(h, ref.profiles.at(q)) : nan;
+                r.errors[shape] = has ? profile_difference(h, ref.profiles.at(q), shape_window_deg) : nan;
+                names.insert(q);
+                names.insert(shape);
+              }
+            double worst = 0;
+            for (const auto &[q, e] : r.errors)
+              if (counts_for_worst(q, study.wears))
+                worst = std::isfinite(e) ? std::max(worst, e) : nan;
+            r.worst = worst;
+          }
+        study.rows.insert(study.rows.end(), rows.begin(), rows.end());
+      }
+    study.quantity_names.assign(names.begin(), names.end());
+    return study;
+  }
+
+  // --------------------------------------------------------------------------------
+  // Outputs.
+
+  std::string
+  AccuracyStudy::markdown() const
+  {
+    std::ostringstream os;
+    os << "Accuracy study of `" << scene_file << "`";
+    if (!base_overrides.empty())
+      os << " with `" << join(base_overrides, "`, `") << "`";
+    os << ". Each knob is varied alone (everything else at the scene's value); errors are relative to that "
+          "knob's reference run (the row marked **ref**; 'reference' says what it is). ";
+    if (wears)
+      os << "V: worn volume, h: largest wear depth (each the largest error over pin and bushing of every "
+            "wearing joint), profile: ‖h − h_ref‖/‖h_ref‖ of the worn-depth profiles point by point, shape: "
+            "the same after a "
+         << shape_window_deg << "° moving average (the profile without its impact-to-impact spikes), ";
+    os << "F: peak contact force (largest over the joints), a: peak acceleration of the response body; "
+          "worst: the largest of "
+       << (wears ? "V and shape" : "F and a") << ". time ratio: wall time / reference's.\n\n";
+    std::vector<const char *> tags = {" F_peak", "a_peak"};
+    if (wears)
+      tags.insert(tags.begin(), {" V_", " h_", " profile_", " shape_"});
+    os << "| knob | value | reference | wall s | time ratio | " << (wears ? "V | h | profile | shape | " : "")
+       << "F | a | worst |\n"
+       << "|---|---|---|---:|---:|";
+    for (std::size_t i = 0; i <= tags.size(); ++i)
+      os << "---:|";
+    os << '\n';
+    std::map<std::string, double> ref_time;
+    for (const auto &r : rows)
+      if (r.is_reference)
+        ref_time[r.knob] = r.wall_time;
+    for (const auto &r : rows)
+      {
+        os << "| " << r.knob << " | " << r.value << (r.is_reference ? " **ref**" : "") << " | " << r.reference
+           << " | " << number(r.wall_time) << " | " << number(r.wall_time / ref_time[r.knob], 2) << " | ";
+        if (!r.ok)
+          {
+            os << "failed: " << r.failure << " |";
+            for (std::size_t i = 0; i < tags.size(); ++i)
+              os << " |";
+            os << '\n';
+            continue;
+          }
+        if (r.is_reference)
+          {
+            for (std::size_t i = 0; i <= tags.size(); ++i)
+              os << "ref | ";
+            os << '\n';
+            continue;
+          }
+        for (const char *tag : tags)
+          os << number(max_error(r, tag), 2) << " | ";
+        os << number(r.worst, 2) << " |\n";
+      }
+    return os.str();
+  }
+
+  std::string
+  AccuracyStudy::csv() const
+  {
+    std::ostringstream os;
+    os << "knob,value,reference,is_reference,status,wall_time_s,worst_error";
+    for (const auto &q : quantity_names)
+      {
+        if (!is_profile(q))
+          os << ',' << q;
+        os << ',' << q << " error";
+      }
+    os << '\n' << std::setprecision(10);
+    auto quoted = [](const std::string &s) {
+      std::string t = "\"";
+      for (const char c : s)
+        t += c == '"' ? std::string("\"\"") : std::string(1, c);
+      return t + "\"";
+    };
+    for (const auto &r : rows)
+      {
+        os << r.knob << ',' << quoted(r.value) << ',' << quoted(r.reference) << ',' << (r.is_reference ? 1 : 0) << ','
+           << quoted(r.ok ? "ok" : "failed: " + r.failure) << ',' << r.wall_time << ',' << r.worst;
+        for (const auto &q : quantity_names)
+          {
+            if (!is_profile(q))
+              os << ',' << (r.quantities.count(q) ? r.quantities.at(q) : nan);
+            os << ',' << (r.errors.count(q) ? r.errors.at(q) : nan);
+          }
+        os << '\n';
+      }
+    return os.str();
+  }
+
+  void
+  write_accuracy_study(const std::string &dir, const AccuracyStudy &study)
+  {
+    make_output_directory(dir);
+    PlotSpec spec;
+    spec.title   = "What accuracy costs in time: " + study.scene_file + " (reference runs, error 0, not shown)";
+    spec.x_label = "wall time of the run [s]";
+    spec.y_label = std::string("worst relative error vs the knob's reference") +
+                   (study.wears ? " (worn volume, profile shape)" : " (peak force, acceleration)");
+    spec.log_x   = true;
+    spec.log_y   = true;
+    spec.extra   = "set key outside right\nset grid\n";
+    std::vector<std::string> knobs;
+    for (const auto &r : study.rows)
+      if (std::find(knobs.begin(), knobs.end(), r.knob) == knobs.end())
+        knobs.push_back(r.knob);
+    int point_type = 4;
+    for (const auto &k : knobs)
+      {
+        PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
+        for (const auto &r : study.rows)
+          if (r.knob == k && !r.is_reference && r.ok && std::isfinite(r.worst) && r.worst > 0)
+            {
+              s.x.push_back(r.wall_time);
+              s.y.push_back(r.worst);
+            }
+        if (!s.x.empty())
+          spec.series.push_back(s);
+      }
+    // The worn volume alone: robust where depths and profiles meet the chaos floor.
+    PlotSpec volume = spec;
+    volume.series.clear();
+    volume.y_label  = "relative error of the worn volume (largest over surfaces and joints)";
+    point_type      = 4;
+    for (const auto &k : knobs)
+      {
+        PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
+        for (const auto &r : study.rows)
+          if (r.knob == k && !r.is_reference && r.ok)
+            {
+              const double e = max_error(r, " V_");
+              if (std::isfinite(e) && e > 0)
+                {
+                  s.x.push_back(r.wall_time);
+                  s.y.push_back(e);
+                }
+            }
+        if (!s.x.empty())
+          volume.series.push_back(s);
+      }
+    write_file_atomically(dir + "/accuracy.csv", study.csv());
+    write_file_atomically(dir + "/accuracy.md", study.markdown());
+    if (!spec.series.empty())
+      plot_png(spec, dir + "/accuracy_pareto.png");
+    if (study.wears && !volume.series.empty())
+      plot_png(volume, dir + "/accuracy_pareto_volume.png");
+  }
+} // namespace wearlink::io
