@@ -459,7 +459,10 @@ namespace wearlink::analysis
 
     /** The automatic fit region of RosensteinOptions (see the comment of rosenstein_exponent). */
     FitRegion
-    choose_fit_region(const std::vector<double> &smoothed, const std::size_t delay)
+    choose_fit_region(const std::vector<double> &curve,
+                      const std::vector<double> &smoothed,
+                      const std::size_t          delay,
+                      const double               log_attractor_size)
     {
       FitRegion         region;
       const std::size_t K     = smoothed.size() - 1;
@@ -468,6 +471,29 @@ namespace wearlink::analysis
       region.end              = K;
       if (rise_after(smoothed, start) < min_divergence)
         {
+          // Divergence faster than the embedding resolves: the (unsmoothed) curve has
+          // already risen by e-fold or more before 2 delays and stays up at the size of
+          // the attractor (mean level after them ≥ 1 nat above the start and within
+          // 2 nats of ln(attractor size)). Fitting [2 tau, K] would report ≈ 0 for a
+          // strongly diverging flow; fit the initial rise up to 90 % of that level
+          // instead, and say so. (A limit cycle's neighbours also drift apart a little,
+          // to a level far below the attractor's size: that stays "no divergence".)
+          double plateau = 0.0;
+          for (std::size_t k = start; k <= K; ++k)
+            plateau += curve[k] / (K - start + 1);
+          const double level = plateau - curve[0];
+          if (level >= min_divergence && plateau >= log_attractor_size - 2.0)
+            {
+              std::size_t k90 = 1;
+              while (k90 < start && curve[k90] < curve[0] + 0.9 * level)
+                ++k90;
+              region.begin = 0;
+              region.end   = std::max<std::size_t>(k90, 2);
+              region.rule  = "the separation saturates within 2 delays (divergence faster than "
+                             "the embedding resolves): initial rise to 90 % of the plateau; "
+                             "resolve it with a smaller delay or sample interval";
+              return region;
+            }
           region.rule = "no exponential divergence (the separation grows less than e-fold over the "
                         "horizon): whole curve after 2 delays";
           return region;
@@ -528,7 +554,9 @@ namespace wearlink::analysis
   // 4 tau + 1 samples (tau is about a quarter of the dominant period, so this spans one
   // orbit and removes the orbital ripple). If the smoothed curve rises by less than
   // 1 nat after its first 2 tau samples, there is no exponential divergence and the
-  // line is fitted over [2 tau, K] (about 0 for a periodic signal). Otherwise the fit
+  // line is fitted over [2 tau, K] (about 0 for a periodic signal) — unless the curve
+  // rose by 1 nat or more before 2 tau and stays there (divergence faster than the
+  // embedding resolves), where the initial rise is fitted. Otherwise the fit
   // region is the "straightest rise": among all windows in which the local slope of
   // the smoothed curve stays positive and varies by less than a factor 1.2, the one
   // whose smoothed curve rises most. This excludes the initial alignment of the
@@ -627,7 +655,14 @@ namespace wearlink::analysis
         region.rule = "given by the caller";
       }
     else
-      region = choose_fit_region(smooth, emb.delay);
+      {
+        double mean = 0.0, var = 0.0;
+        for (const double x : series)
+          mean += x / series.size();
+        for (const double x : series)
+          var += (x - mean) * (x - mean) / series.size();
+        region = choose_fit_region(curve, smooth, emb.delay, 0.5 * std::log(var * emb.dimension));
+      }
     const LineFit f         = fit_line(curve, region.begin, region.end);
     out.fit_begin           = region.begin;
     out.fit_end             = region.end;
