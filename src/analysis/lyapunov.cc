@@ -455,6 +455,7 @@ namespace wearlink::analysis
     {
       std::size_t begin = 0, end = 0;
       std::string rule;
+      bool        resolved = true;
     };
 
     /** The automatic fit region of RosensteinOptions (see the comment of rosenstein_exponent). */
@@ -489,9 +490,10 @@ namespace wearlink::analysis
                 ++k90;
               region.begin = 0;
               region.end   = std::max<std::size_t>(k90, 2);
-              region.rule  = "the separation saturates within 2 delays (divergence faster than "
-                             "the embedding resolves): initial rise to 90 % of the plateau; "
-                             "resolve it with a smaller delay or sample interval";
+              region.rule  = "UNRESOLVED: the separation saturates within 2 delays (the embedding's "
+                             "nearest neighbours are not close in the full state); initial rise to "
+                             "90 % of the plateau fitted; compare at a shorter delay";
+              region.resolved = false;
               return region;
             }
           region.rule = "no exponential divergence (the separation grows less than e-fold over the "
@@ -667,6 +669,7 @@ namespace wearlink::analysis
     out.fit_begin           = region.begin;
     out.fit_end             = region.end;
     out.fit_rule            = region.rule;
+    out.resolved            = region.resolved;
     out.exponent_per_sample = f.slope;
     out.intercept           = f.intercept;
     out.fit_residual        = f.rms;

@@ -200,6 +200,14 @@ namespace wearlink::analysis
     double fit_residual = 0.0;
     /** True if the curve rose and levelled off within the horizon (divergence saturated). */
     bool saturated = false;
+    /**
+     * False if the fit could only use the curve's initial jump: the separation reached
+     * the attractor's size within 2 delays, so the nearest neighbours of the embedding
+     * were not close in the full state and the slope says more about the embedding than
+     * about the dynamics (on the clearance-joint series the slope then scales like
+     * 1/delay). Report such a value as unresolved, not as an exponent.
+     */
+    bool resolved = true;
     /** True if neighbours were followed between samples (RosensteinOptions::interpolate). */
     bool interpolated = false;
     /** How the fit region was chosen, in words (for reports). */

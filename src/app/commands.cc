@@ -10,6 +10,7 @@ namespace wearlink::app
   extern const Command sweep_command;
   extern const Command compare_pressure_command;
   extern const Command study_command;
+  extern const Command compare_dynamics_command;
 
   const std::vector<Command> &
   commands()
@@ -21,6 +22,7 @@ namespace wearlink::app
       sweep_command,
       compare_pressure_command,
       study_command,
+      compare_dynamics_command,
     };
     return table;
   }

@@ -43,6 +43,19 @@ namespace wearlink
   bool
   plot_png(const PlotSpec &spec, const std::string &png_path);
 
+  /**
+   * Several plots in one PNG (gnuplot multiplot), @p columns per row, under a common
+   * @p title; each panel keeps its own labels and its `extra` commands (axis ranges, to
+   * put panels on the same scale). Returns false (and warns) if gnuplot is missing.
+   */
+  bool
+  plot_panels_png(const std::vector<PlotSpec> &panels,
+                  unsigned int                 columns,
+                  const std::string &          title,
+                  const std::string &          png_path,
+                  int                          width  = 1600,
+                  int                          height = 700);
+
   /** True if a gnuplot executable is on PATH. */
   bool
   gnuplot_available();

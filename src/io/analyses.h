@@ -70,6 +70,17 @@ namespace wearlink::io
     std::optional<std::size_t>            delay;
     std::optional<unsigned int>           dimension;
 
+    /**
+     * Wear scenes: the before/after-wear comparison (io/dynamics_comparison.h), from the
+     * entries of `subsection Before-after wear`: common delay [s] and dimension (0 =
+     * automatic on the before-wear run), delay scan [s], published exponents to print.
+     */
+    double                          comparison_delay     = 0.0;
+    unsigned int                    comparison_dimension = 0;
+    std::vector<double>             delay_scan;
+    std::string                     published_exponents;
+    std::string                     published_note;
+
     /** True if any analysis is listed. */
     bool
     any() const

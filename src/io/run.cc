@@ -34,6 +34,9 @@ namespace wearlink::io
       double max_penetration    = -inf;
       double contact_time       = 0;
       bool   was_in_contact     = false;
+      /** The joint's counters when this run started (a joint object serves many runs). */
+      long impacts_at_start     = 0;
+      long evaluations_at_start = 0;
     };
 
     /** Watches accepted steps: extremes, energy balance, time-series samples. */
@@ -48,7 +51,14 @@ namespace wearlink::io
         , progress(progress)
         , bodies(mech.n_bodies())
         , joints(scene.clearance_joints.size())
-      {}
+      {
+        rhs_at_start = static_cast<long>(mech.n_evaluations());
+        for (unsigned int i = 0; i < joints.size(); ++i)
+          {
+            joints[i].impacts_at_start     = scene.clearance_joints[i]->n_impacts();
+            joints[i].evaluations_at_start = scene.clearance_joints[i]->n_force_evaluations();
+          }
+      }
 
       void
       on_start(const mbs::StepContext &c) override
@@ -93,8 +103,8 @@ namespace wearlink::io
             if (fraction >= next_progress - 1e-12)
               {
                 long impacts = 0;
-                for (auto *j : scene.clearance_joints)
-                  impacts += j->n_impacts();
+                for (unsigned int i = 0; i < joints.size(); ++i)
+                  impacts += scene.clearance_joints[i]->n_impacts() - joints[i].impacts_at_start;
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
                 std::cerr << "[wearlink] " << std::setw(3) << static_cast<int>(std::round(100 * fraction))
                           << "%  t = " << c.t << " s  steps " << steps << "  impacts " << impacts
@@ -116,7 +126,7 @@ namespace wearlink::io
         s["integrator"]             = scene.simulation.integrator.type == mbs::IntegratorType::rk4 ? "rk4" : "dopri5";
         s["steps"]                  = sim.get_integrator().n_accepted;
         s["rejected_steps"]         = sim.get_integrator().n_rejected;
-        s["rhs_evaluations"]        = mech.n_evaluations();
+        s["rhs_evaluations"]        = static_cast<long>(mech.n_evaluations()) - rhs_at_start;
         s["contact_events"]         = sim.n_events();
         s["event_restarts"]         = sim.n_event_restarts();
         s["max_constraint_violation_m"] = max_violation;
@@ -173,8 +183,8 @@ namespace wearlink::io
             o["max_friction_force_N"] = x.max_friction_force;
             o["max_penetration_m"]    = std::max(0.0, x.max_penetration);
             o["fraction_in_contact"]  = x.contact_time / std::max(1e-300, sim.time() - t_start);
-            o["impacts"]              = cj->n_impacts();
-            o["force_evaluations"]    = cj->n_force_evaluations();
+            o["impacts"]              = cj->n_impacts() - x.impacts_at_start;
+            o["force_evaluations"]    = cj->n_force_evaluations() - x.evaluations_at_start;
             j[cj->name()] = o;
           }
         s["clearance_joints"] = j;
@@ -282,7 +292,7 @@ namespace wearlink::io
       std::vector<BodyExtremes>  bodies;
       std::vector<JointStatistics> joints;
       double                     energy_start = 0, t_start = 0, next_sample = 0;
-      long                       n_samples = 0, steps = 0;
+      long                       n_samples = 0, steps = 0, rhs_at_start = 0;
       double                     max_violation = 0, max_energy_residual = 0;
       double                     next_progress = 0.1;
       std::chrono::steady_clock::time_point wall_start;
@@ -320,22 +330,33 @@ namespace wearlink::io
     else
       sim.initialize(scene.start_time, q0, v0);
     Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
-    SceneAnalyses analyses(scene);
+    std::unique_ptr<SceneAnalyses> analyses;
+    if (options.analyses)
+      analyses = std::make_unique<SceneAnalyses>(scene);
     std::vector<mbs::StepObserver *> observers{&recorder};
-    for (auto *o : analyses.observers())
-      observers.push_back(o);
+    if (analyses)
+      for (auto *o : analyses->observers())
+        observers.push_back(o);
     observers.insert(observers.end(), options.observers.begin(), options.observers.end());
+    // The joints and the mechanism count over their lifetime (a wear run reuses them):
+    // this run's share is the difference.
+    long evaluations = 0;
+    for (auto *j : scene.clearance_joints)
+      evaluations -= j->n_force_evaluations();
+    const long rhs_at_start = static_cast<long>(scene.mechanism->n_evaluations());
     sim.run(end_time, observers);
     if (options.final_state != nullptr)
       *options.final_state = sim.state();
 
-    long evaluations = 0;
     for (auto *j : scene.clearance_joints)
       evaluations += j->n_force_evaluations();
     EffectLedger::instance().add_calls("contact law evaluations", evaluations);
-    EffectLedger::instance().add_calls("rhs evaluations", scene.mechanism->n_evaluations());
+    EffectLedger::instance().add_calls("rhs evaluations",
+                                       static_cast<long>(scene.mechanism->n_evaluations()) - rhs_at_start);
 
-    const Json analyses_summary = analyses.finish(options.output_directory);
+    const Json analyses_summary = analyses ? analyses->finish(options.output_directory) : Json();
+    if (analyses && options.recorded != nullptr)
+      *options.recorded = analyses->recorded_run();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     Json summary = recorder.summary(sim, wall);
     if (analyses_summary.type() != Json::Type::null)

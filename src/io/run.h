@@ -33,6 +33,14 @@ namespace wearlink::io
     double                 end_time      = std::numeric_limits<double>::quiet_NaN();
     /** If set, receives the state at the end of the run. */
     Eigen::VectorXd *final_state = nullptr;
+    /**
+     * Build the analyses the scene lists (Analyses/List of analyses). The iterations of
+     * a wear run switch them off: they are run once before and once after wear instead
+     * (io/wear_run.h).
+     */
+    bool analyses = true;
+    /** If set (and analyses are on), receives what the analyses recorded. */
+    analysis::RecordedRun *recorded = nullptr;
   };
 
   /**

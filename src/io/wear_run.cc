@@ -4,6 +4,7 @@
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "io/dynamics_comparison.h"
 #include "io/run.h"
 #include "io/wear_outputs.h"
 #include "wear/archard.h"
@@ -64,6 +65,60 @@ namespace wearlink::io
     max_of(const std::vector<double> &v)
     {
       return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+    }
+
+    /**
+     * The scene's analyses once with the fresh and once with the worn profiles, each run
+     * from assembly at Start time to End time (outputs in DIR/dynamics_before and
+     * DIR/dynamics_after), then compared (io/dynamics_comparison.h) into DIR. The joints
+     * are left with the worn profiles.
+     */
+    DynamicsComparison
+    before_after_dynamics(Scene &                                      scene,
+                          const wear::WearState &                      st,
+                          const std::vector<contact::ClearanceJoint *> &joints,
+                          const std::string &                          dir,
+                          const bool                                   progress)
+    {
+      ComparedRun       runs[2];
+      const char *const names[2] = {"before", "after"};
+      for (int k = 0; k < 2; ++k)
+        {
+          for (unsigned int i = 0; i < joints.size(); ++i)
+            joints[i]->set_profiles(k == 0 ? st.joints[i].initial_bore : st.joints[i].bore,
+                                    k == 0 ? st.joints[i].initial_pin : st.joints[i].pin);
+          for (auto *j : scene.clearance_joints)
+            j->set_mode(false, 0);
+          if (progress)
+            std::cerr << "[wearlink] dynamics " << names[k] << " wear with the scene's analyses, t = "
+                      << scene.start_time << " … " << scene.end_time << " s\n";
+          RunOptions ro;
+          ro.output_directory = dir.empty() ? std::string() : dir + "/dynamics_" + names[k];
+          ro.progress         = progress;
+          ro.recorded         = &runs[k].run;
+          runs[k].summary     = run_scene(scene, ro);
+          std::ostringstream label;
+          label << (k == 0 ? "before wear" : "after wear");
+          if (k == 1)
+            label << " (" << std::setprecision(6) << st.revolutions << " rev)";
+          runs[k].run.label = label.str();
+        }
+      const auto &             a = scene.analyses;
+      DynamicsComparisonSettings cs;
+      cs.joints     = a.joints;
+      cs.directions = a.directions;
+      if (a.lyapunov)
+        cs.methods = a.methods;
+      cs.delay          = a.comparison_delay;
+      cs.dimension      = a.comparison_dimension;
+      cs.delay_scan     = a.delay_scan;
+      cs.bodies         = a.bodies;
+      const std::string response = scene.mechanism->get_bodies()[response_body(scene)].name;
+      if (!response.empty() && std::find(cs.bodies.begin(), cs.bodies.end(), response) == cs.bodies.end())
+        cs.bodies.push_back(response);
+      cs.published      = parse_published_exponents(a.published_exponents, scene.file);
+      cs.published_note = a.published_note;
+      return compare_dynamics(runs[0], runs[1], cs, dir);
     }
   } // namespace
 
@@ -200,6 +255,7 @@ namespace wearlink::io
         ro.final_state   = &y1;
         ro.observers     = {&rec};
         ro.observers.insert(ro.observers.end(), options.observers.begin(), options.observers.end());
+        ro.analyses = false; // the scene's analyses run before and after wear, not per iteration
         const bool first = st.iterations_done == 0;
         if (first)
           ro.observers.push_back(&before);
@@ -355,6 +411,7 @@ namespace wearlink::io
     RunOptions       ro;
     ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
     ro.observers = {&after};
+    ro.analyses  = false;
     auto t0      = Clock::now();
     result.summary = run_scene(scene, ro);
     timings["dynamics"] += seconds_since(t0);
@@ -382,6 +439,14 @@ namespace wearlink::io
       }
     result.summary["wear_iterations"]  = st.iterations_done;
     result.summary["wear_revolutions"] = st.revolutions;
+    if (scene.analyses.any())
+      {
+        t0               = Clock::now();
+        auto comparison  = before_after_dynamics(scene, st, joints, write ? dir : std::string(), options.progress);
+        timings["before/after dynamics"] = seconds_since(t0);
+        result.summary["before_after"] = comparison.json;
+        result.before_after_report     = comparison.report;
+      }
     if (write)
       {
         write_wear_outputs(dir, scene, st, after);

@@ -55,6 +55,11 @@ namespace wearlink::io
      *  evaluation, wear bookkeeping, outputs, total. */
     std::map<std::string, double> timings;
     bool finished = false;
+    /**
+     * If the scene lists analyses: the before/after-wear comparison as Markdown (also in
+     * before_after.md; its numbers are in summary["before_after"]).
+     */
+    std::string before_after_report;
   };
 
   /** True if some clearance joint of @p scene has a wear law. */

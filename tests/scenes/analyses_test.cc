@@ -14,12 +14,16 @@
 //  - analyses not listed are not built and record nothing (effect ledger), and files
 //    appear only for what was listed.
 #include "analysis/channels.h"
+#include "base/plot.h"
 #include "scene_support.h"
+
+#include <deal.II/base/utilities.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 using namespace wearlink;
 namespace wl = wearlink::testing;
@@ -300,4 +304,90 @@ TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
     const Json s = wl::run(scene);
     EXPECT_GT(s.at("analyses").at("lyapunov")[0].at("exponent_per_s").as_number() * 0.5, 1.0);
   }
+}
+
+TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
+{
+  // params/nine_bar_wear_dynamics.prm, shortened: one wear iteration of 2 cycles (×500
+  // = 1000 revolutions), then the dynamics from assembly to 2.5 s (0.5 s transient + 4
+  // cycles) once with the fresh and once with the worn profiles, compared. (Each run's
+  // own analyses get a given embedding: 2000 samples are too few for the automatic one.)
+  //  - The before-wear run must be the plain clearance scene's run exactly (same steps,
+  //    impacts, peak force): the fresh profiles are restored after the wear loop, the
+  //    analyses do not perturb the integration, and each run counts its own impacts
+  //    (the joint objects count over the whole wear run).
+  //  - The after-wear run must differ (the worn profiles are used).
+  //  - Exponents of A and B by both methods at the common delay, the seed's values
+  //    printed beside them; the stand-alone command on the two run directories gives
+  //    the same exponents (values read back with 12 digits: agreement to 1e-6, as in
+  //    RecordedRunReadsBackFromItsOutputs).
+  const std::string dir = wl::fresh_directory("before_after_wear");
+  const auto        r   = wl::run_wearlink({"run", wl::source_path("params/nine_bar_wear_dynamics.prm"), "--output", dir,
+                                   "--quiet", "--set", "Wear/Number of iterations=1", "--set",
+                                   "Wear/Cycles per iteration=2", "--set", "Simulation/End time=2.5", "--set",
+                                   "Analyses/Before-after wear/Delay scan=0.005, 0.01", "--set",
+                                   "Analyses/Lyapunov/Delay=5", "--set", "Analyses/Lyapunov/Embedding dimension=4"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("| A_ex_m | wolf | 0.005 |"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("0.076"), std::string::npos) << "the seed's value is printed";
+
+  const std::string plain_dir = wl::fresh_directory("before_after_wear_plain");
+  const auto        p = wl::run_wearlink({"run", wl::source_path("params/nine_bar_clearance.prm"), "--output", plain_dir,
+                                   "--quiet", "--set", "Simulation/End time=2.5"});
+  ASSERT_EQ(p.exit_status, 0) << p.output;
+  const Json plain  = read_json_file(plain_dir + "/summary.json");
+  const Json before = read_json_file(dir + "/dynamics_before/summary.json");
+  const Json after  = read_json_file(dir + "/dynamics_after/summary.json");
+  EXPECT_EQ(before.at("steps").as_number(), plain.at("steps").as_number());
+  EXPECT_NE(after.at("steps").as_number(), plain.at("steps").as_number());
+  for (const char *j : {"A", "B"})
+    {
+      const auto &pj = plain.at("clearance_joints").at(j);
+      const auto &bj = before.at("clearance_joints").at(j);
+      EXPECT_EQ(bj.at("impacts").as_number(), pj.at("impacts").as_number()) << j;
+      EXPECT_EQ(bj.at("max_normal_force_N").as_number(), pj.at("max_normal_force_N").as_number()) << j;
+    }
+
+  const Json  summary = read_json_file(dir + "/summary.json");
+  const auto &l       = summary.at("before_after").at("lyapunov");
+  ASSERT_EQ(l.size(), 4u); // A, B × wolf, rosenstein
+  for (std::size_t k = 0; k < l.size(); ++k)
+    {
+      EXPECT_DOUBLE_EQ(l[k].at("delay_s").as_number(), 0.005);
+      EXPECT_TRUE(std::isfinite(l[k].at("before_per_s").as_number()));
+      EXPECT_TRUE(std::isfinite(l[k].at("after_per_s").as_number()));
+    }
+  EXPECT_EQ(summary.at("before_after").at("delay_scan").size(), 8u);
+  for (const char *f : {"before_after.md", "before_after_lyapunov.csv", "dynamics_before/analysis_series.csv",
+                        "dynamics_after/poincare_section.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
+  if (gnuplot_available())
+    EXPECT_TRUE(std::filesystem::exists(dir + "/before_after_phase_B_x.png"));
+
+  const std::string again_dir = dir + "/again";
+  const auto        c         = wl::run_wearlink({"compare-dynamics", dir + "/dynamics_before", dir + "/dynamics_after",
+                                   "--output", again_dir, "--scan", "none"});
+  ASSERT_EQ(c.exit_status, 0) << c.output;
+  std::ifstream csv(again_dir + "/before_after_lyapunov.csv");
+  std::string   line;
+  std::getline(csv, line);
+  std::size_t k = 0;
+  while (std::getline(csv, line) && k < l.size())
+    {
+      const auto f = dealii::Utilities::split_string_list(line, ',');
+      ASSERT_GE(f.size(), 6u);
+      EXPECT_EQ(f[0], l[k].at("channel").as_string());
+      const double b = l[k].at("before_per_s").as_number(), a = l[k].at("after_per_s").as_number();
+      EXPECT_NEAR(std::stod(f[4]), b, 1e-6 * std::abs(b)) << line;
+      EXPECT_NEAR(std::stod(f[5]), a, 1e-6 * std::abs(a)) << line;
+      ++k;
+    }
+  EXPECT_EQ(k, l.size());
+
+  // A missing run directory: exit 2, nothing written.
+  const auto bad = wl::run_wearlink({"compare-dynamics", dir + "/dynamics_before", dir + "/no_such_run", "--output",
+                                     dir + "/bad"});
+  EXPECT_EQ(bad.exit_status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("no_such_run"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/bad"));
 }

@@ -100,6 +100,8 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
                                                    a.value("--output", "output/" + std::filesystem::path(file).stem().string());
           w.progress         = !a.has("--quiet");
           const auto r       = io::run_wear(scene, w);
+          if (!r.before_after_report.empty())
+            std::cout << r.before_after_report << "\n";
           std::cout << "wrote " << w.output_directory << "/summary.json (" << r.state.iterations_done
                     << " wear iterations, " << r.state.revolutions << " revolutions, "
                     << r.timings.at("total") << " s wall)\n";

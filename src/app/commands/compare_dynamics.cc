@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// `wearlink compare-dynamics BEFORE_DIR AFTER_DIR`: the before/after-wear comparison of
+// io/dynamics_comparison.h for two runs recorded earlier (each a `wearlink run` output
+// directory with analyses), e.g. a clearance scene run once with fresh and once with
+// worn profile files. A wear scene with analyses does the same by itself.
+#include "app/command_line.h"
+#include "base/exceptions.h"
+#include "io/analyses.h"
+#include "io/dynamics_comparison.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <iostream>
+
+namespace wearlink::app
+{
+  namespace
+  {
+    const char *help_text =
+      R"(wearlink compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR] [--delay S] [--embedding M]
+        [--methods wolf,rosenstein] [--directions x,y] [--scan S1,S2,...] [--bodies B1,B2]
+        [--published "A_ex_m: 0.041 0.076, ..."] [--published-note TEXT]
+
+Compares two runs of the same mechanism recorded by `wearlink run` with analyses
+(Analyses/List of analyses with lyapunov and/or phase-portrait, poincare), typically
+before and after wear. A wear scene that lists analyses does this by itself at the end
+of the wear loop; this command serves runs made separately (README: "After wear").
+
+Writes into DIR (default output/compare_dynamics), each file atomically:
+  before_after_phase_<J>_<x|y>.png  phase portraits before | after on the same axes,
+                                    Poincaré points in red
+  before_after_lyapunov.csv         largest Lyapunov exponents (1/s, natural log) of
+                                    <J>_e<x|y>_m at ONE embedding for both runs
+  before_after_delay_scan.csv/.png  the same at the delays of --scan
+  before_after.md                   the tables, also printed: impacts per period,
+                                    contact fraction, peak force, Poincaré spread,
+                                    peak accelerations of --bodies, exponents
+
+  --delay S          common embedding delay [s] (default 0.005; 0: the before run's
+                     mutual-information choice). Exponents of these series fall
+                     roughly like 1/delay, so only equal delays are comparable.
+  --embedding M      common embedding dimension (default 0: false nearest neighbours
+                     on the before run)
+  --methods LIST     wolf, rosenstein (default both)
+  --directions LIST  x, y (default x, the seed's)
+  --scan LIST        delays of the scan [s] (default 0.002,0.005,0.01,0.02,0.05;
+                     "none": no scan)
+  --bodies LIST      bodies whose peak accelerations are compared (from summary.json)
+  --published TEXT   published exponents printed next to ours, "CHANNEL: BEFORE AFTER, ..."
+  --published-note TEXT   their source and units
+
+Exit status: 0 success, 2 bad input (missing directory, a run without analyses, a
+channel not recorded in both, a delay below the sample interval).
+)";
+
+    std::vector<std::string>
+    list_option(const ParsedArguments &a, const std::string &option, const std::string &fallback)
+    {
+      std::vector<std::string> out;
+      for (const auto &v : dealii::Utilities::split_string_list(a.value(option, fallback), ','))
+        if (!v.empty())
+          out.push_back(v);
+      return out;
+    }
+
+    io::ComparedRun
+    read_run(const std::string &dir, const std::string &label)
+    {
+      io::ComparedRun r;
+      r.run     = io::read_recorded_run(dir, label);
+      r.summary = read_json_file(dir + "/summary.json");
+      return r;
+    }
+
+    int
+    run(const std::vector<std::string> &args)
+    {
+      const auto a = parse_arguments(args,
+                                     {{"--output", true},
+                                      {"--delay", true},
+                                      {"--embedding", true},
+                                      {"--methods", true},
+                                      {"--directions", true},
+                                      {"--scan", true},
+                                      {"--bodies", true},
+                                      {"--published", true},
+                                      {"--published-note", true}},
+                                     "compare-dynamics");
+      if (a.positional.size() != 2)
+        throw InputError("`wearlink compare-dynamics` needs two run directories, BEFORE and AFTER (given " +
+                         std::to_string(a.positional.size()) + "). See --help.");
+      io::ComparedRun before = read_run(a.positional[0], "before: " + a.positional[0]);
+      io::ComparedRun after  = read_run(a.positional[1], "after: " + a.positional[1]);
+
+      io::DynamicsComparisonSettings s;
+      // Joints: the clearance joints whose journal-centre channels both runs recorded.
+      if (before.summary.contains("clearance_joints"))
+        for (const auto &[name, value] : before.summary.at("clearance_joints").members())
+          if (before.run.series.has(name + "_ex_m") && after.run.series.has(name + "_ex_m"))
+            s.joints.push_back(name);
+      if (s.joints.empty())
+        throw InputError("The runs in '" + a.positional[0] + "' and '" + a.positional[1] +
+                         "' have no clearance-joint series in common (list phase-portrait or "
+                         "lyapunov in 'Analyses/List of analyses' and analyse the same joints).");
+      s.directions = list_option(a, "--directions", "x");
+      for (const auto &d : s.directions)
+        if (d != "x" && d != "y")
+          throw InputError("--directions: '" + d + "' is not a direction; allowed: x, y.");
+      for (const auto &m : list_option(a, "--methods", "wolf,rosenstein"))
+        if (m == "wolf")
+          s.methods.push_back(analysis::LyapunovMethod::wolf);
+        else if (m == "rosenstein")
+          s.methods.push_back(analysis::LyapunovMethod::rosenstein);
+        else
+          throw InputError("--methods: '" + m + "' is not a method; allowed: wolf, rosenstein.");
+      s.delay = a.number("--delay", 0.005);
+      if (!(s.delay >= 0.0))
+        throw InputError("--delay must be >= 0 s (0: automatic), given " + a.value("--delay") + ".");
+      const double m = a.number("--embedding", 0);
+      if (!(m >= 0 && m <= 64 && m == std::floor(m)))
+        throw InputError("--embedding must be an integer in [0, 64] (0: automatic), given " + a.value("--embedding") + ".");
+      s.dimension = static_cast<unsigned int>(m);
+      const std::string scan = a.value("--scan", "0.002,0.005,0.01,0.02,0.05");
+      if (scan != "none")
+        for (const auto &v : list_option(a, "--scan", scan))
+          {
+            double tau = 0;
+            try
+              {
+                std::size_t used = 0;
+                tau              = std::stod(v, &used);
+                if (used != v.size())
+                  throw std::invalid_argument(v);
+              }
+            catch (const std::exception &)
+              {
+                throw InputError("--scan: '" + v + "' is not a number of seconds.");
+              }
+            if (!(tau > 0.0) || !std::isfinite(tau))
+              throw InputError("--scan: delays must be > 0 s, given '" + v + "'.");
+            s.delay_scan.push_back(tau);
+          }
+      s.bodies         = list_option(a, "--bodies", "");
+      s.published      = io::parse_published_exponents(a.value("--published", ""), "--published");
+      s.published_note = a.value("--published-note", "");
+
+      const std::string out = a.value("--output", "output/compare_dynamics");
+      const auto        c   = io::compare_dynamics(before, after, s, out);
+      std::cout << c.report << "\nwrote " << out << "/before_after.md\n";
+      return 0;
+    }
+  } // namespace
+
+  extern const Command compare_dynamics_command;
+  const Command compare_dynamics_command = {"compare-dynamics",
+                                            "compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR]  "
+                                            "dynamics before vs after wear",
+                                            help_text,
+                                            run};
+} // namespace wearlink::app

@@ -1,0 +1,473 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/dynamics_comparison.h"
+
+#include "analysis/nonlinear_dynamics.h"
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/plot.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace wearlink::io
+{
+  namespace
+  {
+    std::string
+    fmt(const double v, const int digits = 3)
+    {
+      if (!std::isfinite(v))
+        return "–";
+      std::ostringstream s;
+      s << std::setprecision(digits) << v;
+      return s.str();
+    }
+
+    /** Delay in samples of a run for a delay @p seconds; InputError below one sample. */
+    std::size_t
+    delay_samples(const double seconds, const analysis::RecordedRun &run, const std::string &what)
+    {
+      const double k = std::round(seconds / run.sample_interval);
+      if (k < 1.0)
+        throw InputError("The " + what + " delay of " + fmt(seconds, 4) + " s is shorter than the sample interval " +
+                         fmt(run.sample_interval, 4) + " s of the " +
+                         (run.label.empty() ? std::string("recorded") : run.label) + " run.");
+      return static_cast<std::size_t>(k);
+    }
+
+    const std::vector<double> &
+    channel_values(const analysis::RecordedRun &run, const std::string &channel)
+    {
+      if (!(run.sample_interval > 0.0))
+        throw InputError("The " + run.label + " run recorded no series (list lyapunov or phase-portrait).");
+      return run.series.values[run.series.index(channel)];
+    }
+
+    /** One exponent at a given embedding; NaN (and the message) if the series does not allow it. */
+    struct Estimate
+    {
+      double      per_s    = std::numeric_limits<double>::quiet_NaN();
+      bool        resolved = true;
+      std::string note;
+    };
+
+    Estimate
+    estimate(const analysis::RecordedRun &run,
+             const std::string &          channel,
+             const analysis::LyapunovMethod method,
+             const double                 delay_s,
+             const unsigned int           dimension)
+    {
+      Estimate                   out;
+      analysis::LyapunovSettings ls;
+      ls.method              = method;
+      ls.sample_interval     = run.sample_interval;
+      ls.embedding.delay     = delay_samples(delay_s, run, "embedding");
+      ls.embedding.dimension = dimension;
+      try
+        {
+          const auto e = analysis::estimate_largest_lyapunov_exponent(channel_values(run, channel), ls);
+          out.per_s    = e.exponent();
+          if (e.rosenstein && !e.rosenstein->resolved)
+            {
+              out.resolved = false;
+              out.note     = "unresolved: separation saturates within 2 delays";
+            }
+        }
+      catch (const InputError &e)
+        {
+          out.note = e.message();
+        }
+      return out;
+    }
+
+    /** Peak |a| of body @p b from a run summary (max of the x and y components), NaN if absent. */
+    double
+    peak_acceleration(const Json &summary, const std::string &b)
+    {
+      if (summary.type() != Json::Type::object || !summary.contains("bodies") ||
+          !summary.at("bodies").contains(b))
+        return std::numeric_limits<double>::quiet_NaN();
+      const Json &x = summary.at("bodies").at(b);
+      return std::max(x.at("max_abs_ax_m_s2").as_number(), x.at("max_abs_ay_m_s2").as_number());
+    }
+
+    double
+    joint_value(const Json &summary, const std::string &joint, const std::string &key)
+    {
+      if (summary.type() != Json::Type::object || !summary.contains("clearance_joints") ||
+          !summary.at("clearance_joints").contains(joint) || !summary.at("clearance_joints").at(joint).contains(key))
+        return std::numeric_limits<double>::quiet_NaN();
+      return summary.at("clearance_joints").at(joint).at(key).as_number();
+    }
+
+    /** Number of driving periods a run simulated (NaN if unknown). */
+    double
+    periods(const ComparedRun &r)
+    {
+      if (r.summary.type() != Json::Type::object || !r.summary.contains("simulated_time_s") ||
+          !(r.run.driving_period > 0.0))
+        return std::numeric_limits<double>::quiet_NaN();
+      return r.summary.at("simulated_time_s").as_number() / r.run.driving_period;
+    }
+
+    double
+    section_spread(const analysis::RecordedRun &run, const std::string &channel)
+    {
+      for (const auto &c : analysis::section_spread(run.section))
+        if (c.name == channel)
+          return c.spread;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /** Phase-portrait panel of one run, on the given axis ranges. */
+    PlotSpec
+    phase_panel(const analysis::RecordedRun &run,
+                const std::string &          position,
+                const std::string &          velocity,
+                const std::string &          range)
+    {
+      PlotSpec p;
+      p.title   = run.label;
+      p.x_label = position + " [m]";
+      p.y_label = velocity + " [m/s]";
+      p.extra   = range + "set key below\n";
+      PlotSeries orbit;
+      orbit.title   = std::to_string(run.series.n_samples()) + " samples every " + fmt(run.sample_interval, 3) + " s";
+      orbit.x       = run.series.values[run.series.index(position)];
+      orbit.y       = run.series.values[run.series.index(velocity)];
+      orbit.options = "lw 0.4 lc rgb '#707070'";
+      p.series.push_back(orbit);
+      const auto &s = run.section.points;
+      if (s.n_samples() > 0 && s.has(position) && s.has(velocity))
+        {
+          PlotSeries points;
+          points.title   = std::to_string(s.n_samples()) + " Poincaré points (one per " + fmt(run.section.period, 3) + " s)";
+          points.style   = "points";
+          points.options = "pt 7 ps 0.7 lc rgb 'red'";
+          points.x       = s.values[s.index(position)];
+          points.y       = s.values[s.index(velocity)];
+          p.series.push_back(points);
+        }
+      return p;
+    }
+
+    /** "set xrange/yrange" covering both runs' channel values, 5 % margin. */
+    std::string
+    common_range(const analysis::RecordedRun &a,
+                 const analysis::RecordedRun &b,
+                 const std::string &          x,
+                 const std::string &          y)
+    {
+      auto range = [&](const std::string &c) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (const auto *r : {&a, &b})
+          for (const double v : r->series.values[r->series.index(c)])
+            if (std::isfinite(v))
+              {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+              }
+        const double pad = 0.05 * std::max(hi - lo, 1e-30);
+        std::ostringstream s;
+        s << std::setprecision(10) << '[' << lo - pad << ':' << hi + pad << ']';
+        return s.str();
+      };
+      return "set xrange " + range(x) + "\nset yrange " + range(y) + "\n";
+    }
+  } // namespace
+
+  std::vector<PublishedExponents>
+  parse_published_exponents(const std::string &text, const std::string &where)
+  {
+    std::vector<PublishedExponents> out;
+    for (const auto &item : dealii::Utilities::split_string_list(text, ','))
+      {
+        if (item.empty())
+          continue;
+        const auto colon = item.find(':');
+        std::istringstream values(colon == std::string::npos ? std::string() : item.substr(colon + 1));
+        PublishedExponents p;
+        p.channel = dealii::Utilities::trim(item.substr(0, colon));
+        std::string rest;
+        if (colon == std::string::npos || p.channel.empty() || !(values >> p.before >> p.after) || (values >> rest) ||
+            !std::isfinite(p.before) || !std::isfinite(p.after))
+          throw InputError(where + ": '" + item + "' is not 'CHANNEL: BEFORE AFTER' (two numbers, e.g. "
+                           "'A_ex_m: 0.041 0.076').");
+        out.push_back(p);
+      }
+    return out;
+  }
+
+  DynamicsComparison
+  compare_dynamics(const ComparedRun &               before,
+                   const ComparedRun &               after,
+                   const DynamicsComparisonSettings &settings,
+                   const std::string &               output_directory)
+  {
+    const bool        write = !output_directory.empty();
+    const std::string dir   = output_directory + "/";
+    const auto &      b     = before.run;
+    const auto &      a     = after.run;
+    // Check what would make the comparison fail before anything is written.
+    if (!settings.methods.empty())
+      for (const auto *r : {&b, &a})
+        {
+          for (const auto &j : settings.joints)
+            for (const auto &d : settings.directions)
+              channel_values(*r, j + "_e" + d + "_m");
+          if (settings.delay > 0.0)
+            delay_samples(settings.delay, *r, "common");
+        }
+    if (write)
+      make_output_directory(output_directory);
+
+    DynamicsComparison out;
+    Json &             json = out.json;
+    json                    = Json::object();
+    json["before"]          = b.label;
+    json["after"]           = a.label;
+    Json               files = Json::array();
+    std::ostringstream md;
+    md << "# Dynamics before and after wear\n\n"
+       << "Before: " << b.label << "; after: " << a.label << ".\n";
+
+    // 1. Robust indicators from the summaries.
+    {
+      const double pb = periods(before), pa = periods(after);
+      md << "\n## Contact and motion indicators\n\n| quantity | before | after | after / before |\n|---|---|---|---|\n";
+      Json ind = Json::object();
+      auto row = [&](const std::string &name, const std::string &key, const double vb, const double va) {
+        md << "| " << name << " | " << fmt(vb, 4) << " | " << fmt(va, 4) << " | " << fmt(va / vb, 3) << " |\n";
+        Json r      = Json::object();
+        r["before"] = vb;
+        r["after"]  = va;
+        ind[key]    = r;
+      };
+      for (const auto &j : settings.joints)
+        {
+          row("joint " + j + ": impacts per driving period", j + "_impacts_per_period",
+              joint_value(before.summary, j, "impacts") / pb, joint_value(after.summary, j, "impacts") / pa);
+          row("joint " + j + ": fraction of time in contact", j + "_fraction_in_contact",
+              joint_value(before.summary, j, "fraction_in_contact"), joint_value(after.summary, j, "fraction_in_contact"));
+          row("joint " + j + ": peak contact force [N]", j + "_max_normal_force_N",
+              joint_value(before.summary, j, "max_normal_force_N"), joint_value(after.summary, j, "max_normal_force_N"));
+          for (const char *d : {"x", "y"})
+            {
+              const std::string c = j + "_e" + d + "_m";
+              if (b.section.points.n_samples() > 0 || a.section.points.n_samples() > 0)
+                row("joint " + j + ": spread of the Poincaré points in e_" + d + " [m]", c + "_poincare_spread",
+                    section_spread(b, c), section_spread(a, c));
+            }
+        }
+      for (const auto &body : settings.bodies)
+        row("body " + body + ": peak acceleration [m/s²]", body + "_peak_acceleration_m_s2",
+            peak_acceleration(before.summary, body), peak_acceleration(after.summary, body));
+      json["indicators"] = ind;
+    }
+
+    // 2. Phase portraits, before | after, same axes, Poincaré points overlaid.
+    if (write && b.series.n_samples() > 0 && a.series.n_samples() > 0)
+      for (const auto &j : settings.joints)
+        for (const char *d : {"x", "y"})
+          {
+            const std::string x = j + "_e" + d + "_m", v = j + "_ve" + d + "_m_s";
+            if (!b.series.has(x) || !b.series.has(v) || !a.series.has(x) || !a.series.has(v))
+              continue;
+            const std::string range = common_range(b, a, x, v);
+            const std::string png   = "before_after_phase_" + j + "_" + d + ".png";
+            if (plot_panels_png({phase_panel(b, x, v, range), phase_panel(a, x, v, range)}, 2,
+                                "Joint " + j + ": journal centre relative to the bushing, " + d +
+                                  " direction (phase portrait, Poincaré points in red)",
+                                dir + png, 1600, 750))
+              files.push_back(png);
+          }
+
+    // 3. Lyapunov exponents at a common embedding, and over the delay scan.
+    if (!settings.methods.empty())
+      {
+        std::vector<std::string> channels;
+        for (const auto &j : settings.joints)
+          for (const auto &d : settings.directions)
+            channels.push_back(j + "_e" + d + "_m");
+
+        md << "\n## Largest Lyapunov exponents at one embedding for both runs\n\n"
+           << "Natural log, per second; per sample = times the sample interval (before "
+           << fmt(b.sample_interval, 3) << " s, after " << fmt(a.sample_interval, 3) << " s).\n\n"
+           << "| channel | method | delay [s] | m | before [1/s] | after [1/s] | after / before | before per sample | after per sample";
+        const bool have_published = !settings.published.empty();
+        if (have_published)
+          md << " | published before | published after | published after / before";
+        md << " |\n|---|---|---|---|---|---|---|---|---" << (have_published ? "|---|---|---" : "") << "|\n";
+
+        std::ostringstream csv;
+        csv << std::setprecision(8)
+            << "channel,method,delay_s,embedding_dimension,before_per_s,after_per_s,ratio,before_per_sample,"
+               "after_per_sample,before_resolved,after_resolved,published_before,published_after\n";
+        std::ostringstream scan_csv;
+        scan_csv << std::setprecision(8)
+                 << "channel,method,delay_s,embedding_dimension,before_per_s,after_per_s,ratio,before_resolved,"
+                    "after_resolved\n";
+        Json                  lle  = Json::array();
+        Json                  scan = Json::array();
+        std::vector<PlotSpec> scan_panels;
+
+        for (const auto &c : channels)
+          {
+            // The common embedding: given, or the before-wear run's automatic choice.
+            analysis::EmbeddingSettings es;
+            if (settings.delay > 0.0)
+              es.delay = delay_samples(settings.delay, b, "common");
+            if (settings.dimension > 0)
+              es.dimension = settings.dimension;
+            const auto   emb     = analysis::resolve_embedding(channel_values(b, c), es);
+            const double delay_s = emb.embedding.delay * b.sample_interval;
+            const auto   m       = emb.embedding.dimension;
+            const auto   pub     = std::find_if(settings.published.begin(), settings.published.end(),
+                                          [&](const PublishedExponents &p) { return p.channel == c; });
+
+            PlotSpec panel;
+            panel.title   = c;
+            panel.x_label = "embedding delay [s]";
+            panel.y_label = "largest Lyapunov exponent [1/s]";
+            panel.log_x = panel.log_y = true;
+            panel.extra               = "set key top right inside\n";
+
+            for (const auto method : settings.methods)
+              {
+                const auto   eb = estimate(b, c, method, delay_s, m), ea = estimate(a, c, method, delay_s, m);
+                const double ratio = ea.per_s / eb.per_s;
+                md << "| " << c << " | " << analysis::method_name(method) << " | " << fmt(delay_s, 3) << " | " << m
+                   << " | " << fmt(eb.per_s) << (eb.resolved ? "" : " (unresolved)") << " | " << fmt(ea.per_s)
+                   << (ea.resolved ? "" : " (unresolved)") << " | " << fmt(ratio) << " | "
+                   << fmt(eb.per_s * b.sample_interval) << " | " << fmt(ea.per_s * a.sample_interval);
+                if (have_published)
+                  {
+                    if (pub != settings.published.end())
+                      md << " | " << fmt(pub->before) << " | " << fmt(pub->after) << " | " << fmt(pub->after / pub->before);
+                    else
+                      md << " | | |";
+                  }
+                md << " |\n";
+                csv << c << ',' << analysis::method_name(method) << ',' << delay_s << ',' << m << ',' << eb.per_s << ','
+                    << ea.per_s << ',' << ratio << ',' << eb.per_s * b.sample_interval << ','
+                    << ea.per_s * a.sample_interval << ',' << eb.resolved << ',' << ea.resolved << ',';
+                if (pub != settings.published.end())
+                  csv << pub->before << ',' << pub->after;
+                else
+                  csv << ',';
+                csv << '\n';
+                Json r                   = Json::object();
+                r["channel"]             = c;
+                r["method"]              = analysis::method_name(method);
+                r["delay_s"]             = delay_s;
+                r["embedding_dimension"] = m;
+                r["before_per_s"]        = eb.per_s;
+                r["after_per_s"]         = ea.per_s;
+                r["before_resolved"]     = eb.resolved;
+                r["after_resolved"]      = ea.resolved;
+                r["before_per_sample"]   = eb.per_s * b.sample_interval;
+                r["after_per_sample"]    = ea.per_s * a.sample_interval;
+                r["unit"]                = "1/s (natural log)";
+                if (!eb.note.empty())
+                  r["before_note"] = eb.note;
+                if (!ea.note.empty())
+                  r["after_note"] = ea.note;
+                if (pub != settings.published.end())
+                  {
+                    r["published_before"] = pub->before;
+                    r["published_after"]  = pub->after;
+                  }
+                lle.push_back(r);
+
+                // The scan: the same comparison at other delays (same dimension).
+                PlotSeries sb, sa;
+                sb.title   = "before, " + analysis::method_name(method);
+                sa.title   = "after, " + analysis::method_name(method);
+                sb.style   = sa.style = "linespoints";
+                const bool wolf = method == analysis::LyapunovMethod::wolf;
+                sb.options = std::string("lw 2 pt ") + (wolf ? "6" : "7") + " lc rgb '#1f5fbf'" + (wolf ? " dt 2" : "");
+                sa.options = std::string("lw 2 pt ") + (wolf ? "6" : "7") + " lc rgb '#c0392b'" + (wolf ? " dt 2" : "");
+                for (const double tau : settings.delay_scan)
+                  {
+                    if (std::round(tau / b.sample_interval) < 1.0 || std::round(tau / a.sample_interval) < 1.0)
+                      continue; // below a sample interval: not measurable from these recordings
+                    const auto sb_e = estimate(b, c, method, tau, m), sa_e = estimate(a, c, method, tau, m);
+                    scan_csv << c << ',' << analysis::method_name(method) << ',' << tau << ',' << m << ','
+                             << sb_e.per_s << ',' << sa_e.per_s << ',' << sa_e.per_s / sb_e.per_s << ','
+                             << sb_e.resolved << ',' << sa_e.resolved << '\n';
+                    Json s               = Json::object();
+                    s["channel"]         = c;
+                    s["method"]          = analysis::method_name(method);
+                    s["delay_s"]         = tau;
+                    s["before_per_s"]    = sb_e.per_s;
+                    s["after_per_s"]     = sa_e.per_s;
+                    s["before_resolved"] = sb_e.resolved;
+                    s["after_resolved"]  = sa_e.resolved;
+                    scan.push_back(s);
+                    // Unresolved estimates (the initial jump only) are left out of the plot.
+                    if (sb_e.per_s > 0.0 && sb_e.resolved)
+                      {
+                        sb.x.push_back(tau);
+                        sb.y.push_back(sb_e.per_s);
+                      }
+                    if (sa_e.per_s > 0.0 && sa_e.resolved)
+                      {
+                        sa.x.push_back(tau);
+                        sa.y.push_back(sa_e.per_s);
+                      }
+                  }
+                panel.series.push_back(sb);
+                panel.series.push_back(sa);
+              }
+            scan_panels.push_back(panel);
+          }
+        json["lyapunov"] = lle;
+        if (!settings.delay_scan.empty())
+          {
+            json["delay_scan"] = scan;
+            md << "\n## Delay scan\n\nThe same estimates at other delays (same dimension). If after / before "
+                  "changes sign across the scan, the comparison depends on the embedding, not only on the "
+                  "wear.\n\n| channel | method | delay [s] | before [1/s] | after [1/s] | after / before |\n"
+                  "|---|---|---|---|---|---|\n";
+            for (std::size_t k = 0; k < scan.size(); ++k)
+              md << "| " << scan[k].at("channel").as_string() << " | " << scan[k].at("method").as_string() << " | "
+                 << fmt(scan[k].at("delay_s").as_number()) << " | " << fmt(scan[k].at("before_per_s").as_number())
+                 << (scan[k].at("before_resolved").as_bool() ? "" : " (unresolved)") << " | "
+                 << fmt(scan[k].at("after_per_s").as_number())
+                 << (scan[k].at("after_resolved").as_bool() ? "" : " (unresolved)") << " | "
+                 << fmt(scan[k].at("after_per_s").as_number() / scan[k].at("before_per_s").as_number()) << " |\n";
+          }
+        if (!settings.published.empty())
+          md << "\nPublished values: " << settings.published_note << "\n";
+        if (write)
+          {
+            write_file_atomically(dir + "before_after_lyapunov.csv", csv.str());
+            files.push_back("before_after_lyapunov.csv");
+            if (!settings.delay_scan.empty())
+              {
+                write_file_atomically(dir + "before_after_delay_scan.csv", scan_csv.str());
+                files.push_back("before_after_delay_scan.csv");
+                if (plot_panels_png(scan_panels, 2,
+                                    "Largest Lyapunov exponent vs embedding delay, before (blue) and after (red) "
+                                    "wear; solid rosenstein, dashed wolf; unresolved estimates left out",
+                                    dir + "before_after_delay_scan.png", 1600, 700))
+                  files.push_back("before_after_delay_scan.png");
+              }
+          }
+      }
+
+    out.report = md.str();
+    if (write)
+      {
+        write_file_atomically(dir + "before_after.md", out.report);
+        files.push_back("before_after.md");
+        json["files"] = files;
+      }
+    return out;
+  }
+} // namespace wearlink::io
