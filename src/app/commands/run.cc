@@ -41,6 +41,11 @@ summary.json (with per-joint wear volumes, depths, mass loss and revolutions) an
 parameters.prm: checkpoint.txt, wear_history.csv, wear_depth_<J>.csv/.png,
 profiles_<J>.csv/.msh, profile_<J>_bore.png, profile_<J>_pin.png, wear_volume.png,
 response_before.csv, response_after.csv, response.png.
+If a wear scene lists analyses, they do not run during the wear iterations; instead
+the dynamics is run from Start to End time once with the fresh and once with the worn
+profiles (dynamics_before/, dynamics_after/) and compared (before_after.md, printed;
+before_after_phase_*.png, before_after_lyapunov.csv, before_after_delay_scan.*; see
+'Analyses/Before-after wear' and `wearlink compare-dynamics --help`).
   --resume DIR        continue the wear run whose output directory is DIR from its
                       last finished iteration (same scene; Wear/Number of iterations
                       and Wear/Target revolutions may be raised with --set)
