@@ -373,7 +373,10 @@ namespace wearlink::io
       }
     catch (const InputError &e)
       {
-        r.fail("Published exponents", e.message().substr(2));
+        std::string why = e.message().substr(2); // drop the empty location's ": "
+        if (!why.empty() && why.back() == '.')
+          why.pop_back();
+        r.fail("Published exponents", why);
       }
     r.leave();
     r.leave();
