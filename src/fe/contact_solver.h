@@ -152,7 +152,7 @@ namespace wearlink::fe
   /**
    * Initial active set shared by both solvers (so that they take the same path).
    * Displacement control: the candidates that overlap. Force control with the load per
-   * unit length P: the candidates whose initial gap is within the Hertz approach
+   * unit length P (bushing frame): the candidates whose initial gap is within the Hertz approach
    * δ_H = 2P/(π E*) of the smallest one. For a contact of relative radius R*, Hertz's
    * half-width b satisfies b²/(2R*) = 2P/(πE*), so this picks the arc |s| < b about the
    * first point of contact whatever R* is — also on worn, conforming profiles, where it
@@ -161,8 +161,8 @@ namespace wearlink::fe
    * iteration and costs ~20 iterations at 1 kN (measured), each touching new columns.
    */
   std::vector<unsigned int>
-  initial_active_set(const ContactKinematics &kinematics,
-                     bool                     force_control,
-                     double                   load_per_length,
-                     double                   effective_modulus);
+  initial_active_set(const ContactKinematics &  kinematics,
+                     bool                       force_control,
+                     const dealii::Tensor<1, 2> &load,
+                     double                     effective_modulus);
 } // namespace wearlink::fe
