@@ -80,6 +80,9 @@ namespace wearlink::io
     std::vector<double>             delay_scan;
     std::string                     published_exponents;
     std::string                     published_note;
+    /** Two-trajectory exponent runs of the comparison: cycles after Transient, tolerance. */
+    double two_trajectory_cycles    = 10;
+    double two_trajectory_tolerance = 1e-11;
 
     /** True if any analysis is listed. */
     bool

@@ -288,7 +288,7 @@ namespace wearlink::io
           }
 
     // 3. Lyapunov exponents at a common embedding, and over the delay scan.
-    if (!settings.methods.empty())
+    if (!settings.methods.empty() || settings.simulation_exponents)
       {
         std::vector<std::string> channels;
         for (const auto &j : settings.joints)
@@ -426,8 +426,31 @@ namespace wearlink::io
               }
             scan_panels.push_back(panel);
           }
+        if (const auto &se = settings.simulation_exponents)
+          {
+            const double ratio = se->after / se->before;
+            md << "| state (simulation) | two-trajectory | – | – | " << fmt(se->before) << " | " << fmt(se->after)
+               << " | " << fmt(ratio) << " | – | –" << (have_published ? " | | |" : "") << " |\n";
+            md << "\nThe two-trajectory row is the exponent of the simulated model itself, no embedding: a "
+                  "shadow copy d0 = "
+               << fmt(se->separation) << " m away, renormalized every " << fmt(se->interval) << " s, over "
+               << fmt(se->duration) << " s of each state, relative tolerance " << fmt(se->tolerance) << ".\n";
+            csv << "state,two-trajectory,,," << se->before << ',' << se->after << ',' << ratio << ",,,1,1,,\n";
+            Json r                   = Json::object();
+            r["channel"]             = "state";
+            r["method"]              = "two-trajectory";
+            r["before_per_s"]        = se->before;
+            r["after_per_s"]         = se->after;
+            r["separation_m"]        = se->separation;
+            r["renormalization_interval_s"] = se->interval;
+            r["relative_tolerance"]  = se->tolerance;
+            r["duration_s"]          = se->duration;
+            r["unit"]                = "1/s (natural log)";
+            lle.push_back(r);
+          }
         json["lyapunov"] = lle;
-        if (!settings.delay_scan.empty())
+        const bool scanned = !settings.delay_scan.empty() && !settings.methods.empty();
+        if (scanned)
           {
             json["delay_scan"] = scan;
             md << "\n## Delay scan\n\nThe same estimates at other delays (same dimension). If after / before "
@@ -448,7 +471,7 @@ namespace wearlink::io
           {
             write_file_atomically(dir + "before_after_lyapunov.csv", csv.str());
             files.push_back("before_after_lyapunov.csv");
-            if (!settings.delay_scan.empty())
+            if (scanned)
               {
                 write_file_atomically(dir + "before_after_delay_scan.csv", scan_csv.str());
                 files.push_back("before_after_delay_scan.csv");

@@ -26,6 +26,7 @@
 #include "analysis/recorded_run.h"
 #include "base/json.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,20 @@ namespace wearlink::io
     std::string channel;
     double      before = 0.0;
     double      after  = 0.0;
+  };
+
+  /**
+   * The exponent of the simulation itself (two-trajectory, io/shadow_trajectory.h),
+   * measured in separate runs before and after wear; printed with the comparison.
+   */
+  struct SimulationExponents
+  {
+    double before = 0.0;    ///< [1/s]
+    double after  = 0.0;    ///< [1/s]
+    double separation = 0.0;  ///< d0 [m]
+    double interval   = 0.0;  ///< renormalization interval τ [s]
+    double tolerance  = 0.0;  ///< relative tolerance of both runs
+    double duration   = 0.0;  ///< measured time of each run [s]
   };
 
   struct DynamicsComparisonSettings
@@ -65,6 +80,8 @@ namespace wearlink::io
     /** Published exponents to print next to ours, and where they come from. */
     std::vector<PublishedExponents> published;
     std::string                     published_note;
+    /** If set, the two-trajectory exponents of both states (one row "state"). */
+    std::optional<SimulationExponents> simulation_exponents;
   };
 
   /** What compare_dynamics() produced. */

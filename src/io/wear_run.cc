@@ -4,6 +4,7 @@
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "io/analyses.h"
 #include "io/dynamics_comparison.h"
 #include "io/run.h"
 #include "io/wear_outputs.h"
@@ -68,6 +69,65 @@ namespace wearlink::io
     }
 
     /**
+     * The two-trajectory exponent (io/shadow_trajectory.h) of the fresh and of the worn
+     * mechanism: the scene read again with its overrides plus the analysis, duration and
+     * tightened tolerances, and for the worn state the profiles written into @p dir
+     * (bore_<J>.csv, pin_<J>.csv). Outputs in DIR/exponent_before, DIR/exponent_after.
+     */
+    SimulationExponents
+    two_trajectory_exponents(const Scene &scene, const wear::WearState &st, const std::string &dir, const bool progress)
+    {
+      const auto &a      = scene.analyses;
+      const auto &is     = scene.simulation.integrator;
+      const double scale = a.two_trajectory_tolerance / is.relative_tolerance;
+      const double T     = driving_period(scene);
+      SimulationExponents out;
+      out.separation = a.two_trajectory_separation;
+      out.interval   = a.renormalization_interval;
+      out.tolerance  = a.two_trajectory_tolerance;
+      out.duration   = a.two_trajectory_cycles * T;
+      const std::string abs_dir = std::filesystem::absolute(dir).string();
+      for (int k = 0; k < 2; ++k)
+        {
+          std::vector<std::string> o = scene.overrides;
+          std::ostringstream       v;
+          v << std::setprecision(17);
+          auto set = [&](const std::string &entry, const double value) {
+            v.str("");
+            v << value;
+            o.push_back(entry + "=" + v.str());
+          };
+          o.push_back("Analyses/List of analyses=lyapunov");
+          o.push_back("Analyses/Lyapunov/Methods=two-trajectory");
+          o.push_back("Output/Time series=false");
+          set("Simulation/End time", scene.start_time + a.transient + out.duration);
+          set("Integrator/Relative tolerance", a.two_trajectory_tolerance);
+          set("Integrator/Position tolerance", is.absolute_tolerance[0] * scale);
+          set("Integrator/Velocity tolerance", is.absolute_tolerance[1] * scale);
+          if (k == 1)
+            for (const auto &j : st.joints)
+              {
+                o.push_back("Joint " + j.name + "/Clearance/Bore profile file=" + abs_dir + "/bore_" + j.name + ".csv");
+                o.push_back("Joint " + j.name + "/Clearance/Pin profile file=" + abs_dir + "/pin_" + j.name + ".csv");
+              }
+          if (progress)
+            std::cerr << "[wearlink] two-trajectory exponent " << (k == 0 ? "before" : "after") << " wear, "
+                      << a.two_trajectory_cycles << " periods at relative tolerance " << a.two_trajectory_tolerance
+                      << "\n";
+          Scene      s = read_scene(scene.file, o);
+          RunOptions ro;
+          ro.output_directory = dir + (k == 0 ? "/exponent_before" : "/exponent_after");
+          ro.progress         = progress;
+          const Json summary  = run_scene(s, ro);
+          const Json &l       = summary.at("analyses").at("lyapunov");
+          for (std::size_t i = 0; i < l.size(); ++i)
+            if (l[i].at("method").as_string() == "two-trajectory")
+              (k == 0 ? out.before : out.after) = l[i].at("exponent_per_s").as_number();
+        }
+      return out;
+    }
+
+    /**
      * The scene's analyses once with the fresh and once with the worn profiles, each run
      * from assembly at Start time to End time (outputs in DIR/dynamics_before and
      * DIR/dynamics_after), then compared (io/dynamics_comparison.h) into DIR. The joints
@@ -82,6 +142,10 @@ namespace wearlink::io
     {
       ComparedRun       runs[2];
       const char *const names[2] = {"before", "after"};
+      // The shadow trajectory needs its own tolerance and the profiles as files (it
+      // reads the scene again): separate runs below, not these.
+      const bool two_trajectory         = scene.analyses.lyapunov && scene.analyses.two_trajectory;
+      scene.analyses.two_trajectory     = false;
       for (int k = 0; k < 2; ++k)
         {
           for (unsigned int i = 0; i < joints.size(); ++i)
@@ -118,6 +182,9 @@ namespace wearlink::io
         cs.bodies.push_back(response);
       cs.published      = parse_published_exponents(a.published_exponents, scene.file);
       cs.published_note = a.published_note;
+      scene.analyses.two_trajectory = two_trajectory;
+      if (two_trajectory && !dir.empty())
+        cs.simulation_exponents = two_trajectory_exponents(scene, st, dir, progress);
       return compare_dynamics(runs[0], runs[1], cs, dir);
     }
   } // namespace
@@ -439,6 +506,11 @@ namespace wearlink::io
       }
     result.summary["wear_iterations"]  = st.iterations_done;
     result.summary["wear_revolutions"] = st.revolutions;
+    if (write)
+      {
+        write_wear_outputs(dir, scene, st, after); // the worn profile files first: the
+        timings["outputs"] += seconds_since(t_out); // two-trajectory runs read them
+      }
     if (scene.analyses.any())
       {
         t0               = Clock::now();
@@ -449,8 +521,6 @@ namespace wearlink::io
       }
     if (write)
       {
-        write_wear_outputs(dir, scene, st, after);
-        timings["outputs"] += seconds_since(t_out);
         timings["total"] = seconds_since(t_total);
         Json t = Json::object();
         for (const auto &[k, v] : timings)

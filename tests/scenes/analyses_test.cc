@@ -24,6 +24,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace wearlink;
 namespace wl = wearlink::testing;
@@ -326,7 +327,8 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
                                    "--quiet", "--set", "Wear/Number of iterations=1", "--set",
                                    "Wear/Cycles per iteration=2", "--set", "Simulation/End time=2.5", "--set",
                                    "Analyses/Before-after wear/Delay scan=0.005, 0.01", "--set",
-                                   "Analyses/Lyapunov/Delay=5", "--set", "Analyses/Lyapunov/Embedding dimension=4"});
+                                   "Analyses/Lyapunov/Delay=5", "--set", "Analyses/Lyapunov/Embedding dimension=4",
+                                   "--set", "Analyses/Before-after wear/Two-trajectory cycles=1"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   EXPECT_NE(r.output.find("| A_ex_m | wolf | 0.005 |"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("0.076"), std::string::npos) << "the seed's value is printed";
@@ -349,8 +351,25 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
     }
 
   const Json  summary = read_json_file(dir + "/summary.json");
-  const auto &l       = summary.at("before_after").at("lyapunov");
-  ASSERT_EQ(l.size(), 4u); // A, B × wolf, rosenstein
+  const auto &all     = summary.at("before_after").at("lyapunov");
+  ASSERT_EQ(all.size(), 5u); // A, B × wolf, rosenstein, and the simulation's own exponent
+  // The two-trajectory exponent runs: separate, at the tight tolerance, the worn one
+  // reading the worn profiles back from the output directory.
+  const auto &tt = all[4];
+  EXPECT_EQ(tt.at("method").as_string(), "two-trajectory");
+  EXPECT_TRUE(std::isfinite(tt.at("before_per_s").as_number()));
+  EXPECT_TRUE(std::isfinite(tt.at("after_per_s").as_number()));
+  {
+    std::ifstream     prm(dir + "/exponent_after/parameters.prm");
+    std::stringstream text;
+    text << prm.rdbuf();
+    EXPECT_NE(text.str().find(dir + "/bore_A.csv"), std::string::npos) << "worn profiles read back";
+    EXPECT_NE(text.str().find("1e-11"), std::string::npos) << "tight tolerance";
+  }
+  EXPECT_TRUE(before.at("analyses").at("lyapunov").size() == 4u) << "no shadow in the main runs";
+  Json l = Json::array();
+  for (std::size_t k = 0; k < 4; ++k)
+    l.push_back(all[k]);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
       EXPECT_DOUBLE_EQ(l[k].at("delay_s").as_number(), 0.005);
