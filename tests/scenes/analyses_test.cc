@@ -381,7 +381,9 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
                         "dynamics_after/poincare_section.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
   if (gnuplot_available())
-    EXPECT_TRUE(std::filesystem::exists(dir + "/before_after_phase_B_x.png"));
+    {
+      EXPECT_TRUE(std::filesystem::exists(dir + "/before_after_phase_B_x.png"));
+    }
 
   const std::string again_dir = dir + "/again";
   const auto        c         = wl::run_wearlink({"compare-dynamics", dir + "/dynamics_before", dir + "/dynamics_after",
