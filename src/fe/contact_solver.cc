@@ -401,8 +401,33 @@ namespace wearlink::fe
     if (force_control)
       ensure_two_active(active, kin.g0, kin.normal, load);
 
-    // Bore displacement (all bore candidates) for a unit λ_j: the force +n_j is
-    // interpolated onto the bore nodes of the face that candidate j meets.
+    // Normal displacement of the bore at candidate i's contact point for a unit λ_s at
+    // candidate s (the force +n_s interpolated onto the bore nodes of the face s meets),
+    // read point-wise from the cached bore columns: only the nodes of i's face are
+    // touched, never a whole bore field.
+    auto bore_normal = [&](unsigned int i, unsigned int s) {
+      double u = 0;
+      for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
+        {
+          const auto & col = compliance.bore_column(kin.masters[s][a]);
+          const double fx  = kin.weights[s][a] * kin.normal[s][0];
+          const double fy  = kin.weights[s][a] * kin.normal[s][1];
+          for (unsigned int c = 0; c < kin.n_masters[i]; ++c)
+            {
+              const unsigned int b  = kin.masters[i][c];
+              const double       ux = fx * col[2 * b] + fy * col[2 * q + 2 * b];
+              const double       uy = fx * col[2 * b + 1] + fy * col[2 * q + 2 * b + 1];
+              u += kin.weights[i][c] * (kin.normal[i][0] * ux + kin.normal[i][1] * uy);
+            }
+        }
+      return u;
+    };
+    // With many active candidates, reading the columns point by point for every pair
+    // costs more (scattered reads, k² pairs) than assembling each active candidate's
+    // whole bore field once per solve and reading that: measured on the default mesh,
+    // point-wise is faster up to ~150 active candidates (0.76 vs 1.4 ms at 1 kN, 45
+    // active), whole fields at 393 (63 vs 207 ms at 100 kN).
+    constexpr unsigned int                                max_pointwise_active = 200;
     std::unordered_map<unsigned int, std::vector<double>> bore_fields;
     auto bore_field = [&](unsigned int j) -> const std::vector<double> & {
       auto it = bore_fields.find(j);
@@ -419,8 +444,7 @@ namespace wearlink::fe
         }
       return bore_fields.emplace(j, std::move(v)).first->second;
     };
-    // Normal displacement of the bore at candidate i's contact point for a bore field.
-    auto bore_normal = [&](unsigned int i, const std::vector<double> &field) {
+    auto field_normal = [&](unsigned int i, const std::vector<double> &field) {
       double u = 0;
       for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
         {
@@ -429,6 +453,21 @@ namespace wearlink::fe
         }
       return u;
     };
+    // Bound of |elastic gap change| anywhere for a unit λ_s: pin and bore parts.
+    auto reach = [&](unsigned int s) {
+      double r = pin_column_bound(s);
+      for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
+        r += std::abs(kin.weights[s][a]) * bore_column_bound(kin.masters[s][a]);
+      return r;
+    };
+    double max_weight_sum = 1.0; // Σ|w| of a face (> 1 only for degree-2 faces)
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        double w = 0;
+        for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+          w += std::abs(kin.weights[i][a]);
+        max_weight_sum = std::max(max_weight_sum, w);
+      }
 
     ContactSolution                     sol;
     std::vector<double>                 lambda(m, 0.0), gap(m, 0.0);
@@ -439,19 +478,24 @@ namespace wearlink::fe
       {
         sol.iterations = iteration;
         const unsigned int k = active.size();
-        std::vector<const std::vector<double> *> pin_cols(k), bore_cols(k);
+        const bool                               fields = k > max_pointwise_active;
+        std::vector<const std::vector<double> *> pin_cols(k), bore_cols(k, nullptr);
         for (unsigned int s = 0; s < k; ++s)
           {
-            pin_cols[s]  = &compliance.pin_column(active[s]);
-            bore_cols[s] = &bore_field(active[s]);
+            pin_cols[s] = &compliance.pin_column(active[s]);
+            if (fields)
+              bore_cols[s] = &bore_field(active[s]);
           }
+        auto bore_part = [&](unsigned int i, unsigned int s) {
+          return fields ? field_normal(i, *bore_cols[s]) : bore_normal(i, active[s]);
+        };
         Eigen::MatrixXd A(k, k);
         Eigen::MatrixXd N(k, 2);
         Eigen::VectorXd g0(k);
         for (unsigned int s = 0; s < k; ++s)
           {
             for (unsigned int r = 0; r < k; ++r)
-              A(r, s) = (*pin_cols[s])[active[r]] + bore_normal(active[r], *bore_cols[s]);
+              A(r, s) = (*pin_cols[s])[active[r]] + bore_part(active[r], s);
             N(s, 0) = kin.normal[active[s]][0];
             N(s, 1) = kin.normal[active[s]][1];
             g0(s)   = kin.g0[active[s]];
@@ -476,21 +520,45 @@ namespace wearlink::fe
         else
           lambda_active = -llt.solve(g0);
 
-        // Gaps of every candidate: g = g0 − n·U + (pin part + bore part) of A λ.
+        // Gaps g = g0 − n·U + (pin part + bore part) of A λ. The elastic part is at
+        // most E = max Σ|w| · Σ_s |λ_s| reach(s) anywhere, so a candidate whose rigid
+        // gap g0 − n·U exceeds E + tolerance cannot penetrate: its gap is only bounded
+        // from below (g0 − n·U − E) and its columns are never read. At 1 kN on the
+        // default mesh this leaves a few dozen of the 2,888 candidates to evaluate.
         std::fill(lambda.begin(), lambda.end(), 0.0);
-        std::vector<double> bore_total(2 * q, 0.0);
+        double E = 0;
         for (unsigned int s = 0; s < k; ++s)
           {
             lambda[active[s]] = lambda_active[s];
-            const auto &f     = *bore_cols[s];
-            for (unsigned int r = 0; r < 2 * q; ++r)
-              bore_total[r] += lambda_active[s] * f[r];
+            E += std::abs(lambda_active[s]) * reach(active[s]);
+          }
+        E *= max_weight_sum;
+        std::vector<double> bore_total;
+        if (fields)
+          {
+            bore_total.assign(2 * q, 0.0);
+            for (unsigned int s = 0; s < k; ++s)
+              for (unsigned int r = 0; r < 2 * q; ++r)
+                bore_total[r] += lambda_active[s] * (*bore_cols[s])[r];
           }
         for (unsigned int i = 0; i < m; ++i)
           {
-            double g = kin.g0[i] - kin.normal[i] * U + bore_normal(i, bore_total);
-            for (unsigned int s = 0; s < k; ++s)
-              g += (*pin_cols[s])[i] * lambda_active[s];
+            const double rigid = kin.g0[i] - kin.normal[i] * U;
+            if (rigid > E + tolerance && lambda[i] == 0.0)
+              {
+                gap[i] = rigid - E;
+                continue;
+              }
+            double g = rigid;
+            if (fields)
+              {
+                g += field_normal(i, bore_total);
+                for (unsigned int s = 0; s < k; ++s)
+                  g += (*pin_cols[s])[i] * lambda_active[s];
+              }
+            else
+              for (unsigned int s = 0; s < k; ++s)
+                g += ((*pin_cols[s])[i] + bore_normal(i, active[s])) * lambda_active[s];
             gap[i] = g;
           }
         auto next = update_active_set(active, lambda, gap, tolerance, history);
@@ -515,6 +583,42 @@ namespace wearlink::fe
     for (unsigned int i = 0; i < m; ++i)
       sol.resultant += lambda[i] * kin.normal[i];
     return sol;
+  }
+
+
+  double
+  CondensedContactSolver::pin_column_bound(const unsigned int j)
+  {
+    if (pin_bounds.empty())
+      pin_bounds.assign(problem.pin_nodes.size(), std::numeric_limits<double>::quiet_NaN());
+    if (std::isnan(pin_bounds[j]))
+      {
+        double b = 0;
+        for (const double v : compliance.pin_column(j))
+          b = std::max(b, std::abs(v));
+        pin_bounds[j] = b;
+      }
+    return pin_bounds[j];
+  }
+
+
+  double
+  CondensedContactSolver::bore_column_bound(const unsigned int c)
+  {
+    const unsigned int q = problem.bore_nodes.size();
+    if (bore_bounds.empty())
+      bore_bounds.assign(q, std::numeric_limits<double>::quiet_NaN());
+    if (std::isnan(bore_bounds[c]))
+      {
+        // A unit force along any direction (cos φ, sin φ) moves node b by at most
+        // |u_x(b)| + |u_y(b)| (2-vector norms of the responses to unit x and y forces).
+        const auto &col = compliance.bore_column(c);
+        double      b   = 0;
+        for (unsigned int n = 0; n < q; ++n)
+          b = std::max(b, std::hypot(col[2 * n], col[2 * n + 1]) + std::hypot(col[2 * q + 2 * n], col[2 * q + 2 * n + 1]));
+        bore_bounds[c] = b;
+      }
+    return bore_bounds[c];
   }
 
 

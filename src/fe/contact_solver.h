@@ -82,7 +82,12 @@ namespace wearlink::fe
     std::vector<double>  lambda;          ///< normal force per pin candidate [N/m]
     dealii::Tensor<1, 2> pin_translation; ///< U, bushing frame [m]
     dealii::Tensor<1, 2> resultant;       ///< Σ λ_i n_i, bushing frame [N/m]
-    std::vector<double>  gap;             ///< final gap per pin candidate [m]
+    /**
+     * Final gap per pin candidate [m]. Condensed solver: exact for the candidates within
+     * reach of the contact (see CondensedContactSolver::solve), a lower bound for the
+     * others (still far above the tolerance).
+     */
+    std::vector<double>  gap;
     unsigned int         iterations = 0;
     unsigned int         n_active   = 0;
     /** Full displacement field (reference solver only; empty otherwise). */
@@ -112,11 +117,20 @@ namespace wearlink::fe
     displacement_field(const ContactKinematics &kinematics, const ContactSolution &solution) const;
 
   private:
+    /** max_i |pin column j (i)| [m per N/m], computed once per column. */
+    double
+    pin_column_bound(unsigned int j);
+    /** max over bore nodes of |displacement| for a unit force at bore node c, once per node. */
+    double
+    bore_column_bound(unsigned int c);
+
     const ElasticityProblem &  problem;
     BoundaryCompliance &       compliance;
     const unsigned int         max_iterations;
     std::vector<unsigned int>  previous_active;
     dealii::Tensor<1, 2>       previous_load;
+    std::vector<double>        pin_bounds;  ///< NaN until computed
+    std::vector<double>        bore_bounds; ///< NaN until computed
   };
 
   class ReferenceContactSolver
