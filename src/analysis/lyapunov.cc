@@ -92,6 +92,15 @@ namespace wearlink::analysis
     return "unknown";
   }
 
+  std::optional<LyapunovMethod>
+  parse_method(const std::string &name)
+  {
+    for (const auto m : {LyapunovMethod::wolf, LyapunovMethod::rosenstein})
+      if (name == method_name(m))
+        return m;
+    return std::nullopt;
+  }
+
   ResolvedEmbedding
   resolve_embedding(const std::vector<double> &series, const EmbeddingSettings &settings)
   {

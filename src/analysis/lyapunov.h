@@ -37,6 +37,10 @@ namespace wearlink::analysis
   std::string
   method_name(LyapunovMethod method);
 
+  /** The method named @p name ("wolf", "rosenstein"); empty for any other name. */
+  std::optional<LyapunovMethod>
+  parse_method(const std::string &name);
+
   /** How the embedding is set: a value given by the caller, or chosen automatically. */
   struct EmbeddingSettings
   {

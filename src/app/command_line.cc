@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "app/command_line.h"
 
+#include <deal.II/base/utilities.h>
+
 #include "base/exceptions.h"
 
 #include <cmath>
@@ -19,6 +21,16 @@ namespace wearlink::app
   {
     const auto it = values.find(option);
     return it == values.end() ? std::vector<std::string>() : it->second;
+  }
+
+  std::vector<std::string>
+  ParsedArguments::list(const std::string &option, const std::string &fallback) const
+  {
+    std::vector<std::string> out;
+    for (const auto &item : dealii::Utilities::split_string_list(value(option, fallback), ','))
+      if (!item.empty())
+        out.push_back(item);
+    return out;
   }
 
   double

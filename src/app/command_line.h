@@ -35,6 +35,9 @@ namespace wearlink::app
     /** All values of a repeatable option. */
     std::vector<std::string>
     all(const std::string &option) const;
+    /** The comma-separated items of a single-valued option (empty items dropped). */
+    std::vector<std::string>
+    list(const std::string &option, const std::string &fallback = "") const;
     /** A numeric option value; InputError if not a number. */
     double
     number(const std::string &option, double fallback) const;

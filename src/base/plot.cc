@@ -4,12 +4,12 @@
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -88,12 +88,13 @@ namespace wearlink
     }
 
     /**
-     * Run gnuplot on @p body (the panels) with a PNG terminal of the given size, into a
-     * temporary name, then rename to @p png_path.
+     * Run gnuplot on the commands @p body returns (the panels; their data files go into
+     * the directory it is given) with a PNG terminal of the given size, into a temporary
+     * name, then rename to @p png_path.
      */
     bool
     render(const std::string &png_path, const int width, const int height,
-           const std::function<std::string(const std::filesystem::path &dir, const std::string &png)> &body)
+           const std::function<std::string(const std::filesystem::path &dir)> &body)
     {
       namespace fs = std::filesystem;
       if (!gnuplot_available())
@@ -110,7 +111,7 @@ namespace wearlink
       std::ostringstream script;
       script << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,11'\n"
              << "set output " << quote(tmp_png) << "\n"
-             << body(dir, tmp_png) << "unset output\n";
+             << body(dir) << "unset output\n";
       const fs::path script_file = dir / "plot.gp";
       {
         std::ofstream out(script_file);
@@ -139,9 +140,8 @@ namespace wearlink
   bool
   plot_png(const PlotSpec &spec, const std::string &png_path)
   {
-    return render(png_path, spec.width, spec.height, [&](const std::filesystem::path &dir, const std::string &) {
-      return panel_script(spec, dir, "");
-    });
+    return render(png_path, spec.width, spec.height,
+                  [&](const std::filesystem::path &dir) { return panel_script(spec, dir, ""); });
   }
 
   bool
@@ -155,7 +155,7 @@ namespace wearlink
     const unsigned int n    = static_cast<unsigned int>(panels.size());
     const unsigned int cols = std::max(1u, std::min(columns, n));
     const unsigned int rows = std::max(1u, (n + cols - 1) / cols);
-    return render(png_path, width, height, [&](const std::filesystem::path &dir, const std::string &) {
+    return render(png_path, width, height, [&](const std::filesystem::path &dir) {
       std::ostringstream s;
       s << "set multiplot layout " << rows << "," << cols << " title " << quote(title) << " noenhanced\n";
       for (unsigned int i = 0; i < n; ++i)

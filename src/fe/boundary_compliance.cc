@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 namespace wearlink::fe
 {
@@ -28,6 +30,8 @@ namespace wearlink::fe
     , factorization(std::make_unique<Factorization>())
     , pin_columns(problem.pin_nodes.size())
     , bore_columns(problem.bore_nodes.size())
+    , pin_bounds(problem.pin_nodes.size(), std::numeric_limits<double>::quiet_NaN())
+    , bore_bounds(problem.bore_nodes.size(), std::numeric_limits<double>::quiet_NaN())
   {
     const auto n = problem.dof_handler.n_dofs();
     reduced_index.assign(n, 0);
@@ -162,6 +166,37 @@ namespace wearlink::fe
     if (bore_columns[c].empty())
       compute_bore_block(c);
     return bore_columns[c];
+  }
+
+
+  double
+  BoundaryCompliance::pin_column_bound(const unsigned int j)
+  {
+    if (std::isnan(pin_bounds[j]))
+      {
+        double b = 0;
+        for (const double v : pin_column(j))
+          b = std::max(b, std::abs(v));
+        pin_bounds[j] = b;
+      }
+    return pin_bounds[j];
+  }
+
+
+  double
+  BoundaryCompliance::bore_column_bound(const unsigned int c)
+  {
+    if (std::isnan(bore_bounds[c]))
+      {
+        const auto &       col = bore_column(c);
+        const unsigned int q   = bore_columns.size();
+        double             b   = 0;
+        for (unsigned int n = 0; n < q; ++n)
+          b = std::max(b, std::hypot(col[2 * n], col[2 * n + 1]) +
+                            std::hypot(col[2 * q + 2 * n], col[2 * q + 2 * n + 1]));
+        bore_bounds[c] = b;
+      }
+    return bore_bounds[c];
   }
 
 

@@ -60,6 +60,18 @@ namespace wearlink::fe
     const std::vector<double> &
     bore_column(unsigned int c);
 
+    /** max_i |pin_column(j)[i]| [m per N/m], computed once per column. */
+    double
+    pin_column_bound(unsigned int j);
+
+    /**
+     * Largest displacement of any bore node for a unit force at bore candidate @p c in
+     * any direction, bounded by |u_x| + |u_y| of the responses to unit x and y forces
+     * [m per N/m], computed once per column.
+     */
+    double
+    bore_column_bound(unsigned int c);
+
     /** Fill every column (the full influence matrices). */
     void
     precompute_all();
@@ -97,6 +109,8 @@ namespace wearlink::fe
     std::vector<long>                   reduced_index;
     std::vector<std::vector<double>>    pin_columns;
     std::vector<std::vector<double>>    bore_columns;
+    std::vector<double>                 pin_bounds;  ///< NaN until computed
+    std::vector<double>                 bore_bounds; ///< NaN until computed
     unsigned long                       n_solves = 0;
     double                              seconds_in_columns = 0;
   };

@@ -455,9 +455,9 @@ namespace wearlink::fe
     };
     // Bound of |elastic gap change| anywhere for a unit λ_s: pin and bore parts.
     auto reach = [&](unsigned int s) {
-      double r = pin_column_bound(s);
+      double r = compliance.pin_column_bound(s);
       for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
-        r += std::abs(kin.weights[s][a]) * bore_column_bound(kin.masters[s][a]);
+        r += std::abs(kin.weights[s][a]) * compliance.bore_column_bound(kin.masters[s][a]);
       return r;
     };
     double max_weight_sum = 1.0; // Σ|w| of a face (> 1 only for degree-2 faces)
@@ -583,42 +583,6 @@ namespace wearlink::fe
     for (unsigned int i = 0; i < m; ++i)
       sol.resultant += lambda[i] * kin.normal[i];
     return sol;
-  }
-
-
-  double
-  CondensedContactSolver::pin_column_bound(const unsigned int j)
-  {
-    if (pin_bounds.empty())
-      pin_bounds.assign(problem.pin_nodes.size(), std::numeric_limits<double>::quiet_NaN());
-    if (std::isnan(pin_bounds[j]))
-      {
-        double b = 0;
-        for (const double v : compliance.pin_column(j))
-          b = std::max(b, std::abs(v));
-        pin_bounds[j] = b;
-      }
-    return pin_bounds[j];
-  }
-
-
-  double
-  CondensedContactSolver::bore_column_bound(const unsigned int c)
-  {
-    const unsigned int q = problem.bore_nodes.size();
-    if (bore_bounds.empty())
-      bore_bounds.assign(q, std::numeric_limits<double>::quiet_NaN());
-    if (std::isnan(bore_bounds[c]))
-      {
-        // A unit force along any direction (cos φ, sin φ) moves node b by at most
-        // |u_x(b)| + |u_y(b)| (2-vector norms of the responses to unit x and y forces).
-        const auto &col = compliance.bore_column(c);
-        double      b   = 0;
-        for (unsigned int n = 0; n < q; ++n)
-          b = std::max(b, std::hypot(col[2 * n], col[2 * n + 1]) + std::hypot(col[2 * q + 2 * n], col[2 * q + 2 * n + 1]));
-        bore_bounds[c] = b;
-      }
-    return bore_bounds[c];
   }
 
 

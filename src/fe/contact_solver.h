@@ -117,20 +117,11 @@ namespace wearlink::fe
     displacement_field(const ContactKinematics &kinematics, const ContactSolution &solution) const;
 
   private:
-    /** max_i |pin column j (i)| [m per N/m], computed once per column. */
-    double
-    pin_column_bound(unsigned int j);
-    /** max over bore nodes of |displacement| for a unit force at bore node c, once per node. */
-    double
-    bore_column_bound(unsigned int c);
-
     const ElasticityProblem &  problem;
     BoundaryCompliance &       compliance;
     const unsigned int         max_iterations;
     std::vector<unsigned int>  previous_active;
     dealii::Tensor<1, 2>       previous_load;
-    std::vector<double>        pin_bounds;  ///< NaN until computed
-    std::vector<double>        bore_bounds; ///< NaN until computed
   };
 
   class ReferenceContactSolver

@@ -362,8 +362,8 @@ namespace wearlink::io
     for (const auto &m : r.get_list("Methods"))
       if (m == "two-trajectory")
         s.two_trajectory = true;
-      else
-        s.methods.push_back(m == "wolf" ? analysis::LyapunovMethod::wolf : analysis::LyapunovMethod::rosenstein);
+      else if (const auto method = analysis::parse_method(m))
+        s.methods.push_back(*method);
     s.two_trajectory_separation = r.get_double("Two-trajectory separation");
     s.renormalization_interval  = r.get_double("Renormalization interval");
     if (s.lyapunov && s.two_trajectory && !(s.two_trajectory_separation > 0.0))
@@ -399,10 +399,7 @@ namespace wearlink::io
       }
     catch (const InputError &e)
       {
-        std::string why = e.message().substr(2); // drop the empty location's ": "
-        if (!why.empty() && why.back() == '.')
-          why.pop_back();
-        r.fail("Published exponents", why);
+        r.fail("Published exponents", e.message());
       }
     r.leave();
     r.leave();
@@ -466,8 +463,12 @@ namespace wearlink::io
   // The analyses of one run.
 
   SceneAnalyses::SceneAnalyses(const Scene &scene)
+    : SceneAnalyses(scene, scene.analyses)
+  {}
+
+  SceneAnalyses::SceneAnalyses(const Scene &scene, const AnalysesSettings &settings)
     : scene(scene)
-    , settings(scene.analyses)
+    , settings(settings)
   {
     auto &ledger = EffectLedger::instance();
     for (const auto &name : settings.names())

@@ -122,7 +122,9 @@ namespace wearlink::io
   class SceneAnalyses
   {
   public:
+    /** The analyses @p settings lists (default: the scene's own). */
     explicit SceneAnalyses(const Scene &scene);
+    SceneAnalyses(const Scene &scene, const AnalysesSettings &settings);
     ~SceneAnalyses();
 
     /** Observers to add to the run (none if nothing is listed). */

@@ -196,8 +196,11 @@ namespace wearlink::io
         std::string rest;
         if (colon == std::string::npos || p.channel.empty() || !(values >> p.before >> p.after) || (values >> rest) ||
             !std::isfinite(p.before) || !std::isfinite(p.after))
-          throw InputError(where + ": '" + item + "' is not 'CHANNEL: BEFORE AFTER' (two numbers, e.g. "
-                           "'A_ex_m: 0.041 0.076').");
+          {
+            const std::string what = "'" + item + "' is not 'CHANNEL: BEFORE AFTER' (two numbers, e.g. "
+                                     "'A_ex_m: 0.041 0.076')";
+            throw InputError(where.empty() ? what : where + ": " + what + ".");
+          }
         out.push_back(p);
       }
     return out;
@@ -396,7 +399,11 @@ namespace wearlink::io
                   {
                     if (std::round(tau / b.sample_interval) < 1.0 || std::round(tau / a.sample_interval) < 1.0)
                       continue; // below a sample interval: not measurable from these recordings
-                    const auto sb_e = estimate(b, c, method, tau, m), sa_e = estimate(a, c, method, tau, m);
+                    // The common delay is usually one of the scan's: reuse its estimates.
+                    const bool common = std::lround(tau / b.sample_interval) == std::lround(delay_s / b.sample_interval) &&
+                                        std::lround(tau / a.sample_interval) == std::lround(delay_s / a.sample_interval);
+                    const auto sb_e = common ? eb : estimate(b, c, method, tau, m);
+                    const auto sa_e = common ? ea : estimate(a, c, method, tau, m);
                     scan_csv << c << ',' << analysis::method_name(method) << ',' << tau << ',' << m << ','
                              << sb_e.per_s << ',' << sa_e.per_s << ',' << sa_e.per_s / sb_e.per_s << ','
                              << sb_e.resolved << ',' << sa_e.resolved << '\n';

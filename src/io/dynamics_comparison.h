@@ -107,7 +107,8 @@ namespace wearlink::io
 
   /**
    * Parse "CHANNEL: BEFORE AFTER, ..." (e.g. "A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052").
-   * InputError naming @p where if malformed.
+   * InputError if malformed, its message prefixed with "@p where: " unless @p where is
+   * empty (then it is the bare reason, for a caller that names the entry itself).
    */
   std::vector<PublishedExponents>
   parse_published_exponents(const std::string &text, const std::string &where);

@@ -115,6 +115,23 @@ namespace wearlink::io
           }
       }
 
+      /** Right-hand-side evaluations of this run (the mechanism counts over its lifetime). */
+      long
+      rhs_evaluations() const
+      {
+        return static_cast<long>(mech.n_evaluations()) - rhs_at_start;
+      }
+
+      /** Contact-law evaluations of this run, all clearance joints. */
+      long
+      force_evaluations() const
+      {
+        long n = 0;
+        for (unsigned int i = 0; i < joints.size(); ++i)
+          n += scene.clearance_joints[i]->n_force_evaluations() - joints[i].evaluations_at_start;
+        return n;
+      }
+
       Json
       summary(const mbs::Simulation &sim, double wall_time) const
       {
@@ -126,7 +143,7 @@ namespace wearlink::io
         s["integrator"]             = scene.simulation.integrator.type == mbs::IntegratorType::rk4 ? "rk4" : "dopri5";
         s["steps"]                  = sim.get_integrator().n_accepted;
         s["rejected_steps"]         = sim.get_integrator().n_rejected;
-        s["rhs_evaluations"]        = static_cast<long>(mech.n_evaluations()) - rhs_at_start;
+        s["rhs_evaluations"]        = rhs_evaluations();
         s["contact_events"]         = sim.n_events();
         s["event_restarts"]         = sim.n_event_restarts();
         s["max_constraint_violation_m"] = max_violation;
@@ -332,27 +349,19 @@ namespace wearlink::io
     Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
     std::unique_ptr<SceneAnalyses> analyses;
     if (options.analyses)
-      analyses = std::make_unique<SceneAnalyses>(scene);
+      analyses = std::make_unique<SceneAnalyses>(scene, options.analyses_settings ? *options.analyses_settings :
+                                                                                      scene.analyses);
     std::vector<mbs::StepObserver *> observers{&recorder};
     if (analyses)
       for (auto *o : analyses->observers())
         observers.push_back(o);
     observers.insert(observers.end(), options.observers.begin(), options.observers.end());
-    // The joints and the mechanism count over their lifetime (a wear run reuses them):
-    // this run's share is the difference.
-    long evaluations = 0;
-    for (auto *j : scene.clearance_joints)
-      evaluations -= j->n_force_evaluations();
-    const long rhs_at_start = static_cast<long>(scene.mechanism->n_evaluations());
     sim.run(end_time, observers);
     if (options.final_state != nullptr)
       *options.final_state = sim.state();
 
-    for (auto *j : scene.clearance_joints)
-      evaluations += j->n_force_evaluations();
-    EffectLedger::instance().add_calls("contact law evaluations", evaluations);
-    EffectLedger::instance().add_calls("rhs evaluations",
-                                       static_cast<long>(scene.mechanism->n_evaluations()) - rhs_at_start);
+    EffectLedger::instance().add_calls("contact law evaluations", recorder.force_evaluations());
+    EffectLedger::instance().add_calls("rhs evaluations", recorder.rhs_evaluations());
 
     const Json analyses_summary = analyses ? analyses->finish(options.output_directory) : Json();
     if (analyses && options.recorded != nullptr)

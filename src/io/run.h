@@ -39,6 +39,8 @@ namespace wearlink::io
      * (io/wear_run.h).
      */
     bool analyses = true;
+    /** If set, these analyses instead of the scene's (e.g. without the shadow trajectory). */
+    const AnalysesSettings *analyses_settings = nullptr;
     /** If set (and analyses are on), receives what the analyses recorded. */
     analysis::RecordedRun *recorded = nullptr;
   };

@@ -144,8 +144,9 @@ namespace wearlink::io
       const char *const names[2] = {"before", "after"};
       // The shadow trajectory needs its own tolerance and the profiles as files (it
       // reads the scene again): separate runs below, not these.
-      const bool two_trajectory         = scene.analyses.lyapunov && scene.analyses.two_trajectory;
-      scene.analyses.two_trajectory     = false;
+      const bool       two_trajectory = scene.analyses.lyapunov && scene.analyses.two_trajectory;
+      AnalysesSettings without_shadow = scene.analyses;
+      without_shadow.two_trajectory   = false;
       for (int k = 0; k < 2; ++k)
         {
           for (unsigned int i = 0; i < joints.size(); ++i)
@@ -160,6 +161,7 @@ namespace wearlink::io
           ro.output_directory = dir.empty() ? std::string() : dir + "/dynamics_" + names[k];
           ro.progress         = progress;
           ro.recorded         = &runs[k].run;
+          ro.analyses_settings = &without_shadow;
           runs[k].summary     = run_scene(scene, ro);
           std::ostringstream label;
           label << (k == 0 ? "before wear" : "after wear");
@@ -182,7 +184,6 @@ namespace wearlink::io
         cs.bodies.push_back(response);
       cs.published      = parse_published_exponents(a.published_exponents, scene.file);
       cs.published_note = a.published_note;
-      scene.analyses.two_trajectory = two_trajectory;
       if (two_trajectory && !dir.empty())
         cs.simulation_exponents = two_trajectory_exponents(scene, st, dir, progress);
       return compare_dynamics(runs[0], runs[1], cs, dir);

@@ -8,8 +8,6 @@
 #include "io/analyses.h"
 #include "io/dynamics_comparison.h"
 
-#include <deal.II/base/utilities.h>
-
 #include <iostream>
 
 namespace wearlink::app
@@ -53,16 +51,6 @@ Exit status: 0 success, 2 bad input (missing directory, a run without analyses, 
 channel not recorded in both, a delay below the sample interval).
 )";
 
-    std::vector<std::string>
-    list_option(const ParsedArguments &a, const std::string &option, const std::string &fallback)
-    {
-      std::vector<std::string> out;
-      for (const auto &v : dealii::Utilities::split_string_list(a.value(option, fallback), ','))
-        if (!v.empty())
-          out.push_back(v);
-      return out;
-    }
-
     io::ComparedRun
     read_run(const std::string &dir, const std::string &label)
     {
@@ -102,15 +90,13 @@ channel not recorded in both, a delay below the sample interval).
         throw InputError("The runs in '" + a.positional[0] + "' and '" + a.positional[1] +
                          "' have no clearance-joint series in common (list phase-portrait or "
                          "lyapunov in 'Analyses/List of analyses' and analyse the same joints).");
-      s.directions = list_option(a, "--directions", "x");
+      s.directions = a.list("--directions", "x");
       for (const auto &d : s.directions)
         if (d != "x" && d != "y")
           throw InputError("--directions: '" + d + "' is not a direction; allowed: x, y.");
-      for (const auto &m : list_option(a, "--methods", "wolf,rosenstein"))
-        if (m == "wolf")
-          s.methods.push_back(analysis::LyapunovMethod::wolf);
-        else if (m == "rosenstein")
-          s.methods.push_back(analysis::LyapunovMethod::rosenstein);
+      for (const auto &m : a.list("--methods", "wolf,rosenstein"))
+        if (const auto method = analysis::parse_method(m))
+          s.methods.push_back(*method);
         else
           throw InputError("--methods: '" + m + "' is not a method; allowed: wolf, rosenstein.");
       s.delay = a.number("--delay", 0.005);
@@ -122,7 +108,7 @@ channel not recorded in both, a delay below the sample interval).
       s.dimension = static_cast<unsigned int>(m);
       const std::string scan = a.value("--scan", "0.002,0.005,0.01,0.02,0.05");
       if (scan != "none")
-        for (const auto &v : list_option(a, "--scan", scan))
+        for (const auto &v : a.list("--scan", scan))
           {
             double tau = 0;
             try
@@ -140,7 +126,7 @@ channel not recorded in both, a delay below the sample interval).
               throw InputError("--scan: delays must be > 0 s, given '" + v + "'.");
             s.delay_scan.push_back(tau);
           }
-      s.bodies         = list_option(a, "--bodies", "");
+      s.bodies         = a.list("--bodies");
       s.published      = io::parse_published_exponents(a.value("--published", ""), "--published");
       s.published_note = a.value("--published-note", "");
 

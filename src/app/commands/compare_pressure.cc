@@ -9,7 +9,6 @@
 
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 
 namespace wearlink::app
 {
@@ -44,11 +43,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
         throw InputError("`wearlink compare-pressure` needs exactly one scene file. See --help.");
       const std::string file  = a.positional[0];
       io::Scene         scene = io::read_scene(file, a.all("--set"));
-      std::vector<std::string> models;
-      std::stringstream        ms(a.value("--models", "hertz-strip,winkler,fe"));
-      for (std::string m; std::getline(ms, m, ',');)
-        if (!m.empty())
-          models.push_back(m);
+      const std::vector<std::string> models = a.list("--models", "hertz-strip,winkler,fe");
       const double cycles = a.number("--cycles", scene.wear_loop.cycles_per_iteration);
       if (!(cycles > 0))
         throw InputError("--cycles must be > 0.");

@@ -286,10 +286,8 @@ series, bad option value).
 
       LyapunovSettings  settings;
       const std::string method = args.value("--method", "rosenstein");
-      if (method == "rosenstein")
-        settings.method = LyapunovMethod::rosenstein;
-      else if (method == "wolf")
-        settings.method = LyapunovMethod::wolf;
+      if (const auto m = parse_method(method))
+        settings.method = *m;
       else
         throw InputError("Unknown --method '" + method + "'. The methods are: rosenstein, wolf.");
       settings.embedding.delay          = integer_option<std::size_t>(args, "--delay", 1);
