@@ -11,7 +11,4 @@ namespace wearlink::app
   /** The table of sub-commands, in the order `wearlink --help` lists them. */
   const std::vector<Command> &
   commands();
-
-  int
-  run_command(const std::vector<std::string> &args);
 } // namespace wearlink::app

@@ -14,16 +14,6 @@ namespace wearlink
 {
   namespace
   {
-    std::string
-    trim(const std::string &s)
-    {
-      const auto b = s.find_first_not_of(" \t\r");
-      if (b == std::string::npos)
-        return "";
-      const auto e = s.find_last_not_of(" \t\r");
-      return s.substr(b, e - b + 1);
-    }
-
     /** The text of a line without its comment and surrounding blanks. */
     std::string
     strip_comment(const std::string &line)
@@ -430,12 +420,4 @@ namespace wearlink
       }
   }
 
-
-  std::string
-  format_number(double value)
-  {
-    std::ostringstream os;
-    os << std::setprecision(std::numeric_limits<double>::max_digits10) << value;
-    return os.str();
-  }
 } // namespace wearlink

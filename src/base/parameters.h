@@ -11,6 +11,8 @@
 //    including file, keeping deal.II's own file:line error reporting.
 #pragma once
 
+#include "base/text.h"
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <array>
@@ -128,7 +130,4 @@ namespace wearlink
   apply_overrides(dealii::ParameterHandler &      prm,
                   const std::vector<std::string> &overrides);
 
-  /** Render a double the way a user would type it in a .prm file. */
-  std::string
-  format_number(double value);
 } // namespace wearlink

@@ -13,6 +13,7 @@
 
 #include "base/profile.h"
 #include "base/registry.h"
+#include "base/timings.h"
 
 #include <array>
 #include <map>
@@ -96,10 +97,10 @@ namespace wearlink::contact
     evaluate(const ContactLoad &load, SurfacePressure &out) = 0;
 
     /**
-     * Wall time spent so far in the model's heavy phases, by name (the fe model:
-     * "meshing", "fe set-up", "fe compliance") [s]. Light models report nothing.
+     * Wall time spent so far in the model's heavy phases (the fe model: meshing, FE
+     * set-up, compliance) [s]. Light models report nothing.
      */
-    virtual std::map<std::string, double>
+    virtual PhaseTimings
     timings() const
     {
       return {};

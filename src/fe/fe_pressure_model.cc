@@ -59,7 +59,7 @@ namespace wearlink::fe
     model->prepare_condensed();
   }
 
-  std::map<std::string, double>
+  PhaseTimings
   FePressureModel::timings() const
   {
     double mesh = past_mesh_time, setup = past_setup_time, compliance = past_compliance_time;
@@ -70,7 +70,11 @@ namespace wearlink::fe
         setup += st.assembly_time + st.factorization_time;
         compliance += model->compliance_time();
       }
-    return {{"meshing", mesh}, {"fe set-up", setup}, {"fe compliance", compliance}};
+    PhaseTimings t;
+    t.meshing       = mesh;
+    t.fe_setup      = setup;
+    t.fe_compliance = compliance;
+    return t;
   }
 
   void

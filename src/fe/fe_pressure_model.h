@@ -37,7 +37,7 @@ namespace wearlink::fe
       return true;
     }
 
-    std::map<std::string, double>
+    PhaseTimings
     timings() const override;
 
     /** Number of meshes built so far (one per update_geometry()). */

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "io/lyapunov_report.h"
+#include "base/text.h"
 
 #include "base/atomic_file.h"
-#include "base/plot.h"
+#include "io/plot.h"
 
 #include <iomanip>
 #include <sstream>
@@ -11,13 +12,6 @@ namespace wearlink::io
 {
   namespace
   {
-    std::string
-    format(const double v, const int digits = 4)
-    {
-      std::ostringstream s;
-      s << std::setprecision(digits) << v;
-      return s.str();
-    }
   } // namespace
 
   bool
@@ -45,13 +39,13 @@ namespace wearlink::io
             running.y.push_back(l);
           }
         PlotSeries final_value;
-        final_value.title   = "final " + format(est.exponent(), 4);
+        final_value.title   = "final " + format_number(est.exponent(), 4);
         final_value.x       = {running.x.front(), running.x.back()};
         final_value.y       = {est.exponent(), est.exponent()};
         final_value.options = "dt 2 lw 2 lc rgb 'red'";
         plot.series         = {running, final_value};
         plot.title          = "Wolf et al. 1985: largest Lyapunov exponent of '" + column + "' = " +
-                     format(est.exponent(), 4) + " " + (est.sample_interval ? "1/s" : "1/sample") +
+                     format_number(est.exponent(), 4) + " " + (est.sample_interval ? "1/s" : "1/sample") +
                      " (m = " + std::to_string(emb.embedding.dimension) +
                      ", tau = " + std::to_string(emb.embedding.delay) +
                      ", E = " + std::to_string(w.evolution_steps) + " samples)";
@@ -65,7 +59,7 @@ namespace wearlink::io
         PlotSeries  curve;
         curve.title = "<ln d(k)>";
         PlotSeries line;
-        line.title   = "fit: slope " + format(est.exponent(), 4);
+        line.title   = "fit: slope " + format_number(est.exponent(), 4);
         line.options = "lw 3 lc rgb 'red'";
         csv << time_name << ",mean_log_divergence,fitted_line\n";
         for (std::size_t k = 0; k < r.mean_log_divergence.size(); ++k)
@@ -85,7 +79,7 @@ namespace wearlink::io
           }
         plot.series = {curve, line};
         plot.title  = "Rosenstein et al. 1993: largest Lyapunov exponent of '" + column + "' = " +
-                     format(est.exponent(), 4) + " " + (est.sample_interval ? "1/s" : "1/sample") +
+                     format_number(est.exponent(), 4) + " " + (est.sample_interval ? "1/s" : "1/sample") +
                      " (m = " + std::to_string(emb.embedding.dimension) +
                      ", tau = " + std::to_string(emb.embedding.delay) + " samples)";
         plot.x_label = est.sample_interval ? "time [s]" : "time [samples]";

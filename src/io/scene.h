@@ -10,7 +10,7 @@
 #pragma once
 
 #include "contact/clearance_joint.h"
-#include "io/analyses.h"
+#include "analysis/analyses_settings.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
 #include "wear/wear_settings.h"
@@ -46,8 +46,8 @@ namespace wearlink::io
     double output_interval  = 1e-3; ///< time-series sampling [s]; 0: every step
     bool   write_time_series = true;
 
-    /** The nonlinear-dynamics analyses the scene lists (io/analyses.h). */
-    AnalysesSettings analyses;
+    /** The nonlinear-dynamics analyses the scene lists (analysis/analyses_settings.h). */
+    analysis::AnalysesSettings analyses;
     /** Joints with Wear law = archard (their chosen pressure model inside). */
     std::vector<std::unique_ptr<wear::JointWear>> wear;
     /** The "Wear" section (used when wear is non-empty). */

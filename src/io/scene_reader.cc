@@ -7,6 +7,7 @@
 #include "base/profile.h"
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
+#include "io/analyses_parameters.h"
 #include "io/scene.h"
 #include "mbs/assembly.h"
 

@@ -3,7 +3,7 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
-#include "base/plot.h"
+#include "io/plot.h"
 
 #include <algorithm>
 #include <cmath>

@@ -44,10 +44,10 @@ namespace
   expect_finite(const Json &s)
   {
     for (const char *key : {"max_constraint_violation_m", "energy_balance_relative_error", "wall_time_s"})
-      EXPECT_TRUE(std::isfinite(s.at(key).as_number())) << key;
-    for (const auto &[name, j] : s.at("clearance_joints").members())
+      EXPECT_TRUE(std::isfinite(json_number(s.at(key)))) << key;
+    for (const auto &[name, j] : s.at("clearance_joints").items())
       for (const char *key : {"max_normal_force_N", "max_penetration_m", "max_friction_force_N"})
-        EXPECT_TRUE(std::isfinite(j.at(key).as_number())) << name << " " << key;
+        EXPECT_TRUE(std::isfinite(json_number(j.at(key)))) << name << " " << key;
   }
 
   std::string
@@ -92,16 +92,16 @@ TEST(HardCases, ImpactWithAlmostZeroApproachVelocitySettlesOnHertzStatics)
       const auto &j = s.at("clearance_joints").at("O");
       std::cout << "rtol " << rtol << ": settled penetration " << mean_d << " m (Hertz static " << delta_s
                 << "), force " << mean_f << " N (m g = " << m * g << "), peak force "
-                << j.at("max_normal_force_N").as_number() << " N, impacts " << j.at("impacts").as_number()
-                << ", energy residual " << s.at("energy").at("max_residual_J").as_number() << " J\n";
+                << json_number(j.at("max_normal_force_N")) << " N, impacts " << json_number(j.at("impacts"))
+                << ", energy residual " << json_number(s.at("energy").at("max_residual_J")) << " J\n";
       expect_finite(s);
       EXPECT_NEAR(mean_f, m * g, 1e-4 * m * g);
       EXPECT_NEAR(mean_d, delta_s, 1e-4 * delta_s);
-      EXPECT_LT(j.at("max_normal_force_N").as_number(), 3 * m * g);
-      EXPECT_LT(j.at("max_penetration_m").as_number(), 1e-2 * c);
+      EXPECT_LT(json_number(j.at("max_normal_force_N")), 3 * m * g);
+      EXPECT_LT(json_number(j.at("max_penetration_m")), 1e-2 * c);
       // Energy: the only energy that moves is m g (1e-10 + δ_s) ≈ 2.8e-6 J (fall and
       // settling); the balance must hold to 1e-3 of it.
-      EXPECT_LT(s.at("energy").at("max_residual_J").as_number(), 1e-3 * m * g * delta_s);
+      EXPECT_LT(json_number(s.at("energy").at("max_residual_J")), 1e-3 * m * g * delta_s);
       settled.push_back(mean_d);
     }
   EXPECT_NEAR(settled[0], settled[1], 1e-5 * settled[1]) << "halving the tolerance changes the rest state";
@@ -138,16 +138,16 @@ TEST(HardCases, ContactOnsetExactlyAtAStepBoundary)
       const double delta_max = std::pow(5 * m * v0 * v0 / (4 * K), 0.4);
       const double force_max = K * std::pow(delta_max, 1.5);
       const auto & j         = s.at("clearance_joints").at("O");
-      const double peak      = j.at("max_normal_force_N").as_number();
+      const double peak      = json_number(j.at("max_normal_force_N"));
       std::cout << integrator[0] << " " << integrator[1] << ": peak force " << peak << " N (Hertz " << force_max
-                << "), approach " << j.at("max_penetration_m").as_number() << " m (Hertz " << delta_max
-                << "), impacts " << j.at("impacts").as_number() << ", energy residual "
-                << s.at("energy").at("max_residual_J").as_number() << " J\n";
+                << "), approach " << json_number(j.at("max_penetration_m")) << " m (Hertz " << delta_max
+                << "), impacts " << json_number(j.at("impacts")) << ", energy residual "
+                << json_number(s.at("energy").at("max_residual_J")) << " J\n";
       expect_finite(s);
-      EXPECT_EQ(j.at("impacts").as_number(), 1);
+      EXPECT_EQ(json_number(j.at("impacts")), 1);
       EXPECT_NEAR(peak, force_max, 0.02 * force_max);
-      EXPECT_LT(j.at("max_penetration_m").as_number(), 0.05 * c);
-      EXPECT_LT(s.at("energy").at("max_residual_J").as_number(), 1e-5 * m * g * d);
+      EXPECT_LT(json_number(j.at("max_penetration_m")), 0.05 * c);
+      EXPECT_LT(json_number(s.at("energy").at("max_residual_J")), 1e-5 * m * g * d);
       peaks.push_back(peak);
     }
   EXPECT_NEAR(peaks[0], peaks[1], 1e-4 * peaks[1]) << "RK4: halving the step";
@@ -175,17 +175,17 @@ TEST(HardCases, StickSlipNearZeroSlidingSpeed)
       const Json  s = wearlink::testing::run(scene);
       const auto &j = s.at("clearance_joints").at("O");
       const auto &e = s.at("energy");
-      std::cout << "rtol " << rtol << ": friction dissipation " << e.at("friction_dissipation_J").as_number()
-                << " J, damping " << e.at("damping_dissipation_J").as_number() << " J, peak F_t "
-                << j.at("max_friction_force_N").as_number() << " N, peak F_n " << j.at("max_normal_force_N").as_number()
-                << " N, energy balance " << s.at("energy_balance_relative_error").as_number() << ", steps "
-                << s.at("steps").as_number() << "\n";
+      std::cout << "rtol " << rtol << ": friction dissipation " << json_number(e.at("friction_dissipation_J"))
+                << " J, damping " << json_number(e.at("damping_dissipation_J")) << " J, peak F_t "
+                << json_number(j.at("max_friction_force_N")) << " N, peak F_n " << json_number(j.at("max_normal_force_N"))
+                << " N, energy balance " << json_number(s.at("energy_balance_relative_error")) << ", steps "
+                << json_number(s.at("steps")) << "\n";
       expect_finite(s);
-      EXPECT_LE(j.at("max_friction_force_N").as_number(), 0.5 * j.at("max_normal_force_N").as_number() * (1 + 1e-12));
-      EXPECT_GT(e.at("friction_dissipation_J").as_number(), 0.0);
-      EXPECT_LT(j.at("max_penetration_m").as_number(), 1e-2 * c);
-      EXPECT_LT(s.at("energy_balance_relative_error").as_number(), 1e-3);
-      dissipated.push_back(e.at("friction_dissipation_J").as_number());
+      EXPECT_LE(json_number(j.at("max_friction_force_N")), 0.5 * json_number(j.at("max_normal_force_N")) * (1 + 1e-12));
+      EXPECT_GT(json_number(e.at("friction_dissipation_J")), 0.0);
+      EXPECT_LT(json_number(j.at("max_penetration_m")), 1e-2 * c);
+      EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e-3);
+      dissipated.push_back(json_number(e.at("friction_dissipation_J")));
     }
   EXPECT_NEAR(dissipated[0], dissipated[1], 0.02 * dissipated[1]);
 }
@@ -216,16 +216,16 @@ TEST(HardCases, ExtremeClearancesOnTheNineBar)
           const double K = scene.clearance_joints.at(0)->stiffness();
           const Json   s = wearlink::testing::run(scene);
           std::cout << "c = " << clearance << " m, rtol " << rtol << ": friction dissipation "
-                    << s.at("energy").at("friction_dissipation_J").as_number() << " J, energy balance "
-                    << s.at("energy_balance_relative_error").as_number() << "\n";
+                    << json_number(s.at("energy").at("friction_dissipation_J")) << " J, energy balance "
+                    << json_number(s.at("energy_balance_relative_error")) << "\n";
           expect_finite(s);
-          EXPECT_LT(s.at("max_constraint_violation_m").as_number(), 1e-6);
-          EXPECT_LT(s.at("energy_balance_relative_error").as_number(), 1e-3);
+          EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-6);
+          EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e-3);
           for (const char *name : {"A", "B"})
             {
               const auto & j = s.at("clearance_joints").at(name);
-              const double F = j.at("max_normal_force_N").as_number();
-              const double d = j.at("max_penetration_m").as_number();
+              const double F = json_number(j.at("max_normal_force_N"));
+              const double d = json_number(j.at("max_penetration_m"));
               std::cout << "c = " << clearance << " m, rtol " << rtol << ", joint " << name << ": peak force " << F
                         << " N, max penetration " << d << " m (" << d / clearance << " c; Hertz approach at the peak "
                         << std::pow(F / K, 2.0 / 3.0) << " m)\n";
@@ -235,7 +235,7 @@ TEST(HardCases, ExtremeClearancesOnTheNineBar)
                 EXPECT_LT(d, 1.5 * std::pow(F / K, 2.0 / 3.0));
               peaks.push_back(F);
             }
-          friction.push_back(s.at("energy").at("friction_dissipation_J").as_number());
+          friction.push_back(json_number(s.at("energy").at("friction_dissipation_J")));
         }
       if (clearance >= 1e-4)
         {
@@ -264,14 +264,14 @@ TEST(HardCases, SliderCrankAt5000Rpm)
       const double K = scene.clearance_joints.at(0)->stiffness();
       const Json   s = wearlink::testing::run(scene);
       const auto & j = s.at("clearance_joints").at("B");
-      const double F = j.at("max_normal_force_N").as_number(), d = j.at("max_penetration_m").as_number();
-      const double a = s.at("bodies").at("slider").at("max_abs_ax_m_s2").as_number();
+      const double F = json_number(j.at("max_normal_force_N")), d = json_number(j.at("max_penetration_m"));
+      const double a = json_number(s.at("bodies").at("slider").at("max_abs_ax_m_s2"));
       std::cout << "rtol " << rtol << ": peak force " << F << " N, penetration " << d << " m (" << d / 0.5e-3
                 << " c; Hertz approach " << std::pow(F / K, 2.0 / 3.0) << " m), slider peak " << a
-                << " m/s², energy balance " << s.at("energy_balance_relative_error").as_number() << "\n";
+                << " m/s², energy balance " << json_number(s.at("energy_balance_relative_error")) << "\n";
       expect_finite(s);
-      EXPECT_LT(s.at("max_constraint_violation_m").as_number(), 1e-5);
-      EXPECT_LT(s.at("energy_balance_relative_error").as_number(), 1e-3);
+      EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-5);
+      EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e-3);
       EXPECT_NEAR(d, std::pow(F / K, 2.0 / 3.0), 0.02 * d);
       EXPECT_LT(d, 0.2 * 0.5e-3);
       forces.push_back(F);
@@ -298,16 +298,16 @@ TEST(HardCases, ThousandCycleRun)
          "Integrator/Position tolerance=" + format_number(1e-3 * rtol), "Output/Time series=false"});
       const Json  s = wearlink::testing::run(scene);
       const auto &j = s.at("clearance_joints").at("B");
-      std::cout << "rtol " << rtol << ": " << s.at("steps").as_number() << " steps, " << j.at("impacts").as_number()
-                << " impacts, in contact " << j.at("fraction_in_contact").as_number() << ", constraint violation "
-                << s.at("max_constraint_violation_m").as_number() << " m, energy balance "
-                << s.at("energy_balance_relative_error").as_number() << ", wall " << s.at("wall_time_s").as_number()
+      std::cout << "rtol " << rtol << ": " << json_number(s.at("steps")) << " steps, " << json_number(j.at("impacts"))
+                << " impacts, in contact " << json_number(j.at("fraction_in_contact")) << ", constraint violation "
+                << json_number(s.at("max_constraint_violation_m")) << " m, energy balance "
+                << json_number(s.at("energy_balance_relative_error")) << ", wall " << json_number(s.at("wall_time_s"))
                 << " s\n";
       expect_finite(s);
-      EXPECT_LT(s.at("max_constraint_violation_m").as_number(), 1e-5);
-      EXPECT_LT(s.at("energy_balance_relative_error").as_number(), 1e-3);
-      impacts.push_back(j.at("impacts").as_number() / 1000);
-      contact.push_back(j.at("fraction_in_contact").as_number());
+      EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-5);
+      EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e-3);
+      impacts.push_back(json_number(j.at("impacts")) / 1000);
+      contact.push_back(json_number(j.at("fraction_in_contact")));
     }
   EXPECT_NEAR(impacts[0], impacts[1], 0.05 * impacts[1]);
   EXPECT_NEAR(contact[0], contact[1], 0.05 * contact[1]);

@@ -14,7 +14,9 @@
 //  - analyses not listed are not built and record nothing (effect ledger), and files
 //    appear only for what was listed.
 #include "analysis/channels.h"
-#include "base/plot.h"
+#include "io/json_file.h"
+#include "io/recorded_run_files.h"
+#include "io/plot.h"
 #include "scene_support.h"
 
 #include <deal.II/base/utilities.h>
@@ -37,7 +39,7 @@ namespace
   double
   spread(const Json &summary, const std::string &name)
   {
-    return summary.at("analyses").at("poincare").at("spread").at(name).as_number();
+    return json_number(summary.at("analyses").at("poincare").at("spread").at(name));
   }
 } // namespace
 
@@ -57,13 +59,13 @@ TEST(Analyses, IdealNineBarPoincareSectionCollapsesToOnePoint)
                                "Output/Time series=false"});
   const Json s     = wl::run(scene);
   const Json &p    = s.at("analyses").at("poincare");
-  EXPECT_DOUBLE_EQ(p.at("period_s").as_number(), 0.5);
-  ASSERT_EQ(p.at("n_points").as_number(), 6);
-  EXPECT_LT(s.at("max_constraint_violation_m").as_number(), 1e-9);
-  for (const auto &[name, value] : p.at("spread").members())
+  EXPECT_DOUBLE_EQ(json_number(p.at("period_s")), 0.5);
+  ASSERT_EQ(json_number(p.at("n_points")), 6);
+  EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-9);
+  for (const auto &[name, value] : p.at("spread").items())
     {
       const double bound = name.find("_v") != std::string::npos || name.find("_omega") != std::string::npos ? 1e-8 : 1e-9;
-      EXPECT_LT(value.as_number(), bound) << name;
+      EXPECT_LT(json_number(value), bound) << name;
     }
 }
 
@@ -78,11 +80,11 @@ TEST(Analyses, PoincarePointsAreAtTheExactSectionTimes)
                                "Analyses/List of analyses=poincare",
                                "Analyses/Section phase=0.1234",
                                "Output/Time series=false"});
-  io::SceneAnalyses analyses(scene);
-  io::RunOptions    options;
+  workflows::SceneAnalyses analyses(scene);
+  workflows::RunOptions    options;
   options.observers = analyses.observers();
   scene.analyses    = {}; // the run's own copy would record the same thing twice
-  io::run_scene(scene, options);
+  workflows::run_scene(scene, options);
   const analysis::RecordedRun run = analyses.recorded_run();
   const auto &                pts = run.section.points;
   ASSERT_EQ(pts.n_samples(), 4u);
@@ -111,7 +113,7 @@ TEST(Analyses, ClearanceSectionDoesNotCollapse)
                                "Analyses/Transient=1.0",
                                "Output/Time series=false"});
   const Json s     = wl::run(scene);
-  EXPECT_GE(s.at("analyses").at("poincare").at("n_points").as_number(), 8);
+  EXPECT_GE(json_number(s.at("analyses").at("poincare").at("n_points")), 8);
   EXPECT_GT(spread(s, "A_ex_m"), 0.05 * 0.5e-3);
   EXPECT_GT(spread(s, "B_ex_m"), 0.05 * 0.5e-3);
 }
@@ -144,7 +146,7 @@ TEST(Analyses, UnlistedAnalysesAreNotBuiltAndRecordNothing)
     EXPECT_EQ(ledger.calls("lyapunov estimates"), 0);
     EXPECT_FALSE(s.at("analyses").contains("lyapunov"));
     // The summary prints the same ledger.
-    EXPECT_EQ(s.at("effect_ledger").at("constructed").at("analysis/poincare").as_number(), 1);
+    EXPECT_EQ(json_number(s.at("effect_ledger").at("constructed").at("analysis/poincare")), 1);
   }
   {
     // Only the phase portrait of joint A: its 4 channels, sampled every 2 ms from the
@@ -176,9 +178,9 @@ TEST(Analyses, OutputFilesOnlyForListedAnalyses)
                                  "Analyses/Joints=A",
                                  "Analyses/Transient=0.5",
                                  "Analyses/Lyapunov/Methods=rosenstein"});
-  io::RunOptions options;
+  workflows::RunOptions options;
   options.output_directory = dir;
-  const Json s             = io::run_scene(scene, options);
+  const Json s             = workflows::run_scene(scene, options);
   EXPECT_TRUE(std::filesystem::exists(dir + "/poincare_section.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/lyapunov_A_ex_m_rosenstein.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/analysis_series.csv")); // the Lyapunov series
@@ -186,9 +188,9 @@ TEST(Analyses, OutputFilesOnlyForListedAnalyses)
   EXPECT_FALSE(std::filesystem::exists(dir + "/lyapunov_B_ex_m_rosenstein.csv"));
   const Json &l = s.at("analyses").at("lyapunov");
   ASSERT_EQ(l.size(), 1u);
-  EXPECT_EQ(l[0].at("channel").as_string(), "A_ex_m");
-  EXPECT_EQ(l[0].at("unit").as_string(), "1/s (natural log)");
-  EXPECT_NEAR(l[0].at("exponent_per_s").as_number() * 1e-3, l[0].at("exponent_per_sample").as_number(), 1e-15);
+  EXPECT_EQ(l[0].at("channel").get<std::string>(), "A_ex_m");
+  EXPECT_EQ(l[0].at("unit").get<std::string>(), "1/s (natural log)");
+  EXPECT_NEAR(json_number(l[0].at("exponent_per_s")) * 1e-3, json_number(l[0].at("exponent_per_sample")), 1e-15);
   for (const auto &f : wl::files_in(dir))
     EXPECT_EQ(f.find(".partial-"), std::string::npos) << f; // no temporary left behind
 }
@@ -212,7 +214,7 @@ TEST(Analyses, IdealMechanismHasZeroLyapunovExponent)
   const Json &l    = s.at("analyses").at("lyapunov");
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
-    EXPECT_NEAR(l[k].at("exponent_per_s").as_number() * 0.5, 0.0, 0.05) << l[k].at("method").as_string();
+    EXPECT_NEAR(json_number(l[k].at("exponent_per_s")) * 0.5, 0.0, 0.05) << l[k].at("method").get<std::string>();
 }
 
 TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
@@ -231,9 +233,9 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
                                  "Analyses/Transient=0.5",
                                  "Analyses/Lyapunov/Methods=rosenstein",
                                  "Output/Time series=false"});
-  io::RunOptions options;
+  workflows::RunOptions options;
   options.output_directory = dir;
-  const Json  s            = io::run_scene(scene, options);
+  const Json  s            = workflows::run_scene(scene, options);
   const Json &original     = s.at("analyses");
 
   const analysis::RecordedRun run = io::read_recorded_run(dir, "read back");
@@ -243,7 +245,7 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
   EXPECT_EQ(run.section.points.n_samples(), 6u);
   EXPECT_DOUBLE_EQ(run.driving_period, 0.5);
 
-  const Json again = io::analyse_recorded_run(run, scene.analyses, "");
+  const Json again = workflows::analyse_recorded_run(run, scene.analyses, "");
   for (const char *c : {"A_ex_m", "A_vey_m_s", "rod2_y_m"})
     {
       // Each value is rounded to 5e-12 of itself, so a difference of two moves by at
@@ -251,20 +253,20 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
       double largest = 0.0;
       for (const double v : run.section.points.values[run.section.points.index(c)])
         largest = std::max(largest, std::abs(v));
-      EXPECT_NEAR(again.at("poincare").at("spread").at(c).as_number(),
-                  original.at("poincare").at("spread").at(c).as_number(),
+      EXPECT_NEAR(json_number(again.at("poincare").at("spread").at(c)),
+                  json_number(original.at("poincare").at("spread").at(c)),
                   1e-11 * largest)
         << c;
     }
-  const double l0 = original.at("lyapunov")[0].at("exponent_per_s").as_number();
-  EXPECT_NEAR(again.at("lyapunov")[0].at("exponent_per_s").as_number(), l0, 1e-6 * std::abs(l0));
+  const double l0 = json_number(original.at("lyapunov")[0].at("exponent_per_s"));
+  EXPECT_NEAR(json_number(again.at("lyapunov")[0].at("exponent_per_s")), l0, 1e-6 * std::abs(l0));
 
   // A run that recorded no analyses has nothing to read back.
   const std::string plain = wl::fresh_directory("analyses_read_back_none");
   auto              none  = wl::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.1"});
-  io::RunOptions    o2;
+  workflows::RunOptions    o2;
   o2.output_directory = plain;
-  io::run_scene(none, o2);
+  workflows::run_scene(none, o2);
   EXPECT_THROW(io::read_recorded_run(plain), InputError);
 }
 
@@ -290,10 +292,10 @@ TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
     const Json s     = wl::run(scene);
     const Json &l    = s.at("analyses").at("lyapunov");
     ASSERT_EQ(l.size(), 1u);
-    EXPECT_EQ(l[0].at("method").as_string(), "two-trajectory");
-    EXPECT_EQ(l[0].at("renormalizations").as_number(), 250); // 5 s / 0.02 s
-    EXPECT_GE(l[0].at("exponent_per_s").as_number(), -5.0);
-    EXPECT_LE(l[0].at("exponent_per_s").as_number(), -4.0);
+    EXPECT_EQ(l[0].at("method").get<std::string>(), "two-trajectory");
+    EXPECT_EQ(json_number(l[0].at("renormalizations")), 250); // 5 s / 0.02 s
+    EXPECT_GE(json_number(l[0].at("exponent_per_s")), -5.0);
+    EXPECT_LE(json_number(l[0].at("exponent_per_s")), -4.0);
   }
   {
     auto       scene = wl::scene("params/nine_bar_clearance.prm",
@@ -303,7 +305,7 @@ TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
                                  "Analyses/Lyapunov/Methods=two-trajectory",
                                  "Output/Time series=false"});
     const Json s = wl::run(scene);
-    EXPECT_GT(s.at("analyses").at("lyapunov")[0].at("exponent_per_s").as_number() * 0.5, 1.0);
+    EXPECT_GT(json_number(s.at("analyses").at("lyapunov")[0].at("exponent_per_s")) * 0.5, 1.0);
   }
 }
 
@@ -337,28 +339,28 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
   const auto        p = wl::run_wearlink({"run", wl::source_path("params/nine_bar_clearance.prm"), "--output", plain_dir,
                                    "--quiet", "--set", "Simulation/End time=2.5"});
   ASSERT_EQ(p.exit_status, 0) << p.output;
-  const Json plain  = read_json_file(plain_dir + "/summary.json");
-  const Json before = read_json_file(dir + "/dynamics_before/summary.json");
-  const Json after  = read_json_file(dir + "/dynamics_after/summary.json");
-  EXPECT_EQ(before.at("steps").as_number(), plain.at("steps").as_number());
-  EXPECT_NE(after.at("steps").as_number(), plain.at("steps").as_number());
+  const Json plain  = io::read_json_file(plain_dir + "/summary.json");
+  const Json before = io::read_json_file(dir + "/dynamics_before/summary.json");
+  const Json after  = io::read_json_file(dir + "/dynamics_after/summary.json");
+  EXPECT_EQ(json_number(before.at("steps")), json_number(plain.at("steps")));
+  EXPECT_NE(json_number(after.at("steps")), json_number(plain.at("steps")));
   for (const char *j : {"A", "B"})
     {
       const auto &pj = plain.at("clearance_joints").at(j);
       const auto &bj = before.at("clearance_joints").at(j);
-      EXPECT_EQ(bj.at("impacts").as_number(), pj.at("impacts").as_number()) << j;
-      EXPECT_EQ(bj.at("max_normal_force_N").as_number(), pj.at("max_normal_force_N").as_number()) << j;
+      EXPECT_EQ(json_number(bj.at("impacts")), json_number(pj.at("impacts"))) << j;
+      EXPECT_EQ(json_number(bj.at("max_normal_force_N")), json_number(pj.at("max_normal_force_N"))) << j;
     }
 
-  const Json  summary = read_json_file(dir + "/summary.json");
+  const Json  summary = io::read_json_file(dir + "/summary.json");
   const auto &all     = summary.at("before_after").at("lyapunov");
   ASSERT_EQ(all.size(), 5u); // A, B × wolf, rosenstein, and the simulation's own exponent
   // The two-trajectory exponent runs: separate, at the tight tolerance, the worn one
   // reading the worn profiles back from the output directory.
   const auto &tt = all[4];
-  EXPECT_EQ(tt.at("method").as_string(), "two-trajectory");
-  EXPECT_TRUE(std::isfinite(tt.at("before_per_s").as_number()));
-  EXPECT_TRUE(std::isfinite(tt.at("after_per_s").as_number()));
+  EXPECT_EQ(tt.at("method").get<std::string>(), "two-trajectory");
+  EXPECT_TRUE(std::isfinite(json_number(tt.at("before_per_s"))));
+  EXPECT_TRUE(std::isfinite(json_number(tt.at("after_per_s"))));
   {
     std::ifstream     prm(dir + "/exponent_after/parameters.prm");
     std::stringstream text;
@@ -372,15 +374,15 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
     l.push_back(all[k]);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
-      EXPECT_DOUBLE_EQ(l[k].at("delay_s").as_number(), 0.005);
-      EXPECT_TRUE(std::isfinite(l[k].at("before_per_s").as_number()));
-      EXPECT_TRUE(std::isfinite(l[k].at("after_per_s").as_number()));
+      EXPECT_DOUBLE_EQ(json_number(l[k].at("delay_s")), 0.005);
+      EXPECT_TRUE(std::isfinite(json_number(l[k].at("before_per_s"))));
+      EXPECT_TRUE(std::isfinite(json_number(l[k].at("after_per_s"))));
     }
   EXPECT_EQ(summary.at("before_after").at("delay_scan").size(), 8u);
   for (const char *f : {"before_after.md", "before_after_lyapunov.csv", "dynamics_before/analysis_series.csv",
                         "dynamics_after/poincare_section.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
-  if (gnuplot_available())
+  if (io::gnuplot_available())
     {
       EXPECT_TRUE(std::filesystem::exists(dir + "/before_after_phase_B_x.png"));
     }
@@ -397,8 +399,8 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
     {
       const auto f = dealii::Utilities::split_string_list(line, ',');
       ASSERT_GE(f.size(), 6u);
-      EXPECT_EQ(f[0], l[k].at("channel").as_string());
-      const double b = l[k].at("before_per_s").as_number(), a = l[k].at("after_per_s").as_number();
+      EXPECT_EQ(f[0], l[k].at("channel").get<std::string>());
+      const double b = json_number(l[k].at("before_per_s")), a = json_number(l[k].at("after_per_s"));
       EXPECT_NEAR(std::stod(f[4]), b, 1e-6 * std::abs(b)) << line;
       EXPECT_NEAR(std::stod(f[5]), a, 1e-6 * std::abs(a)) << line;
       ++k;

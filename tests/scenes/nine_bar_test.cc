@@ -85,11 +85,11 @@ TEST(NineBar, IdealConstraintsAndIndependentPositionAnalysis)
     return std::vector<double>{};
   });
   const Json s = wearlink::testing::run(scene, {&sampler});
-  std::cout << "max constraint violation " << s.at("max_constraint_violation_m").as_number()
+  std::cout << "max constraint violation " << json_number(s.at("max_constraint_violation_m"))
             << " m; slider vs loop closure " << max_error << " m over "
             << sampler.times.size() << " samples\n";
   EXPECT_EQ(sampler.times.size(), 501u);
-  EXPECT_LT(s.at("max_constraint_violation_m").as_number(), 1e-10);
+  EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-10);
   EXPECT_LT(max_error, 1e-8);
 }
 
@@ -98,23 +98,23 @@ TEST(NineBar, EnergyBalance)
   {
     auto       scene = wearlink::testing::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.5"});
     const Json s     = wearlink::testing::run(scene);
-    const double err = s.at("energy_balance_relative_error").as_number();
+    const double err = json_number(s.at("energy_balance_relative_error"));
     std::cout << "ideal joints: energy balance relative error " << err << "\n";
     // dopri5 at rtol 1e-8 over ~500 steps: the balance holds to well below 1e-7.
     EXPECT_LT(err, 1e-7);
-    EXPECT_EQ(s.at("energy").at("damping_dissipation_J").as_number(), 0.0);
+    EXPECT_EQ(json_number(s.at("energy").at("damping_dissipation_J")), 0.0);
   }
   {
     auto       scene = wearlink::testing::scene("params/nine_bar_clearance.prm", {"Simulation/End time=0.5"});
     const Json s     = wearlink::testing::run(scene);
-    const double err = s.at("energy_balance_relative_error").as_number();
+    const double err = json_number(s.at("energy_balance_relative_error"));
     const auto & e   = s.at("energy");
     std::cout << "clearance joints: energy balance relative error " << err
-              << "; damping " << e.at("damping_dissipation_J").as_number()
-              << " J, friction " << e.at("friction_dissipation_J").as_number() << " J\n";
+              << "; damping " << json_number(e.at("damping_dissipation_J"))
+              << " J, friction " << json_number(e.at("friction_dissipation_J")) << " J\n";
     EXPECT_LT(err, 1e-3);
-    EXPECT_GT(e.at("friction_dissipation_J").as_number(), 0.0);
-    EXPECT_GT(e.at("damping_dissipation_J").as_number(), 0.0);
+    EXPECT_GT(json_number(e.at("friction_dissipation_J")), 0.0);
+    EXPECT_GT(json_number(e.at("damping_dissipation_J")), 0.0);
   }
 }
 
@@ -172,8 +172,8 @@ TEST(NineBar, ClearanceApproachesIdealJoint)
           }
       errors.push_back(std::sqrt(diff / count) / ideal_rms);
       std::cout << "clearance " << std::setw(8) << c << " m: relative RMS difference of the joint-A "
-                << "force from the ideal reaction " << errors.back() << " (" << s.at("steps").as_number()
-                << " steps, " << s.at("wall_time_s").as_number() << " s)\n";
+                << "force from the ideal reaction " << errors.back() << " (" << json_number(s.at("steps"))
+                << " steps, " << json_number(s.at("wall_time_s")) << " s)\n";
     }
   for (std::size_t k = 1; k < errors.size(); ++k)
     EXPECT_LT(errors[k], errors[k - 1]) << "not converging at clearance index " << k;
@@ -251,15 +251,15 @@ TEST(NineBar, AdaptiveAgreesWithFixedStepAndConverges)
   auto rel = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
   for (const char *j : {"A", "B"})
     {
-      const double fd = ds.at("clearance_joints").at(j).at("max_normal_force_N").as_number();
-      const double fr = rs.at("clearance_joints").at(j).at("max_normal_force_N").as_number();
+      const double fd = json_number(ds.at("clearance_joints").at(j).at("max_normal_force_N"));
+      const double fr = json_number(rs.at("clearance_joints").at(j).at("max_normal_force_N"));
       std::cout << "cycle 1, joint " << j << ": peak normal force dopri5 " << fd << " N, rk4 " << fr << " N\n";
       EXPECT_LT(rel(fd, fr), 0.01);
     }
-  const double ad = ds.at("bodies").at("slider9").at("max_abs_ay_m_s2").as_number();
-  const double ar = rs.at("bodies").at("slider9").at("max_abs_ay_m_s2").as_number();
-  const double qd = ds.at("energy").at("friction_dissipation_J").as_number();
-  const double qr = rs.at("energy").at("friction_dissipation_J").as_number();
+  const double ad = json_number(ds.at("bodies").at("slider9").at("max_abs_ay_m_s2"));
+  const double ar = json_number(rs.at("bodies").at("slider9").at("max_abs_ay_m_s2"));
+  const double qd = json_number(ds.at("energy").at("friction_dissipation_J"));
+  const double qr = json_number(rs.at("energy").at("friction_dissipation_J"));
   std::cout << "cycle 1: slider peak acceleration dopri5 " << ad << ", rk4 " << ar
             << " m/s²; friction dissipation dopri5 " << qd << ", rk4 " << qr << " J\n";
   EXPECT_LT(rel(ad, ar), 0.02);

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "base/effect_ledger.h"
-#include "io/run.h"
+#include "workflows/run.h"
 #include "io/scene.h"
 #include "support/test_support.h"
 
@@ -58,8 +58,8 @@ namespace wearlink::testing
   inline Json
   run(io::Scene &scene, const std::vector<mbs::StepObserver *> &observers = {})
   {
-    io::RunOptions o;
+    workflows::RunOptions o;
     o.observers = observers;
-    return io::run_scene(scene, o);
+    return workflows::run_scene(scene, o);
   }
 } // namespace wearlink::testing

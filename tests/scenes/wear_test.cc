@@ -15,8 +15,8 @@
 //  - Effects: wear off → no wear law, no pressure model, no wear buffers, no gmsh;
 //    wear on with hertz-strip → only that pressure model, still no gmsh.
 #include "contact/clearance_joint.h"
-#include "io/pressure_comparison.h"
-#include "io/wear_run.h"
+#include "workflows/pressure_comparison.h"
+#include "workflows/wear_run.h"
 #include "scene_support.h"
 
 #include <gtest/gtest.h>
@@ -87,11 +87,11 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
   auto scene2 = wearlink::testing::scene("params/nine_bar_wear.prm",
                                          with(short_run, {"Wear/Number of iterations=1", "Wear/Extrapolation factor=1"}));
   FrictionWorkObserver work(scene2.clearance_joints);
-  io::WearRunOptions   o;
+  workflows::WearRunOptions   o;
   o.progress      = false;
   o.final_outputs = false;
   o.observers     = {&work};
-  const auto r    = io::run_wear(scene2, o);
+  const auto r    = workflows::run_wear(scene2, o);
   ASSERT_EQ(r.state.joints.size(), 2u);
   for (unsigned i = 0; i < 2; ++i)
     {
@@ -131,13 +131,13 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
 TEST(Wear, ResumedRunEqualsUninterruptedRun)
 {
   const auto    base = with(short_run, {"Wear/Number of iterations=3", "Wear/Extrapolation factor=2000"});
-  io::WearRunOptions o;
+  workflows::WearRunOptions o;
   o.progress      = false;
   o.final_outputs = false;
 
   auto straight_scene  = wearlink::testing::scene("params/nine_bar_wear.prm", base);
   o.output_directory   = wearlink::testing::fresh_directory("wear_straight");
-  const auto straight  = io::run_wear(straight_scene, o);
+  const auto straight  = workflows::run_wear(straight_scene, o);
   ASSERT_EQ(straight.state.iterations_done, 3u);
 
   // "Killed" after one iteration of three, then resumed by a fresh process state.
@@ -145,14 +145,14 @@ TEST(Wear, ResumedRunEqualsUninterruptedRun)
   {
     auto s       = wearlink::testing::scene("params/nine_bar_wear.prm", base);
     o.stop_after = 1;
-    const auto k = io::run_wear(s, o);
+    const auto k = workflows::run_wear(s, o);
     EXPECT_FALSE(k.finished);
     EXPECT_EQ(k.state.iterations_done, 1u);
   }
   auto s2      = wearlink::testing::scene("params/nine_bar_wear.prm", base);
   o.stop_after = 0;
   o.resume     = true;
-  const auto resumed = io::run_wear(s2, o);
+  const auto resumed = workflows::run_wear(s2, o);
   ASSERT_TRUE(resumed.finished);
   ASSERT_EQ(resumed.state.iterations_done, 3u);
   EXPECT_EQ(resumed.state.revolutions, straight.state.revolutions);
@@ -174,26 +174,26 @@ TEST(Wear, ResumedRunEqualsUninterruptedRun)
 
 TEST(Wear, ResumeRefusesAnotherScene)
 {
-  io::WearRunOptions o;
+  workflows::WearRunOptions o;
   o.progress         = false;
   o.final_outputs    = false;
   o.output_directory = wearlink::testing::fresh_directory("wear_other_scene");
   o.stop_after       = 1;
   {
     auto s = wearlink::testing::scene("params/nine_bar_wear.prm", with(short_run, {"Wear/Number of iterations=2"}));
-    io::run_wear(s, o);
+    workflows::run_wear(s, o);
   }
   auto s = wearlink::testing::scene("params/nine_bar_wear.prm",
                                     with(short_run, {"Wear/Number of iterations=2", "Joint A/Clearance/archard/Pin wear coefficient=1e-12"}));
   o.stop_after = 0;
   o.resume     = true;
-  EXPECT_THROW(io::run_wear(s, o), InputError);
+  EXPECT_THROW(workflows::run_wear(s, o), InputError);
 }
 
 TEST(Effects, WearOffConstructsNoWearCode)
 {
   auto scene = wearlink::testing::scene("params/nine_bar_clearance.prm", {"Simulation/End time=0.05"});
-  EXPECT_FALSE(io::has_wear(scene));
+  EXPECT_FALSE(workflows::has_wear(scene));
   wearlink::testing::run(scene);
   auto &ledger = EffectLedger::instance();
   EXPECT_EQ(ledger.constructions("wear law"), 0);
@@ -207,10 +207,10 @@ TEST(Effects, HertzStripWearConstructsOnlyItsPressureModel)
 {
   auto scene = wearlink::testing::scene("params/nine_bar_wear.prm",
                                         with(short_run, {"Wear/Number of iterations=1"}));
-  io::WearRunOptions o;
+  workflows::WearRunOptions o;
   o.progress      = false;
   o.final_outputs = false;
-  io::run_wear(scene, o);
+  workflows::run_wear(scene, o);
   auto &ledger = EffectLedger::instance();
   EXPECT_EQ(ledger.constructions("wear law", "archard"), 2);
   EXPECT_EQ(ledger.constructions("pressure model", "hertz-strip"), 2);
@@ -231,7 +231,7 @@ TEST(Wear, PressureModelComparisonSameLoadsSimilarVolumes)
 {
   auto       scene = wearlink::testing::scene("params/nine_bar_wear.prm", {"Wear/Pressure evaluation=samples per cycle",
                                                                          "Wear/Load samples per cycle=200"});
-  const auto c     = io::compare_pressure_models(scene, {"hertz-strip", "winkler"}, 0.25);
+  const auto c     = workflows::compare_pressure_models(scene, {"hertz-strip", "winkler"}, 0.25);
   std::cout << c.table();
   ASSERT_EQ(c.rows.size(), 4u); // 2 joints × 2 models
   for (unsigned j = 0; j < 2; ++j)

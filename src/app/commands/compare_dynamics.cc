@@ -4,9 +4,12 @@
 // directory with analyses), e.g. a clearance scene run once with fresh and once with
 // worn profile files. A wear scene with analyses does the same by itself.
 #include "app/command_line.h"
+#include "io/analyses_parameters.h"
+#include "io/json_file.h"
+#include "io/recorded_run_files.h"
 #include "base/exceptions.h"
-#include "io/analyses.h"
-#include "io/dynamics_comparison.h"
+#include "workflows/analyses.h"
+#include "workflows/dynamics_comparison.h"
 
 #include <iostream>
 
@@ -51,12 +54,12 @@ Exit status: 0 success, 2 bad input (missing directory, a run without analyses, 
 channel not recorded in both, a delay below the sample interval).
 )";
 
-    io::ComparedRun
+    workflows::ComparedRun
     read_run(const std::string &dir, const std::string &label)
     {
-      io::ComparedRun r;
+      workflows::ComparedRun r;
       r.run     = io::read_recorded_run(dir, label);
-      r.summary = read_json_file(dir + "/summary.json");
+      r.summary = io::read_json_file(dir + "/summary.json");
       return r;
     }
 
@@ -77,13 +80,13 @@ channel not recorded in both, a delay below the sample interval).
       if (a.positional.size() != 2)
         throw InputError("`wearlink compare-dynamics` needs two run directories, BEFORE and AFTER (given " +
                          std::to_string(a.positional.size()) + "). See --help.");
-      io::ComparedRun before = read_run(a.positional[0], "before: " + a.positional[0]);
-      io::ComparedRun after  = read_run(a.positional[1], "after: " + a.positional[1]);
+      workflows::ComparedRun before = read_run(a.positional[0], "before: " + a.positional[0]);
+      workflows::ComparedRun after  = read_run(a.positional[1], "after: " + a.positional[1]);
 
-      io::DynamicsComparisonSettings s;
+      workflows::DynamicsComparisonSettings s;
       // Joints: the clearance joints whose journal-centre channels both runs recorded.
       if (before.summary.contains("clearance_joints"))
-        for (const auto &[name, value] : before.summary.at("clearance_joints").members())
+        for (const auto &[name, value] : before.summary.at("clearance_joints").items())
           if (before.run.series.has(name + "_ex_m") && after.run.series.has(name + "_ex_m"))
             s.joints.push_back(name);
       if (s.joints.empty())
@@ -131,7 +134,7 @@ channel not recorded in both, a delay below the sample interval).
       s.published_note = a.value("--published-note", "");
 
       const std::string out = a.value("--output", "output/compare_dynamics");
-      const auto        c   = io::compare_dynamics(before, after, s, out);
+      const auto        c   = workflows::compare_dynamics(before, after, s, out);
       std::cout << c.report << "\nwrote " << out << "/before_after.md\n";
       return 0;
     }

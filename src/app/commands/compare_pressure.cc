@@ -4,7 +4,7 @@
 // writes compare_pressure.csv, compare_depth_<J>.csv/.png.
 #include "app/command_line.h"
 #include "base/exceptions.h"
-#include "io/pressure_comparison.h"
+#include "workflows/pressure_comparison.h"
 #include "io/scene.h"
 
 #include <filesystem>
@@ -47,11 +47,11 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       const double cycles = a.number("--cycles", scene.wear_loop.cycles_per_iteration);
       if (!(cycles > 0))
         throw InputError("--cycles must be > 0.");
-      const auto c = io::compare_pressure_models(scene, models, cycles);
+      const auto c = workflows::compare_pressure_models(scene, models, cycles);
       std::cout << c.table();
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_compare");
-      io::write_pressure_comparison(out, c);
+      workflows::write_pressure_comparison(out, c);
       std::cout << "\nwrote " << out << "/compare_pressure.csv\n";
       return 0;
     }

@@ -5,6 +5,7 @@
 // the output directory: summary.json, pressure_<k>_<solver>.csv per load state,
 // fields_<k>.vtu (displacement and stress for ParaView) and the gmsh mesh.
 #include "app/command_line.h"
+#include "base/text.h"
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
@@ -99,14 +100,6 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       prm.leave_subsection();
     }
 
-    std::string
-    fmt(double v, int precision = 4)
-    {
-      std::ostringstream os;
-      os << std::setprecision(precision) << v;
-      return os.str();
-    }
-
     Json
     vec(const std::array<double, 2> &v)
     {
@@ -182,10 +175,10 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       geometry.bore = profile("Bore profile file", R1, "bore");
       geometry.pin  = profile("Pin profile file", R2, "pin");
       if (!(R2 < R1))
-        reader.fail("Pin radius", "the pin must be smaller than the bore ('Bore radius' = " + fmt(R1) + " m)",
+        reader.fail("Pin radius", "the pin must be smaller than the bore ('Bore radius' = " + format_number(R1, 4) + " m)",
                     "Set a pin radius below the bore radius (the radial clearance is their difference).");
       if (!(outer_radius > R1))
-        reader.fail("Bushing outer radius", "it must exceed the bore radius (" + fmt(R1) + " m)");
+        reader.fail("Bushing outer radius", "it must exceed the bore radius (" + format_number(R1, 4) + " m)");
       reader.leave();
       for (auto [section, material] : {std::pair{"Bushing material", &geometry.bushing},
                                        std::pair{"Pin material", &geometry.pin_material}})
@@ -259,8 +252,8 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       const auto &st = model.statistics();
       log << "  " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs << " DoFs, "
                 << st.n_pin_candidates << " pin + " << st.n_bore_candidates
-                << " bore contact candidates; mesh " << fmt(st.mesh_time, 3) << " s, assembly "
-                << fmt(st.assembly_time, 3) << " s\n";
+                << " bore contact candidates; mesh " << format_number(st.mesh_time, 3) << " s, assembly "
+                << format_number(st.assembly_time, 3) << " s\n";
 
       // Hertz line contact (REFERENCE.md §5): internal contact R* = R1 R2/(R1 − R2).
       const double E_star = contact::effective_modulus(geometry.bushing, geometry.pin_material);
@@ -371,17 +364,17 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           h["half_angle_deg"] = b / R2 * 180 / pi;
           h["peak_pressure_Pa"] = p0;
           hertz.push_back(h);
-          log << "  " << std::setw(9) << fmt(F, 6) << "  Hertz      " << std::setw(16) << fmt(b / R2 * 180 / pi)
-                    << "  " << std::setw(15) << fmt(b * 1e3) << "  " << std::setw(12) << fmt(p0 / 1e6) << '\n';
+          log << "  " << std::setw(9) << format_number(F, 6) << "  Hertz      " << std::setw(16) << format_number(b / R2 * 180 / pi, 4)
+                    << "  " << std::setw(15) << format_number(b * 1e3, 4) << "  " << std::setw(12) << format_number(p0 / 1e6, 4) << '\n';
           for (auto [name, results] : {std::pair{"condensed", &condensed}, std::pair{"reference", &reference}})
             if (!results->empty())
               {
                 const auto &r = (*results)[k];
                 log << "  " << std::setw(9) << "" << "  " << std::setw(9) << std::left << name << std::right
-                          << "  " << std::setw(16) << fmt(r.half_angle * 180 / pi) << "  " << std::setw(15)
-                          << fmt(r.half_width * 1e3) << "  " << std::setw(12) << fmt(r.peak_pressure / 1e6)
-                          << "  " << std::setw(16) << fmt(r.equilibrium_relative_residual, 2) << "  "
-                          << std::setw(9) << fmt(r.solve_time * 1e3, 3) << '\n';
+                          << "  " << std::setw(16) << format_number(r.half_angle * 180 / pi, 4) << "  " << std::setw(15)
+                          << format_number(r.half_width * 1e3, 4) << "  " << std::setw(12) << format_number(r.peak_pressure / 1e6, 4)
+                          << "  " << std::setw(16) << format_number(r.equilibrium_relative_residual, 2) << "  "
+                          << std::setw(9) << format_number(r.solve_time * 1e3, 3) << '\n';
               }
           if (!condensed.empty() && !reference.empty())
             {
@@ -395,13 +388,13 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       if (!condensed.empty() && !reference.empty())
         {
           summary["condensed_vs_reference_max_relative_pressure_difference"] = max_difference;
-          const double ratio = solvers_json["reference"]["mean_solve_time_s"].as_number() /
-                               solvers_json["condensed"]["mean_solve_time_s"].as_number();
+          const double ratio = json_number(solvers_json["reference"]["mean_solve_time_s"]) /
+                               json_number(solvers_json["condensed"]["mean_solve_time_s"]);
           summary["reference_to_condensed_time_ratio"] = ratio;
-          log << "\n  condensed vs reference: max |Δp| / p_peak = " << fmt(max_difference, 3)
-                    << "; time per load state " << fmt(solvers_json["condensed"]["mean_solve_time_s"].as_number() * 1e3, 3)
-                    << " ms vs " << fmt(solvers_json["reference"]["mean_solve_time_s"].as_number() * 1e3, 4)
-                    << " ms (ratio " << fmt(ratio, 4) << ")\n";
+          log << "\n  condensed vs reference: max |Δp| / p_peak = " << format_number(max_difference, 3)
+                    << "; time per load state " << format_number(json_number(solvers_json["condensed"]["mean_solve_time_s"]) * 1e3, 3)
+                    << " ms vs " << format_number(json_number(solvers_json["reference"]["mean_solve_time_s"]) * 1e3, 4)
+                    << " ms (ratio " << format_number(ratio, 4) << ")\n";
         }
 
       if (write_vtu)
@@ -420,7 +413,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       summary["ledger"] = ledger;
       summary["mpi_ranks"] = n_ranks;
       if (root)
-        write_file_atomically(out + "/summary.json", summary.dump() + "\n");
+        write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
       log << "\nWrote " << out << "/summary.json\n";
       return 0;
     }

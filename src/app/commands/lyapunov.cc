@@ -6,6 +6,7 @@
 // exponent with its units and the embedding used, and writes a convergence plot (PNG)
 // with the plotted data (CSV) and a JSON summary, all atomically.
 #include "analysis/lyapunov.h"
+#include "base/text.h"
 #include "app/command_line.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
@@ -94,16 +95,6 @@ series, bad option value).
       std::vector<std::string> columns;
     };
 
-    std::string
-    trim(const std::string &s)
-    {
-      const auto a = s.find_first_not_of(" \t\r\"");
-      if (a == std::string::npos)
-        return "";
-      const auto b = s.find_last_not_of(" \t\r\"");
-      return s.substr(a, b - a + 1);
-    }
-
     std::vector<std::string>
     split_row(const std::string &line)
     {
@@ -111,7 +102,7 @@ series, bad option value).
       std::stringstream        ss(line);
       std::string              field;
       while (std::getline(ss, field, ','))
-        out.push_back(trim(field));
+        out.push_back(trim(field, " \t\r\""));
       if (!line.empty() && line.back() == ',')
         out.push_back("");
       return out;
@@ -141,7 +132,7 @@ series, bad option value).
       while (std::getline(in, line))
         {
           ++line_no;
-          if (!trim(line).empty() && trim(line)[0] != '#')
+          if (!trim(line, " \t\r\"").empty() && trim(line, " \t\r\"")[0] != '#')
             break;
         }
       out.columns = split_row(line);
@@ -171,7 +162,7 @@ series, bad option value).
       while (std::getline(in, line))
         {
           ++line_no;
-          const std::string trimmed = trim(line);
+          const std::string trimmed = trim(line, " \t\r\"");
           if (trimmed.empty() || trimmed[0] == '#')
             continue;
           const std::vector<std::string> fields = split_row(line);
@@ -252,14 +243,6 @@ series, bad option value).
       return out.empty() ? "series" : out;
     }
 
-    std::string
-    format(const double v, const int digits = 4)
-    {
-      std::ostringstream s;
-      s << std::setprecision(digits) << v;
-      return s.str();
-    }
-
     int
     run(const std::vector<std::string> &argv)
     {
@@ -336,12 +319,12 @@ series, bad option value).
       const double      dt   = est.sample_interval.value_or(1.0);
       const std::string tu   = est.sample_interval ? " s" : " samples";
       auto              time = [&](const std::size_t samples) {
-        return est.sample_interval ? " (" + format(samples * dt) + " s)" : std::string();
+        return est.sample_interval ? " (" + format_number(samples * dt, 4) + " s)" : std::string();
       };
       std::ostringstream report;
       report << "wearlink lyapunov: '" << file << "', column '" << column << "', "
              << series.values.size() << " samples, dt "
-             << (est.sample_interval ? format(dt, 6) + " s" : std::string("unknown")) << " ("
+             << (est.sample_interval ? format_number(dt, 6) + " s" : std::string("unknown")) << " ("
              << dt_source << ")\n";
       report << "  delay tau            " << emb.embedding.delay << " samples" << time(emb.embedding.delay)
              << "  [" << (emb.delay_choice ? describe(emb.delay_choice->rule) : "given by --delay") << "]\n";
@@ -350,7 +333,7 @@ series, bad option value).
         {
           report << "false nearest neighbours:";
           for (std::size_t d = 0; d < emb.dimension_choice->false_fraction.size(); ++d)
-            report << " m=" << d + 1 << ": " << format(100 * emb.dimension_choice->false_fraction[d], 3)
+            report << " m=" << d + 1 << ": " << format_number(100 * emb.dimension_choice->false_fraction[d], 3)
                    << "%";
           report << (emb.dimension_choice->below_threshold ? "; first below 1%" :
                                                              "; none below 1%, smallest taken");
@@ -368,28 +351,28 @@ series, bad option value).
       if (est.wolf)
         report << "  evolution time       " << est.wolf->evolution_steps << " samples"
                << time(est.wolf->evolution_steps) << ", " << est.wolf->n_segments
-               << " segments, mean replacement angle " << format(est.wolf->mean_replacement_angle, 3)
+               << " segments, mean replacement angle " << format_number(est.wolf->mean_replacement_angle, 3)
                << " rad, " << est.wolf->n_kept_neighbours << " without replacement\n";
       if (est.rosenstein)
         {
           const auto &r = *est.rosenstein;
           report << "  fit region           samples " << r.fit_begin << " .. " << r.fit_end;
           if (est.sample_interval)
-            report << " (" << format(r.fit_begin * dt) << " .. " << format(r.fit_end * dt) << " s)";
-          report << "  [" << r.fit_rule << "; rms residual " << format(r.fit_residual, 3)
+            report << " (" << format_number(r.fit_begin * dt, 4) << " .. " << format_number(r.fit_end * dt, 4) << " s)";
+          report << "  [" << r.fit_rule << "; rms residual " << format_number(r.fit_residual, 3)
                  << "]\n  " << r.n_references << " reference points, horizon "
                  << r.mean_log_divergence.size() - 1 << " samples"
                  << (r.saturated ? ", divergence saturated" : ", no saturation within the horizon")
                  << (r.interpolated ? ", neighbours interpolated between samples" : "") << "\n";
         }
       const double per_sample = est.exponent_per_sample;
-      report << "  largest Lyapunov exponent " << format(est.exponent(), 5) << " "
+      report << "  largest Lyapunov exponent " << format_number(est.exponent(), 5) << " "
              << (est.sample_interval ? "1/s" : "1/sample") << " (natural log";
       if (est.sample_interval)
-        report << "; = " << format(per_sample, 5) << " per sample; = " << format(est.exponent() / std::log(2.0), 5)
+        report << "; = " << format_number(per_sample, 5) << " per sample; = " << format_number(est.exponent() / std::log(2.0), 5)
                << " bits/s)\n";
       else
-        report << ", per sample = per iteration; = " << format(per_sample / std::log(2.0), 5)
+        report << ", per sample = per iteration; = " << format_number(per_sample / std::log(2.0), 5)
                << " bits/sample)\n";
 
       // Outputs: data first (all computed above), each file atomically.
@@ -419,7 +402,7 @@ series, bad option value).
         }
       if (est.wolf)
         summary["evolution_samples"] = est.wolf->evolution_steps;
-      write_file_atomically(stem + ".json", summary.dump() + "\n");
+      write_file_atomically(stem + ".json", summary.dump(2) + "\n");
 
       report << "  wrote " << stem << ".csv, " << stem << ".json"
              << (plotted ? ", " + stem + ".png" : std::string(" (no PNG: gnuplot missing)")) << "\n";

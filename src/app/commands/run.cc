@@ -5,9 +5,9 @@
 // `--print-parameters` prints every entry a scene can have.
 #include "app/command_line.h"
 #include "base/exceptions.h"
-#include "io/run.h"
+#include "workflows/run.h"
 #include "io/scene.h"
-#include "io/wear_run.h"
+#include "workflows/wear_run.h"
 
 #include <filesystem>
 #include <iostream>
@@ -86,7 +86,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       if (a.has("--validate"))
         {
           Eigen::VectorXd q, v;
-          io::assemble_scene(scene, q, v);
+          workflows::assemble_scene(scene, q, v);
           std::cout << "OK: " << file << " — " << scene.mechanism->n_bodies() << " bodies, "
                     << scene.mechanism->n_constraint_equations() << " constraint equations, "
                     << scene.clearance_joints.size() << " clearance joints; assembles at t = "
@@ -94,43 +94,43 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           return 0;
         }
 
-      if (io::has_wear(scene) || a.has("--resume"))
+      if (workflows::has_wear(scene) || a.has("--resume"))
         {
-          if (!io::has_wear(scene))
+          if (!workflows::has_wear(scene))
             throw InputError("--resume continues a wear run, but no clearance joint of " + file +
                              " has a Wear law.");
-          io::WearRunOptions w;
+          workflows::WearRunOptions w;
           w.resume           = a.has("--resume");
           w.output_directory = a.has("--resume") ? a.value("--resume") :
                                                    a.value("--output", "output/" + std::filesystem::path(file).stem().string());
           w.progress         = !a.has("--quiet");
-          const auto r       = io::run_wear(scene, w);
+          const auto r       = workflows::run_wear(scene, w);
           if (!r.before_after_report.empty())
             std::cout << r.before_after_report << "\n";
           std::cout << "wrote " << w.output_directory << "/summary.json (" << r.state.iterations_done
                     << " wear iterations, " << r.state.revolutions << " revolutions, "
-                    << r.timings.at("total") << " s wall)\n";
+                    << r.timings.total << " s wall)\n";
           return 0;
         }
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string());
-      io::RunOptions options;
+      workflows::RunOptions options;
       options.output_directory = out;
       options.progress         = !a.has("--quiet");
-      const Json summary       = io::run_scene(scene, options);
-      std::cout << "wrote " << out << "/summary.json (" << summary.at("steps").as_number()
-                << " steps, " << summary.at("wall_time_s").as_number() << " s wall)\n";
+      const Json summary       = workflows::run_scene(scene, options);
+      std::cout << "wrote " << out << "/summary.json (" << json_number(summary.at("steps"))
+                << " steps, " << json_number(summary.at("wall_time_s")) << " s wall)\n";
       if (summary.contains("analyses") && summary.at("analyses").contains("lyapunov"))
         {
           const Json &l = summary.at("analyses").at("lyapunov");
           for (std::size_t k = 0; k < l.size(); ++k)
             {
-              std::cout << "  largest Lyapunov exponent of " << l[k].at("channel").as_string() << " ("
-                        << l[k].at("method").as_string() << "): " << l[k].at("exponent_per_s").as_number()
+              std::cout << "  largest Lyapunov exponent of " << l[k].at("channel").get<std::string>() << " ("
+                        << l[k].at("method").get<std::string>() << "): " << json_number(l[k].at("exponent_per_s"))
                         << " 1/s (natural log)";
               if (l[k].contains("exponent_per_sample"))
-                std::cout << " = " << l[k].at("exponent_per_sample").as_number() << " per sample of "
-                          << l[k].at("sample_interval_s").as_number() << " s";
+                std::cout << " = " << json_number(l[k].at("exponent_per_sample")) << " per sample of "
+                          << json_number(l[k].at("sample_interval_s")) << " s";
               std::cout << "\n";
             }
         }

@@ -5,7 +5,7 @@
 // go into accuracy.csv, accuracy.md and accuracy_pareto.png.
 #include "app/command_line.h"
 #include "base/exceptions.h"
-#include "io/accuracy_study.h"
+#include "workflows/accuracy_study.h"
 
 #include <filesystem>
 #include <iostream>
@@ -44,7 +44,7 @@ Options:
   --set S/E=V         override a scene entry in every run (repeatable)
   --quiet             no progress lines
 
-)") + io::study_file_help() + R"(
+)") + workflows::study_file_help() + R"(
 Exit status: 0 success (a run that fails is a row of the table), 2 bad input (nothing
 is written), 3 numerical failure.
 )";
@@ -68,12 +68,12 @@ is written), 3 numerical failure.
         throw InputError("`wearlink study accuracy` needs exactly one scene file (given " +
                          std::to_string(a.positional.size()) + "). See `wearlink study --help`.");
       const std::string file = a.positional[0];
-      io::StudyRequest  request;
+      workflows::StudyRequest  request;
       request.overrides = a.all("--set");
       request.quick     = a.has("--quick");
       request.progress  = !a.has("--quiet");
       if (a.has("--study"))
-        io::read_study_file(a.value("--study"), request);
+        workflows::read_study_file(a.value("--study"), request);
       if (a.has("--knobs"))
         {
           request.knobs.clear();
@@ -82,10 +82,10 @@ is written), 3 numerical failure.
             if (!k.empty())
               request.knobs.push_back(k);
         }
-      const auto        study = io::run_accuracy_study(file, request);
+      const auto        study = workflows::run_accuracy_study(file, request);
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_accuracy");
-      io::write_accuracy_study(out, study);
+      workflows::write_accuracy_study(out, study);
       std::cout << study.markdown() << "\nwrote " << out << "/accuracy.csv, accuracy.md, accuracy_pareto.png\n";
       return 0;
     }

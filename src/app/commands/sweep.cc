@@ -23,6 +23,7 @@
 //   sweep.json        the command, timings per member and rank, statuses
 // The two CSV files hold no timings or ranks, so serial and MPI runs give equal files.
 #include "analysis/channels.h"
+#include "base/text.h"
 #include "analysis/recorded_run.h"
 #include "app/command_line.h"
 #include "base/atomic_file.h"
@@ -30,9 +31,10 @@
 #include "base/exceptions.h"
 #include "base/json.h"
 #include "base/parameters.h"
-#include "base/plot.h"
-#include "io/analyses.h"
-#include "io/run.h"
+#include "io/analyses_parameters.h"
+#include "io/plot.h"
+#include "workflows/analyses.h"
+#include "workflows/run.h"
 #include "io/scene.h"
 
 #include <deal.II/base/mpi.h>
@@ -203,27 +205,17 @@ members.csv, bifurcation.png, sweep.json.
     from_json(const Json &j)
     {
       MemberResult m;
-      m.index   = static_cast<std::size_t>(j.at("index").as_number());
-      m.value   = j.at("value").as_number();
-      m.status  = j.at("status").as_string();
-      m.message = j.at("message").as_string();
+      m.index   = static_cast<std::size_t>(json_number(j.at("index")));
+      m.value   = json_number(j.at("value"));
+      m.status  = j.at("status").get<std::string>();
+      m.message = j.at("message").get<std::string>();
       for (std::size_t k = 0; k < j.at("times").size(); ++k)
-        m.times.push_back(j.at("times")[k].as_number());
+        m.times.push_back(json_number(j.at("times")[k]));
       for (std::size_t k = 0; k < j.at("points").size(); ++k)
-        m.points.push_back(j.at("points")[k].as_number());
-      m.wall_time = j.at("wall_time_s").as_number();
-      m.rank      = static_cast<int>(j.at("rank").as_number());
+        m.points.push_back(json_number(j.at("points")[k]));
+      m.wall_time = json_number(j.at("wall_time_s"));
+      m.rank      = static_cast<int>(json_number(j.at("rank")));
       return m;
-    }
-
-    /** @p s without leading and trailing white space (messages end with newlines). */
-    std::string
-    trimmed(const std::string &s)
-    {
-      const auto a = s.find_first_not_of(" \t\r\n");
-      if (a == std::string::npos)
-        return "";
-      return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
     }
 
     std::string
@@ -264,7 +256,7 @@ members.csv, bifurcation.png, sweep.json.
       catch (const std::exception &e)
         {
           m.status  = "invalid";
-          m.message = trimmed(e.what());
+          m.message = trim(e.what());
         }
       if (scene)
         try
@@ -280,9 +272,9 @@ members.csv, bifurcation.png, sweep.json.
             // series are switched off.
             scene->analyses.phase_portrait = scene->analyses.poincare = scene->analyses.lyapunov = false;
             scene->write_time_series                                              = false;
-            io::RunOptions options;
+            workflows::RunOptions options;
             options.observers = {&section};
-            io::run_scene(*scene, options);
+            workflows::run_scene(*scene, options);
             m.status = "ok";
             m.times  = section.section().points.time;
             m.points = section.section().points.values.front();
@@ -290,7 +282,7 @@ members.csv, bifurcation.png, sweep.json.
         catch (const std::exception &e)
           {
             m.status  = "failed";
-            m.message = trimmed(e.what());
+            m.message = trim(e.what());
           }
       m.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return m;
@@ -387,7 +379,7 @@ members.csv, bifurcation.png, sweep.json.
       std::ostringstream diagram, table;
       diagram << std::setprecision(12) << "member,parameter_value,section,time_s," << channel << "\n";
       table << std::setprecision(12) << "member,parameter_value,status,n_points,message\n";
-      PlotSeries points;
+      io::PlotSeries points;
       points.title   = "Poincaré points";
       points.style   = "points";
       points.options = "pt 7 ps 0.4 lc rgb 'black'";
@@ -412,13 +404,13 @@ members.csv, bifurcation.png, sweep.json.
       write_file_atomically(out_dir + "/bifurcation.csv", diagram.str());
       write_file_atomically(out_dir + "/members.csv", table.str());
 
-      PlotSpec plot;
+      io::PlotSpec plot;
       plot.title   = "Bifurcation diagram: " + channel + " at the Poincaré sections vs " + parameter +
                    (n_failed ? " (" + std::to_string(n_failed) + " member(s) failed: " + failed_values + ")" : "");
       plot.x_label = parameter;
       plot.y_label = channel;
       plot.series  = {points};
-      const bool plotted = plot_png(plot, out_dir + "/bifurcation.png");
+      const bool plotted = io::plot_png(plot, out_dir + "/bifurcation.png");
 
       Json summary          = Json::object();
       summary["scene"]      = file;
@@ -445,7 +437,7 @@ members.csv, bifurcation.png, sweep.json.
         }
       summary["sum_of_member_wall_times_s"] = member_time;
       summary["members"]                    = list;
-      write_file_atomically(out_dir + "/sweep.json", summary.dump() + "\n");
+      write_file_atomically(out_dir + "/sweep.json", summary.dump(2) + "\n");
 
       std::cout << "  member  value           status   points\n";
       for (const auto &m : members)

@@ -7,6 +7,7 @@
 // same bifurcation.csv. Asserts nothing about time: the machine's two cores may be
 // shared with other work, which the printed figures then include.
 #include "base/json.h"
+#include "io/json_file.h"
 #include "support/test_support.h"
 
 #include <chrono>
@@ -70,10 +71,10 @@ main()
       for (std::size_t k = 0; k < j.at("members").size(); ++k)
         {
           const auto &m = j.at("members")[k];
-          busy[static_cast<int>(m.at("rank").as_number()) % 2] += m.at("wall_time_s").as_number();
+          busy[static_cast<int>(json_number(m.at("rank"))) % 2] += json_number(m.at("wall_time_s"));
         }
       std::printf("%-8s sum of member times per rank: rank 0 %.2f s, rank 1 %.2f s; command wall %.2f s\n", run,
-                  busy[0], busy[1], j.at("wall_time_s").as_number());
+                  busy[0], busy[1], json_number(j.at("wall_time_s")));
     }
   double load[3] = {0, 0, 0};
   if (std::FILE *f = std::fopen("/proc/loadavg", "r"))

@@ -16,9 +16,9 @@
 //   usage: bench_effect_levels [cycles]
 #include "base/effect_ledger.h"
 #include "base/parameters.h"
-#include "io/run.h"
+#include "workflows/run.h"
 #include "io/scene.h"
-#include "io/wear_run.h"
+#include "workflows/wear_run.h"
 #include "register_all.h"
 #include "support/test_support.h"
 
@@ -52,15 +52,15 @@ namespace
     const auto  wall0 = std::chrono::steady_clock::now();
     const auto  cpu0  = std::clock();
     io::Scene   scene = io::read_scene(testing::source_path(level.file), level.overrides);
-    if (io::has_wear(scene))
+    if (workflows::has_wear(scene))
       {
-        io::WearRunOptions o;
+        workflows::WearRunOptions o;
         o.progress      = false;
         o.final_outputs = false;
-        io::run_wear(scene, o);
+        workflows::run_wear(scene, o);
       }
     else
-      io::run_scene(scene, io::RunOptions());
+      workflows::run_scene(scene, workflows::RunOptions());
     Cost c;
     c.cpu  = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
     c.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -8,7 +8,7 @@
 //   usage: bench_mbs [cycles]
 #include "base/effect_ledger.h"
 #include "base/parameters.h"
-#include "io/run.h"
+#include "workflows/run.h"
 #include "io/scene.h"
 #include "register_all.h"
 #include "support/test_support.h"
@@ -28,7 +28,7 @@ namespace
     EffectLedger::instance().reset();
     io::Scene    scene = io::read_scene(testing::source_path(file), overrides);
     const auto   start = std::clock();
-    Json         s     = io::run_scene(scene, io::RunOptions());
+    Json         s     = workflows::run_scene(scene, workflows::RunOptions());
     s["cpu_time_s"]    = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     return s;
   }
@@ -53,12 +53,12 @@ main(int argc, char **argv)
   const Json i = run("params/nine_bar_ideal.prm", ideal_overrides);
 
   auto row = [](const char *name, const Json &s) {
-    long events = static_cast<long>(s.at("contact_events").as_number());
-    std::printf("%-22s %10.3f %10.3f %10.0f %10.0f %12.0f %8ld %14.3e\n", name, s.at("wall_time_s").as_number(),
-                s.at("cpu_time_s").as_number(),
-                s.at("steps").as_number(), s.at("rejected_steps").as_number(),
-                s.at("rhs_evaluations").as_number(), events,
-                s.at("cpu_time_s").as_number() / s.at("rhs_evaluations").as_number());
+    long events = static_cast<long>(json_number(s.at("contact_events")));
+    std::printf("%-22s %10.3f %10.3f %10.0f %10.0f %12.0f %8ld %14.3e\n", name, json_number(s.at("wall_time_s")),
+                json_number(s.at("cpu_time_s")),
+                json_number(s.at("steps")), json_number(s.at("rejected_steps")),
+                json_number(s.at("rhs_evaluations")), events,
+                json_number(s.at("cpu_time_s")) / json_number(s.at("rhs_evaluations")));
   };
   std::printf("nine-bar press mechanism, %d crank cycles (%.1f s simulated)\n", cycles, end);
   std::printf("%-22s %10s %10s %10s %10s %12s %8s %14s\n", "run", "wall [s]", "cpu [s]", "steps", "rejected",
@@ -66,16 +66,16 @@ main(int argc, char **argv)
   row("clearance A and B", c);
   row("ideal joints", i);
   std::printf("ratio clearance/ideal: wall time %.1f, cpu time %.1f, rhs evaluations %.1f\n",
-              c.at("wall_time_s").as_number() / i.at("wall_time_s").as_number(),
-              c.at("cpu_time_s").as_number() / i.at("cpu_time_s").as_number(),
-              c.at("rhs_evaluations").as_number() / i.at("rhs_evaluations").as_number());
+              json_number(c.at("wall_time_s")) / json_number(i.at("wall_time_s")),
+              json_number(c.at("cpu_time_s")) / json_number(i.at("cpu_time_s")),
+              json_number(c.at("rhs_evaluations")) / json_number(i.at("rhs_evaluations")));
   std::printf("joint A: %.0f impacts, in contact %.1f%%; joint B: %.0f impacts, in contact %.1f%%\n",
-              c.at("clearance_joints").at("A").at("impacts").as_number(),
-              100 * c.at("clearance_joints").at("A").at("fraction_in_contact").as_number(),
-              c.at("clearance_joints").at("B").at("impacts").as_number(),
-              100 * c.at("clearance_joints").at("B").at("fraction_in_contact").as_number());
+              json_number(c.at("clearance_joints").at("A").at("impacts")),
+              100 * json_number(c.at("clearance_joints").at("A").at("fraction_in_contact")),
+              json_number(c.at("clearance_joints").at("B").at("impacts")),
+              100 * json_number(c.at("clearance_joints").at("B").at("fraction_in_contact")));
   std::printf("energy balance relative error: clearance %.2e, ideal %.2e\n",
-              c.at("energy_balance_relative_error").as_number(),
-              i.at("energy_balance_relative_error").as_number());
+              json_number(c.at("energy_balance_relative_error")),
+              json_number(i.at("energy_balance_relative_error")));
   return 0;
 }

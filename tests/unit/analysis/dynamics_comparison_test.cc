@@ -10,8 +10,9 @@
 //  - a run compared with itself gives exactly 1 everywhere and writes the files;
 //  - a channel missing from one run is an InputError before anything is written.
 #include "base/exceptions.h"
-#include "base/plot.h"
-#include "io/dynamics_comparison.h"
+#include "io/analyses_parameters.h"
+#include "io/plot.h"
+#include "workflows/dynamics_comparison.h"
 #include "support/test_support.h"
 #include "unit/analysis/reference_series.h"
 
@@ -68,17 +69,17 @@ TEST(DynamicsComparison, LorenzRunTwiceAsFastHasTwiceTheExponentPerSecond)
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
-      const double b = l[k].at("before_per_s").as_number(), a = l[k].at("after_per_s").as_number();
-      SCOPED_TRACE(l[k].at("method").as_string());
-      std::cout << "  " << l[k].at("method").as_string() << ": before " << b << " 1/s, after " << a
+      const double b = json_number(l[k].at("before_per_s")), a = json_number(l[k].at("after_per_s"));
+      SCOPED_TRACE(l[k].at("method").get<std::string>());
+      std::cout << "  " << l[k].at("method").get<std::string>() << ": before " << b << " 1/s, after " << a
                 << " 1/s, after/before " << a / b << " (expected 2)\n";
       // Each estimate is within 10 % of the reference on Lorenz (lyapunov_test.cc), so the
       // ratio is within about 20 % of 2.
       EXPECT_NEAR(b, lorenz_exponent, 0.15 * lorenz_exponent);
       EXPECT_NEAR(a / b, 2.0, 0.4);
-      EXPECT_DOUBLE_EQ(l[k].at("delay_s").as_number(), 0.1);
-      EXPECT_TRUE(l[k].at("before_resolved").as_bool());
-      EXPECT_TRUE(l[k].at("after_resolved").as_bool());
+      EXPECT_DOUBLE_EQ(json_number(l[k].at("delay_s")), 0.1);
+      EXPECT_TRUE(l[k].at("before_resolved").get<bool>());
+      EXPECT_TRUE(l[k].at("after_resolved").get<bool>());
     }
 }
 
@@ -91,12 +92,12 @@ TEST(DynamicsComparison, SameFlowAtTwoSampleIntervalsGivesTheSameExponentPerSeco
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
-      SCOPED_TRACE(l[k].at("method").as_string());
-      std::cout << "  " << l[k].at("method").as_string() << ": after/before "
-                << l[k].at("after_per_s").as_number() / l[k].at("before_per_s").as_number() << " (expected 1)\n";
-      EXPECT_NEAR(l[k].at("after_per_s").as_number() / l[k].at("before_per_s").as_number(), 1.0, 0.2);
+      SCOPED_TRACE(l[k].at("method").get<std::string>());
+      std::cout << "  " << l[k].at("method").get<std::string>() << ": after/before "
+                << json_number(l[k].at("after_per_s")) / json_number(l[k].at("before_per_s")) << " (expected 1)\n";
+      EXPECT_NEAR(json_number(l[k].at("after_per_s")) / json_number(l[k].at("before_per_s")), 1.0, 0.2);
       // Per sample, the finer run's exponent is half the coarser one's.
-      EXPECT_NEAR(l[k].at("after_per_sample").as_number() / l[k].at("before_per_sample").as_number(), 0.5, 0.1);
+      EXPECT_NEAR(json_number(l[k].at("after_per_sample")) / json_number(l[k].at("before_per_sample")), 0.5, 0.1);
     }
 }
 
@@ -116,17 +117,17 @@ TEST(DynamicsComparison, ARunComparedWithItselfGivesOneEverywhereAndWritesTheFil
         "max_normal_force_N": 1000}}})");
   auto s       = lorenz_settings();
   s.delay_scan = {0.05, 0.1, 0.2};
-  s.published  = parse_published_exponents("A_ex_m: 0.041 0.076", "test");
+  s.published  = io::parse_published_exponents("A_ex_m: 0.041 0.076", "test");
   const std::string dir = wearlink::testing::fresh_directory("dynamics_comparison_self");
   const auto        c   = compare_dynamics(run, run, s, dir);
   const auto &      l   = c.json.at("lyapunov");
   for (std::size_t k = 0; k < l.size(); ++k)
-    EXPECT_EQ(l[k].at("after_per_s").as_number(), l[k].at("before_per_s").as_number());
+    EXPECT_EQ(json_number(l[k].at("after_per_s")), json_number(l[k].at("before_per_s")));
   const auto &scan = c.json.at("delay_scan");
   EXPECT_EQ(scan.size(), 6u); // 3 delays x 2 methods
   for (std::size_t k = 0; k < scan.size(); ++k)
-    EXPECT_EQ(scan[k].at("after_per_s").as_number(), scan[k].at("before_per_s").as_number());
-  EXPECT_DOUBLE_EQ(c.json.at("indicators").at("A_impacts_per_period").at("before").as_number(), 5.0);
+    EXPECT_EQ(json_number(scan[k].at("after_per_s")), json_number(scan[k].at("before_per_s")));
+  EXPECT_DOUBLE_EQ(json_number(c.json.at("indicators").at("A_impacts_per_period").at("before")), 5.0);
   for (const char *f : {"before_after.md", "before_after_lyapunov.csv", "before_after_delay_scan.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
   if (wearlink::gnuplot_available())
@@ -154,12 +155,12 @@ TEST(DynamicsComparison, AChannelMissingFromOneRunIsAnErrorAndWritesNothing)
 
 TEST(PublishedExponents, ParsesPairsAndRejectsMalformedText)
 {
-  const auto p = parse_published_exponents("A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052", "x");
+  const auto p = io::parse_published_exponents("A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052", "x");
   ASSERT_EQ(p.size(), 2u);
   EXPECT_EQ(p[1].channel, "B_ex_m");
   EXPECT_DOUBLE_EQ(p[1].before, 0.030);
   EXPECT_DOUBLE_EQ(p[1].after, 0.052);
-  EXPECT_TRUE(parse_published_exponents("", "x").empty());
+  EXPECT_TRUE(io::parse_published_exponents("", "x").empty());
   for (const char *bad : {"A_ex_m 0.041 0.076", "A_ex_m: 0.041", "A_ex_m: 0.041 0.076 9", ": 1 2", "A: x y"})
-    EXPECT_THROW(parse_published_exponents(bad, "x"), InputError) << bad;
+    EXPECT_THROW(io::parse_published_exponents(bad, "x"), InputError) << bad;
 }

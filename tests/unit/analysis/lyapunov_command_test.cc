@@ -4,7 +4,8 @@
 // and plot; bad input exits with status 2, a message naming the file/option and the
 // allowed values, and leaves no output files.
 #include "base/json.h"
-#include "base/plot.h"
+#include "io/json_file.h"
+#include "io/plot.h"
 #include "support/test_support.h"
 #include "unit/analysis/reference_series.h"
 
@@ -74,8 +75,8 @@ TEST(LyapunovCommand, HenonPerIterationWithOutputs)
   EXPECT_NE(r.output.find("fit region"), std::string::npos) << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/out/lyapunov_x_rosenstein.csv"));
   const wearlink::Json summary = wearlink::read_json_file(dir + "/out/lyapunov_x_rosenstein.json");
-  EXPECT_EQ(summary.at("exponent_unit").as_string(), "1/sample (natural log)");
-  EXPECT_EQ(summary.at("embedding_dimension").as_number(), 2);
+  EXPECT_EQ(summary.at("exponent_unit").get<std::string>(), "1/sample (natural log)");
+  EXPECT_EQ(json_number(summary.at("embedding_dimension")), 2);
   if (wearlink::gnuplot_available())
     {
       EXPECT_TRUE(std::filesystem::exists(dir + "/out/lyapunov_x_rosenstein.png"));

@@ -6,7 +6,7 @@
 //    [M Φqᵀ; Φq 0] (independent path through Eigen's LU) on the nine-bar;
 //  - assembly picks the branch nearest the guess and reports an impossible mechanism.
 #include "base/exceptions.h"
-#include "io/run.h"
+#include "workflows/run.h"
 #include "io/scene.h"
 #include "mbs/assembly.h"
 #include "mbs/mechanism.h"
@@ -90,7 +90,7 @@ TEST(Mechanism, SchurComplementEqualsSaddlePointSolve)
   io::Scene scene = io::read_scene(wearlink::testing::source_path("params/nine_bar_ideal.prm"));
   auto &    mech  = *scene.mechanism;
   Eigen::VectorXd q, v;
-  io::assemble_scene(scene, q, v);
+  workflows::assemble_scene(scene, q, v);
   // Perturb the state off the constraint manifold so that Baumgarte terms matter too.
   q[4] += 1e-4;
   v[7] += 0.1;

@@ -24,6 +24,7 @@
 //    at this tolerance, so the rise is not a matter of d0. With the impacts ×3–4 this is
 //    the seed's "wear strengthens the chaos", measured without an embedding.
 #include "scenes/scene_support.h"
+#include "io/json_file.h"
 
 #include <gtest/gtest.h>
 
@@ -38,7 +39,7 @@ namespace
   double
   indicator(const Json &before_after, const std::string &key, const char *which)
   {
-    return before_after.at("indicators").at(key).at(which).as_number();
+    return json_number(before_after.at("indicators").at(key).at(which));
   }
 
   /** The scan value of @p channel / @p method at delay @p tau [s]. */
@@ -48,9 +49,9 @@ namespace
   {
     const auto &scan = before_after.at("delay_scan");
     for (std::size_t k = 0; k < scan.size(); ++k)
-      if (scan[k].at("channel").as_string() == channel && scan[k].at("method").as_string() == method &&
-          std::abs(scan[k].at("delay_s").as_number() - tau) < 1e-12)
-        return scan[k].at(which).as_number();
+      if (scan[k].at("channel").get<std::string>() == channel && scan[k].at("method").get<std::string>() == method &&
+          std::abs(json_number(scan[k].at("delay_s")) - tau) < 1e-12)
+        return json_number(scan[k].at(which));
     return std::nan("");
   }
 } // namespace
@@ -62,7 +63,7 @@ TEST(NineBarBeforeAfterWear, WornJointsRattleMoreAndExponentsAreComparedAtOneEmb
                                    "--quiet"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   std::printf("%s\n", r.output.c_str());
-  const Json  summary = read_json_file(dir + "/summary.json");
+  const Json  summary = io::read_json_file(dir + "/summary.json");
   const Json &ba      = summary.at("before_after");
 
   for (const std::string j : {"A", "B"})
@@ -92,15 +93,15 @@ TEST(NineBarBeforeAfterWear, WornJointsRattleMoreAndExponentsAreComparedAtOneEmb
   const auto &l = ba.at("lyapunov");
   ASSERT_EQ(l.size(), 5u);
   const auto &tt = l[4];
-  ASSERT_EQ(tt.at("method").as_string(), "two-trajectory");
-  std::printf("two-trajectory exponent of the model: %.4g -> %.4g 1/s (x%.2f)\n", tt.at("before_per_s").as_number(),
-              tt.at("after_per_s").as_number(), tt.at("after_per_s").as_number() / tt.at("before_per_s").as_number());
-  EXPECT_GT(tt.at("after_per_s").as_number(), 1.5 * tt.at("before_per_s").as_number());
+  ASSERT_EQ(tt.at("method").get<std::string>(), "two-trajectory");
+  std::printf("two-trajectory exponent of the model: %.4g -> %.4g 1/s (x%.2f)\n", json_number(tt.at("before_per_s")),
+              json_number(tt.at("after_per_s")), json_number(tt.at("after_per_s")) / json_number(tt.at("before_per_s")));
+  EXPECT_GT(json_number(tt.at("after_per_s")), 1.5 * json_number(tt.at("before_per_s")));
   for (std::size_t k = 0; k < 4; ++k)
     {
-      const double b = l[k].at("before_per_s").as_number(), a = l[k].at("after_per_s").as_number();
-      SCOPED_TRACE(l[k].at("channel").as_string() + " " + l[k].at("method").as_string());
-      EXPECT_DOUBLE_EQ(l[k].at("delay_s").as_number(), 0.005);
+      const double b = json_number(l[k].at("before_per_s")), a = json_number(l[k].at("after_per_s"));
+      SCOPED_TRACE(l[k].at("channel").get<std::string>() + " " + l[k].at("method").get<std::string>());
+      EXPECT_DOUBLE_EQ(json_number(l[k].at("delay_s")), 0.005);
       EXPECT_GT(a / b, 1.0 / 1.5);
       EXPECT_LT(a / b, 1.5);
     }

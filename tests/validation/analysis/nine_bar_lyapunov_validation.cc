@@ -61,19 +61,19 @@ TEST(NineBarLyapunov, JointsAAndBBeforeWear)
               "[per cycle]", "delay", "dim", "seed");
   for (std::size_t k = 0; k < l.size(); ++k)
     {
-      const std::string channel = l[k].at("channel").as_string();
+      const std::string channel = l[k].at("channel").get<std::string>();
       const bool        a       = channel == "A_ex_m";
       std::printf("%-6s %-11s %12.4g %14.4g %12.4g %8.0f %8.0f %10s\n", a ? "A" : "B",
-                  l[k].at("method").as_string().c_str(), l[k].at("exponent_per_s").as_number(),
-                  l[k].at("exponent_per_sample").as_number(), l[k].at("exponent_per_driving_period").as_number(),
-                  l[k].at("delay_samples").as_number(), l[k].at("embedding_dimension").as_number(),
+                  l[k].at("method").get<std::string>().c_str(), json_number(l[k].at("exponent_per_s")),
+                  json_number(l[k].at("exponent_per_sample")), json_number(l[k].at("exponent_per_driving_period")),
+                  json_number(l[k].at("delay_samples")), json_number(l[k].at("embedding_dimension")),
                   a ? "0.041" : "0.030");
-      EXPECT_GT(l[k].at("exponent_per_s").as_number() * driving_period, 1.0) << channel;
+      EXPECT_GT(json_number(l[k].at("exponent_per_s")) * driving_period, 1.0) << channel;
     }
   // Entries are ordered (A wolf, A rosenstein, B wolf, B rosenstein).
   for (const std::size_t k : {0u, 2u})
-    EXPECT_NEAR(l[k].at("exponent_per_s").as_number() / l[k + 1].at("exponent_per_s").as_number(), 1.0, 0.3)
-      << l[k].at("channel").as_string();
+    EXPECT_NEAR(json_number(l[k].at("exponent_per_s")) / json_number(l[k + 1].at("exponent_per_s")), 1.0, 0.3)
+      << l[k].at("channel").get<std::string>();
   std::printf("Units: wearlink gives natural-log rates per second of simulated time, also per 1-ms\n"
               "sample and per 0.5-s crank cycle. The seed prints 0.041 and 0.030 with no unit or\n"
               "sample interval (likely per sample of its series, REFERENCE.md §6), so only the\n"
@@ -88,8 +88,8 @@ TEST(NineBarLyapunov, IdealMechanismIsNotChaotic)
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
-      std::printf("ideal nine-bar, rod2 x, %s: %.3g 1/s (natural log)\n", l[k].at("method").as_string().c_str(),
-                  l[k].at("exponent_per_s").as_number());
-      EXPECT_NEAR(l[k].at("exponent_per_s").as_number() * driving_period, 0.0, 0.05);
+      std::printf("ideal nine-bar, rod2 x, %s: %.3g 1/s (natural log)\n", l[k].at("method").get<std::string>().c_str(),
+                  json_number(l[k].at("exponent_per_s")));
+      EXPECT_NEAR(json_number(l[k].at("exponent_per_s")) * driving_period, 0.0, 0.05);
     }
 }

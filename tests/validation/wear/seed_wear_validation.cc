@@ -12,7 +12,7 @@
 //     measured 6.3 mg lies inside the predicted range for the derived k_D interval.
 //  2. Simulation (§4.2.1, params/nine_bar_wear.prm): the seed reports that joint B
 //     wears more than joint A. Asserted: B's worn volume (pin + bushing) exceeds A's.
-#include "io/wear_run.h"
+#include "workflows/wear_run.h"
 #include "scene_support.h"
 
 #include <gtest/gtest.h>
@@ -34,10 +34,10 @@ TEST(SeedWear, ExperimentPinMassLossOverTheWearCoefficientRange)
       std::ostringstream set;
       set << std::setprecision(17) << "Joint A/Clearance/archard/Pin wear coefficient=" << k;
       auto scene = wearlink::testing::scene("params/nine_bar_experiment.prm", {set.str()});
-      io::WearRunOptions o;
+      workflows::WearRunOptions o;
       o.progress      = false;
       o.final_outputs = false;
-      const auto r    = io::run_wear(scene, o);
+      const auto r    = workflows::run_wear(scene, o);
       ASSERT_EQ(r.state.revolutions, 50000.0);
       const auto &h  = r.state.joints[0].history.back();
       const double mg = h.volume_pin * scene.wear[0]->archard.pin_density * 1e6;
@@ -55,10 +55,10 @@ TEST(SeedWear, ExperimentPinMassLossOverTheWearCoefficientRange)
 TEST(SeedWear, JointBOutWearsJointA)
 {
   auto               scene = wearlink::testing::scene("params/nine_bar_wear.prm");
-  io::WearRunOptions o;
+  workflows::WearRunOptions o;
   o.output_directory = wearlink::testing::fresh_directory("seed_nine_bar_wear");
   o.progress         = true;
-  const auto r       = io::run_wear(scene, o);
+  const auto r       = workflows::run_wear(scene, o);
   ASSERT_EQ(r.state.joints.size(), 2u);
   const auto &a = r.state.joints[0].history.back();
   const auto &b = r.state.joints[1].history.back();

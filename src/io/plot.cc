@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "base/plot.h"
+#include "io/plot.h"
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
@@ -16,7 +16,7 @@
 
 #include <unistd.h>
 
-namespace wearlink
+namespace wearlink::io
 {
   namespace
   {
@@ -164,4 +164,4 @@ namespace wearlink
       return s.str();
     });
   }
-} // namespace wearlink
+} // namespace wearlink::io

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/shadow_trajectory.h"
+#include "workflows/shadow_trajectory.h"
 
 #include "base/exceptions.h"
 #include "io/scene.h"
 
 #include <cmath>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
-  ShadowTrajectory::ShadowTrajectory(const Scene &reference, const ShadowTrajectorySettings &s)
+  ShadowTrajectory::ShadowTrajectory(const io::Scene &reference, const ShadowTrajectorySettings &s)
     : settings(s)
-    , shadow_scene(std::make_unique<Scene>(read_scene(reference.file, reference.overrides)))
+    , shadow_scene(std::make_unique<io::Scene>(io::read_scene(reference.file, reference.overrides)))
     , shadow(std::make_unique<mbs::Simulation>(*shadow_scene->mechanism, shadow_scene->simulation))
     , n_coordinates(reference.mechanism->n_coordinates())
     , next_time(s.begin_time)
@@ -76,4 +76,4 @@ namespace wearlink::io
   {
     return n > 0 ? sum_log / (n * settings.interval) : 0.0;
   }
-} // namespace wearlink::io
+} // namespace wearlink::workflows

@@ -6,6 +6,7 @@
 // scene, with overrides applied).
 #pragma once
 
+#include "analysis/recorded_run.h"
 #include "base/json.h"
 #include "io/scene.h"
 #include "mbs/simulation.h"
@@ -14,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
   struct RunOptions
   {
@@ -40,7 +41,7 @@ namespace wearlink::io
      */
     bool analyses = true;
     /** If set, these analyses instead of the scene's (e.g. without the shadow trajectory). */
-    const AnalysesSettings *analyses_settings = nullptr;
+    const analysis::AnalysesSettings *analyses_settings = nullptr;
     /** If set (and analyses are on), receives what the analyses recorded. */
     analysis::RecordedRun *recorded = nullptr;
   };
@@ -51,9 +52,9 @@ namespace wearlink::io
    * NumericalError for a failure of the numerics.
    */
   Json
-  run_scene(Scene &scene, const RunOptions &options);
+  run_scene(io::Scene &scene, const RunOptions &options);
 
   /** Assemble @p scene at its start time (q, v); throws InputError if impossible. */
   void
-  assemble_scene(const Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v);
-} // namespace wearlink::io
+  assemble_scene(const io::Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v);
+} // namespace wearlink::workflows

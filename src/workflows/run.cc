@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/run.h"
+#include "workflows/run.h"
+
+#include "workflows/analyses.h"
 
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
@@ -15,7 +17,7 @@
 #include <limits>
 #include <sstream>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
   namespace
   {
@@ -43,7 +45,7 @@ namespace wearlink::io
     class Recorder : public mbs::StepObserver
     {
     public:
-      Recorder(Scene &scene, std::ostream *csv, double interval, bool progress)
+      Recorder(io::Scene &scene, std::ostream *csv, double interval, bool progress)
         : scene(scene)
         , mech(*scene.mechanism)
         , csv(csv)
@@ -301,7 +303,7 @@ namespace wearlink::io
            << ',' << y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation] << '\n';
       }
 
-      Scene &                    scene;
+      io::Scene &                    scene;
       mbs::Mechanism &           mech;
       std::ostream *             csv;
       double                     interval;
@@ -318,13 +320,13 @@ namespace wearlink::io
   } // namespace
 
   void
-  assemble_scene(const Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v)
+  assemble_scene(const io::Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v)
   {
     mbs::assemble(*scene.mechanism, scene.start_time, scene.assembly_constraints, {}, q, v);
   }
 
   Json
-  run_scene(Scene &scene, const RunOptions &options)
+  run_scene(io::Scene &scene, const RunOptions &options)
   {
     const auto wall_start = std::chrono::steady_clock::now();
     Eigen::VectorXd q0, v0;
@@ -368,7 +370,7 @@ namespace wearlink::io
       *options.recorded = analyses->recorded_run();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     Json summary = recorder.summary(sim, wall);
-    if (analyses_summary.type() != Json::Type::null)
+    if (analyses_summary.is_null() == false)
       summary["analyses"] = analyses_summary;
     Json ledger  = Json::object();
     for (const auto &[category, entries] : EffectLedger::instance().snapshot())
@@ -387,8 +389,8 @@ namespace wearlink::io
         std::ostringstream prm;
         scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
         write_file_atomically(options.output_directory + "/parameters.prm", prm.str());
-        write_file_atomically(options.output_directory + "/summary.json", summary.dump());
+        write_file_atomically(options.output_directory + "/summary.json", summary.dump(2));
       }
     return summary;
   }
-} // namespace wearlink::io
+} // namespace wearlink::workflows

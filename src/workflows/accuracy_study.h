@@ -29,13 +29,13 @@
 // force/acceleration errors.
 #pragma once
 
+#include "io/scene.h"
 #include <map>
 #include <string>
 #include <vector>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
-  struct Scene;
 
   /** One accuracy knob: the entries it sets and its values, coarse → fine. */
   struct Knob
@@ -79,7 +79,7 @@ namespace wearlink::io
 
   /** The knobs that apply to @p scene (read with the study's base overrides). */
   std::vector<Knob>
-  knobs_for(const Scene &scene, bool quick);
+  knobs_for(const io::Scene &scene, bool quick);
 
   struct StudyRow
   {
@@ -121,4 +121,4 @@ namespace wearlink::io
   /** accuracy.csv, accuracy.md, accuracy_pareto.png into @p dir, each atomically. */
   void
   write_accuracy_study(const std::string &dir, const AccuracyStudy &study);
-} // namespace wearlink::io
+} // namespace wearlink::workflows

@@ -26,15 +26,15 @@
 // own tolerance (io/wear_run.cc).
 #pragma once
 
+#include "io/scene.h"
 #include "mbs/simulation.h"
 
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
-  struct Scene;
 
   /** Settings of ShadowTrajectory. */
   struct ShadowTrajectorySettings
@@ -56,7 +56,7 @@ namespace wearlink::io
   class ShadowTrajectory : public mbs::StepObserver
   {
   public:
-    ShadowTrajectory(const Scene &reference, const ShadowTrajectorySettings &settings);
+    ShadowTrajectory(const io::Scene &reference, const ShadowTrajectorySettings &settings);
     ~ShadowTrajectory();
 
     void
@@ -87,7 +87,7 @@ namespace wearlink::io
     distance(const Eigen::VectorXd &a, const Eigen::VectorXd &b) const;
 
     ShadowTrajectorySettings         settings;
-    std::unique_ptr<Scene>           shadow_scene;
+    std::unique_ptr<io::Scene>           shadow_scene;
     std::unique_ptr<mbs::Simulation> shadow;
     unsigned int                     n_coordinates = 0;
     double                           next_time     = 0.0;
@@ -97,4 +97,4 @@ namespace wearlink::io
     std::vector<double>              running, times;
     Eigen::VectorXd                  y_ref;
   };
-} // namespace wearlink::io
+} // namespace wearlink::workflows

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/pressure_comparison.h"
+#include "workflows/pressure_comparison.h"
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
-#include "base/plot.h"
-#include "io/run.h"
-#include "io/wear_run.h"
+#include "io/plot.h"
+#include "workflows/run.h"
+#include "workflows/wear_run.h"
 #include "wear/archard.h"
 #include "wear/load_recorder.h"
 
@@ -15,7 +15,7 @@
 #include <iomanip>
 #include <sstream>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
   namespace
   {
@@ -41,7 +41,7 @@ namespace wearlink::io
   } // namespace
 
   PressureComparison
-  compare_pressure_models(Scene &scene, const std::vector<std::string> &models, double cycles)
+  compare_pressure_models(io::Scene &scene, const std::vector<std::string> &models, double cycles)
   {
     if (scene.wear.empty())
       throw InputError("compare-pressure: no clearance joint of " + scene.file +
@@ -156,7 +156,7 @@ namespace wearlink::io
       {
         std::ostringstream ds;
         ds << "angle_deg";
-        PlotSpec spec;
+        io::PlotSpec spec;
         spec.title   = "Joint " + j + ": wear depth from the same load history (pin: solid, bushing: dashed)";
         spec.x_label = "angle in the body's own frame [deg]";
         spec.y_label = "wear depth [um]";
@@ -167,8 +167,8 @@ namespace wearlink::io
             {
               rs.push_back(&r);
               ds << ",pin_" << r.model << "_m,bushing_" << r.model << "_m";
-              PlotSeries p{"pin, " + r.model, {}, {}, "lines", "lw 2 lc " + std::to_string(rs.size())};
-              PlotSeries b{"bushing, " + r.model, {}, {}, "lines", "dt 2 lw 2 lc " + std::to_string(rs.size())};
+              io::PlotSeries p{"pin, " + r.model, {}, {}, "lines", "lw 2 lc " + std::to_string(rs.size())};
+              io::PlotSeries b{"bushing, " + r.model, {}, {}, "lines", "dt 2 lw 2 lc " + std::to_string(rs.size())};
               for (std::size_t k = 0; k < r.depth_pin.size(); ++k)
                 {
                   p.x.push_back(360.0 * k / r.depth_pin.size());
@@ -192,7 +192,7 @@ namespace wearlink::io
             ds << '\n';
           }
         write_file_atomically(dir + "/compare_depth_" + j + ".csv", ds.str());
-        plot_png(spec, dir + "/compare_depth_" + j + ".png");
+        io::plot_png(spec, dir + "/compare_depth_" + j + ".png");
       }
   }
-} // namespace wearlink::io
+} // namespace wearlink::workflows

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/dynamics_comparison.h"
+#include "workflows/dynamics_comparison.h"
+#include "base/text.h"
 
 #include "analysis/nonlinear_dynamics.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
-#include "base/plot.h"
+#include "io/plot.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -13,28 +14,18 @@
 #include <iomanip>
 #include <sstream>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
   namespace
   {
-    std::string
-    fmt(const double v, const int digits = 3)
-    {
-      if (!std::isfinite(v))
-        return "–";
-      std::ostringstream s;
-      s << std::setprecision(digits) << v;
-      return s.str();
-    }
-
     /** Delay in samples of a run for a delay @p seconds; InputError below one sample. */
     std::size_t
     delay_samples(const double seconds, const analysis::RecordedRun &run, const std::string &what)
     {
       const double k = std::round(seconds / run.sample_interval);
       if (k < 1.0)
-        throw InputError("The " + what + " delay of " + fmt(seconds, 4) + " s is shorter than the sample interval " +
-                         fmt(run.sample_interval, 4) + " s of the " +
+        throw InputError("The " + what + " delay of " + format_number(seconds, 4) + " s is shorter than the sample interval " +
+                         format_number(run.sample_interval, 4) + " s of the " +
                          (run.label.empty() ? std::string("recorded") : run.label) + " run.");
       return static_cast<std::size_t>(k);
     }
@@ -89,30 +80,30 @@ namespace wearlink::io
     double
     peak_acceleration(const Json &summary, const std::string &b)
     {
-      if (summary.type() != Json::Type::object || !summary.contains("bodies") ||
+      if (summary.is_object() == false || !summary.contains("bodies") ||
           !summary.at("bodies").contains(b))
         return std::numeric_limits<double>::quiet_NaN();
       const Json &x = summary.at("bodies").at(b);
-      return std::max(x.at("max_abs_ax_m_s2").as_number(), x.at("max_abs_ay_m_s2").as_number());
+      return std::max(json_number(x.at("max_abs_ax_m_s2")), json_number(x.at("max_abs_ay_m_s2")));
     }
 
     double
     joint_value(const Json &summary, const std::string &joint, const std::string &key)
     {
-      if (summary.type() != Json::Type::object || !summary.contains("clearance_joints") ||
+      if (summary.is_object() == false || !summary.contains("clearance_joints") ||
           !summary.at("clearance_joints").contains(joint) || !summary.at("clearance_joints").at(joint).contains(key))
         return std::numeric_limits<double>::quiet_NaN();
-      return summary.at("clearance_joints").at(joint).at(key).as_number();
+      return json_number(summary.at("clearance_joints").at(joint).at(key));
     }
 
     /** Number of driving periods a run simulated (NaN if unknown). */
     double
     periods(const ComparedRun &r)
     {
-      if (r.summary.type() != Json::Type::object || !r.summary.contains("simulated_time_s") ||
+      if (r.summary.is_object() == false || !r.summary.contains("simulated_time_s") ||
           !(r.run.driving_period > 0.0))
         return std::numeric_limits<double>::quiet_NaN();
-      return r.summary.at("simulated_time_s").as_number() / r.run.driving_period;
+      return json_number(r.summary.at("simulated_time_s")) / r.run.driving_period;
     }
 
     double
@@ -125,19 +116,19 @@ namespace wearlink::io
     }
 
     /** Phase-portrait panel of one run, on the given axis ranges. */
-    PlotSpec
+    io::PlotSpec
     phase_panel(const analysis::RecordedRun &run,
                 const std::string &          position,
                 const std::string &          velocity,
                 const std::string &          range)
     {
-      PlotSpec p;
+      io::PlotSpec p;
       p.title   = run.label;
       p.x_label = position + " [m]";
       p.y_label = velocity + " [m/s]";
       p.extra   = range + "set key below\n";
-      PlotSeries orbit;
-      orbit.title   = std::to_string(run.series.n_samples()) + " samples every " + fmt(run.sample_interval, 3) + " s";
+      io::PlotSeries orbit;
+      orbit.title   = std::to_string(run.series.n_samples()) + " samples every " + format_number(run.sample_interval, 3) + " s";
       orbit.x       = run.series.values[run.series.index(position)];
       orbit.y       = run.series.values[run.series.index(velocity)];
       orbit.options = "lw 0.4 lc rgb '#707070'";
@@ -145,8 +136,8 @@ namespace wearlink::io
       const auto &s = run.section.points;
       if (s.n_samples() > 0 && s.has(position) && s.has(velocity))
         {
-          PlotSeries points;
-          points.title   = std::to_string(s.n_samples()) + " Poincaré points (one per " + fmt(run.section.period, 3) + " s)";
+          io::PlotSeries points;
+          points.title   = std::to_string(s.n_samples()) + " Poincaré points (one per " + format_number(run.section.period, 3) + " s)";
           points.style   = "points";
           points.options = "pt 7 ps 0.7 lc rgb 'red'";
           points.x       = s.values[s.index(position)];
@@ -180,31 +171,6 @@ namespace wearlink::io
       return "set xrange " + range(x) + "\nset yrange " + range(y) + "\n";
     }
   } // namespace
-
-  std::vector<PublishedExponents>
-  parse_published_exponents(const std::string &text, const std::string &where)
-  {
-    std::vector<PublishedExponents> out;
-    for (const auto &item : dealii::Utilities::split_string_list(text, ','))
-      {
-        if (item.empty())
-          continue;
-        const auto colon = item.find(':');
-        std::istringstream values(colon == std::string::npos ? std::string() : item.substr(colon + 1));
-        PublishedExponents p;
-        p.channel = dealii::Utilities::trim(item.substr(0, colon));
-        std::string rest;
-        if (colon == std::string::npos || p.channel.empty() || !(values >> p.before >> p.after) || (values >> rest) ||
-            !std::isfinite(p.before) || !std::isfinite(p.after))
-          {
-            const std::string what = "'" + item + "' is not 'CHANNEL: BEFORE AFTER' (two numbers, e.g. "
-                                     "'A_ex_m: 0.041 0.076')";
-            throw InputError(where.empty() ? what : where + ": " + what + ".");
-          }
-        out.push_back(p);
-      }
-    return out;
-  }
 
   DynamicsComparison
   compare_dynamics(const ComparedRun &               before,
@@ -245,7 +211,7 @@ namespace wearlink::io
       md << "\n## Contact and motion indicators\n\n| quantity | before | after | after / before |\n|---|---|---|---|\n";
       Json ind = Json::object();
       auto row = [&](const std::string &name, const std::string &key, const double vb, const double va) {
-        md << "| " << name << " | " << fmt(vb, 4) << " | " << fmt(va, 4) << " | " << fmt(va / vb, 3) << " |\n";
+        md << "| " << name << " | " << format_number(vb, 4) << " | " << format_number(va, 4) << " | " << format_number(va / vb, 3) << " |\n";
         Json r      = Json::object();
         r["before"] = vb;
         r["after"]  = va;
@@ -283,7 +249,7 @@ namespace wearlink::io
               continue;
             const std::string range = common_range(b, a, x, v);
             const std::string png   = "before_after_phase_" + j + "_" + d + ".png";
-            if (plot_panels_png({phase_panel(b, x, v, range), phase_panel(a, x, v, range)}, 2,
+            if (io::plot_panels_png({phase_panel(b, x, v, range), phase_panel(a, x, v, range)}, 2,
                                 "Joint " + j + ": journal centre relative to the bushing, " + d +
                                   " direction (phase portrait, Poincaré points in red)",
                                 dir + png, 1600, 750))
@@ -300,7 +266,7 @@ namespace wearlink::io
 
         md << "\n## Largest Lyapunov exponents at one embedding for both runs\n\n"
            << "Natural log, per second; per sample = times the sample interval (before "
-           << fmt(b.sample_interval, 3) << " s, after " << fmt(a.sample_interval, 3) << " s).\n\n"
+           << format_number(b.sample_interval, 3) << " s, after " << format_number(a.sample_interval, 3) << " s).\n\n"
            << "| channel | method | delay [s] | m | before [1/s] | after [1/s] | after / before | before per sample | after per sample";
         const bool have_published = !settings.published.empty();
         if (have_published)
@@ -317,7 +283,7 @@ namespace wearlink::io
                     "after_resolved\n";
         Json                  lle  = Json::array();
         Json                  scan = Json::array();
-        std::vector<PlotSpec> scan_panels;
+        std::vector<io::PlotSpec> scan_panels;
 
         for (const auto &c : channels)
           {
@@ -331,9 +297,9 @@ namespace wearlink::io
             const double delay_s = emb.embedding.delay * b.sample_interval;
             const auto   m       = emb.embedding.dimension;
             const auto   pub     = std::find_if(settings.published.begin(), settings.published.end(),
-                                          [&](const PublishedExponents &p) { return p.channel == c; });
+                                          [&](const analysis::PublishedExponents &p) { return p.channel == c; });
 
-            PlotSpec panel;
+            io::PlotSpec panel;
             panel.title   = c;
             panel.x_label = "embedding delay [s]";
             panel.y_label = "largest Lyapunov exponent [1/s]";
@@ -344,14 +310,14 @@ namespace wearlink::io
               {
                 const auto   eb = estimate(b, c, method, delay_s, m), ea = estimate(a, c, method, delay_s, m);
                 const double ratio = ea.per_s / eb.per_s;
-                md << "| " << c << " | " << analysis::method_name(method) << " | " << fmt(delay_s, 3) << " | " << m
-                   << " | " << fmt(eb.per_s) << (eb.resolved ? "" : " (unresolved)") << " | " << fmt(ea.per_s)
-                   << (ea.resolved ? "" : " (unresolved)") << " | " << fmt(ratio) << " | "
-                   << fmt(eb.per_s * b.sample_interval) << " | " << fmt(ea.per_s * a.sample_interval);
+                md << "| " << c << " | " << analysis::method_name(method) << " | " << format_number(delay_s, 3) << " | " << m
+                   << " | " << format_number(eb.per_s, 3) << (eb.resolved ? "" : " (unresolved)") << " | " << format_number(ea.per_s, 3)
+                   << (ea.resolved ? "" : " (unresolved)") << " | " << format_number(ratio, 3) << " | "
+                   << format_number(eb.per_s * b.sample_interval, 3) << " | " << format_number(ea.per_s * a.sample_interval, 3);
                 if (have_published)
                   {
                     if (pub != settings.published.end())
-                      md << " | " << fmt(pub->before) << " | " << fmt(pub->after) << " | " << fmt(pub->after / pub->before);
+                      md << " | " << format_number(pub->before, 3) << " | " << format_number(pub->after, 3) << " | " << format_number(pub->after / pub->before, 3);
                     else
                       md << " | | |";
                   }
@@ -388,7 +354,7 @@ namespace wearlink::io
                 lle.push_back(r);
 
                 // The scan: the same comparison at other delays (same dimension).
-                PlotSeries sb, sa;
+                io::PlotSeries sb, sa;
                 sb.title   = "before, " + analysis::method_name(method);
                 sa.title   = "after, " + analysis::method_name(method);
                 sb.style   = sa.style = "linespoints";
@@ -436,12 +402,12 @@ namespace wearlink::io
         if (const auto &se = settings.simulation_exponents)
           {
             const double ratio = se->after / se->before;
-            md << "| state (simulation) | two-trajectory | – | – | " << fmt(se->before) << " | " << fmt(se->after)
-               << " | " << fmt(ratio) << " | – | –" << (have_published ? " | | |" : "") << " |\n";
+            md << "| state (simulation) | two-trajectory | – | – | " << format_number(se->before, 3) << " | " << format_number(se->after, 3)
+               << " | " << format_number(ratio, 3) << " | – | –" << (have_published ? " | | |" : "") << " |\n";
             md << "\nThe two-trajectory row is the exponent of the simulated model itself, no embedding: a "
                   "shadow copy d0 = "
-               << fmt(se->separation) << " m away, renormalized every " << fmt(se->interval) << " s, over "
-               << fmt(se->duration) << " s of each state, relative tolerance " << fmt(se->tolerance) << ".\n";
+               << format_number(se->separation, 3) << " m away, renormalized every " << format_number(se->interval, 3) << " s, over "
+               << format_number(se->duration, 3) << " s of each state, relative tolerance " << format_number(se->tolerance, 3) << ".\n";
             csv << "state,two-trajectory,,," << se->before << ',' << se->after << ',' << ratio << ",,,1,1,,\n";
             Json r                   = Json::object();
             r["channel"]             = "state";
@@ -465,12 +431,12 @@ namespace wearlink::io
                   "wear.\n\n| channel | method | delay [s] | before [1/s] | after [1/s] | after / before |\n"
                   "|---|---|---|---|---|---|\n";
             for (std::size_t k = 0; k < scan.size(); ++k)
-              md << "| " << scan[k].at("channel").as_string() << " | " << scan[k].at("method").as_string() << " | "
-                 << fmt(scan[k].at("delay_s").as_number()) << " | " << fmt(scan[k].at("before_per_s").as_number())
-                 << (scan[k].at("before_resolved").as_bool() ? "" : " (unresolved)") << " | "
-                 << fmt(scan[k].at("after_per_s").as_number())
-                 << (scan[k].at("after_resolved").as_bool() ? "" : " (unresolved)") << " | "
-                 << fmt(scan[k].at("after_per_s").as_number() / scan[k].at("before_per_s").as_number()) << " |\n";
+              md << "| " << scan[k].at("channel").get<std::string>() << " | " << scan[k].at("method").get<std::string>() << " | "
+                 << format_number(json_number(scan[k].at("delay_s")), 3) << " | " << format_number(json_number(scan[k].at("before_per_s")), 3)
+                 << (scan[k].at("before_resolved").get<bool>() ? "" : " (unresolved)") << " | "
+                 << format_number(json_number(scan[k].at("after_per_s")), 3)
+                 << (scan[k].at("after_resolved").get<bool>() ? "" : " (unresolved)") << " | "
+                 << format_number(json_number(scan[k].at("after_per_s")) / json_number(scan[k].at("before_per_s")), 3) << " |\n";
           }
         if (!settings.published.empty())
           md << "\nPublished values: " << settings.published_note << "\n";
@@ -482,7 +448,7 @@ namespace wearlink::io
               {
                 write_file_atomically(dir + "before_after_delay_scan.csv", scan_csv.str());
                 files.push_back("before_after_delay_scan.csv");
-                if (plot_panels_png(scan_panels, 2,
+                if (io::plot_panels_png(scan_panels, 2,
                                     "Largest Lyapunov exponent vs embedding delay, before (blue) and after (red) "
                                     "wear; solid rosenstein, dashed wolf; unresolved estimates left out",
                                     dir + "before_after_delay_scan.png", 1600, 700))
@@ -500,4 +466,4 @@ namespace wearlink::io
       }
     return out;
   }
-} // namespace wearlink::io
+} // namespace wearlink::workflows

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace wearlink
+namespace wearlink::io
 {
   struct PlotSeries
   {
@@ -59,4 +59,4 @@ namespace wearlink
   /** True if a gnuplot executable is on PATH. */
   bool
   gnuplot_available();
-} // namespace wearlink
+} // namespace wearlink::io

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/accuracy_study.h"
+#include "workflows/accuracy_study.h"
+#include "base/text.h"
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/parameters.h"
-#include "base/plot.h"
-#include "io/run.h"
+#include "io/plot.h"
+#include "workflows/run.h"
 #include "io/scene.h"
 #include "io/wear_outputs.h"
-#include "io/wear_run.h"
+#include "workflows/wear_run.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,7 +20,7 @@
 #include <set>
 #include <sstream>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
   namespace
   {
@@ -53,7 +54,7 @@ namespace wearlink::io
 
     /** The value of entry "Section/Sub/Entry" of the scene's parameters. */
     std::string
-    entry_of(const Scene &scene, const std::string &path)
+    entry_of(const io::Scene &scene, const std::string &path)
     {
       auto      &prm   = *scene.parameters;
       const auto parts = split(path, '/');
@@ -66,7 +67,7 @@ namespace wearlink::io
     }
 
     double
-    number_of(const Scene &scene, const std::string &path)
+    number_of(const io::Scene &scene, const std::string &path)
     {
       return std::stod(entry_of(scene, path));
     }
@@ -154,7 +155,7 @@ namespace wearlink::io
     class PeakObserver : public mbs::StepObserver
     {
     public:
-      PeakObserver(const Scene &scene, int body)
+      PeakObserver(const io::Scene &scene, int body)
         : scene(scene)
         , body(body)
         , force(scene.clearance_joints.size(), 0.0)
@@ -169,7 +170,7 @@ namespace wearlink::io
         acceleration =
           std::max(acceleration, std::hypot(c.dydt[n + 3 * body], c.dydt[n + 3 * body + 1]));
       }
-      const Scene        &scene;
+      const io::Scene        &scene;
       const int           body;
       std::vector<double> force;
       double              acceleration = 0;
@@ -191,8 +192,8 @@ namespace wearlink::io
       const auto  t0 = std::chrono::steady_clock::now();
       try
         {
-          Scene        scene = read_scene(file, overrides);
-          PeakObserver peaks(scene, response_body(scene));
+          io::Scene        scene = io::read_scene(file, overrides);
+          PeakObserver peaks(scene, io::response_body(scene));
           if (has_wear(scene))
             {
               WearRunOptions w;
@@ -326,9 +327,7 @@ namespace wearlink::io
     {
       if (!std::isfinite(v))
         return "–";
-      std::ostringstream os;
-      os << std::setprecision(precision) << v;
-      return os.str();
+      return format_number(v, precision);
     }
   } // namespace
 
@@ -412,7 +411,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
   }
 
   std::vector<Knob>
-  knobs_for(const Scene &scene, bool quick)
+  knobs_for(const io::Scene &scene, bool quick)
   {
     std::vector<Knob> knobs;
     std::vector<std::string> clearance, wearing, fe;
@@ -612,7 +611,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     // shortening in front of the user's overrides (which win).
     std::vector<std::string> base;
     {
-      Scene scene = read_scene(scene_file, request.overrides);
+      io::Scene scene = io::read_scene(scene_file, request.overrides);
       if (request.quick)
         {
           if (has_wear(scene))
@@ -635,7 +634,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     base.insert(base.end(), request.overrides.begin(), request.overrides.end());
     study.base_overrides = base;
 
-    Scene             scene = read_scene(scene_file, base);
+    io::Scene             scene = io::read_scene(scene_file, base);
     study.wears             = has_wear(scene);
     std::vector<Knob> all   = knobs_for(scene, request.quick);
 
@@ -684,7 +683,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
             auto o = base;
             for (const auto &s : settings_of(*it, parts))
               o.push_back(s);
-            read_scene(scene_file, o);
+            io::read_scene(scene_file, o);
           }
         if (it->values.size() < 2)
           throw InputError("The accuracy knob '" + name + "' needs at least 2 values (the last is the reference).");
@@ -854,7 +853,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
   write_accuracy_study(const std::string &dir, const AccuracyStudy &study)
   {
     make_output_directory(dir);
-    PlotSpec spec;
+    io::PlotSpec spec;
     spec.title   = "What accuracy costs in time: " + study.scene_file + " (reference runs, error 0, not shown)";
     spec.x_label = "wall time of the run [s]";
     spec.y_label = std::string("worst relative error vs the knob's reference") +
@@ -869,7 +868,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     int point_type = 4;
     for (const auto &k : knobs)
       {
-        PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
+        io::PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
         for (const auto &r : study.rows)
           if (r.knob == k && !r.is_reference && r.ok && std::isfinite(r.worst) && r.worst > 0)
             {
@@ -880,13 +879,13 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
           spec.series.push_back(s);
       }
     // The worn volume alone: robust where depths and profiles meet the chaos floor.
-    PlotSpec volume = spec;
+    io::PlotSpec volume = spec;
     volume.series.clear();
     volume.y_label  = "relative error of the worn volume (largest over surfaces and joints)";
     point_type      = 4;
     for (const auto &k : knobs)
       {
-        PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
+        io::PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
         for (const auto &r : study.rows)
           if (r.knob == k && !r.is_reference && r.ok)
             {
@@ -903,8 +902,8 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     write_file_atomically(dir + "/accuracy.csv", study.csv());
     write_file_atomically(dir + "/accuracy.md", study.markdown());
     if (!spec.series.empty())
-      plot_png(spec, dir + "/accuracy_pareto.png");
+      io::plot_png(spec, dir + "/accuracy_pareto.png");
     if (study.wears && !volume.series.empty())
-      plot_png(volume, dir + "/accuracy_pareto_volume.png");
+      io::plot_png(volume, dir + "/accuracy_pareto_volume.png");
   }
-} // namespace wearlink::io
+} // namespace wearlink::workflows

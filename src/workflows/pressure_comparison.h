@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
   struct PressureComparisonRow
   {
@@ -44,9 +44,9 @@ namespace wearlink::io
    * @p models on that history. The scene needs at least one joint with a wear law.
    */
   PressureComparison
-  compare_pressure_models(Scene &scene, const std::vector<std::string> &models, double cycles);
+  compare_pressure_models(io::Scene &scene, const std::vector<std::string> &models, double cycles);
 
   /** Write compare_pressure.csv, compare_depth_<J>.csv and .png into @p dir. */
   void
   write_pressure_comparison(const std::string &dir, const PressureComparison &c);
-} // namespace wearlink::io
+} // namespace wearlink::workflows

@@ -22,6 +22,7 @@
 // unit or sample interval stated) are printed next to ours when the caller passes them.
 #pragma once
 
+#include "analysis/analyses_settings.h"
 #include "analysis/lyapunov.h"
 #include "analysis/recorded_run.h"
 #include "base/json.h"
@@ -30,21 +31,13 @@
 #include <string>
 #include <vector>
 
-namespace wearlink::io
+namespace wearlink::workflows
 {
   /** A recorded run and its summary.json (may be null: then no robust indicators). */
   struct ComparedRun
   {
     analysis::RecordedRun run;
     Json                  summary;
-  };
-
-  /** A published pair of exponents of one channel, before and after wear. */
-  struct PublishedExponents
-  {
-    std::string channel;
-    double      before = 0.0;
-    double      after  = 0.0;
   };
 
   /**
@@ -78,7 +71,7 @@ namespace wearlink::io
     /** Bodies whose peak accelerations are compared (from the summaries). */
     std::vector<std::string> bodies;
     /** Published exponents to print next to ours, and where they come from. */
-    std::vector<PublishedExponents> published;
+    std::vector<analysis::PublishedExponents> published;
     std::string                     published_note;
     /** If set, the two-trajectory exponents of both states (one row "state"). */
     std::optional<SimulationExponents> simulation_exponents;
@@ -104,12 +97,4 @@ namespace wearlink::io
                    const ComparedRun &               after,
                    const DynamicsComparisonSettings &settings,
                    const std::string &               output_directory);
-
-  /**
-   * Parse "CHANNEL: BEFORE AFTER, ..." (e.g. "A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052").
-   * InputError if malformed, its message prefixed with "@p where: " unless @p where is
-   * empty (then it is the bare reason, for a caller that names the entry itself).
-   */
-  std::vector<PublishedExponents>
-  parse_published_exponents(const std::string &text, const std::string &where);
-} // namespace wearlink::io
+} // namespace wearlink::workflows

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Small text helpers used across the tree, defined once: trimming and number
+// formatting for messages, tables and files.
+#pragma once
+
+#include <limits>
+#include <string>
+
+namespace wearlink
+{
+  /** @p s without leading and trailing characters of @p blanks. */
+  std::string
+  trim(const std::string &s, const std::string &blanks = " \t\r\n");
+
+  /**
+   * @p value with @p significant_digits significant digits in the shortest of fixed and
+   * scientific notation (iostream's default). The default digits give back the same
+   * double when read (max_digits10).
+   */
+  std::string
+  format_number(double value, int significant_digits = std::numeric_limits<double>::max_digits10);
+} // namespace wearlink

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "base/timings.h"
+
+namespace wearlink
+{
+  PhaseTimings &
+  PhaseTimings::operator+=(const PhaseTimings &o)
+  {
+    dynamics += o.dynamics;
+    meshing += o.meshing;
+    fe_setup += o.fe_setup;
+    fe_compliance += o.fe_compliance;
+    pressure_evaluation += o.pressure_evaluation;
+    wear_bookkeeping += o.wear_bookkeeping;
+    outputs += o.outputs;
+    before_after_dynamics += o.before_after_dynamics;
+    total += o.total;
+    return *this;
+  }
+
+  Json
+  PhaseTimings::to_json() const
+  {
+    Json t                     = Json::object();
+    t["before/after dynamics"] = before_after_dynamics;
+    t["dynamics"]              = dynamics;
+    t["fe compliance"]         = fe_compliance;
+    t["fe set-up"]             = fe_setup;
+    t["meshing"]               = meshing;
+    t["outputs"]               = outputs;
+    t["pressure evaluation"]   = pressure_evaluation;
+    t["total"]                 = total;
+    t["wear bookkeeping"]      = wear_bookkeeping;
+    return t;
+  }
+} // namespace wearlink

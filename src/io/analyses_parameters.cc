@@ -1,0 +1,412 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/analyses_parameters.h"
+#include "base/text.h"
+
+#include "base/exceptions.h"
+#include "base/numbers.h"
+#include "base/parameters.h"
+#include "io/scene.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace wearlink::io
+{
+  using analysis::AnalysesSettings;
+
+  namespace
+  {
+    namespace P = dealii::Patterns;
+    const char *const analysis_names = "phase-portrait|poincare|lyapunov";
+
+    /** Relative difference below which two driver speeds are the same [-]. */
+    constexpr double same_speed = 1e-12;
+
+  } // namespace
+
+  namespace
+  {
+    double
+    driving_period(const Scene &scene, const AnalysesSettings &settings);
+  }
+
+
+  void
+  declare_analyses(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analyses");
+    declare(prm,
+            "List of analyses",
+            "",
+            P::MultipleSelection(analysis_names),
+            "Nonlinear-dynamics analyses of this run (none by default; an analysis not "
+            "listed is not built and records nothing). phase-portrait: journal-centre "
+            "motion of each analysed clearance joint relative to its bushing (e_x vs de_x/dt, "
+            "e_y vs de_y/dt), PNG + CSV; poincare: one point per driving period from the "
+            "integrator's dense output at the exact section time, CSV + PNG + spread in "
+            "summary.json; lyapunov: largest Lyapunov exponent of the journal-centre "
+            "coordinates (subsection Lyapunov), in 1/s with natural log.",
+            "none");
+    declare(prm,
+            "Joints",
+            "",
+            P::List(P::Anything()),
+            "Clearance joints analysed; empty: every clearance joint of the scene.",
+            "none");
+    declare(prm,
+            "Bodies",
+            "",
+            P::List(P::Anything()),
+            "Bodies whose centre-of-mass motion (x, y, angle) is analysed as well; empty: "
+            "none.",
+            "none");
+    declare(prm,
+            "Driving period",
+            "0",
+            P::Double(0),
+            "Period T of the driving: one Poincaré point per T. 0: 2π/|ω| of the angle "
+            "drivers, which must then all turn at the same rate.",
+            "s");
+    declare(prm,
+            "Section phase",
+            "0",
+            P::Double(0),
+            "Poincaré sections are taken at Start time + Section phase + k T (k = 0, 1, ...); "
+            "must be smaller than T.",
+            "s");
+    declare(prm,
+            "Transient",
+            "0",
+            P::Double(0),
+            "Nothing is recorded for the analyses before Start time + Transient (let the "
+            "initial transient die out).",
+            "s");
+    declare(prm,
+            "Sample interval",
+            "1e-3",
+            P::Double(0),
+            "Sampling interval of the phase-portrait and Lyapunov series (dense output).",
+            "s");
+    prm.enter_subsection("Lyapunov");
+    declare(prm,
+            "Methods",
+            "wolf, rosenstein",
+            P::MultipleSelection("wolf|rosenstein|two-trajectory"),
+            "Estimators of the largest Lyapunov exponent: wolf (Wolf et al. 1985, fixed "
+            "evolution time, the seed's method) and rosenstein (Rosenstein et al. 1993) from "
+            "the journal-centre series; two-trajectory (Benettin et al. 1980) from the "
+            "simulation itself: a shadow copy of the scene a small distance away, "
+            "renormalized every Renormalization interval (doubles the simulation cost). "
+            "Only used if List of analyses has lyapunov.",
+            "none");
+    declare(prm,
+            "Two-trajectory separation",
+            "1e-6",
+            P::Double(0),
+            "two-trajectory: distance d0 of the shadow from the reference (positions, and "
+            "velocities times T/2π); far above the integration tolerance, far below the "
+            "clearance.",
+            "m");
+    declare(prm,
+            "Renormalization interval",
+            "0.02",
+            P::Double(0),
+            "two-trajectory: the shadow is put back at distance d0 this often.",
+            "s");
+    declare(prm,
+            "Directions",
+            "x",
+            P::MultipleSelection("x|y"),
+            "Coordinates analysed (global axes): of each analysed joint's journal centre "
+            "relative to its bushing, and of each analysed body's centre of mass. x is the "
+            "seed's choice (Figs 11–12).",
+            "none");
+    declare(prm,
+            "Delay",
+            "0",
+            P::Integer(0),
+            "Delay of the embedding in samples; 0: from the average mutual information "
+            "(its first minimum; a map-like series: 1; a flow that decorrelates without a "
+            "minimum: the first delay with I <= I(0)/e).",
+            "samples");
+    declare(prm,
+            "Embedding dimension",
+            "0",
+            P::Integer(0, 64),
+            "Embedding dimension; 0: false nearest neighbours (first dimension with < 1 % "
+            "false).",
+            "none");
+    prm.leave_subsection();
+    prm.enter_subsection("Before-after wear");
+    declare(prm,
+            "Delay",
+            "0.005",
+            P::Double(0),
+            "Wear scenes with analyses run the dynamics once with the fresh and once with the "
+            "worn profiles (Start time to End time) and compare them. Their exponents are "
+            "computed at ONE embedding: this delay for both runs (0: the before-wear run's "
+            "mutual-information choice). On clearance-joint series the exponent falls "
+            "roughly like 1/delay, so exponents at different delays are not comparable. "
+            "The default 5 ms is about the automatic choice before wear at 1 ms sampling "
+            "on the nine-bar.",
+            "s");
+    declare(prm,
+            "Embedding dimension",
+            "0",
+            P::Integer(0, 64),
+            "Common embedding dimension; 0: false nearest neighbours on the before-wear run.",
+            "none");
+    declare(prm,
+            "Delay scan",
+            "0.002, 0.005, 0.01, 0.02, 0.05",
+            P::List(P::Double(0)),
+            "The comparison is repeated at these delays (same dimension) to show whether "
+            "after > before holds at every scale; delays below the sample interval are "
+            "skipped; empty: no scan.",
+            "s");
+    declare(prm,
+            "Two-trajectory cycles",
+            "10",
+            P::Double(0),
+            "If Lyapunov/Methods has two-trajectory: the exponent of the simulation itself "
+            "is measured, before and after wear, in two separate runs of this many driving "
+            "periods after Transient (the worn one reads the worn profiles back from the "
+            "output directory), at the tolerance below. The main before/after runs do not "
+            "carry the shadow trajectory.",
+            "driving periods");
+    declare(prm,
+            "Two-trajectory tolerance",
+            "1e-11",
+            P::Double(0),
+            "Relative tolerance of the two-trajectory runs; the scene's position and "
+            "velocity tolerances are scaled by the same factor. The shadow's separation d0 "
+            "(Lyapunov/Two-trajectory separation) must stay far above the integration "
+            "error: on the nine-bar the scene's 1e-6 gives 285–1380 1/s for d0 = 1e-6 … "
+            "1e-9 m (noise), 1e-11 gives 100–145 1/s before and 346–362 1/s after wear.",
+            "none");
+    declare(prm,
+            "Published exponents",
+            "",
+            P::Anything(),
+            "Published exponents printed next to ours, 'CHANNEL: BEFORE AFTER, ...' (e.g. "
+            "the seed's 'A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052'); empty: none.",
+            "as published");
+    declare(prm,
+            "Published note",
+            "",
+            P::Anything(),
+            "Where the published exponents come from and in which units (printed with them).",
+            "none");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  AnalysesSettings
+  parse_analyses(dealii::ParameterHandler &prm, const Scene &scene)
+  {
+    AnalysesSettings s;
+    ParameterReader  r(prm, scene.file);
+    r.enter("Analyses");
+    for (const auto &name : r.get_list("List of analyses"))
+      {
+        if (name == "phase-portrait")
+          s.phase_portrait = true;
+        else if (name == "poincare")
+          s.poincare = true;
+        else if (name == "lyapunov")
+          s.lyapunov = true;
+        else
+          r.fail("List of analyses", "valid analyses are " + std::string(analysis_names));
+      }
+
+    std::vector<std::string> clearance;
+    for (const auto *j : scene.clearance_joints)
+      clearance.push_back(j->name());
+    s.joints = r.get_list("Joints");
+    if (s.joints.empty())
+      s.joints = clearance;
+    for (const auto &j : s.joints)
+      if (std::find(clearance.begin(), clearance.end(), j) == clearance.end())
+        {
+          std::string list;
+          for (const auto &c : clearance)
+            list += (list.empty() ? "" : ", ") + c;
+          r.fail("Joints",
+                 "'" + j + "' is not a clearance joint of this scene; the clearance joints are: " +
+                   (list.empty() ? std::string("none") : list),
+                 "Journal-centre motion exists only for joints with Model = clearance; analyse an "
+                 "ideal mechanism through 'Bodies'.");
+        }
+    s.bodies = r.get_list("Bodies");
+    for (const auto &b : s.bodies)
+      if (scene.mechanism->body_index(b) < 0)
+        r.fail("Bodies", "'" + b + "' is not a body of this scene (ground cannot be analysed)");
+
+    s.given_driving_period = r.get_double("Driving period");
+    s.section_phase        = r.get_double("Section phase");
+    s.transient            = r.get_double("Transient");
+    s.sample_interval      = r.get_double("Sample interval");
+    if ((s.phase_portrait || s.lyapunov) && !(s.sample_interval > 0.0))
+      r.fail("Sample interval", "it must be > 0 s when phase-portrait or lyapunov is listed");
+    if (!(scene.start_time + s.transient < scene.end_time))
+      r.fail("Transient",
+             "it must end before the run does (End time − Start time = " +
+               format_number(scene.end_time - scene.start_time) + " s)");
+
+    r.enter("Lyapunov");
+    for (const auto &m : r.get_list("Methods"))
+      if (m == "two-trajectory")
+        s.two_trajectory = true;
+      else if (const auto method = analysis::parse_method(m))
+        s.methods.push_back(*method);
+    s.two_trajectory_separation = r.get_double("Two-trajectory separation");
+    s.renormalization_interval  = r.get_double("Renormalization interval");
+    if (s.lyapunov && s.two_trajectory && !(s.two_trajectory_separation > 0.0))
+      r.fail("Two-trajectory separation", "it must be > 0 m");
+    if (s.lyapunov && s.two_trajectory && !(s.renormalization_interval > 0.0))
+      r.fail("Renormalization interval", "it must be > 0 s");
+    s.directions = r.get_list("Directions");
+    if (s.lyapunov && s.methods.empty() && !s.two_trajectory)
+      r.fail("Methods", "at least one of wolf, rosenstein, two-trajectory is needed when lyapunov is listed");
+    if (s.lyapunov && s.directions.empty())
+      r.fail("Directions", "at least one of x, y is needed when lyapunov is listed");
+    if (const long d = r.get_integer("Delay"); d > 0)
+      s.delay = static_cast<std::size_t>(d);
+    if (const long m = r.get_integer("Embedding dimension"); m > 0)
+      s.dimension = static_cast<unsigned int>(m);
+    r.leave();
+    r.enter("Before-after wear");
+    s.comparison_delay     = r.get_double("Delay");
+    s.comparison_dimension = static_cast<unsigned int>(r.get_integer("Embedding dimension"));
+    for (const auto &v : r.get_list("Delay scan"))
+      s.delay_scan.push_back(std::stod(v));
+    s.two_trajectory_cycles    = r.get_double("Two-trajectory cycles");
+    s.two_trajectory_tolerance = r.get_double("Two-trajectory tolerance");
+    if (s.lyapunov && s.two_trajectory && !(s.two_trajectory_cycles > 0.0))
+      r.fail("Two-trajectory cycles", "it must be > 0 when Lyapunov/Methods has two-trajectory");
+    if (s.lyapunov && s.two_trajectory && !(s.two_trajectory_tolerance > 0.0))
+      r.fail("Two-trajectory tolerance", "it must be > 0");
+    s.published_exponents = r.get("Published exponents");
+    s.published_note      = r.get("Published note");
+    try
+      {
+        parse_published_exponents(s.published_exponents, "");
+      }
+    catch (const InputError &e)
+      {
+        r.fail("Published exponents", e.message());
+      }
+    r.leave();
+    r.leave();
+    if (s.poincare)
+      driving_period(scene, s); // throws if there is none, or the phase exceeds it
+    if (s.lyapunov && !s.methods.empty() && s.joints.empty() && s.bodies.empty())
+      throw InputError("In " + scene.file +
+                       ", 'Analyses/List of analyses' has lyapunov but there is nothing to "
+                       "analyse: the scene has no clearance joints and 'Analyses/Bodies' is empty.");
+    return s;
+  }
+
+  namespace
+  {
+    /** The driving period of @p scene under @p s [s], or why there is none. */
+    struct PeriodFinding
+    {
+      double      period = 0.0;
+      std::string problem; ///< empty if period is valid
+    };
+
+    PeriodFinding
+    find_driving_period(const Scene &scene, const AnalysesSettings &s)
+    {
+      PeriodFinding f;
+      f.period = s.given_driving_period;
+      if (!(f.period > 0.0))
+        {
+          std::vector<double> speeds;
+          std::string         names;
+          for (const auto d : scene.drivers)
+            {
+              const std::string &name = scene.mechanism->get_constraints()[d]->name;
+              scene.parameters->enter_subsection("Joint " + name);
+              const double omega = scene.parameters->get_double("Angular velocity");
+              scene.parameters->leave_subsection();
+              names += (names.empty() ? "" : ", ") + name + " " + format_number(omega) + " rad/s";
+              if (omega != 0.0)
+                speeds.push_back(std::abs(omega));
+            }
+          if (speeds.empty())
+            {
+              f.problem = "In " + scene.file +
+                          ", the driving period is needed (Poincaré sections, sweeps, wear cycles) but the "
+                          "scene has no turning angle driver" +
+                          (names.empty() ? std::string() : " (" + names + ")") +
+                          ". Set 'Analyses/Driving period' (s), or for a wear run 'Wear/Cycle period' (s).";
+              return f;
+            }
+          for (const double w : speeds)
+            if (std::abs(w - speeds.front()) > same_speed * speeds.front())
+              {
+                f.problem = "In " + scene.file + ", the angle drivers turn at different rates (" + names +
+                            "), so their common period is not obvious. Set 'Analyses/Driving period' (s) to "
+                            "it (for a wear run: 'Wear/Cycle period').";
+                return f;
+              }
+          f.period = numbers::two_pi / speeds.front();
+        }
+      if (!(s.section_phase < f.period))
+        f.problem = "In " + scene.file + ", 'Analyses/Section phase' is " + format_number(s.section_phase, 6) +
+                    " s; it must be smaller than the driving period (" + format_number(f.period, 6) + " s).";
+      return f;
+    }
+
+    double
+    driving_period(const Scene &scene, const AnalysesSettings &s)
+    {
+      const auto f = find_driving_period(scene, s);
+      if (!f.problem.empty())
+        throw InputError(f.problem);
+      return f.period;
+    }
+  } // namespace
+
+  double
+  driving_period(const Scene &scene)
+  {
+    return driving_period(scene, scene.analyses);
+  }
+
+  double
+  driving_period_if_known(const Scene &scene)
+  {
+    const auto f = find_driving_period(scene, scene.analyses);
+    return f.problem.empty() ? f.period : 0.0;
+  }
+
+  std::vector<analysis::PublishedExponents>
+  parse_published_exponents(const std::string &text, const std::string &where)
+  {
+    std::vector<analysis::PublishedExponents> out;
+    for (const auto &item : dealii::Utilities::split_string_list(text, ','))
+      {
+        if (item.empty())
+          continue;
+        const auto colon = item.find(':');
+        std::istringstream values(colon == std::string::npos ? std::string() : item.substr(colon + 1));
+        analysis::PublishedExponents p;
+        p.channel = dealii::Utilities::trim(item.substr(0, colon));
+        std::string rest;
+        if (colon == std::string::npos || p.channel.empty() || !(values >> p.before >> p.after) || (values >> rest) ||
+            !std::isfinite(p.before) || !std::isfinite(p.after))
+          {
+            const std::string what = "'" + item + "' is not 'CHANNEL: BEFORE AFTER' (two numbers, e.g. "
+                                     "'A_ex_m: 0.041 0.076')";
+            throw InputError(where.empty() ? what : where + ": " + what + ".");
+          }
+        out.push_back(p);
+      }
+    return out;
+  }
+
+} // namespace wearlink::io

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/recorded_run_files.h"
+#include "io/json_file.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace wearlink::io
+{
+  void
+  write_sampled_csv(const analysis::SampledChannels &s, const std::string &path, const bool with_index)
+  {
+    std::ostringstream csv;
+    csv << std::setprecision(12);
+    if (with_index)
+      csv << "section,";
+    csv << "time_s";
+    for (const auto &n : s.names)
+      csv << ',' << n;
+    csv << '\n';
+    for (std::size_t k = 0; k < s.n_samples(); ++k)
+      {
+        if (with_index)
+          csv << k << ',';
+        csv << s.time[k];
+        for (const auto &v : s.values)
+          csv << ',' << v[k];
+        csv << '\n';
+      }
+    write_file_atomically(path, csv.str());
+  }
+
+  namespace
+  {
+    /** The unit of a channel from its name's suffix (analysis/channels.h). */
+    std::string
+    unit_of(const std::string &name)
+    {
+      for (const auto &[suffix, unit] : std::vector<std::pair<std::string, std::string>>{
+             {"_rad_s", "rad/s"}, {"_m_s", "m/s"}, {"_rad", "rad"}, {"_m", "m"}})
+        if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+          return unit;
+      return "";
+    }
+
+    /** A CSV written by write_sampled_csv(); @p skip leading columns before time_s. */
+    analysis::SampledChannels
+    read_sampled_csv(const std::string &path, const std::size_t skip)
+    {
+      std::ifstream in(path);
+      if (!in)
+        throw InputError("Cannot read the recorded run file '" + path + "'.");
+      analysis::SampledChannels s;
+      std::string               line;
+      std::getline(in, line);
+      const auto header = dealii::Utilities::split_string_list(line, ',');
+      if (header.size() < skip + 1 || header[skip] != "time_s")
+        throw InputError("'" + path + "' is not a recorded series of wearlink (no time_s column).");
+      for (std::size_t c = skip + 1; c < header.size(); ++c)
+        {
+          s.names.push_back(header[c]);
+          s.units.push_back(unit_of(header[c]));
+        }
+      s.values.assign(s.names.size(), {});
+      std::size_t line_no = 1;
+      while (std::getline(in, line))
+        {
+          ++line_no;
+          if (line.empty())
+            continue;
+          const auto fields = dealii::Utilities::split_string_list(line, ',');
+          if (fields.size() != header.size())
+            throw InputError("'" + path + "', line " + std::to_string(line_no) + ": " +
+                             std::to_string(fields.size()) + " fields, the header has " +
+                             std::to_string(header.size()) + ".");
+          s.time.push_back(std::stod(fields[skip]));
+          for (std::size_t c = 0; c < s.names.size(); ++c)
+            s.values[c].push_back(std::stod(fields[skip + 1 + c]));
+        }
+      return s;
+    }
+  } // namespace
+
+  analysis::RecordedRun
+  read_recorded_run(const std::string &output_directory, const std::string &label)
+  {
+    const std::string dir     = output_directory + "/";
+    const Json        summary = io::read_json_file(dir + "summary.json");
+    if (!summary.contains("analyses"))
+      throw InputError("The run in '" + output_directory +
+                       "' recorded no analyses ('Analyses/List of analyses' was empty).");
+    const Json &          a = summary.at("analyses");
+    analysis::RecordedRun run;
+    run.label = label;
+    if (a.contains("driving_period_s"))
+      run.driving_period = json_number(a.at("driving_period_s"));
+    if (a.contains("series_sample_interval_s"))
+      {
+        run.sample_interval = json_number(a.at("series_sample_interval_s"));
+        run.series          = read_sampled_csv(dir + "analysis_series.csv", 0);
+      }
+    if (a.contains("poincare"))
+      {
+        run.section.period     = json_number(a.at("poincare").at("period_s"));
+        run.section.first_time = json_number(a.at("poincare").at("first_time_s"));
+        run.section.points     = read_sampled_csv(dir + "poincare_section.csv", 1);
+      }
+    return run;
+  }
+} // namespace wearlink::io

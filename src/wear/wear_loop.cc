@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "wear/wear_loop.h"
+
+#include "base/exceptions.h"
+
+#include <algorithm>
+
+namespace wearlink::wear
+{
+  namespace
+  {
+    double
+    max_of(const std::vector<double> &v)
+    {
+      return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+    }
+  } // namespace
+
+  WearLoop::WearLoop(const WearLoopSettings &               settings,
+                     std::vector<WearingJoint>              wearing,
+                     std::vector<contact::ClearanceJoint *> clearance_joints,
+                     const double                           cycle_period,
+                     AdvanceDynamics                        advance)
+    : settings(settings)
+    , wearing(std::move(wearing))
+    , clearance_joints(std::move(clearance_joints))
+    , period(cycle_period)
+    , advance(std::move(advance))
+  {}
+
+  void
+  WearLoop::start(const double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0, const std::string &fingerprint)
+  {
+    const auto n         = q0.size();
+    st                   = WearState();
+    st.fingerprint       = fingerprint;
+    st.time              = t0;
+    st.state             = Eigen::VectorXd::Zero(2 * n + mbs::MechanismOde::n_quadratures);
+    st.state.head(n)     = q0;
+    st.state.segment(n, n) = v0;
+    st.modes.assign(2 * clearance_joints.size(), 0.0);
+    for (const auto &w : wearing)
+      {
+        JointWearState js;
+        js.name         = w.joint->name();
+        js.initial_bore = js.bore = js.meshed_bore = w.joint->get_description().geometry.bore;
+        js.initial_pin = js.pin = js.meshed_pin = w.joint->get_description().geometry.pin;
+        st.joints.push_back(std::move(js));
+      }
+    update_clearance_model();
+  }
+
+  void
+  WearLoop::resume(WearState state, const std::string &where)
+  {
+    bool match = state.joints.size() == wearing.size() && state.modes.size() == 2 * clearance_joints.size();
+    for (unsigned int i = 0; match && i < wearing.size(); ++i)
+      match = state.joints[i].name == wearing[i].joint->name() &&
+              state.joints[i].bore.n_points() == wearing[i].joint->get_description().geometry.bore.n_points();
+    if (!match)
+      throw InputError("Cannot resume from '" + where + "': its joints do not match the scene's wearing joints.");
+    st = std::move(state);
+    // The pressure models get the geometry they last meshed, which may lag the profiles
+    // by up to Remesh interval − 1 iterations.
+    for (unsigned int i = 0; i < wearing.size(); ++i)
+      {
+        wearing[i].joint->set_profiles(st.joints[i].bore, st.joints[i].pin);
+        wearing[i].wear->model->update_geometry(geometry(i, st.joints[i].meshed_bore, st.joints[i].meshed_pin));
+      }
+  }
+
+  bool
+  WearLoop::finished() const
+  {
+    const bool target_reached = settings.extrapolation == Extrapolation::adaptive &&
+                                st.revolutions >= settings.target_revolutions * (1 - 1e-12);
+    return st.iterations_done >= settings.n_iterations || target_reached;
+  }
+
+  void
+  WearLoop::iterate(const std::vector<mbs::StepObserver *> &extra_observers)
+  {
+    const double t_start    = st.time;
+    const auto   loads      = record_loads(extra_observers, t_start + settings.cycles_per_iteration * period);
+    const auto   increments = archard_increments(*loads, t_start);
+    Stopwatch    bookkeeping;
+    const double factor = extrapolation_factor(increments);
+    for (unsigned int i = 0; i < wearing.size(); ++i)
+      update_profiles(i, *increments[i], *loads, factor);
+    st.factors.push_back(factor);
+    st.revolutions += factor * settings.cycles_per_iteration;
+    store_contact_modes();
+    ++st.iterations_done;
+    own_timings.wear_bookkeeping += bookkeeping.seconds();
+    update_clearance_model();
+    bookkeeping.restart();
+    checkpoint();
+    own_timings.wear_bookkeeping += bookkeeping.seconds();
+  }
+
+  std::unique_ptr<LoadRecorder>
+  WearLoop::record_loads(const std::vector<mbs::StepObserver *> &extra_observers, const double t_end)
+  {
+    restore_contact_modes();
+    Eigen::VectorXd y0 = st.state;
+    y0.tail(mbs::MechanismOde::n_quadratures).setZero();
+    std::vector<const contact::ClearanceJoint *> recorded;
+    for (const auto &w : wearing)
+      recorded.push_back(w.joint);
+    auto                             loads     = std::make_unique<LoadRecorder>(recorded);
+    std::vector<mbs::StepObserver *> observers = {loads.get()};
+    observers.insert(observers.end(), extra_observers.begin(), extra_observers.end());
+    Stopwatch dynamics;
+    st.state = advance(st.time, t_end, y0, observers);
+    st.time  = t_end;
+    loads->finish();
+    own_timings.dynamics += dynamics.seconds();
+    return loads;
+  }
+
+  std::vector<std::unique_ptr<ArchardAccumulator>>
+  WearLoop::archard_increments(const LoadRecorder &loads, const double t_start)
+  {
+    std::vector<std::unique_ptr<ArchardAccumulator>> increments;
+    for (unsigned int i = 0; i < wearing.size(); ++i)
+      {
+        const auto &w = *wearing[i].wear;
+        increments.push_back(std::make_unique<ArchardAccumulator>(geometry(i, st.joints[i].bore, st.joints[i].pin),
+                                                                  w.archard.bushing_coefficient,
+                                                                  w.archard.pin_coefficient,
+                                                                  *w.model));
+        Stopwatch evaluation;
+        increments[i]->add_history(loads.samples(i),
+                                   settings.evaluation == PressureEvaluation::every_step,
+                                   period / settings.samples_per_cycle,
+                                   t_start);
+        own_timings.pressure_evaluation += evaluation.seconds();
+      }
+    return increments;
+  }
+
+  double
+  WearLoop::extrapolation_factor(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments) const
+  {
+    if (settings.extrapolation != Extrapolation::adaptive)
+      return settings.extrapolation_factor;
+    double max_depth = 0;
+    for (const auto &a : increments)
+      max_depth = std::max({max_depth, max_of(a->pin_depth()), max_of(a->bore_depth())});
+    const double factor =
+      max_depth > 0 ? std::min(settings.max_factor, settings.max_depth_increment / max_depth) : settings.max_factor;
+    return std::min(factor, (settings.target_revolutions - st.revolutions) / settings.cycles_per_iteration);
+  }
+
+  void
+  WearLoop::update_profiles(const unsigned int        i,
+                            const ArchardAccumulator &increment,
+                            const LoadRecorder &      loads,
+                            const double              factor)
+  {
+    auto &js   = st.joints[i];
+    auto  bore = js.bore.samples();
+    auto  pin  = js.pin.samples();
+    for (unsigned int k = 0; k < bore.size(); ++k)
+      bore[k] += factor * increment.bore_depth()[k];
+    for (unsigned int k = 0; k < pin.size(); ++k)
+      pin[k] -= factor * increment.pin_depth()[k];
+    const bool worn_through = std::any_of(pin.begin(), pin.end(), [](const double r) { return !(r > 0); });
+    if (worn_through)
+      throw NumericalError("Wear iteration " + std::to_string(st.iterations_done + 1) + ": the pin of joint " +
+                           js.name + " is worn through (a radius ≤ 0). Reduce the extrapolation.");
+    js.bore = Profile::from_samples(bore, "worn bore of joint " + js.name);
+    js.pin  = Profile::from_samples(pin, "worn pin of joint " + js.name);
+    IterationRecord r = js.history.empty() ? IterationRecord() : js.history.back();
+    r.volume_pin += factor * increment.pin_volume;
+    r.volume_bore += factor * increment.bore_volume;
+    r.archard_pin += factor * increment.pin_archard;
+    r.archard_bore += factor * increment.bore_archard;
+    r.sliding_distance += factor * increment.sliding_distance;
+    r.relative_revolutions += factor * loads.relative_revolutions(i);
+    double impulse = 0;
+    for (const auto &s : loads.samples(i))
+      impulse += s.load.normal_force * s.weight;
+    r.mean_normal_force = impulse / (settings.cycles_per_iteration * period);
+    r.depth_pin.resize(pin.size());
+    r.depth_bore.resize(bore.size());
+    for (unsigned int k = 0; k < pin.size(); ++k)
+      r.depth_pin[k] = js.initial_pin[k] - js.pin[k];
+    for (unsigned int k = 0; k < bore.size(); ++k)
+      r.depth_bore[k] = js.bore[k] - js.initial_bore[k];
+    r.max_depth_pin  = max_of(r.depth_pin);
+    r.max_depth_bore = max_of(r.depth_bore);
+    js.history.push_back(std::move(r));
+  }
+
+  void
+  WearLoop::update_clearance_model()
+  {
+    for (unsigned int i = 0; i < wearing.size(); ++i)
+      {
+        auto &js = st.joints[i];
+        wearing[i].joint->set_profiles(js.bore, js.pin);
+        auto &     model = *wearing[i].wear->model;
+        const bool fe    = model.requires_fe_geometry();
+        if (fe && st.iterations_done % settings.remesh_interval != 0)
+          continue; // the fe model keeps its mesh between re-meshes
+        js.meshed_bore = js.bore;
+        js.meshed_pin  = js.pin;
+        Stopwatch update;
+        model.update_geometry(geometry(i, js.bore, js.pin));
+        if (!fe) // the fe model times its own phases
+          own_timings.pressure_evaluation += update.seconds();
+      }
+  }
+
+  void
+  WearLoop::checkpoint() const
+  {
+    if (!checkpoint_path.empty())
+      st.write(checkpoint_path);
+  }
+
+  void
+  WearLoop::restore_contact_modes()
+  {
+    for (unsigned int k = 0; k < clearance_joints.size(); ++k)
+      clearance_joints[k]->set_mode(st.modes[2 * k] != 0, st.modes[2 * k + 1]);
+  }
+
+  void
+  WearLoop::store_contact_modes()
+  {
+    for (unsigned int k = 0; k < clearance_joints.size(); ++k)
+      {
+        st.modes[2 * k]     = clearance_joints[k]->mode() ? 1 : 0;
+        st.modes[2 * k + 1] = clearance_joints[k]->impact_velocity();
+      }
+  }
+
+  contact::JointGeometry
+  WearLoop::geometry(const unsigned int i, const Profile &bore, const Profile &pin) const
+  {
+    auto g = wearing[i].joint->get_description().geometry;
+    g.bore = bore;
+    g.pin  = pin;
+    return g;
+  }
+
+  PhaseTimings
+  WearLoop::timings() const
+  {
+    PhaseTimings t = own_timings;
+    for (const auto &w : wearing)
+      t += w.wear->model->timings();
+    return t;
+  }
+} // namespace wearlink::wear

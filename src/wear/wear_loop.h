@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The wear loop (ARCHITECTURE.md "The loop"; seed §4.2). One iteration is six named
+// steps, in this order:
+//   1. record_loads           simulate Cycles per iteration of the mechanism, continuing
+//                             from the state where the previous iteration ended, while a
+//                             LoadRecorder keeps the load history of every wearing joint;
+//   2. archard_increments     feed that history through each joint's pressure model into
+//                             Archard's law on both surfaces (wear/archard.h);
+//   3. extrapolation_factor   the fixed factor, or the adaptive one that caps the largest
+//                             depth increment, never past Target revolutions;
+//   4. update_profiles        bore R1* += f h, pin R2* −= f h (each in its own frame), and
+//                             the iteration's cumulative records;
+//   5. update_clearance_model rebuild the clearance joints' gap from the new profiles and
+//                             give the pressure models the new geometry (the fe model
+//                             re-meshes every Remesh interval iterations);
+//   6. checkpoint             write the state (wear/wear_state.h), if a path is set.
+// The loop knows the mechanism only through the joints it wears and a function that
+// advances the dynamics (the workflow's run of the scene), so it sits below the scene
+// reader and the workflows. A resumed loop starts from a checkpoint: everything the next
+// iteration depends on is in it, so it ends with the same profiles as an uninterrupted
+// loop.
+#pragma once
+
+#include "base/timings.h"
+#include "contact/clearance_joint.h"
+#include "mbs/simulation.h"
+#include "wear/archard.h"
+#include "wear/load_recorder.h"
+#include "wear/wear_settings.h"
+#include "wear/wear_state.h"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wearlink::wear
+{
+  /** A clearance joint that wears, with what the scene says about its wear. */
+  struct WearingJoint
+  {
+    contact::ClearanceJoint *joint = nullptr; ///< not owned
+    JointWear *              wear  = nullptr; ///< not owned
+  };
+
+  /**
+   * Advances the mechanism's dynamics from time @p t0 and full state @p y0 ([q | v | z])
+   * to time @p t1, notifying @p observers of every accepted step; returns the state at
+   * @p t1.
+   */
+  using AdvanceDynamics = std::function<Eigen::VectorXd(double                                  t0,
+                                                        double                                  t1,
+                                                        const Eigen::VectorXd &                 y0,
+                                                        const std::vector<mbs::StepObserver *> &observers)>;
+
+  class WearLoop
+  {
+  public:
+    /**
+     * @param settings the scene's "Wear" section
+     * @param wearing the wearing joints (order = the order of the state's joints)
+     * @param clearance_joints every clearance joint of the mechanism (their contact
+     *        modes are part of the state)
+     * @param cycle_period duration of one mechanism cycle [s]
+     * @param advance the dynamics
+     */
+    WearLoop(const WearLoopSettings &               settings,
+             std::vector<WearingJoint>              wearing,
+             std::vector<contact::ClearanceJoint *> clearance_joints,
+             double                                 cycle_period,
+             AdvanceDynamics                        advance);
+
+    /**
+     * Start a fresh loop at time @p t0 from the assembled positions @p q0 and velocities
+     * @p v0 (n_coordinates each), with the joints' current profiles as the unworn ones.
+     * @p fingerprint identifies the scene in the checkpoints.
+     */
+    void
+    start(double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0, const std::string &fingerprint);
+
+    /**
+     * Continue from @p state (read from a checkpoint). InputError naming @p where if its
+     * joints or sizes do not match this loop's.
+     */
+    void
+    resume(WearState state, const std::string &where);
+
+    /** Checkpoint after every iteration into @p path ("" : none). */
+    void
+    set_checkpoint(const std::string &path)
+    {
+      checkpoint_path = path;
+    }
+
+    /** True when the iterations are done or the adaptive target is reached. */
+    bool
+    finished() const;
+
+    /** One iteration (steps 1–6), with @p extra_observers of its dynamics. */
+    void
+    iterate(const std::vector<mbs::StepObserver *> &extra_observers = {});
+
+    const WearState &
+    state() const
+    {
+      return st;
+    }
+
+    /** The extrapolation factor of the last iteration [-]. */
+    double
+    last_factor() const
+    {
+      return st.factors.empty() ? 0.0 : st.factors.back();
+    }
+
+    /**
+     * Wall time of the loop's phases so far [s], the pressure models' FE phases
+     * included.
+     */
+    PhaseTimings
+    timings() const;
+
+  private:
+    /** Step 1. The load history of one iteration; advances the stored state. */
+    std::unique_ptr<LoadRecorder>
+    record_loads(const std::vector<mbs::StepObserver *> &extra_observers, double t_end);
+
+    /** Step 2. Archard depths and volumes of this iteration, per wearing joint. */
+    std::vector<std::unique_ptr<ArchardAccumulator>>
+    archard_increments(const LoadRecorder &loads, double t_start);
+
+    /** Step 3. The factor this iteration stands for (see WearLoopSettings). */
+    double
+    extrapolation_factor(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments) const;
+
+    /** Step 4. New profiles and the cumulative records of joint @p i. */
+    void
+    update_profiles(unsigned int i, const ArchardAccumulator &increment, const LoadRecorder &loads, double factor);
+
+    /** Step 5. Gap and pressure-model geometry from the new profiles. */
+    void
+    update_clearance_model();
+
+    /** Step 6. */
+    void
+    checkpoint() const;
+
+    /** The contact modes of the clearance joints into / out of the state. */
+    void
+    restore_contact_modes();
+    void
+    store_contact_modes();
+
+    /** Joint @p i's geometry with the given profiles. */
+    contact::JointGeometry
+    geometry(unsigned int i, const Profile &bore, const Profile &pin) const;
+
+    const WearLoopSettings                 settings;
+    std::vector<WearingJoint>              wearing;
+    std::vector<contact::ClearanceJoint *> clearance_joints;
+    const double                           period;
+    AdvanceDynamics                        advance;
+    WearState                              st;
+    std::string                            checkpoint_path;
+    PhaseTimings                           own_timings;
+  };
+} // namespace wearlink::wear

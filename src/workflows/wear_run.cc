@@ -1,0 +1,402 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "workflows/wear_run.h"
+
+#include "base/atomic_file.h"
+#include "base/effect_ledger.h"
+#include "base/exceptions.h"
+#include "io/analyses_parameters.h"
+#include "io/wear_outputs.h"
+#include "wear/wear_loop.h"
+#include "workflows/analyses.h"
+#include "workflows/dynamics_comparison.h"
+#include "workflows/run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace wearlink::workflows
+{
+  namespace
+  {
+    /**
+     * The scene's identity for resuming: its effective parameters without the entries
+     * that say how far to go (so a run can be resumed to more iterations).
+     */
+    std::string
+    fingerprint(const io::Scene &scene)
+    {
+      std::ostringstream os;
+      scene.parameters->print_parameters(os, dealii::ParameterHandler::ShortText);
+      std::istringstream in(os.str());
+      std::string        line, kept;
+      while (std::getline(in, line))
+        if (line.find("Number of iterations") == std::string::npos &&
+            line.find("Target revolutions") == std::string::npos)
+          kept += line + '\n';
+      std::ostringstream h;
+      h << std::hex << std::hash<std::string>()(kept) << '-' << kept.size();
+      return h.str();
+    }
+
+    /**
+     * The two-trajectory exponent (io/shadow_trajectory.h) of the fresh and of the worn
+     * mechanism: the scene read again with its overrides plus the analysis, duration and
+     * tightened tolerances, and for the worn state the profiles written into @p dir
+     * (bore_<J>.csv, pin_<J>.csv). Outputs in DIR/exponent_before, DIR/exponent_after.
+     */
+    SimulationExponents
+    two_trajectory_exponents(const io::Scene &scene, const wear::WearState &st, const std::string &dir, const bool progress)
+    {
+      const auto &a      = scene.analyses;
+      const auto &is     = scene.simulation.integrator;
+      const double scale = a.two_trajectory_tolerance / is.relative_tolerance;
+      const double T     = io::driving_period(scene);
+      SimulationExponents out;
+      out.separation = a.two_trajectory_separation;
+      out.interval   = a.renormalization_interval;
+      out.tolerance  = a.two_trajectory_tolerance;
+      out.duration   = a.two_trajectory_cycles * T;
+      const std::string abs_dir = std::filesystem::absolute(dir).string();
+      for (int k = 0; k < 2; ++k)
+        {
+          std::vector<std::string> o = scene.overrides;
+          std::ostringstream       v;
+          v << std::setprecision(17);
+          auto set = [&](const std::string &entry, const double value) {
+            v.str("");
+            v << value;
+            o.push_back(entry + "=" + v.str());
+          };
+          o.push_back("Analyses/List of analyses=lyapunov");
+          o.push_back("Analyses/Lyapunov/Methods=two-trajectory");
+          o.push_back("Output/Time series=false");
+          set("Simulation/End time", scene.start_time + a.transient + out.duration);
+          set("Integrator/Relative tolerance", a.two_trajectory_tolerance);
+          set("Integrator/Position tolerance", is.absolute_tolerance[0] * scale);
+          set("Integrator/Velocity tolerance", is.absolute_tolerance[1] * scale);
+          if (k == 1)
+            for (const auto &j : st.joints)
+              {
+                o.push_back("Joint " + j.name + "/Clearance/Bore profile file=" + abs_dir + "/bore_" + j.name + ".csv");
+                o.push_back("Joint " + j.name + "/Clearance/Pin profile file=" + abs_dir + "/pin_" + j.name + ".csv");
+              }
+          if (progress)
+            std::cerr << "[wearlink] two-trajectory exponent " << (k == 0 ? "before" : "after") << " wear, "
+                      << a.two_trajectory_cycles << " periods at relative tolerance " << a.two_trajectory_tolerance
+                      << "\n";
+          io::Scene      s = io::read_scene(scene.file, o);
+          RunOptions ro;
+          ro.output_directory = dir + (k == 0 ? "/exponent_before" : "/exponent_after");
+          ro.progress         = progress;
+          const Json summary  = run_scene(s, ro);
+          const Json &l       = summary.at("analyses").at("lyapunov");
+          for (std::size_t i = 0; i < l.size(); ++i)
+            if (l[i].at("method").get<std::string>() == "two-trajectory")
+              (k == 0 ? out.before : out.after) = json_number(l[i].at("exponent_per_s"));
+        }
+      return out;
+    }
+
+    /**
+     * The scene's analyses once with the fresh and once with the worn profiles, each run
+     * from assembly at Start time to End time (outputs in DIR/dynamics_before and
+     * DIR/dynamics_after), then compared (io/dynamics_comparison.h) into DIR. The joints
+     * are left with the worn profiles.
+     */
+    DynamicsComparison
+    before_after_dynamics(io::Scene &                                      scene,
+                          const wear::WearState &                      st,
+                          const std::vector<contact::ClearanceJoint *> &joints,
+                          const std::string &                          dir,
+                          const bool                                   progress)
+    {
+      ComparedRun       runs[2];
+      const char *const names[2] = {"before", "after"};
+      // The shadow trajectory needs its own tolerance and the profiles as files (it
+      // reads the scene again): separate runs below, not these.
+      const bool       two_trajectory = scene.analyses.lyapunov && scene.analyses.two_trajectory;
+      analysis::AnalysesSettings without_shadow = scene.analyses;
+      without_shadow.two_trajectory   = false;
+      for (int k = 0; k < 2; ++k)
+        {
+          for (unsigned int i = 0; i < joints.size(); ++i)
+            joints[i]->set_profiles(k == 0 ? st.joints[i].initial_bore : st.joints[i].bore,
+                                    k == 0 ? st.joints[i].initial_pin : st.joints[i].pin);
+          for (auto *j : scene.clearance_joints)
+            j->set_mode(false, 0);
+          if (progress)
+            std::cerr << "[wearlink] dynamics " << names[k] << " wear with the scene's analyses, t = "
+                      << scene.start_time << " … " << scene.end_time << " s\n";
+          RunOptions ro;
+          ro.output_directory = dir.empty() ? std::string() : dir + "/dynamics_" + names[k];
+          ro.progress         = progress;
+          ro.recorded         = &runs[k].run;
+          ro.analyses_settings = &without_shadow;
+          runs[k].summary     = run_scene(scene, ro);
+          std::ostringstream label;
+          label << (k == 0 ? "before wear" : "after wear");
+          if (k == 1)
+            label << " (" << std::setprecision(6) << st.revolutions << " rev)";
+          runs[k].run.label = label.str();
+        }
+      const auto &             a = scene.analyses;
+      DynamicsComparisonSettings cs;
+      cs.joints     = a.joints;
+      cs.directions = a.directions;
+      if (a.lyapunov)
+        cs.methods = a.methods;
+      cs.delay          = a.comparison_delay;
+      cs.dimension      = a.comparison_dimension;
+      cs.delay_scan     = a.delay_scan;
+      cs.bodies         = a.bodies;
+      const std::string response = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      if (!response.empty() && std::find(cs.bodies.begin(), cs.bodies.end(), response) == cs.bodies.end())
+        cs.bodies.push_back(response);
+      cs.published      = io::parse_published_exponents(a.published_exponents, scene.file);
+      cs.published_note = a.published_note;
+      if (two_trajectory && !dir.empty())
+        cs.simulation_exponents = two_trajectory_exponents(scene, st, dir, progress);
+      return compare_dynamics(runs[0], runs[1], cs, dir);
+    }
+
+    /** The wearing joints of @p scene, in the order of scene.wear. */
+    std::vector<wear::WearingJoint>
+    wearing_joints(io::Scene &scene)
+    {
+      std::vector<wear::WearingJoint> out;
+      for (const auto &w : scene.wear)
+        for (auto *j : scene.clearance_joints)
+          if (j->name() == w->joint)
+            out.push_back({j, w.get()});
+      AssertThrow(out.size() == scene.wear.size(), dealii::ExcInternalError());
+      return out;
+    }
+
+    /** The scene's dynamics as the wear loop advances them (no analyses per iteration). */
+    wear::AdvanceDynamics
+    dynamics_of(io::Scene &scene)
+    {
+      return [&scene](const double t0, const double t1, const Eigen::VectorXd &y0,
+                      const std::vector<mbs::StepObserver *> &observers) {
+        Eigen::VectorXd y1;
+        RunOptions      ro;
+        ro.initial_state = &y0;
+        ro.start_time    = t0;
+        ro.end_time      = t1;
+        ro.final_state   = &y1;
+        ro.observers     = observers;
+        ro.analyses      = false; // the scene's analyses run before and after wear instead
+        run_scene(scene, ro);
+        return y1;
+      };
+    }
+
+    /** Start @p loop from the scene's assembly, or resume it from its checkpoint. */
+    void
+    start_or_resume(wear::WearLoop &loop, io::Scene &scene, const WearRunOptions &options, const std::string &checkpoint)
+    {
+      if (options.resume)
+        {
+          auto st = wear::WearState::read(checkpoint);
+          if (st.fingerprint != fingerprint(scene))
+            throw InputError("Cannot resume from '" + checkpoint + "': it was written for a different scene "
+                             "(or different parameters) than " + scene.file +
+                             ". Only Wear/Number of iterations and Wear/Target revolutions may "
+                             "change on resume.");
+          const auto n = scene.mechanism->n_coordinates();
+          if (st.state.size() != static_cast<Eigen::Index>(2 * n + mbs::MechanismOde::n_quadratures))
+            throw InputError("Cannot resume from '" + checkpoint + "': its state has " +
+                             std::to_string(st.state.size()) + " entries, the mechanism of " + scene.file +
+                             " needs " + std::to_string(2 * n + mbs::MechanismOde::n_quadratures) + ".");
+          loop.resume(std::move(st), checkpoint);
+          return;
+        }
+      if (!options.output_directory.empty())
+        {
+          make_output_directory(options.output_directory);
+          std::error_code ec;
+          std::filesystem::remove(checkpoint, ec); // a fresh run never continues an old one
+        }
+      Eigen::VectorXd q0, v0;
+      assemble_scene(scene, q0, v0);
+      loop.start(scene.start_time, q0, v0, fingerprint(scene));
+    }
+
+    /** One line per iteration on stderr: revolutions, factor, depths and volume per joint. */
+    void
+    print_progress(const wear::WearLoop &loop, const unsigned int n_iterations, const double seconds)
+    {
+      const auto &       st = loop.state();
+      std::ostringstream os;
+      os << "[wearlink] wear iteration " << st.iterations_done << '/' << n_iterations << "  revolutions "
+         << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
+      for (const auto &j : st.joints)
+        {
+          const auto &r = j.history.back();
+          os << "  " << j.name << ": h_pin " << std::setprecision(3) << r.max_depth_pin * 1e6 << " µm, h_bore "
+             << r.max_depth_bore * 1e6 << " µm, V " << (r.volume_pin + r.volume_bore) * 1e9 << " mm³";
+        }
+      os << "  (" << std::setprecision(3) << seconds << " s)\n";
+      std::cerr << os.str();
+    }
+
+    /** The wear figures of each wearing joint, into summary["clearance_joints"][J]. */
+    void
+    add_wear_summary(Json &summary, const io::Scene &scene, const wear::WearState &st)
+    {
+      auto &cj = summary["clearance_joints"];
+      for (unsigned int i = 0; i < st.joints.size(); ++i)
+        {
+          const auto &                js = st.joints[i];
+          const auto &                w  = *scene.wear[i];
+          const wear::IterationRecord r  = js.history.empty() ? wear::IterationRecord() : js.history.back();
+          auto &                      o  = cj[js.name];
+          o["pressure_model"]            = w.pressure_model;
+          o["wear_volume_pin_m3"]        = r.volume_pin;
+          o["wear_volume_bushing_m3"]    = r.volume_bore;
+          o["archard_volume_pin_m3"]     = r.archard_pin;
+          o["archard_volume_bushing_m3"] = r.archard_bore;
+          o["max_wear_depth_pin_m"]      = r.max_depth_pin;
+          o["max_wear_depth_bushing_m"]  = r.max_depth_bore;
+          o["mass_loss_pin_mg"]          = r.volume_pin * w.archard.pin_density * 1e6;
+          o["mass_loss_bushing_mg"]      = r.volume_bore * w.archard.bushing_density * 1e6;
+          o["revolutions"]               = st.revolutions;
+          o["relative_revolutions"]      = r.relative_revolutions;
+          o["sliding_distance_m"]        = r.sliding_distance;
+          o["mean_normal_force_N"]       = r.mean_normal_force;
+        }
+      summary["wear_iterations"]  = st.iterations_done;
+      summary["wear_revolutions"] = st.revolutions;
+    }
+
+    /**
+     * After the loop: the response after wear from the initial assembly with the final
+     * profiles, the summary, the worn profiles and plots, and the before/after-wear
+     * comparison if the scene lists analyses.
+     */
+    void
+    after_wear(io::Scene &scene, const WearRunOptions &options, WearRunResult &result)
+    {
+      const bool        write  = !options.output_directory.empty();
+      const std::string dir    = options.output_directory;
+      const double      period = cycle_period(scene);
+      const auto &      ws     = scene.wear_loop;
+      const auto &      st     = result.state;
+      Stopwatch         outputs;
+      for (auto *j : scene.clearance_joints)
+        j->set_mode(false, 0);
+      io::ResponseRecorder after(*scene.mechanism, io::response_body(scene), period / 400, ws.response_cycles * period);
+      RunOptions           ro;
+      ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
+      ro.observers = {&after};
+      ro.analyses  = false;
+      Stopwatch dynamics;
+      result.summary = run_scene(scene, ro);
+      result.timings.dynamics += dynamics.seconds();
+      add_wear_summary(result.summary, scene, st);
+      if (write)
+        {
+          io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
+          result.timings.outputs += outputs.seconds();  // the two-trajectory runs read them
+        }
+      if (scene.analyses.any())
+        {
+          Stopwatch  comparison_time;
+          const auto joints     = wearing_joints(scene);
+          std::vector<contact::ClearanceJoint *> wearing;
+          for (const auto &w : joints)
+            wearing.push_back(w.joint);
+          auto comparison = before_after_dynamics(scene, st, wearing, write ? dir : std::string(), options.progress);
+          result.timings.before_after_dynamics = comparison_time.seconds();
+          result.summary["before_after"]        = comparison.json;
+          result.before_after_report            = comparison.report;
+        }
+    }
+
+    /** summary.json and parameters.prm of a finished wear run. */
+    void
+    write_run_files(const io::Scene &scene, const std::string &dir, WearRunResult &result, const Stopwatch &total)
+    {
+      result.timings.total            = total.seconds();
+      result.summary["wear_timing_s"] = result.timings.to_json();
+      std::ostringstream prm;
+      scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
+      write_file_atomically(dir + "/parameters.prm", prm.str());
+      write_file_atomically(dir + "/summary.json", result.summary.dump(2));
+    }
+  } // namespace
+
+  bool
+  has_wear(const io::Scene &scene)
+  {
+    return !scene.wear.empty();
+  }
+
+  double
+  cycle_period(const io::Scene &scene)
+  {
+    if (scene.wear_loop.cycle_period > 0)
+      return scene.wear_loop.cycle_period;
+    return io::driving_period(scene);
+  }
+
+  WearRunResult
+  run_wear(io::Scene &scene, const WearRunOptions &options)
+  {
+    const Stopwatch total;
+    AssertThrow(has_wear(scene), dealii::ExcMessage("run_wear() on a scene without wear."));
+    const bool        write      = !options.output_directory.empty();
+    const std::string dir        = options.output_directory;
+    const std::string checkpoint = dir + "/checkpoint.txt";
+    if (options.resume && !write)
+      throw InputError("--resume needs the output directory of the run to continue.");
+
+    const double   period = cycle_period(scene);
+    wear::WearLoop loop(scene.wear_loop, wearing_joints(scene), scene.clearance_joints, period, dynamics_of(scene));
+    start_or_resume(loop, scene, options, checkpoint);
+    if (write)
+      loop.set_checkpoint(checkpoint);
+
+    WearRunResult        result;
+    unsigned int         done_here = 0;
+    io::ResponseRecorder before(*scene.mechanism, io::response_body(scene), period / 400,
+                                scene.wear_loop.response_cycles * period);
+    while (!loop.finished())
+      {
+        if (options.stop_after > 0 && done_here == options.stop_after)
+          {
+            result.state   = loop.state();
+            result.timings = loop.timings();
+            return result;
+          }
+        const Stopwatch iteration;
+        const bool      first     = loop.state().iterations_done == 0;
+        auto            observers = options.observers;
+        if (first)
+          observers.push_back(&before);
+        loop.iterate(observers);
+        ++done_here;
+        if (first && write && options.final_outputs)
+          before.write_csv(dir + "/response_before.csv");
+        if (write)
+          io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
+        if (options.progress)
+          print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds());
+      }
+    EffectLedger::instance().add_calls("wear iterations", done_here);
+    result.state    = loop.state();
+    result.timings  = loop.timings();
+    result.finished = true;
+    if (options.final_outputs)
+      after_wear(scene, options, result);
+    if (options.final_outputs && write)
+      write_run_files(scene, dir, result, total);
+    result.timings.total = total.seconds();
+    return result;
+  }
+} // namespace wearlink::workflows

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// A wear run of a scene: the wear loop of wear/wear_loop.h driven by the scene's
+// dynamics, with checkpoints and progress in the output directory, then the outputs
+// after wear (see README "Wear runs"): the response after wear from the initial assembly
+// with the final profiles, the worn profiles and history, the summary, and — if the
+// scene lists analyses — the dynamics before and after wear compared
+// (workflows/dynamics_comparison.h). A resumed run continues from its checkpoint.
+#pragma once
+
+#include "base/json.h"
+#include "base/timings.h"
+#include "io/scene.h"
+#include "wear/wear_state.h"
+
+#include <string>
+
+namespace wearlink::workflows
+{
+  struct WearRunOptions
+  {
+    /** Output and checkpoint directory ("" : nothing is written; no resume). */
+    std::string output_directory;
+    /** Continue from output_directory/checkpoint.txt. */
+    bool resume = false;
+    /** One line per iteration on stderr. */
+    bool progress = true;
+    /**
+     * Stop after this many iterations of this process, leaving the checkpoint but no
+     * final outputs, as a killed run would (tests). 0: no limit.
+     */
+    unsigned int stop_after = 0;
+    /** More observers of every iteration's dynamics (tests). */
+    std::vector<mbs::StepObserver *> observers;
+    /** Skip the after-wear response run and the plots (tests, comparisons). */
+    bool final_outputs = true;
+  };
+
+  struct WearRunResult
+  {
+    wear::WearState state;
+    /** The run summary (only when the loop finished). */
+    Json summary;
+    /** Wall time by phase [s]. */
+    PhaseTimings timings;
+    bool finished = false;
+    /**
+     * If the scene lists analyses: the before/after-wear comparison as Markdown (also in
+     * before_after.md; its numbers are in summary["before_after"]).
+     */
+    std::string before_after_report;
+  };
+
+  /** True if some clearance joint of @p scene has a wear law. */
+  bool
+  has_wear(const io::Scene &scene);
+
+  /** Run (or resume) the wear loop of @p scene. */
+  WearRunResult
+  run_wear(io::Scene &scene, const WearRunOptions &options);
+
+  /** Duration of one mechanism cycle [s] (Wear/Cycle period, or the first driver's). */
+  double
+  cycle_period(const io::Scene &scene);
+} // namespace wearlink::workflows
