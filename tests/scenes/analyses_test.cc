@@ -17,6 +17,7 @@
 #include "io/json_file.h"
 #include "io/recorded_run_files.h"
 #include "io/plot.h"
+#include "workflows/analyses.h"
 #include "scene_support.h"
 
 #include <deal.II/base/utilities.h>

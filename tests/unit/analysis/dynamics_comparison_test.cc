@@ -25,7 +25,8 @@ namespace ref = wearlink::testing;
 using wearlink::InputError;
 using wearlink::analysis::LyapunovMethod;
 using wearlink::analysis::RecordedRun;
-using namespace wearlink::io;
+using namespace wearlink::workflows;
+using wearlink::json_number;
 
 namespace
 {
@@ -117,7 +118,7 @@ TEST(DynamicsComparison, ARunComparedWithItselfGivesOneEverywhereAndWritesTheFil
         "max_normal_force_N": 1000}}})");
   auto s       = lorenz_settings();
   s.delay_scan = {0.05, 0.1, 0.2};
-  s.published  = io::parse_published_exponents("A_ex_m: 0.041 0.076", "test");
+  s.published  = wearlink::io::parse_published_exponents("A_ex_m: 0.041 0.076", "test");
   const std::string dir = wearlink::testing::fresh_directory("dynamics_comparison_self");
   const auto        c   = compare_dynamics(run, run, s, dir);
   const auto &      l   = c.json.at("lyapunov");
@@ -130,7 +131,7 @@ TEST(DynamicsComparison, ARunComparedWithItselfGivesOneEverywhereAndWritesTheFil
   EXPECT_DOUBLE_EQ(json_number(c.json.at("indicators").at("A_impacts_per_period").at("before")), 5.0);
   for (const char *f : {"before_after.md", "before_after_lyapunov.csv", "before_after_delay_scan.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
-  if (wearlink::gnuplot_available())
+  if (wearlink::io::gnuplot_available())
     {
       EXPECT_TRUE(std::filesystem::exists(dir + "/before_after_phase_A_x.png"));
       EXPECT_TRUE(std::filesystem::exists(dir + "/before_after_delay_scan.png"));
@@ -155,12 +156,12 @@ TEST(DynamicsComparison, AChannelMissingFromOneRunIsAnErrorAndWritesNothing)
 
 TEST(PublishedExponents, ParsesPairsAndRejectsMalformedText)
 {
-  const auto p = io::parse_published_exponents("A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052", "x");
+  const auto p = wearlink::io::parse_published_exponents("A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052", "x");
   ASSERT_EQ(p.size(), 2u);
   EXPECT_EQ(p[1].channel, "B_ex_m");
   EXPECT_DOUBLE_EQ(p[1].before, 0.030);
   EXPECT_DOUBLE_EQ(p[1].after, 0.052);
-  EXPECT_TRUE(io::parse_published_exponents("", "x").empty());
+  EXPECT_TRUE(wearlink::io::parse_published_exponents("", "x").empty());
   for (const char *bad : {"A_ex_m 0.041 0.076", "A_ex_m: 0.041", "A_ex_m: 0.041 0.076 9", ": 1 2", "A: x y"})
-    EXPECT_THROW(io::parse_published_exponents(bad, "x"), InputError) << bad;
+    EXPECT_THROW(wearlink::io::parse_published_exponents(bad, "x"), InputError) << bad;
 }

@@ -74,10 +74,10 @@ TEST(LyapunovCommand, HenonPerIterationWithOutputs)
   EXPECT_NE(r.output.find("embedding dimension  2"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("fit region"), std::string::npos) << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/out/lyapunov_x_rosenstein.csv"));
-  const wearlink::Json summary = wearlink::read_json_file(dir + "/out/lyapunov_x_rosenstein.json");
+  const wearlink::Json summary = wearlink::io::read_json_file(dir + "/out/lyapunov_x_rosenstein.json");
   EXPECT_EQ(summary.at("exponent_unit").get<std::string>(), "1/sample (natural log)");
-  EXPECT_EQ(json_number(summary.at("embedding_dimension")), 2);
-  if (wearlink::gnuplot_available())
+  EXPECT_EQ(wearlink::json_number(summary.at("embedding_dimension")), 2);
+  if (wearlink::io::gnuplot_available())
     {
       EXPECT_TRUE(std::filesystem::exists(dir + "/out/lyapunov_x_rosenstein.png"));
     }

@@ -56,8 +56,8 @@ TEST(FeMpi, DistributedReferenceSolverGivesTheSerialAnswer)
   ASSERT_EQ(parallel.exit_status, 0) << parallel.output;
   EXPECT_NE(parallel.output.find("distributed over 2 MPI ranks"), std::string::npos) << parallel.output;
 
-  const auto summary = wearlink::read_json_file(dir + "/mpi/summary.json");
-  EXPECT_EQ(json_number(summary.at("mpi_ranks")), 2);
+  const auto summary = wearlink::io::read_json_file(dir + "/mpi/summary.json");
+  EXPECT_EQ(wearlink::json_number(summary.at("mpi_ranks")), 2);
   for (const int k : {0, 1})
     {
       const auto a = pressures(dir + "/serial/pressure_" + std::to_string(k) + "_reference.csv");
