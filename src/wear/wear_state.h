@@ -4,9 +4,11 @@
 // uninterrupted run would: the mechanism state [q | v | z] and time at the end of the
 // iteration, each joint's contact mode and captured impact velocity, the worn profiles
 // (and those the fe model was last meshed with), the cumulative volumes and the
-// per-iteration history used by the outputs. Doubles are written as hexadecimal
-// floating point (exact round trip), and the file is replaced atomically, so a run
-// killed at any moment leaves the previous complete checkpoint.
+// per-iteration history used by the outputs. The checkpoint is JSON (format name and
+// version first); doubles are written in the shortest form that reads back to the same
+// bits (exact round trip), and the file is replaced atomically, so a run killed at any
+// moment leaves the previous complete checkpoint. Reading checks every entry's type;
+// a damaged file is an InputError naming the file and the entry.
 #pragma once
 
 #include "base/profile.h"

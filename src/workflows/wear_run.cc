@@ -352,7 +352,7 @@ namespace wearlink::workflows
     AssertThrow(has_wear(scene), dealii::ExcMessage("run_wear() on a scene without wear."));
     const bool        write      = !options.output_directory.empty();
     const std::string dir        = options.output_directory;
-    const std::string checkpoint = dir + "/checkpoint.txt";
+    const std::string checkpoint = dir + "/checkpoint.json";
     if (options.resume && !write)
       throw InputError("--resume needs the output directory of the run to continue.");
 

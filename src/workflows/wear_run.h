@@ -20,7 +20,7 @@ namespace wearlink::workflows
   {
     /** Output and checkpoint directory ("" : nothing is written; no resume). */
     std::string output_directory;
-    /** Continue from output_directory/checkpoint.txt. */
+    /** Continue from output_directory/checkpoint.json. */
     bool resume = false;
     /** One line per iteration on stderr. */
     bool progress = true;

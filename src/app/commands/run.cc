@@ -38,7 +38,7 @@ Every file is written under a temporary name and renamed when complete.
 A scene in which some clearance joint has 'Wear law = archard' runs the wear loop
 instead (section Wear; one progress line per iteration) and writes, besides
 summary.json (with per-joint wear volumes, depths, mass loss and revolutions) and
-parameters.prm: checkpoint.txt, wear_history.csv, wear_depth_<J>.csv/.png,
+parameters.prm: checkpoint.json, wear_history.csv, wear_depth_<J>.csv/.png,
 profiles_<J>.csv/.msh, profile_<J>_bore.png, profile_<J>_pin.png, wear_volume.png,
 response_before.csv, response_after.csv, response.png.
 If a wear scene lists analyses, they do not run during the wear iterations; instead

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The wear checkpoint round-trips exactly (hexadecimal floating point), and a damaged
+// The wear checkpoint round-trips exactly (JSON, shortest round-trip doubles), and a damaged
 // or missing checkpoint is an InputError naming the file.
 #include "base/exceptions.h"
 #include "support/test_support.h"
@@ -9,6 +9,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace wearlink;
 
@@ -47,8 +50,8 @@ TEST(Checkpoint, RoundTripIsExact)
 {
   const std::string dir = wearlink::testing::fresh_directory("checkpoint_round_trip");
   const auto        s   = sample_state();
-  s.write(dir + "/checkpoint.txt");
-  const auto r = wear::WearState::read(dir + "/checkpoint.txt");
+  s.write(dir + "/checkpoint.json");
+  const auto r = wear::WearState::read(dir + "/checkpoint.json");
   EXPECT_EQ(r.fingerprint, s.fingerprint);
   EXPECT_EQ(r.iterations_done, s.iterations_done);
   EXPECT_EQ(r.revolutions, s.revolutions);
@@ -69,8 +72,8 @@ TEST(Checkpoint, TruncatedOrMissingIsAnInputError)
 {
   const std::string dir = wearlink::testing::fresh_directory("checkpoint_truncated");
   EXPECT_THROW(wear::WearState::read(dir + "/none.txt"), InputError);
-  sample_state().write(dir + "/checkpoint.txt");
-  std::ifstream in(dir + "/checkpoint.txt");
+  sample_state().write(dir + "/checkpoint.json");
+  std::ifstream in(dir + "/checkpoint.json");
   std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::ofstream(dir + "/cut.txt") << text.substr(0, text.size() / 2);
   try
@@ -81,5 +84,42 @@ TEST(Checkpoint, TruncatedOrMissingIsAnInputError)
   catch (const InputError &e)
     {
       EXPECT_NE(e.message().find("cut.txt"), std::string::npos) << e.message();
+    }
+}
+
+TEST(Checkpoint, DamagedEntriesAreRefusedNamingTheEntry)
+{
+  const std::string dir = wearlink::testing::fresh_directory("checkpoint_damaged");
+  sample_state().write(dir + "/checkpoint.json");
+  std::ifstream in(dir + "/checkpoint.json");
+  std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Each edit of the valid text, and the words the message must contain.
+  const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+    {{"\"version\": 2", "\"version\": 3"}, "format version 3"},
+    {{"\"name\": \"A\"", "\"name\": 7"}, "joints[0].name"},
+    {{"\"iterations\": 2", "\"iterations\": -4"}, "'iterations' is not a count"},
+    {{"\"fingerprint\"", "\"fingerprints\""}, "no entry 'fingerprint'"},
+    {{"\"history\": [", "\"history\": [7, "}, "joints[0].history[0]"},
+    {{"\"factors\": [", "\"factors\": [\"x\", "}, "'factors' holds something that is not a number"},
+    {{"\"format\": \"wearlink wear checkpoint\"", "\"format\": \"other\""}, "not a wear checkpoint"},
+  };
+  for (const auto &[edit, expected] : cases)
+    {
+      const auto at = text.find(edit.first);
+      ASSERT_NE(at, std::string::npos) << edit.first;
+      std::string damaged = text;
+      damaged.replace(at, edit.first.size(), edit.second);
+      const std::string path = dir + "/damaged.json";
+      std::ofstream(path) << damaged;
+      try
+        {
+          wear::WearState::read(path);
+          ADD_FAILURE() << "accepted: " << edit.second;
+        }
+      catch (const InputError &e)
+        {
+          EXPECT_NE(e.message().find(expected), std::string::npos) << e.message();
+          EXPECT_NE(e.message().find(path), std::string::npos) << e.message();
+        }
     }
 }
