@@ -135,6 +135,82 @@ namespace wearlink::analysis
     return out;
   }
 
+  namespace
+  {
+    /** Wolf's neighbour replacement: the chosen candidate and its angle, if any. */
+    struct Replacement
+    {
+      bool        found = false;
+      std::size_t index = 0;
+      double      angle = 0.0; ///< [rad]
+    };
+
+    /** Largest multiple of the maximum scale searched for a replacement. */
+    constexpr unsigned int max_scale_multiplier = 5;
+
+    /**
+     * FET1's replacement of the neighbour of y_i (@p y_ref, filled by the caller):
+     * among the candidates within max_scale_multiplier × @p max_scale of y_i, the one
+     * whose separation from y_i makes the smallest angle with the evolved separation
+     * y_{j+E} − y_i (@p j_evolved = j + E), accepted below max_angle at the smallest
+     * scale multiple that has one, the angle limit doubling up to π.
+     */
+    Replacement
+    wolf_replacement(const std::vector<double> &series,
+                     const Embedding &          emb,
+                     const KdTree &             tree,
+                     const WolfOptions &        options,
+                     const std::size_t          i,
+                     const std::size_t          j_evolved,
+                     const double               max_scale,
+                     const std::vector<double> &y_ref,
+                     std::vector<double> &      y_old,
+                     NeighbourFilter &          filter)
+    {
+      delay_vector(series, emb, j_evolved, y_old);
+      double v_norm = 0.0;
+      for (unsigned int d = 0; d < emb.dimension; ++d)
+        {
+          y_old[d] -= y_ref[d];
+          v_norm += y_old[d] * y_old[d];
+        }
+      v_norm                                 = std::sqrt(v_norm);
+      filter.query_index                     = i;
+      filter.max_distance                    = max_scale_multiplier * max_scale;
+      const std::vector<Neighbour> candidates = tree.k_nearest(y_ref.data(), options.n_candidates, filter);
+      std::vector<double>          angles(candidates.size());
+      for (std::size_t c = 0; c < candidates.size(); ++c)
+        {
+          double dot = 0.0;
+          for (unsigned int d = 0; d < emb.dimension; ++d)
+            dot += (series[candidates[c].index + d * emb.delay] - y_ref[d]) * y_old[d];
+          const double cosine = v_norm > 0.0 ? dot / (v_norm * candidates[c].distance) : 1.0;
+          angles[c]           = std::acos(std::clamp(cosine, -1.0, 1.0));
+        }
+      std::size_t chosen = candidates.size();
+      for (double angle_limit = options.max_angle; angle_limit < pi && chosen == candidates.size();
+           angle_limit *= 2.0)
+        for (unsigned int mult = 1; mult <= max_scale_multiplier && chosen == candidates.size(); ++mult)
+          {
+            double best = angle_limit;
+            for (std::size_t c = 0; c < candidates.size(); ++c)
+              if (candidates[c].distance < mult * max_scale && angles[c] <= best)
+                {
+                  best   = angles[c];
+                  chosen = c;
+                }
+          }
+      Replacement r;
+      if (chosen < candidates.size())
+        {
+          r.found = true;
+          r.index = candidates[chosen].index;
+          r.angle = angles[chosen];
+        }
+      return r;
+    }
+  } // namespace
+
   // Wolf et al. 1985, fixed evolution time (their program FET1). The reference
   // trajectory starts at the first delay vector; its neighbour is the nearest
   // admissible point. Each segment evolves both for E samples and adds ln(d_E / d_0).
@@ -161,7 +237,6 @@ namespace wearlink::analysis
     out.evolution_steps      = E;
     out.min_scale            = options.min_scale * extent;
     out.max_scale            = options.max_scale * extent;
-    constexpr unsigned int max_scale_multiplier = 5;
 
     std::vector<double> y_ref, y_old;
     NeighbourFilter     filter;
@@ -194,46 +269,13 @@ namespace wearlink::analysis
         if (i >= n_tree)
           break;
 
-        // Replacement: orientation of the evolved separation, candidates near y_i.
         delay_vector(series, emb, i, y_ref);
-        delay_vector(series, emb, j + E, y_old);
-        double v_norm = 0.0;
-        for (unsigned int d = 0; d < emb.dimension; ++d)
+        const Replacement r =
+          wolf_replacement(series, emb, tree, options, i, j + E, out.max_scale, y_ref, y_old, filter);
+        if (r.found)
           {
-            y_old[d] -= y_ref[d];
-            v_norm += y_old[d] * y_old[d];
-          }
-        v_norm = std::sqrt(v_norm);
-        filter.query_index  = i;
-        filter.max_distance = max_scale_multiplier * out.max_scale;
-        const std::vector<Neighbour> candidates =
-          tree.k_nearest(y_ref.data(), options.n_candidates, filter);
-        std::vector<double> angles(candidates.size());
-        for (std::size_t c = 0; c < candidates.size(); ++c)
-          {
-            double dot = 0.0;
-            for (unsigned int d = 0; d < emb.dimension; ++d)
-              dot += (series[candidates[c].index + d * emb.delay] - y_ref[d]) * y_old[d];
-            const double cosine = v_norm > 0.0 ? dot / (v_norm * candidates[c].distance) : 1.0;
-            angles[c]           = std::acos(std::clamp(cosine, -1.0, 1.0));
-          }
-        std::size_t chosen = candidates.size();
-        for (double angle_limit = options.max_angle; angle_limit < pi && chosen == candidates.size();
-             angle_limit *= 2.0)
-          for (unsigned int mult = 1; mult <= max_scale_multiplier && chosen == candidates.size(); ++mult)
-            {
-              double best = angle_limit;
-              for (std::size_t c = 0; c < candidates.size(); ++c)
-                if (candidates[c].distance < mult * out.max_scale && angles[c] <= best)
-                  {
-                    best   = angles[c];
-                    chosen = c;
-                  }
-            }
-        if (chosen < candidates.size())
-          {
-            j = candidates[chosen].index;
-            sum_angle += angles[chosen];
+            j = r.index;
+            sum_angle += r.angle;
             ++n_replaced;
           }
         else
@@ -545,6 +587,87 @@ namespace wearlink::analysis
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * One nearest neighbour (beyond the Theiler window) for each of up to
+     * @p max_references reference points spread evenly over the tree, refined along the
+     * trajectory if @p interpolated. An exact recurrence (a commensurately sampled
+     * periodic signal repeats its samples to rounding) is the same state, not a
+     * neighbour: its "separation" is rounding noise, whose logarithm wanders by nats and
+     * would fake a divergence. Such points are skipped and the nearest distinct point is
+     * taken. InputError if no reference has a neighbour.
+     */
+    std::vector<NeighbourPair>
+    rosenstein_pairs(const std::vector<double> &series,
+                     const Embedding &          emb,
+                     const KdTree &             tree,
+                     const std::size_t          n_tree,
+                     const std::size_t          theiler_window,
+                     const std::size_t          max_references,
+                     const bool                 interpolated)
+    {
+      const std::size_t          n_ref = std::min(n_tree, std::max<std::size_t>(1, max_references));
+      std::vector<NeighbourPair> pairs;
+      pairs.reserve(n_ref);
+      std::vector<double> y;
+      NeighbourFilter     filter;
+      filter.theiler_window = theiler_window;
+      filter.min_distance   = exact_recurrence * series_extent(series);
+      for (std::size_t r = 0; r < n_ref; ++r)
+        {
+          const std::size_t i = r * n_tree / n_ref;
+          delay_vector(series, emb, i, y);
+          filter.query_index = i;
+          const Neighbour nb = tree.nearest(y.data(), filter);
+          if (!nb.found())
+            continue;
+          pairs.push_back(interpolated ? refine_along_trajectory(series, emb, y, i, nb, filter.min_distance) :
+                                         NeighbourPair{i, nb.index, 0.0});
+        }
+      if (pairs.empty())
+        throw InputError("The Rosenstein method found no neighbour pairs beyond the Theiler "
+                         "window; the series is too short or constant.");
+      return pairs;
+    }
+
+    /**
+     * The mean log divergence ⟨ln d_k⟩ of the @p pairs for k = 0 … @p K_cap; with
+     * @p stop_at_saturation it stops early (at power-of-two lengths from
+     * max(64, 16 τ) on) once the smoothed curve has saturated.
+     */
+    std::vector<double>
+    mean_log_divergence(const std::vector<double> &       series,
+                        const Embedding &                 emb,
+                        const std::vector<NeighbourPair> &pairs,
+                        const std::size_t                 K_cap,
+                        const bool                        stop_at_saturation)
+    {
+      const std::size_t   smoothing  = 2 * emb.delay;
+      const std::size_t   min_length = std::max<std::size_t>(64, 16 * emb.delay);
+      std::vector<double> curve;
+      for (std::size_t k = 0; k <= K_cap; ++k)
+        {
+          double      sum = 0.0;
+          std::size_t n   = 0;
+          for (const NeighbourPair &pair : pairs)
+            {
+              const double d = pair_distance(series, emb, pair, k);
+              if (d > 0.0)
+                {
+                  sum += std::log(d);
+                  ++n;
+                }
+            }
+          curve.push_back(n > 0 ? sum / n : curve.empty() ? 0.0 : curve.back());
+          const bool checkpoint = k + 1 >= min_length && ((k + 1) & k) == 0;
+          if (stop_at_saturation && checkpoint && has_saturated(moving_average(curve, smoothing), emb.delay))
+            break;
+        }
+      return curve;
+    }
+  } // namespace
+
   // Rosenstein et al. 1993. Each reference point y_i (evenly spaced, at most
   // max_references) gets its nearest neighbour y_j with |i - j| > w once; then
   // <ln d(k)> = mean over pairs of ln |y_{i+k} - y_{j+k}|.
@@ -601,56 +724,13 @@ namespace wearlink::analysis
     const KdTree      tree(series, emb.dimension, emb.delay, n_tree);
     out.interpolated         = options.interpolate.value_or(resolves_trajectory(series, emb, M));
 
-    const std::size_t          n_ref = std::min(n_tree, std::max<std::size_t>(1, options.max_references));
-    std::vector<NeighbourPair> pairs;
-    pairs.reserve(n_ref);
-    std::vector<double> y;
-    NeighbourFilter     filter;
-    filter.theiler_window = theiler_window;
-    // An exact recurrence (a commensurately sampled periodic signal repeats its samples
-    // to rounding) is the same state, not a neighbour: its "separation" is rounding
-    // noise, whose logarithm wanders by nats and would fake a divergence. Such points are
-    // skipped and the nearest distinct point is taken.
-    filter.min_distance = exact_recurrence * series_extent(series);
-    for (std::size_t r = 0; r < n_ref; ++r)
-      {
-        const std::size_t i = r * n_tree / n_ref;
-        delay_vector(series, emb, i, y);
-        filter.query_index = i;
-        const Neighbour nb = tree.nearest(y.data(), filter);
-        if (!nb.found())
-          continue;
-        pairs.push_back(out.interpolated ? refine_along_trajectory(series, emb, y, i, nb, filter.min_distance) :
-                                           NeighbourPair{i, nb.index, 0.0});
-      }
-    if (pairs.empty())
-      throw InputError("The Rosenstein method found no neighbour pairs beyond the Theiler "
-                       "window; the series is too short or constant.");
+    const std::vector<NeighbourPair> pairs =
+      rosenstein_pairs(series, emb, tree, n_tree, theiler_window, options.max_references, out.interpolated);
     out.n_references = pairs.size();
 
-    const std::size_t smoothing  = 2 * emb.delay;
-    const std::size_t min_length = std::max<std::size_t>(64, 16 * emb.delay);
-    auto &            curve      = out.mean_log_divergence;
-    for (std::size_t k = 0; k <= K_cap; ++k)
-      {
-        double      sum = 0.0;
-        std::size_t n   = 0;
-        for (const NeighbourPair &pair : pairs)
-          {
-            const double d = pair_distance(series, emb, pair, k);
-            if (d > 0.0)
-              {
-                sum += std::log(d);
-                ++n;
-              }
-          }
-        curve.push_back(n > 0 ? sum / n : curve.empty() ? 0.0 : curve.back());
-        const bool checkpoint = k + 1 >= min_length && ((k + 1) & k) == 0;
-        if (!options.horizon && checkpoint &&
-            has_saturated(moving_average(curve, smoothing), emb.delay))
-          break;
-      }
-
+    const std::size_t smoothing = 2 * emb.delay;
+    auto &            curve     = out.mean_log_divergence;
+    curve                       = mean_log_divergence(series, emb, pairs, K_cap, !options.horizon);
     const std::vector<double> smooth = moving_average(curve, smoothing);
     out.saturated                    = has_saturated(smooth, emb.delay);
     const std::size_t K              = curve.size() - 1;

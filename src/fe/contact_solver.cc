@@ -377,6 +377,252 @@ namespace wearlink::fe
   // conditions g_𝒜 = 0 and Σ λ n = P form the KKT system
   //     A_𝒜𝒜 λ − N_𝒜ᵀ U = −g0_𝒜,   N_𝒜 λ = P,
   // solved through the Cholesky factor of A_𝒜𝒜 and the 2×2 Schur complement
+  namespace
+  {
+    /**
+     * The condensed compliance as one load state of the condensed solver reads it: the
+     * normal displacement of the bore at candidate i's contact point for a unit λ_s at
+     * candidate s (the force +n_s interpolated onto the bore nodes of the face s
+     * meets), either point-wise from the cached bore columns (only the nodes of i's face
+     * are touched) or from a whole bore field assembled once per active candidate.
+     */
+    class ComplianceReader
+    {
+    public:
+      ComplianceReader(const ContactKinematics &kin, BoundaryCompliance &compliance, const unsigned int q)
+        : kin(kin)
+        , compliance(compliance)
+        , q(q)
+      {}
+
+      /** Bore part of A(i, s), read point by point. */
+      double
+      bore_normal(const unsigned int i, const unsigned int s) const
+      {
+        double u = 0;
+        for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
+          {
+            const auto & col = compliance.bore_column(kin.masters[s][a]);
+            const double fx  = kin.weights[s][a] * kin.normal[s][0];
+            const double fy  = kin.weights[s][a] * kin.normal[s][1];
+            for (unsigned int c = 0; c < kin.n_masters[i]; ++c)
+              {
+                const unsigned int b  = kin.masters[i][c];
+                const double       ux = fx * col[2 * b] + fy * col[2 * q + 2 * b];
+                const double       uy = fx * col[2 * b + 1] + fy * col[2 * q + 2 * b + 1];
+                u += kin.weights[i][c] * (kin.normal[i][0] * ux + kin.normal[i][1] * uy);
+              }
+          }
+        return u;
+      }
+
+      /** The whole bore displacement field of a unit λ_j (cached per solve). */
+      const std::vector<double> &
+      bore_field(const unsigned int j)
+      {
+        auto it = bore_fields.find(j);
+        if (it != bore_fields.end())
+          return it->second;
+        std::vector<double> v(2 * q, 0.0);
+        for (unsigned int a = 0; a < kin.n_masters[j]; ++a)
+          {
+            const auto & col = compliance.bore_column(kin.masters[j][a]);
+            const double fx  = kin.weights[j][a] * kin.normal[j][0];
+            const double fy  = kin.weights[j][a] * kin.normal[j][1];
+            for (unsigned int r = 0; r < 2 * q; ++r)
+              v[r] += fx * col[r] + fy * col[2 * q + r];
+          }
+        return bore_fields.emplace(j, std::move(v)).first->second;
+      }
+
+      /** The normal component of a bore @p field at candidate i's contact point. */
+      double
+      field_normal(const unsigned int i, const std::vector<double> &field) const
+      {
+        double u = 0;
+        for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+          {
+            const unsigned int b = kin.masters[i][a];
+            u += kin.weights[i][a] * (kin.normal[i][0] * field[2 * b] + kin.normal[i][1] * field[2 * b + 1]);
+          }
+        return u;
+      }
+
+      /** Bound of |elastic gap change| anywhere for a unit λ_s: pin and bore parts. */
+      double
+      reach(const unsigned int s) const
+      {
+        double r = compliance.pin_column_bound(s);
+        for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
+          r += std::abs(kin.weights[s][a]) * compliance.bore_column_bound(kin.masters[s][a]);
+        return r;
+      }
+
+      /** max over faces of Σ|w| (> 1 only for degree-2 faces), over @p m candidates. */
+      double
+      max_weight_sum(const unsigned int m) const
+      {
+        double max_sum = 1.0;
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            double w = 0;
+            for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+              w += std::abs(kin.weights[i][a]);
+            max_sum = std::max(max_sum, w);
+          }
+        return max_sum;
+      }
+
+      /** The columns of the active candidates (whole bore fields above the threshold). */
+      struct Columns
+      {
+        std::vector<const std::vector<double> *> pin, bore; ///< bore: only with fields
+        bool                                     fields = false;
+      };
+      Columns
+      columns(const std::vector<unsigned int> &active, const unsigned int max_pointwise_active)
+      {
+        const unsigned int k = active.size();
+        Columns            c;
+        c.fields = k > max_pointwise_active;
+        c.pin.resize(k);
+        c.bore.assign(k, nullptr);
+        for (unsigned int s = 0; s < k; ++s)
+          {
+            c.pin[s] = &compliance.pin_column(active[s]);
+            if (c.fields)
+              c.bore[s] = &bore_field(active[s]);
+          }
+        return c;
+      }
+
+    private:
+      const ContactKinematics &                             kin;
+      BoundaryCompliance &                                  compliance;
+      const unsigned int                                    q;
+      std::unordered_map<unsigned int, std::vector<double>> bore_fields;
+    };
+
+    /**
+     * With many active candidates, reading the columns point by point for every pair
+     * costs more (scattered reads, k² pairs) than assembling each active candidate's
+     * whole bore field once per solve and reading that: measured on the default mesh,
+     * point-wise is faster up to ~150 active candidates (0.76 vs 1.4 ms at 1 kN, 45
+     * active), whole fields at 393 (63 vs 207 ms at 100 kN).
+     */
+    constexpr unsigned int max_pointwise_active = 200;
+
+    using ActiveColumns = ComplianceReader::Columns;
+
+    /** The multipliers of the active candidates and the pin translation U. */
+    struct ActiveSolution
+    {
+      Eigen::VectorXd lambda;
+      Tensor<1, 2>    U;
+    };
+
+    /**
+     * Solve the active system: A λ = N U − g0 with, under force control, Nᵀ λ = P
+     * (S = Nᵀ A⁻¹ N, U = S⁻¹ (P + Nᵀ A⁻¹ g0)), under displacement control λ = −A⁻¹ g0.
+     */
+    ActiveSolution
+    solve_active_system(const ContactKinematics &        kin,
+                        const std::vector<unsigned int> &active,
+                        const ActiveColumns &            cols,
+                        ComplianceReader &               reader,
+                        const bool                       force_control,
+                        const Tensor<1, 2> &             load)
+    {
+      const unsigned int k = active.size();
+      Eigen::MatrixXd    A(k, k);
+      Eigen::MatrixXd    N(k, 2);
+      Eigen::VectorXd    g0(k);
+      for (unsigned int s = 0; s < k; ++s)
+        {
+          for (unsigned int r = 0; r < k; ++r)
+            A(r, s) = (*cols.pin[s])[active[r]] +
+                      (cols.fields ? reader.field_normal(active[r], *cols.bore[s]) : reader.bore_normal(active[r], active[s]));
+          N(s, 0) = kin.normal[active[s]][0];
+          N(s, 1) = kin.normal[active[s]][1];
+          g0(s)   = kin.g0[active[s]];
+        }
+      const Eigen::MatrixXd             As = 0.5 * (A + A.transpose());
+      const Eigen::LLT<Eigen::MatrixXd> llt(As);
+      AssertThrow(llt.info() == Eigen::Success,
+                  ExcMessage("The contact compliance on the active set is not positive definite."));
+      ActiveSolution out;
+      out.U = 0;
+      if (force_control)
+        {
+          const Eigen::MatrixXd Y   = llt.solve(N);
+          const Eigen::VectorXd z   = llt.solve(g0);
+          const Eigen::Matrix2d S   = N.transpose() * Y;
+          const Eigen::Vector2d rhs = Eigen::Vector2d(load[0], load[1]) + N.transpose() * z;
+          const Eigen::Vector2d u   = S.fullPivLu().solve(rhs);
+          out.U[0]                  = u[0];
+          out.U[1]                  = u[1];
+          out.lambda                = Y * u - z;
+        }
+      else
+        out.lambda = -llt.solve(g0);
+      return out;
+    }
+    /**
+     * The gaps of all @p m candidates, g = g0 − n·U + (pin part + bore part) of A λ.
+     * The elastic part is at most E = max Σ|w| · Σ_s |λ_s| reach(s) anywhere, so a
+     * candidate whose rigid gap g0 − n·U exceeds E + tolerance cannot penetrate: its
+     * gap is only bounded from below (g0 − n·U − E) and its columns are never read. At
+     * 1 kN on the default mesh this leaves a few dozen of the 2,888 candidates to
+     * evaluate.
+     */
+    void
+    candidate_gaps(const ContactKinematics &        kin,
+                   const std::vector<unsigned int> &active,
+                   const ActiveColumns &            cols,
+                   ComplianceReader &               reader,
+                   const Eigen::VectorXd &          lambda_active,
+                   const std::vector<double> &      lambda,
+                   const Tensor<1, 2> &             U,
+                   const double                     max_weight_sum,
+                   const double                     tolerance,
+                   std::vector<double> &            gap)
+    {
+      const unsigned int k = active.size();
+      double             E = 0;
+      for (unsigned int s = 0; s < k; ++s)
+        E += std::abs(lambda_active[s]) * reader.reach(active[s]);
+      E *= max_weight_sum;
+      std::vector<double> bore_total;
+      if (cols.fields)
+        {
+          bore_total.assign(cols.bore.empty() ? 0 : cols.bore[0]->size(), 0.0);
+          for (unsigned int s = 0; s < k; ++s)
+            for (unsigned int r = 0; r < bore_total.size(); ++r)
+              bore_total[r] += lambda_active[s] * (*cols.bore[s])[r];
+        }
+      for (unsigned int i = 0; i < gap.size(); ++i)
+        {
+          const double rigid = kin.g0[i] - kin.normal[i] * U;
+          if (rigid > E + tolerance && lambda[i] == 0.0)
+            {
+              gap[i] = rigid - E;
+              continue;
+            }
+          double g = rigid;
+          if (cols.fields)
+            {
+              g += reader.field_normal(i, bore_total);
+              for (unsigned int s = 0; s < k; ++s)
+                g += (*cols.pin[s])[i] * lambda_active[s];
+            }
+          else
+            for (unsigned int s = 0; s < k; ++s)
+              g += ((*cols.pin[s])[i] + reader.bore_normal(i, active[s])) * lambda_active[s];
+          gap[i] = g;
+        }
+    }
+  } // namespace
+
   // S = N A⁻¹ Nᵀ: U = S⁻¹ (P + N A⁻¹ g0), λ = A⁻¹ (Nᵀ U − g0). The gaps of all
   // candidates then follow from the cached compliance columns of the active ones, and
   // the active set is updated until it repeats. The last active set warm-starts the
@@ -386,10 +632,8 @@ namespace wearlink::fe
                                 bool                     force_control,
                                 const Tensor<1, 2> &     load)
   {
-    const auto &       bore_nodes = problem.bore_nodes;
-    const unsigned int m          = problem.pin_nodes.size();
-    const unsigned int q          = bore_nodes.size();
-    const double       tolerance  = gap_tolerance(kin);
+    const unsigned int m         = problem.pin_nodes.size();
+    const double       tolerance = gap_tolerance(kin);
 
     // Warm start from the previous load state's active set when the load is close to
     // it (consecutive states of a mechanism cycle); otherwise start from the first
@@ -401,74 +645,8 @@ namespace wearlink::fe
     if (force_control)
       ensure_two_active(active, kin.g0, kin.normal, load);
 
-    // Normal displacement of the bore at candidate i's contact point for a unit λ_s at
-    // candidate s (the force +n_s interpolated onto the bore nodes of the face s meets),
-    // read point-wise from the cached bore columns: only the nodes of i's face are
-    // touched, never a whole bore field.
-    auto bore_normal = [&](unsigned int i, unsigned int s) {
-      double u = 0;
-      for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
-        {
-          const auto & col = compliance.bore_column(kin.masters[s][a]);
-          const double fx  = kin.weights[s][a] * kin.normal[s][0];
-          const double fy  = kin.weights[s][a] * kin.normal[s][1];
-          for (unsigned int c = 0; c < kin.n_masters[i]; ++c)
-            {
-              const unsigned int b  = kin.masters[i][c];
-              const double       ux = fx * col[2 * b] + fy * col[2 * q + 2 * b];
-              const double       uy = fx * col[2 * b + 1] + fy * col[2 * q + 2 * b + 1];
-              u += kin.weights[i][c] * (kin.normal[i][0] * ux + kin.normal[i][1] * uy);
-            }
-        }
-      return u;
-    };
-    // With many active candidates, reading the columns point by point for every pair
-    // costs more (scattered reads, k² pairs) than assembling each active candidate's
-    // whole bore field once per solve and reading that: measured on the default mesh,
-    // point-wise is faster up to ~150 active candidates (0.76 vs 1.4 ms at 1 kN, 45
-    // active), whole fields at 393 (63 vs 207 ms at 100 kN).
-    constexpr unsigned int                                max_pointwise_active = 200;
-    std::unordered_map<unsigned int, std::vector<double>> bore_fields;
-    auto bore_field = [&](unsigned int j) -> const std::vector<double> & {
-      auto it = bore_fields.find(j);
-      if (it != bore_fields.end())
-        return it->second;
-      std::vector<double> v(2 * q, 0.0);
-      for (unsigned int a = 0; a < kin.n_masters[j]; ++a)
-        {
-          const auto & col = compliance.bore_column(kin.masters[j][a]);
-          const double fx  = kin.weights[j][a] * kin.normal[j][0];
-          const double fy  = kin.weights[j][a] * kin.normal[j][1];
-          for (unsigned int r = 0; r < 2 * q; ++r)
-            v[r] += fx * col[r] + fy * col[2 * q + r];
-        }
-      return bore_fields.emplace(j, std::move(v)).first->second;
-    };
-    auto field_normal = [&](unsigned int i, const std::vector<double> &field) {
-      double u = 0;
-      for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
-        {
-          const unsigned int b = kin.masters[i][a];
-          u += kin.weights[i][a] * (kin.normal[i][0] * field[2 * b] + kin.normal[i][1] * field[2 * b + 1]);
-        }
-      return u;
-    };
-    // Bound of |elastic gap change| anywhere for a unit λ_s: pin and bore parts.
-    auto reach = [&](unsigned int s) {
-      double r = compliance.pin_column_bound(s);
-      for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
-        r += std::abs(kin.weights[s][a]) * compliance.bore_column_bound(kin.masters[s][a]);
-      return r;
-    };
-    double max_weight_sum = 1.0; // Σ|w| of a face (> 1 only for degree-2 faces)
-    for (unsigned int i = 0; i < m; ++i)
-      {
-        double w = 0;
-        for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
-          w += std::abs(kin.weights[i][a]);
-        max_weight_sum = std::max(max_weight_sum, w);
-      }
-
+    ComplianceReader                    reader(kin, compliance, problem.bore_nodes.size());
+    const double                        max_weight_sum = reader.max_weight_sum(m);
     ContactSolution                     sol;
     std::vector<double>                 lambda(m, 0.0), gap(m, 0.0);
     std::set<std::vector<unsigned int>> history;
@@ -476,91 +654,14 @@ namespace wearlink::fe
     bool                                converged = false;
     for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
       {
-        sol.iterations = iteration;
-        const unsigned int k = active.size();
-        const bool                               fields = k > max_pointwise_active;
-        std::vector<const std::vector<double> *> pin_cols(k), bore_cols(k, nullptr);
-        for (unsigned int s = 0; s < k; ++s)
-          {
-            pin_cols[s] = &compliance.pin_column(active[s]);
-            if (fields)
-              bore_cols[s] = &bore_field(active[s]);
-          }
-        auto bore_part = [&](unsigned int i, unsigned int s) {
-          return fields ? field_normal(i, *bore_cols[s]) : bore_normal(i, active[s]);
-        };
-        Eigen::MatrixXd A(k, k);
-        Eigen::MatrixXd N(k, 2);
-        Eigen::VectorXd g0(k);
-        for (unsigned int s = 0; s < k; ++s)
-          {
-            for (unsigned int r = 0; r < k; ++r)
-              A(r, s) = (*pin_cols[s])[active[r]] + bore_part(active[r], s);
-            N(s, 0) = kin.normal[active[s]][0];
-            N(s, 1) = kin.normal[active[s]][1];
-            g0(s)   = kin.g0[active[s]];
-          }
-        const Eigen::MatrixXd        As = 0.5 * (A + A.transpose());
-        const Eigen::LLT<Eigen::MatrixXd> llt(As);
-        AssertThrow(llt.info() == Eigen::Success,
-                    ExcMessage("The contact compliance on the active set is not positive definite."));
-        Eigen::VectorXd lambda_active;
-        U = 0;
-        if (force_control)
-          {
-            const Eigen::MatrixXd Y = llt.solve(N);
-            const Eigen::VectorXd z = llt.solve(g0);
-            const Eigen::Matrix2d S = N.transpose() * Y;
-            const Eigen::Vector2d rhs = Eigen::Vector2d(load[0], load[1]) + N.transpose() * z;
-            const Eigen::Vector2d u   = S.fullPivLu().solve(rhs);
-            U[0]                      = u[0];
-            U[1]                      = u[1];
-            lambda_active             = Y * u - z;
-          }
-        else
-          lambda_active = -llt.solve(g0);
-
-        // Gaps g = g0 − n·U + (pin part + bore part) of A λ. The elastic part is at
-        // most E = max Σ|w| · Σ_s |λ_s| reach(s) anywhere, so a candidate whose rigid
-        // gap g0 − n·U exceeds E + tolerance cannot penetrate: its gap is only bounded
-        // from below (g0 − n·U − E) and its columns are never read. At 1 kN on the
-        // default mesh this leaves a few dozen of the 2,888 candidates to evaluate.
+        sol.iterations           = iteration;
+        const ActiveColumns cols = reader.columns(active, max_pointwise_active);
+        const auto          x    = solve_active_system(kin, active, cols, reader, force_control, load);
+        U                        = x.U;
         std::fill(lambda.begin(), lambda.end(), 0.0);
-        double E = 0;
-        for (unsigned int s = 0; s < k; ++s)
-          {
-            lambda[active[s]] = lambda_active[s];
-            E += std::abs(lambda_active[s]) * reach(active[s]);
-          }
-        E *= max_weight_sum;
-        std::vector<double> bore_total;
-        if (fields)
-          {
-            bore_total.assign(2 * q, 0.0);
-            for (unsigned int s = 0; s < k; ++s)
-              for (unsigned int r = 0; r < 2 * q; ++r)
-                bore_total[r] += lambda_active[s] * (*bore_cols[s])[r];
-          }
-        for (unsigned int i = 0; i < m; ++i)
-          {
-            const double rigid = kin.g0[i] - kin.normal[i] * U;
-            if (rigid > E + tolerance && lambda[i] == 0.0)
-              {
-                gap[i] = rigid - E;
-                continue;
-              }
-            double g = rigid;
-            if (fields)
-              {
-                g += field_normal(i, bore_total);
-                for (unsigned int s = 0; s < k; ++s)
-                  g += (*pin_cols[s])[i] * lambda_active[s];
-              }
-            else
-              for (unsigned int s = 0; s < k; ++s)
-                g += ((*pin_cols[s])[i] + bore_normal(i, active[s])) * lambda_active[s];
-            gap[i] = g;
-          }
+        for (unsigned int s = 0; s < active.size(); ++s)
+          lambda[active[s]] = x.lambda[s];
+        candidate_gaps(kin, active, cols, reader, x.lambda, lambda, U, max_weight_sum, tolerance, gap);
         auto next = update_active_set(active, lambda, gap, tolerance, history);
         if (force_control)
           ensure_two_active(next, gap, kin.normal, load);
@@ -574,17 +675,16 @@ namespace wearlink::fe
     if (!converged)
       not_converged("condensed", max_iterations);
 
-    previous_active = active;
-    previous_load   = load;
-    sol.lambda      = lambda;
-    sol.gap         = gap;
+    previous_active     = active;
+    previous_load       = load;
+    sol.lambda          = lambda;
+    sol.gap             = gap;
     sol.pin_translation = U;
-    sol.n_active    = active.size();
+    sol.n_active        = active.size();
     for (unsigned int i = 0; i < m; ++i)
       sol.resultant += lambda[i] * kin.normal[i];
     return sol;
   }
-
 
   // The displacement field for a condensed solution: the contact forces −λ_i ν_i on
   // the pin and +λ_i n_i (interpolated) on the bore, one solve with the clamped
@@ -684,6 +784,61 @@ namespace wearlink::fe
   // control); the bushing's outer edge is fixed. The constrained system is condensed
   // and factored with UMFPACK; λ_i = −ν_i · (K u)_i are the reaction forces of the
   // unconstrained operator, and the gaps follow from u.
+  namespace
+  {
+    /**
+     * The constraints of one active set of the reference solver: the outer edge
+     * clamped; the pin core rigid (displacement control: clamped; force control: tied
+     * to its first node, which carries the load); for each active candidate the normal
+     * gap closed, ν·u_pin − Σ w n·u_bore = g0, written on the pin DoF of the larger
+     * normal component.
+     */
+    void
+    active_set_constraints(const ElasticityProblem &        problem,
+                           const ContactKinematics &        kin,
+                           const std::vector<unsigned int> &active,
+                           const bool                       force_control,
+                           AffineConstraints<double> &      constraints)
+    {
+      const auto &pin  = problem.pin_nodes;
+      const auto &bore = problem.bore_nodes;
+      const auto &core = problem.core_nodes;
+    for (const auto d : problem.outer_dofs)
+      constraints.add_line(d);
+    for (unsigned int c = 0; c < core.size(); ++c)
+      for (unsigned int d = 0; d < 2; ++d)
+        if (!force_control)
+          constraints.add_line(core[c][d]);
+        else if (c > 0)
+          {
+            constraints.add_line(core[c][d]);
+            constraints.add_entry(core[c][d], core[0][d], 1.0);
+          }
+    for (const auto i : active)
+      {
+        const auto &       nu   = pin[i].normal;
+        const auto &       nb   = kin.normal[i];
+        const unsigned int comp = std::abs(nu[0]) >= std::abs(nu[1]) ? 0 : 1;
+        const unsigned int other = 1 - comp;
+        const auto         dof  = pin[i].dofs[comp];
+        constraints.add_line(dof);
+        constraints.add_entry(dof, pin[i].dofs[other], -nu[other] / nu[comp]);
+        for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+          {
+            const auto &b = bore[kin.masters[i][a]];
+            const double w = kin.weights[i][a] / nu[comp];
+            if (w != 0)
+              {
+                constraints.add_entry(dof, b.dofs[0], w * nb[0]);
+                constraints.add_entry(dof, b.dofs[1], w * nb[1]);
+              }
+          }
+        constraints.set_inhomogeneity(dof, kin.g0[i] / nu[comp]);
+      }
+    constraints.close();
+    }
+  } // namespace
+
   ContactSolution
   ReferenceContactSolver::solve(const ContactKinematics &kin,
                                 bool                     force_control,
@@ -709,39 +864,7 @@ namespace wearlink::fe
       {
         sol.iterations = iteration;
         AffineConstraints<double> constraints;
-        for (const auto d : problem.outer_dofs)
-          constraints.add_line(d);
-        for (unsigned int c = 0; c < core.size(); ++c)
-          for (unsigned int d = 0; d < 2; ++d)
-            if (!force_control)
-              constraints.add_line(core[c][d]);
-            else if (c > 0)
-              {
-                constraints.add_line(core[c][d]);
-                constraints.add_entry(core[c][d], core[0][d], 1.0);
-              }
-        for (const auto i : active)
-          {
-            const auto &       nu   = pin[i].normal;
-            const auto &       nb   = kin.normal[i];
-            const unsigned int comp = std::abs(nu[0]) >= std::abs(nu[1]) ? 0 : 1;
-            const unsigned int other = 1 - comp;
-            const auto         dof  = pin[i].dofs[comp];
-            constraints.add_line(dof);
-            constraints.add_entry(dof, pin[i].dofs[other], -nu[other] / nu[comp]);
-            for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
-              {
-                const auto &b = bore[kin.masters[i][a]];
-                const double w = kin.weights[i][a] / nu[comp];
-                if (w != 0)
-                  {
-                    constraints.add_entry(dof, b.dofs[0], w * nb[0]);
-                    constraints.add_entry(dof, b.dofs[1], w * nb[1]);
-                  }
-              }
-            constraints.set_inhomogeneity(dof, kin.g0[i] / nu[comp]);
-          }
-        constraints.close();
+        active_set_constraints(problem, kin, active, force_control, constraints);
 
         u = solve_constrained(constraints, core[0], force_control ? P_pin : Tensor<1, 2>());
 

@@ -331,8 +331,15 @@ namespace wearlink::fe
     outer.erase(std::unique(outer.begin(), outer.end()), outer.end());
     outer_dofs = outer;
 
-    // Bore faces: node indices ordered by angle along the face (handling the face that
-    // straddles the ±π cut), sorted by their first angle.
+    build_bore_faces(bore_face_dofs);
+  }
+
+
+  // Bore faces: node indices ordered by angle along the face (handling the face that
+  // straddles the ±π cut), sorted by their first angle.
+  void
+  ElasticityProblem::build_bore_faces(const std::vector<std::vector<types::global_dof_index>> &bore_face_dofs)
+  {
     std::map<global_dof_index, unsigned int> bore_index;
     for (unsigned int k = 0; k < bore_nodes.size(); ++k)
       bore_index[bore_nodes[k].dofs[0]] = k;

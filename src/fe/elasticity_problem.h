@@ -134,6 +134,9 @@ namespace wearlink::fe
     assemble_system();
     void
     extract_contact_surfaces();
+    /** The bore faces of extract_contact_surfaces(), ordered by angle. */
+    void
+    build_bore_faces(const std::vector<std::vector<dealii::types::global_dof_index>> &bore_face_dofs);
 
     const std::string        msh_file;
     const unsigned int       refinements;

@@ -177,7 +177,20 @@ namespace wearlink::mbs
         trig[2 * b + 1] = std::sin(q[3 * b + 2]);
       }
     const StateView s(q, v, trig.data());
+    apply_forces(t, s, power);
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      constraints[c]->evaluate(t, s, rows[c]);
+    assemble_constraint_rhs(v);
+    assemble_schur_complement();
+    factor_schur_complement(t);
+    solve_multipliers();
+    constrained_accelerations(v, a, power);
+  }
 
+  void
+  Mechanism::apply_forces(const double t, const StateView &s, PowerTerms &power)
+  {
+    const unsigned int nb = n_bodies();
     // Applied forces g: gravity and force elements.
     for (unsigned int b = 0; b < nb; ++b)
       {
@@ -191,10 +204,12 @@ namespace wearlink::mbs
       f->add_forces(t, s, acc);
     power.damping  = acc.damping_power;
     power.friction = acc.friction_power;
+  }
 
-    // Constraint rows and the Baumgarte right-hand side γ̂ = γ − 2αΦ̇ − β²Φ.
-    for (unsigned int c = 0; c < constraints.size(); ++c)
-      constraints[c]->evaluate(t, s, rows[c]);
+  void
+  Mechanism::assemble_constraint_rhs(const double *v)
+  {
+    // Baumgarte: γ̂ = γ − 2αΦ̇ − β²Φ; rhs = Φq M⁻¹ g − γ̂.
 
     rhs.setZero();
     for (unsigned int c = 0; c < constraints.size(); ++c)
@@ -222,7 +237,12 @@ namespace wearlink::mbs
             rhs[row_offset[c] + k] = jmg - gamma_hat;
           }
       }
+  }
 
+  void
+  Mechanism::assemble_schur_complement()
+  {
+    const unsigned int nb = n_bodies();
     // S = Φq M⁻¹ Φqᵀ from the per-body blocks (lower triangle only).
     const unsigned int m = n_equations;
     for (unsigned int i = 0; i < m; ++i)
@@ -254,7 +274,12 @@ namespace wearlink::mbs
               }
           }
       }
+  }
 
+  void
+  Mechanism::factor_schur_complement(const double t)
+  {
+    const unsigned int m = n_equations;
     // Cholesky S = L Lᵀ in place within the envelope, then λ = S⁻¹ rhs. S has a few
     // dozen rows at most; a plain envelope factorization beats a blocked dense library
     // one by a wide margin here (measured with callgrind on the nine-bar: Eigen's
@@ -289,6 +314,13 @@ namespace wearlink::mbs
             L[i * m + j] = s * inv;
           }
       }
+  }
+
+  void
+  Mechanism::solve_multipliers()
+  {
+    const unsigned int m = n_equations;
+    const double *     L = schur.data();
     for (unsigned int r = 0; r < m; ++r)
       work[permuted[r]] = rhs[r];
     for (unsigned int i = 0; i < m; ++i) // L y = rhs
@@ -307,7 +339,12 @@ namespace wearlink::mbs
       }
     for (unsigned int r = 0; r < m; ++r)
       lambda[r] = work[permuted[r]];
+  }
 
+  void
+  Mechanism::constrained_accelerations(const double *v, double *a, PowerTerms &power) const
+  {
+    const unsigned int nb = n_bodies();
     // q̈ = M⁻¹ (g − Φqᵀ λ), and the reaction power −q̇ᵀ Φqᵀ λ.
     for (unsigned int i = 0; i < 3 * nb; ++i)
       a[i] = forces[i];

@@ -165,6 +165,26 @@ namespace wearlink::mbs
     }
 
   private:
+    // The steps of accelerations(), in order (each works on the workspace below).
+    /** g: gravity and the force elements' forces; their damping and friction power. */
+    void
+    apply_forces(double t, const StateView &s, PowerTerms &power);
+    /** rhs = Φq M⁻¹ g − γ̂ with Baumgarte's γ̂ = γ − 2αΦ̇ − β²Φ. */
+    void
+    assemble_constraint_rhs(const double *v);
+    /** S = Φq M⁻¹ Φqᵀ from the per-body blocks (lower triangle, envelope only). */
+    void
+    assemble_schur_complement();
+    /** S = L Lᵀ in place; NumericalError naming @p t if Φq lost rank. */
+    void
+    factor_schur_complement(double t);
+    /** λ = S⁻¹ rhs (two triangular solves in the permuted order). */
+    void
+    solve_multipliers();
+    /** q̈ = M⁻¹ (g − Φqᵀ λ) and the reaction power −q̇ᵀ Φqᵀ λ. */
+    void
+    constrained_accelerations(const double *v, double *a, PowerTerms &power) const;
+
     std::vector<Body>                          bodies;
     std::vector<std::unique_ptr<Constraint>>   constraints;
     std::vector<std::unique_ptr<ForceElement>> force_elements;

@@ -58,125 +58,149 @@ namespace wearlink::wear
   }
 
 
+  namespace
+  {
+    /** The iterations: cycle period, cycles per iteration, how many, extrapolation. */
+    void
+    declare_iteration_entries(dealii::ParameterHandler &prm)
+    {
+      declare(prm,
+              "Cycle period",
+              "0",
+              P::Double(0),
+              "Duration of one mechanism cycle (one crank revolution); 0 takes 2π/|ω| of the "
+              "first angle driver. Only used by wear runs (some joint has Wear law = "
+              "archard), as are all entries of this section except Clearance model.",
+              "s");
+      declare(prm,
+              "Cycles per iteration",
+              "1",
+              P::Double(0),
+              "Mechanism cycles simulated per wear iteration (wear is accumulated over them, "
+              "then extrapolated).",
+              "cycles");
+      declare(prm,
+              "Number of iterations",
+              "1",
+              P::Integer(1),
+              "Wear iterations (Extrapolation = fixed); the largest number of iterations "
+              "(adaptive).",
+              "none");
+      declare(prm,
+              "Extrapolation",
+              "fixed",
+              P::Selection("fixed|adaptive"),
+              "'fixed': each iteration's wear is multiplied by Extrapolation factor (the "
+              "seed: 100 cycles × 500); 'adaptive': the factor is chosen so that the largest "
+              "depth increment of any surface is Maximum depth increment (at most Maximum "
+              "extrapolation factor), until Target revolutions are reached.",
+              "none");
+      declare(prm,
+              "Extrapolation factor",
+              "1",
+              P::Double(0),
+              "fixed: revolutions represented by one simulated cycle.",
+              "none");
+      declare(prm,
+              "Maximum depth increment",
+              "1e-6",
+              P::Double(0),
+              "adaptive: cap of the largest wear-depth increment per iteration on any "
+              "surface of any joint.",
+              "m");
+      declare(prm,
+              "Maximum extrapolation factor",
+              "1e6",
+              P::Double(0),
+              "adaptive: largest factor per iteration.",
+              "none");
+      declare(prm,
+              "Target revolutions",
+              "0",
+              P::Double(0),
+              "adaptive: total mechanism revolutions (cycles) to represent; required > 0 "
+              "with adaptive extrapolation.",
+              "cycles");
+    }
+
+    /** How the worn geometry reaches the clearance and pressure models. */
+    void
+    declare_model_entries(dealii::ParameterHandler &prm)
+    {
+      declare(prm,
+              "Clearance model",
+              "exact",
+              P::Selection("exact|per-area"),
+              "How the clearance joints see the worn profiles: 'exact' the gap "
+              "g(φ) = R1*(φ − θ_b) − R2*(φ − θ_p) − e·u(φ) minimized over φ, nominal "
+              "stiffness; 'per-area' the seed's eqs 28–33 (the area facing the eccentricity "
+              "decides c*(n), δ*(n), K*(n)). Applies to every clearance joint with a worn "
+              "profile (from a profile file or from a wear iteration).",
+              "none");
+      declare(prm,
+              "Pressure evaluation",
+              "every step",
+              P::Selection("every step|samples per cycle"),
+              "When the pressure model is evaluated. The load history is always taken at "
+              "every accepted integrator step (trapezoidal rule in time). 'every step': the "
+              "model is evaluated for each loaded step; 'samples per cycle': once per "
+              "window of 1/N cycle, at the window's largest load, and the steps of the "
+              "window reuse that pressure shape, scaled to their own F_n and turned to their "
+              "own contact direction in each body's frame (N model calls per cycle: the "
+              "affordable setting for fe).",
+              "none");
+      declare(prm,
+              "Load samples per cycle",
+              "100",
+              P::Integer(8),
+              "Pressure evaluations per cycle with Pressure evaluation = samples per cycle.",
+              "none");
+      declare(prm,
+              "Remesh interval",
+              "1",
+              P::Integer(1),
+              "Iterations between re-meshes of the fe pressure model's worn geometry "
+              "(other pressure models follow the profiles every iteration).",
+              "none");
+    }
+
+    /** The before/after response and the profile plots. */
+    void
+    declare_output_entries(dealii::ParameterHandler &prm)
+    {
+      declare(prm,
+              "Response cycles",
+              "1",
+              P::Double(0),
+              "Cycles of the dynamic response recorded before wear (start of the first "
+              "iteration) and after wear (a run with the final profiles from the same "
+              "initial state), for the before/after plot.",
+              "cycles");
+      declare(prm,
+              "Response body",
+              "",
+              P::Anything(),
+              "Body whose acceleration is compared before and after wear; empty: the last "
+              "body of Mechanism/Bodies.",
+              "none");
+      declare(prm,
+              "Profile magnification",
+              "0",
+              P::Double(0),
+              "Magnification of the wear in the reconstructed-profile plots (plotted radius "
+              "= R + M (R* − R)); 0 chooses M so that the deepest wear shows as 15 % of the "
+              "radius. The plot title states it.",
+              "none");
+    }
+  } // namespace
+
   void
   declare_wear_loop(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Wear");
-    declare(prm,
-            "Cycle period",
-            "0",
-            P::Double(0),
-            "Duration of one mechanism cycle (one crank revolution); 0 takes 2π/|ω| of the "
-            "first angle driver. Only used by wear runs (some joint has Wear law = "
-            "archard), as are all entries of this section except Clearance model.",
-            "s");
-    declare(prm,
-            "Cycles per iteration",
-            "1",
-            P::Double(0),
-            "Mechanism cycles simulated per wear iteration (wear is accumulated over them, "
-            "then extrapolated).",
-            "cycles");
-    declare(prm,
-            "Number of iterations",
-            "1",
-            P::Integer(1),
-            "Wear iterations (Extrapolation = fixed); the largest number of iterations "
-            "(adaptive).",
-            "none");
-    declare(prm,
-            "Extrapolation",
-            "fixed",
-            P::Selection("fixed|adaptive"),
-            "'fixed': each iteration's wear is multiplied by Extrapolation factor (the "
-            "seed: 100 cycles × 500); 'adaptive': the factor is chosen so that the largest "
-            "depth increment of any surface is Maximum depth increment (at most Maximum "
-            "extrapolation factor), until Target revolutions are reached.",
-            "none");
-    declare(prm,
-            "Extrapolation factor",
-            "1",
-            P::Double(0),
-            "fixed: revolutions represented by one simulated cycle.",
-            "none");
-    declare(prm,
-            "Maximum depth increment",
-            "1e-6",
-            P::Double(0),
-            "adaptive: cap of the largest wear-depth increment per iteration on any "
-            "surface of any joint.",
-            "m");
-    declare(prm,
-            "Maximum extrapolation factor",
-            "1e6",
-            P::Double(0),
-            "adaptive: largest factor per iteration.",
-            "none");
-    declare(prm,
-            "Target revolutions",
-            "0",
-            P::Double(0),
-            "adaptive: total mechanism revolutions (cycles) to represent; required > 0 "
-            "with adaptive extrapolation.",
-            "cycles");
-    declare(prm,
-            "Clearance model",
-            "exact",
-            P::Selection("exact|per-area"),
-            "How the clearance joints see the worn profiles: 'exact' the gap "
-            "g(φ) = R1*(φ − θ_b) − R2*(φ − θ_p) − e·u(φ) minimized over φ, nominal "
-            "stiffness; 'per-area' the seed's eqs 28–33 (the area facing the eccentricity "
-            "decides c*(n), δ*(n), K*(n)). Applies to every clearance joint with a worn "
-            "profile (from a profile file or from a wear iteration).",
-            "none");
-    declare(prm,
-            "Pressure evaluation",
-            "every step",
-            P::Selection("every step|samples per cycle"),
-            "When the pressure model is evaluated. The load history is always taken at "
-            "every accepted integrator step (trapezoidal rule in time). 'every step': the "
-            "model is evaluated for each loaded step; 'samples per cycle': once per "
-            "window of 1/N cycle, at the window's largest load, and the steps of the "
-            "window reuse that pressure shape, scaled to their own F_n and turned to their "
-            "own contact direction in each body's frame (N model calls per cycle: the "
-            "affordable setting for fe).",
-            "none");
-    declare(prm,
-            "Load samples per cycle",
-            "100",
-            P::Integer(8),
-            "Pressure evaluations per cycle with Pressure evaluation = samples per cycle.",
-            "none");
-    declare(prm,
-            "Remesh interval",
-            "1",
-            P::Integer(1),
-            "Iterations between re-meshes of the fe pressure model's worn geometry "
-            "(other pressure models follow the profiles every iteration).",
-            "none");
-    declare(prm,
-            "Response cycles",
-            "1",
-            P::Double(0),
-            "Cycles of the dynamic response recorded before wear (start of the first "
-            "iteration) and after wear (a run with the final profiles from the same "
-            "initial state), for the before/after plot.",
-            "cycles");
-    declare(prm,
-            "Response body",
-            "",
-            P::Anything(),
-            "Body whose acceleration is compared before and after wear; empty: the last "
-            "body of Mechanism/Bodies.",
-            "none");
-    declare(prm,
-            "Profile magnification",
-            "0",
-            P::Double(0),
-            "Magnification of the wear in the reconstructed-profile plots (plotted radius "
-            "= R + M (R* − R)); 0 chooses M so that the deepest wear shows as 15 % of the "
-            "radius. The plot title states it.",
-            "none");
+    declare_iteration_entries(prm);
+    declare_model_entries(prm);
+    declare_output_entries(prm);
     prm.leave_subsection();
   }
 

@@ -14,6 +14,7 @@
 // area on both surfaces. Mukras et al. (J. Tribol. 132, 2010): foundation and FE give
 // similar wear volumes but different profiles — `wearlink compare-pressure` shows it.
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "base/parameters.h"
 #include "contact/pressure_model.h"
 
@@ -27,7 +28,7 @@ namespace wearlink::contact
 {
   namespace
   {
-    constexpr double pi         = 3.14159265358979323846;
+    using numbers::pi;
     constexpr unsigned int sub  = 8; ///< sub-samples per discrete area
     constexpr double floor_force = 1e-5; ///< [N], see evaluate()
 
@@ -55,25 +56,39 @@ namespace wearlink::contact
         stiffness = modulus / thickness;
       }
 
+      /**
+       * The pressure that carries @p load: the eccentricity at which the foundation's
+       * resultant equals the load (force control), found in three steps — a sub-grid
+       * of the bore, a start in contact along the load direction, Newton on the convex
+       * foundation energy — then averaged over the discrete areas of both surfaces.
+       */
       void
       evaluate(const ContactLoad &load, SurfacePressure &out) override
       {
-        const auto &bore = geometry.bore;
-        const auto &pin  = geometry.pin;
-        out.bore.assign(bore.n_points(), 0.0);
-        out.pin.assign(pin.n_points(), 0.0);
+        out.bore.assign(geometry.bore.n_points(), 0.0);
+        out.pin.assign(geometry.pin.n_points(), 0.0);
         // Loads below 10 µN meet the floating-point floor of the force balance (see
-        // below) and are left without pressure: in a joint carrying newtons their wear
-        // is below 1e-6 of the total (documented approximation, not a fallback model).
+        // equilibrium()) and are left without pressure: in a joint carrying newtons
+        // their wear is below 1e-6 of the total (documented approximation, not a
+        // fallback model).
         if (!(load.normal_force > floor_force))
           return;
+        set_up_subgrid(load);
+        Eigen::Vector2d e = start_in_contact(load);
+        e                 = equilibrium(load, e);
+        area_averages(e, load, out);
+      }
 
-        const unsigned int n  = bore.n_points() * sub;
-        const double       dp = 2 * pi / n;
-        const double       tb = load.bushing_angle, tp = load.pin_angle;
-        const Eigen::Vector2d target = load.normal_force *
-                                       Eigen::Vector2d(std::cos(load.contact_angle), std::sin(load.contact_angle));
-        // Sub-grid in global angle, aligned with the bore's areas.
+    private:
+      /** Sub-grid in global angle, aligned with the bore's areas, and the load vector. */
+      void
+      set_up_subgrid(const ContactLoad &load)
+      {
+        const auto &bore = geometry.bore;
+        n                = bore.n_points() * sub;
+        dp               = 2 * pi / n;
+        const double tb  = load.bushing_angle, tp = load.pin_angle;
+        target = load.normal_force * Eigen::Vector2d(std::cos(load.contact_angle), std::sin(load.contact_angle));
         phi.resize(n);
         r1.resize(n);
         r2.resize(n);
@@ -81,36 +96,47 @@ namespace wearlink::contact
           {
             phi[j] = tb + (j + 0.5) * dp - 0.5 * 2 * pi / bore.n_points();
             r1[j]  = bore.radius(phi[j] - tb);
-            r2[j]  = pin.radius(phi[j] - tp);
+            r2[j]  = geometry.pin.radius(phi[j] - tp);
           }
-        const double length = geometry.axial_length;
+      }
 
-        // Newton on the resultant: R(e) = Σ p_j u_j L R1_j Δφ − F = 0.
-        Eigen::Vector2d e(load.eccentricity[0], load.eccentricity[1]);
-        auto            residual = [&](const Eigen::Vector2d &x, Eigen::Matrix2d *jac) {
-          Eigen::Vector2d f = -target;
-          if (jac)
-            jac->setZero();
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const Eigen::Vector2d u(std::cos(phi[j]), std::sin(phi[j]));
-              const double          d = r2[j] + x.dot(u) - r1[j];
-              if (d <= 0)
-                continue;
-              const double w = length * r1[j] * dp;
-              f += pressure(d) * w * u;
-              if (jac)
-                *jac += slope(d) * w * u * u.transpose();
-            }
-          return f;
+      /** R(e) = Σ p_j u_j L R1_j Δφ − F, and its Jacobian if @p jac is set. */
+      Eigen::Vector2d
+      residual(const Eigen::Vector2d &x, Eigen::Matrix2d *jac) const
+      {
+        const double    length = geometry.axial_length;
+        Eigen::Vector2d f      = -target;
+        if (jac)
+          jac->setZero();
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const Eigen::Vector2d u(std::cos(phi[j]), std::sin(phi[j]));
+            const double          d = r2[j] + x.dot(u) - r1[j];
+            if (d <= 0)
+              continue;
+            const double w = length * r1[j] * dp;
+            f += pressure(d) * w * u;
+            if (jac)
+              *jac += slope(d) * w * u * u.transpose();
+          }
+        return f;
+      }
+
+      /**
+       * Start in contact: along the load direction the carried force grows
+       * monotonically with the pin's travel s; find s where it equals F_n (Illinois
+       * regula falsi on a bracket), so that Newton only corrects the lateral part. (A
+       * start at the rigid-body eccentricity fails for light loads, whose overlap arc is
+       * narrower than the sub-grid.)
+       */
+      Eigen::Vector2d
+      start_in_contact(const ContactLoad &load) const
+      {
+        const Eigen::Vector2d e(load.eccentricity[0], load.eccentricity[1]);
+        const Eigen::Vector2d dir   = target.normalized();
+        auto                  along = [&](double travel) {
+          return residual(travel * dir, nullptr).dot(dir) + load.normal_force;
         };
-        // Start in contact: along the load direction the carried force grows
-        // monotonically with the pin's travel s; find s where it equals F_n (Illinois
-        // regula falsi on a bracket), then let Newton correct the lateral part. (A start
-        // at the rigid-body eccentricity fails for light loads, whose overlap arc is
-        // narrower than the sub-grid.)
-        const Eigen::Vector2d dir = target.normalized();
-        auto along = [&](double travel) { return residual(travel * dir, nullptr).dot(dir) + load.normal_force; };
         double s_lo = 0, f_lo = along(s_lo) - load.normal_force;
         double s_hi = std::max(e.norm(), geometry.bore.max_radius() - geometry.pin.min_radius());
         double f_hi = along(s_hi) - load.normal_force;
@@ -148,62 +174,59 @@ namespace wearlink::contact
                 side = -1;
               }
           }
-        e = 0.5 * (s_lo + s_hi) * dir;
+        return 0.5 * (s_lo + s_hi) * dir;
+      }
+
+      /**
+       * Φ(x + λ s) − Φ(x) of the foundation energy Φ(e) = Σ_j w_j P(d_j(e)) − F·e,
+       * summed term by term (no cancellation against F·e).
+       */
+      double
+      energy_change(const Eigen::Vector2d &x, const Eigen::Vector2d &step, const double lambda) const
+      {
+        const double length = geometry.axial_length;
+        double       change = -lambda * target.dot(step);
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const Eigen::Vector2d u(std::cos(phi[j]), std::sin(phi[j]));
+            const double          d_old = r2[j] + x.dot(u) - r1[j];
+            const double          d_new = d_old + lambda * step.dot(u);
+            if (d_old > 0 || d_new > 0)
+              change +=
+                length * r1[j] * dp * (stored_energy(std::max(d_new, 0.0)) - stored_energy(std::max(d_old, 0.0)));
+          }
+        return change;
+      }
+
+      /**
+       * The force balance from @p e_start. It is the stationarity of the convex
+       * foundation energy Φ (∇Φ = R(e), ∇²Φ = J ⪰ 0), so Newton steps are descent
+       * directions of Φ, and an Armijo line search on Φ (not on |R|, whose decrease a
+       * kink of the piecewise-smooth R can block) converges also on worn, jagged
+       * profiles.
+       *
+       * A light load overlaps only a sample or two of the sub-grid, whose directions are
+       * quantized to dφ: the resultant can then miss the load direction by up to F dφ/2,
+       * which no eccentricity fixes. Such a start is kept if Newton cannot do better
+       * (error in direction ≤ dφ, in magnitude ≤ 1e-9 F). Loads so light that the force
+       * balance meets the floating-point floor of the overlap (k_foundation × area × ε ×
+       * |e| ~ 1e-11 N, more on worn, jagged profiles) are accepted within 10 µN.
+       * Anything worse than 1e-6 of the load is a NumericalError, never a silent result
+       * (measured on the nine-bar's profiles after 50,000 revolutions, where a line
+       * search on |R| stalled at up to 9 % of F).
+       */
+      Eigen::Vector2d
+      equilibrium(const ContactLoad &load, const Eigen::Vector2d &e_start) const
+      {
+        Eigen::Vector2d e = e_start;
         Eigen::Matrix2d jac;
-        Eigen::Vector2d f = residual(e, &jac);
-        // A light load overlaps only a sample or two of the sub-grid, whose directions
-        // are quantized to dφ: the resultant can then miss the load direction by up to
-        // F dφ/2, which no eccentricity fixes. Such a start is kept if Newton cannot
-        // do better (error in direction ≤ dφ, in magnitude ≤ 1e-9 F). Loads so light
-        // that the force balance meets the floating-point floor of the overlap
-        // (k_foundation × area × ε × |e| ~ 1e-11 N, more on worn, jagged profiles)
-        // are accepted within 10 µN.
-        const Eigen::Vector2d e_start = e;
-        const double          f_start = f.norm();
-        unsigned int it = 0;
-        // The force balance is the stationarity of the convex foundation energy
-        //     Φ(e) = Σ_j w_j P(d_j(e)) − F·e,  P(d) = ∫0^d p,  ∇Φ = R(e),  ∇²Φ = J ⪰ 0,
-        // so Newton steps are descent directions of Φ, and an Armijo line search on Φ
-        // (not on |R|, whose decrease a kink of the piecewise-smooth R can block)
-        // converges also on worn, jagged profiles.
-        // Φ(x + λ s) − Φ(x), summed term by term (no cancellation against F·e).
-        auto energy_change = [&](const Eigen::Vector2d &x, const Eigen::Vector2d &step, double lambda) {
-          double change = -lambda * target.dot(step);
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const Eigen::Vector2d u(std::cos(phi[j]), std::sin(phi[j]));
-              const double          d_old = r2[j] + x.dot(u) - r1[j];
-              const double          d_new = d_old + lambda * step.dot(u);
-              if (d_old > 0 || d_new > 0)
-                change += length * r1[j] * dp *
-                          (stored_energy(std::max(d_new, 0.0)) - stored_energy(std::max(d_old, 0.0)));
-            }
-          return change;
-        };
+        Eigen::Vector2d f       = residual(e, &jac);
+        const double    f_start = f.norm();
+        unsigned int    it      = 0;
         for (; it < 200 && f.norm() > 1e-10 * load.normal_force; ++it)
           {
-            // Newton with a small Levenberg shift: where only one or two sub-grid
-            // samples overlap, J is (nearly) singular along the bore, and the shifted
-            // step slides the pin towards the next contact; the line search trims it.
-            const double    shift = 1e-8 * std::max(jac.trace(), 1e-300);
-            Eigen::Vector2d step  = -(jac + shift * Eigen::Matrix2d::Identity()).ldlt().solve(f);
-            double slope_along = f.dot(step);
-            if (!(slope_along < 0))
-              {
-                step        = -f * (1e-7 / std::max(f.norm(), 1e-300));
-                slope_along = f.dot(step);
-              }
-            double lambda = 1;
-            double change = energy_change(e, step, lambda);
-            for (unsigned int k = 0; k < 80 && change > 1e-4 * lambda * slope_along; ++k)
-              {
-                lambda *= 0.5;
-                change = energy_change(e, step, lambda);
-              }
-            if (!(change < 0))
+            if (!damped_newton_step(e, f, jac))
               break;
-            e = e + lambda * step;
-            f = residual(e, &jac);
           }
         if (!(f.norm() <= 1e-6 * load.normal_force) && f_start <= dp * load.normal_force + floor_force &&
             f_start < f.norm())
@@ -211,10 +234,6 @@ namespace wearlink::contact
             e = e_start;
             f = residual(e, nullptr);
           }
-        // Equilibrium to 1e-6 of the load: with the energy line search and the shifted
-        // Newton step this holds on worn, jagged profiles too (measured on the nine-bar's
-        // profiles after 50,000 revolutions, where a line search on |R| stalled at up to
-        // 9 % of F); anything worse is a numerical failure, never a silent result.
         if (!(f.norm() <= 1e-6 * load.normal_force + floor_force))
           {
             std::ostringstream os;
@@ -223,8 +242,44 @@ namespace wearlink::contact
                << " Newton iterations). Increase 'Layer thickness' or check the profiles.";
             throw NumericalError(os.str());
           }
+        return e;
+      }
 
-        // Area averages on both surfaces.
+      /**
+       * One Newton step with a small Levenberg shift (where only one or two sub-grid
+       * samples overlap, J is nearly singular along the bore, and the shifted step slides
+       * the pin towards the next contact), trimmed by an Armijo line search on Φ.
+       * Updates @p e, @p f and @p jac; false if no step decreases Φ.
+       */
+      bool
+      damped_newton_step(Eigen::Vector2d &e, Eigen::Vector2d &f, Eigen::Matrix2d &jac) const
+      {
+        const double    shift       = 1e-8 * std::max(jac.trace(), 1e-300);
+        Eigen::Vector2d step        = -(jac + shift * Eigen::Matrix2d::Identity()).ldlt().solve(f);
+        double          slope_along = f.dot(step);
+        if (!(slope_along < 0))
+          {
+            step        = -f * (1e-7 / std::max(f.norm(), 1e-300));
+            slope_along = f.dot(step);
+          }
+        double lambda = 1;
+        double change = energy_change(e, step, lambda);
+        for (unsigned int k = 0; k < 80 && change > 1e-4 * lambda * slope_along; ++k)
+          {
+            lambda *= 0.5;
+            change = energy_change(e, step, lambda);
+          }
+        if (!(change < 0))
+          return false;
+        e = e + lambda * step;
+        f = residual(e, &jac);
+        return true;
+      }
+
+      /** The sub-grid pressures at eccentricity @p e, averaged over both surfaces' areas. */
+      void
+      area_averages(const Eigen::Vector2d &e, const ContactLoad &load, SurfacePressure &out) const
+      {
         for (unsigned int j = 0; j < n; ++j)
           {
             const Eigen::Vector2d u(std::cos(phi[j]), std::sin(phi[j]));
@@ -235,12 +290,11 @@ namespace wearlink::contact
             out.bore[j / sub] += p / sub;
             // The same load on the pin: the sub-arc's length on the pin is r2/r1 of the
             // bore's; distribute the force (p r1 dφ) over the pin area it falls in.
-            const unsigned int k = pin_area(phi[j] - tp);
-            out.pin[k] += p * r1[j] / r2[j] * dp / (2 * pi / pin.n_points());
+            const unsigned int k = pin_area(phi[j] - load.pin_angle);
+            out.pin[k] += p * r1[j] / r2[j] * dp / (2 * pi / geometry.pin.n_points());
           }
       }
 
-    private:
       double
       pressure(double d) const
       {
@@ -280,7 +334,10 @@ namespace wearlink::contact
       const bool          nonlinear;
       JointGeometry       geometry;
       double              stiffness = 0, modulus = 0;
-      std::vector<double> phi, r1, r2;
+      std::vector<double> phi, r1, r2;   ///< sub-grid angle, bore and pin radius
+      unsigned int        n  = 0;        ///< sub-grid size
+      double              dp = 0;        ///< sub-grid spacing [rad]
+      Eigen::Vector2d     target;        ///< the load vector [N]
     };
   } // namespace
 
