@@ -41,23 +41,23 @@ namespace wearlink::analysis
     /** Lyapunov: methods, directions ("x", "y") and embedding. */
     std::vector<LyapunovMethod> methods;
     /** Also the exponent of the simulation itself (io/shadow_trajectory.h). */
-    bool   two_trajectory            = false;
-    double two_trajectory_separation = 1e-6; ///< d0 [m]
-    double renormalization_interval  = 0.02; ///< τ [s]
-    std::vector<std::string>              directions;
-    std::optional<std::size_t>            delay;
-    std::optional<unsigned int>           dimension;
+    bool                        two_trajectory            = false;
+    double                      two_trajectory_separation = 1e-6; ///< d0 [m]
+    double                      renormalization_interval  = 0.02; ///< τ [s]
+    std::vector<std::string>    directions;
+    std::optional<std::size_t>  delay;
+    std::optional<unsigned int> dimension;
 
     /**
      * Wear scenes: the before/after-wear comparison (io/dynamics_comparison.h), from the
      * entries of `subsection Before-after wear`: common delay [s] and dimension (0 =
      * automatic on the before-wear run), delay scan [s], published exponents to print.
      */
-    double                          comparison_delay     = 0.0;
-    unsigned int                    comparison_dimension = 0;
-    std::vector<double>             delay_scan;
-    std::string                     published_exponents;
-    std::string                     published_note;
+    double              comparison_delay     = 0.0;
+    unsigned int        comparison_dimension = 0;
+    std::vector<double> delay_scan;
+    std::string         published_exponents;
+    std::string         published_note;
     /** Two-trajectory exponent runs of the comparison: cycles after Transient, tolerance. */
     double two_trajectory_cycles    = 10;
     double two_trajectory_tolerance = 1e-11;

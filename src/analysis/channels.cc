@@ -52,12 +52,12 @@ namespace wearlink::analysis
       const char *suffix, *unit, *what;
       K           kind;
     };
-    const Def defs[] = {{"_x_m", "m", "centre-of-mass x", K::body_x},
-                        {"_y_m", "m", "centre-of-mass y", K::body_y},
-                        {"_theta_rad", "rad", "angle, wrapped to [-pi, pi]", K::body_theta},
-                        {"_vx_m_s", "m/s", "centre-of-mass velocity x", K::body_vx},
-                        {"_vy_m_s", "m/s", "centre-of-mass velocity y", K::body_vy},
-                        {"_omega_rad_s", "rad/s", "angular velocity", K::body_omega}};
+    const Def            defs[] = {{"_x_m", "m", "centre-of-mass x", K::body_x},
+                                   {"_y_m", "m", "centre-of-mass y", K::body_y},
+                                   {"_theta_rad", "rad", "angle, wrapped to [-pi, pi]", K::body_theta},
+                                   {"_vx_m_s", "m/s", "centre-of-mass velocity x", K::body_vx},
+                                   {"_vy_m_s", "m/s", "centre-of-mass velocity y", K::body_vy},
+                                   {"_omega_rad_s", "rad/s", "angular velocity", K::body_omega}};
     std::vector<Channel> out;
     for (const Def &d : defs)
       {
@@ -126,7 +126,6 @@ namespace wearlink::analysis
     std::string list;
     for (const auto &c : channels)
       list += (list.empty() ? "" : ", ") + c.name;
-    throw InputError(where + ": there is no channel '" + name + "'. The channels of this scene are: " +
-                     list + ".");
+    throw InputError(where + ": there is no channel '" + name + "'. The channels of this scene are: " + list + ".");
   }
 } // namespace wearlink::analysis

@@ -35,16 +35,15 @@ namespace wearlink::analysis
         throw InputError("The series is constant (every sample is " + std::to_string(lo) +
                          "); it has no dynamics to embed. Choose another column.");
       std::vector<std::vector<std::uint16_t>> bins(n_shifts, std::vector<std::uint16_t>(x.size()));
-      std::vector<double> u(x.size());
+      std::vector<double>                     u(x.size());
       for (std::size_t i = 0; i < x.size(); ++i)
         u[i] = (x[i] - lo) / (hi - lo);
-      const double                           scale = n_bins;
+      const double scale = n_bins;
       for (unsigned int s = 0; s < n_shifts; ++s)
         {
           const double offset = static_cast<double>(s) / n_shifts;
           for (std::size_t i = 0; i < x.size(); ++i)
-            bins[s][i] = static_cast<std::uint16_t>(
-              std::min(static_cast<unsigned int>(u[i] * scale + offset), n_bins));
+            bins[s][i] = static_cast<std::uint16_t>(std::min(static_cast<unsigned int>(u[i] * scale + offset), n_bins));
         }
       return bins;
     }
@@ -60,9 +59,9 @@ namespace wearlink::analysis
                           const unsigned int                n_cells,
                           const std::size_t                 tau,
                           const std::size_t                 stride,
-                          std::vector<double> &             joint,
-                          std::vector<double> &             p_first,
-                          std::vector<double> &             p_second)
+                          std::vector<double>              &joint,
+                          std::vector<double>              &p_first,
+                          std::vector<double>              &p_second)
     {
       std::fill(joint.begin(), joint.end(), 0.0);
       std::fill(p_first.begin(), p_first.end(), 0.0);
@@ -106,7 +105,8 @@ namespace wearlink::analysis
         , joint(n_cells * n_cells)
         , p_first(n_cells)
         , p_second(n_cells)
-      {}
+      {
+      }
 
       double
       at(const std::size_t tau)
@@ -121,10 +121,10 @@ namespace wearlink::analysis
       }
 
     private:
-      unsigned int                           n_cells;
-      std::size_t                            max_pairs;
+      unsigned int                            n_cells;
+      std::size_t                             max_pairs;
       std::vector<std::vector<std::uint16_t>> bins;
-      std::vector<double>                    joint, p_first, p_second;
+      std::vector<double>                     joint, p_first, p_second;
     };
 
     /**
@@ -142,7 +142,7 @@ namespace wearlink::analysis
     is_sampled_flow(const std::vector<double> &x)
     {
       const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
-      double     step     = 0.0;
+      double step         = 0.0;
       for (std::size_t i = 1; i < x.size(); ++i)
         step += std::abs(x[i] - x[i - 1]);
       return step / (x.size() - 1) < max_flow_step * (*hi - *lo);
@@ -222,16 +222,16 @@ namespace wearlink::analysis
       throw InputError("Choosing the delay needs at least " + std::to_string(min_samples) +
                        " samples; the series has " + std::to_string(series.size()) + ".");
     constexpr double  minimum_information = 0.05;
-    const std::size_t max_delay =
-      options.max_delay > 0 ? std::min(options.max_delay, series.size() - min_samples)
-                            : std::min<std::size_t>(1000, std::max<std::size_t>(2, series.size() / 10));
+    const std::size_t max_delay           = options.max_delay > 0 ?
+                                              std::min(options.max_delay, series.size() - min_samples) :
+                                              std::min<std::size_t>(1000, std::max<std::size_t>(2, series.size() / 10));
     MutualInformation mi(series,
                          std::clamp(options.n_bins, 2u, 1000u),
                          std::max(1u, options.n_shifts),
                          options.max_pairs);
 
     DelayChoice out;
-    auto &      info = out.mutual_information;
+    auto       &info = out.mutual_information;
     info.push_back(mi.at(0));
     const double floor = minimum_information * info[0];
     auto         at    = [&](const std::size_t tau) {
@@ -274,7 +274,7 @@ namespace wearlink::analysis
   }
 
   double
-  false_nearest_neighbour_fraction(const std::vector<double> &         series,
+  false_nearest_neighbour_fraction(const std::vector<double>          &series,
                                    const std::size_t                   delay,
                                    const unsigned int                  dimension,
                                    const FalseNearestNeighbourOptions &options)
@@ -284,10 +284,10 @@ namespace wearlink::analysis
     // Points that also have the (d+1)-th coordinate x_{i + d tau}.
     const std::size_t n = series.size() > dimension * delay ? series.size() - dimension * delay : 0;
     if (n < 2 * w + min_samples)
-      throw InputError("False nearest neighbours in dimension " + std::to_string(dimension + 1) +
-                       " with a delay of " + std::to_string(delay) + " samples need at least " +
-                       std::to_string(2 * w + min_samples + dimension * delay) +
-                       " samples; the series has " + std::to_string(series.size()) +
+      throw InputError("False nearest neighbours in dimension " + std::to_string(dimension + 1) + " with a delay of " +
+                       std::to_string(delay) + " samples need at least " +
+                       std::to_string(2 * w + min_samples + dimension * delay) + " samples; the series has " +
+                       std::to_string(series.size()) +
                        ". Give a longer series, or a smaller delay or embedding dimension.");
     const KdTree tree(series, emb.dimension, emb.delay, n);
     const double r_a = standard_deviation(series);
@@ -298,8 +298,8 @@ namespace wearlink::analysis
     // branch with nearly the same value and making a sine look one-dimensional. So the
     // search skips points within rounding distance and takes the nearest distinct one
     // (as Wolf's minimum scale does), and the test is made on that neighbour.
-    const std::size_t n_queries = std::min(n, std::max<std::size_t>(1, options.max_queries));
-    std::size_t       n_false = 0, n_tested = 0;
+    const std::size_t   n_queries = std::min(n, std::max<std::size_t>(1, options.max_queries));
+    std::size_t         n_false = 0, n_tested = 0;
     std::vector<double> query(dimension);
     for (std::size_t q = 0; q < n_queries; ++q)
       {
@@ -310,15 +310,14 @@ namespace wearlink::analysis
         filter.query_index    = i;
         filter.theiler_window = w;
         filter.min_distance   = exact_recurrence * r_a;
-        const Neighbour nb = tree.nearest(query.data(), filter);
+        const Neighbour nb    = tree.nearest(query.data(), filter);
         if (!nb.found())
           continue; // every admissible point repeats this one: nothing to test
         const std::size_t j      = nb.index;
         const double      extra  = std::abs(series[i + dimension * delay] - series[j + dimension * delay]);
         const double      r_next = std::sqrt(nb.distance * nb.distance + extra * extra);
         ++n_tested;
-        if (extra / nb.distance > options.distance_ratio_threshold ||
-            r_next / r_a > options.attractor_size_threshold)
+        if (extra / nb.distance > options.distance_ratio_threshold || r_next / r_a > options.attractor_size_threshold)
           ++n_false;
       }
     if (n_tested == 0)
@@ -329,7 +328,7 @@ namespace wearlink::analysis
   }
 
   DimensionChoice
-  choose_dimension(const std::vector<double> &         series,
+  choose_dimension(const std::vector<double>          &series,
                    const std::size_t                   delay,
                    const FalseNearestNeighbourOptions &options)
   {

@@ -165,7 +165,7 @@ namespace wearlink::analysis
    * @p delay [-] (Kennel et al. 1992, criteria 1 or 2).
    */
   double
-  false_nearest_neighbour_fraction(const std::vector<double> &         series,
+  false_nearest_neighbour_fraction(const std::vector<double>          &series,
                                    std::size_t                         delay,
                                    unsigned int                        dimension,
                                    const FalseNearestNeighbourOptions &options = {});
@@ -176,7 +176,7 @@ namespace wearlink::analysis
    * too short for dimension 2 at this delay.
    */
   DimensionChoice
-  choose_dimension(const std::vector<double> &         series,
+  choose_dimension(const std::vector<double>          &series,
                    std::size_t                         delay,
                    const FalseNearestNeighbourOptions &options = {});
 } // namespace wearlink::analysis

@@ -44,7 +44,7 @@ namespace wearlink::analysis
       {
         items.reserve(k + 1);
       }
-      std::size_t                                   k;
+      std::size_t                                 k;
       std::vector<std::pair<double, std::size_t>> items;
 
       double
@@ -57,9 +57,7 @@ namespace wearlink::analysis
       {
         if (items.size() == k && d_sq >= items.back().first)
           return;
-        const auto pos = std::upper_bound(items.begin(),
-                                          items.end(),
-                                          std::make_pair(d_sq, index));
+        const auto pos = std::upper_bound(items.begin(), items.end(), std::make_pair(d_sq, index));
         items.insert(pos, std::make_pair(d_sq, index));
         if (items.size() > k)
           items.pop_back();
@@ -74,8 +72,7 @@ namespace wearlink::analysis
     : dim(dimension)
   {
     Assert(dimension >= 1 && delay >= 1, dealii::ExcInternalError());
-    Assert(n == 0 || (n - 1) + (dimension - 1) * delay < series.size(),
-           dealii::ExcInternalError());
+    Assert(n == 0 || (n - 1) + (dimension - 1) * delay < series.size(), dealii::ExcInternalError());
     original_index.resize(n);
     std::iota(original_index.begin(), original_index.end(), std::size_t(0));
     if (n == 0)
@@ -104,7 +101,7 @@ namespace wearlink::analysis
     if (end - begin <= leaf_size)
       return id;
 
-    unsigned int best_dim = 0;
+    unsigned int best_dim    = 0;
     double       best_spread = -1.0;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -132,23 +129,23 @@ namespace wearlink::analysis
                      [&](const std::size_t a, const std::size_t b) {
                        return coords[a * dim + best_dim] < coords[b * dim + best_dim];
                      });
-    const double split = coords[original_index[mid] * dim + best_dim];
-    nodes[id].split_dim   = best_dim;
-    nodes[id].split_value = split;
+    const double split      = coords[original_index[mid] * dim + best_dim];
+    nodes[id].split_dim     = best_dim;
+    nodes[id].split_value   = split;
     const std::size_t left  = build(begin, mid);
     const std::size_t right = build(mid, end);
-    nodes[id].left  = left;
-    nodes[id].right = right;
+    nodes[id].left          = left;
+    nodes[id].right         = right;
     return id;
   }
 
   template <class Collector>
   void
   KdTree::search(const std::size_t      node_id,
-                 const double *         point,
+                 const double          *point,
                  const NeighbourFilter &filter,
                  const double           min_sq,
-                 Collector &            collector) const
+                 Collector             &collector) const
   {
     const Node &node = nodes[node_id];
     if (node.left == 0)
@@ -168,8 +165,7 @@ namespace wearlink::analysis
             const std::size_t j = original_index[p];
             if (filter.query_index != NeighbourFilter::no_index)
               {
-                const std::size_t gap =
-                  j > filter.query_index ? j - filter.query_index : filter.query_index - j;
+                const std::size_t gap = j > filter.query_index ? j - filter.query_index : filter.query_index - j;
                 if (gap <= filter.theiler_window)
                   continue;
               }
@@ -177,9 +173,9 @@ namespace wearlink::analysis
           }
         return;
       }
-    const double      diff  = point[node.split_dim] - node.split_value;
-    const std::size_t near  = diff < 0 ? node.left : node.right;
-    const std::size_t far   = diff < 0 ? node.right : node.left;
+    const double      diff = point[node.split_dim] - node.split_value;
+    const std::size_t near = diff < 0 ? node.left : node.right;
+    const std::size_t far  = diff < 0 ? node.right : node.left;
     search(near, point, filter, min_sq, collector);
     const double bound = std::min(collector.bound_sq(), filter.max_distance * filter.max_distance);
     if (diff * diff < bound)

@@ -64,10 +64,7 @@ namespace wearlink::analysis
      * @param[in] n_points number of delay vectors; needs (n_points - 1) + (m - 1) tau
      *   < series.size()
      */
-    KdTree(const std::vector<double> &series,
-           unsigned int               dimension,
-           std::size_t                delay,
-           std::size_t                n_points);
+    KdTree(const std::vector<double> &series, unsigned int dimension, std::size_t delay, std::size_t n_points);
 
     /** The nearest admissible point to @p point (m coordinates); not found() if none. */
     Neighbour
@@ -99,8 +96,8 @@ namespace wearlink::analysis
       std::size_t begin;
       std::size_t end;
       /** Children (0 for a leaf; the root is node 0 and is nobody's child). */
-      std::size_t left  = 0;
-      std::size_t right = 0;
+      std::size_t  left        = 0;
+      std::size_t  right       = 0;
       unsigned int split_dim   = 0;
       double       split_value = 0.0;
     };
@@ -110,11 +107,8 @@ namespace wearlink::analysis
 
     template <class Collector>
     void
-    search(std::size_t            node,
-           const double *         point,
-           const NeighbourFilter &filter,
-           double                 min_sq,
-           Collector &            collector) const;
+    search(std::size_t node, const double *point, const NeighbourFilter &filter, double min_sq, Collector &collector)
+      const;
 
     unsigned int             dim;
     std::vector<double>      coords;         ///< tree-ordered, row-major n x dim

@@ -28,10 +28,7 @@ namespace wearlink::analysis
 
     /** Delay vector y_i of @p series into @p y (m coordinates). */
     void
-    delay_vector(const std::vector<double> &series,
-                 const Embedding &          emb,
-                 const std::size_t          i,
-                 std::vector<double> &      y)
+    delay_vector(const std::vector<double> &series, const Embedding &emb, const std::size_t i, std::vector<double> &y)
     {
       y.resize(emb.dimension);
       for (unsigned int d = 0; d < emb.dimension; ++d)
@@ -40,10 +37,7 @@ namespace wearlink::analysis
 
     /** |y_i - y_j| without forming the vectors [units of the series]. */
     double
-    distance(const std::vector<double> &series,
-             const Embedding &          emb,
-             const std::size_t          i,
-             const std::size_t          j)
+    distance(const std::vector<double> &series, const Embedding &emb, const std::size_t i, const std::size_t j)
     {
       double s = 0.0;
       for (unsigned int d = 0; d < emb.dimension; ++d)
@@ -57,16 +51,15 @@ namespace wearlink::analysis
     void
     check_length(const std::string &method,
                  const std::size_t  n_samples,
-                 const Embedding &  emb,
+                 const Embedding   &emb,
                  const std::size_t  reserved,
                  const std::size_t  theiler_window)
     {
       const std::size_t needed = emb.window() + reserved + 2 * theiler_window + min_vectors_beyond_window;
       if (n_samples < needed)
-        throw InputError("The " + method + " method with embedding dimension " +
-                         std::to_string(emb.dimension) + ", delay " + std::to_string(emb.delay) +
-                         " and Theiler window " + std::to_string(theiler_window) +
-                         " samples needs at least " + std::to_string(needed) +
+        throw InputError("The " + method + " method with embedding dimension " + std::to_string(emb.dimension) +
+                         ", delay " + std::to_string(emb.delay) + " and Theiler window " +
+                         std::to_string(theiler_window) + " samples needs at least " + std::to_string(needed) +
                          " samples; the series has " + std::to_string(n_samples) +
                          ". Give a longer series, or a smaller embedding dimension or delay.");
     }
@@ -119,8 +112,8 @@ namespace wearlink::analysis
     if (settings.dimension)
       {
         if (*settings.dimension < 1 || *settings.dimension > 64)
-          throw InputError("The embedding dimension must be between 1 and 64 (given: " +
-                           std::to_string(*settings.dimension) + ").");
+          throw InputError(
+            "The embedding dimension must be between 1 and 64 (given: " + std::to_string(*settings.dimension) + ").");
         out.embedding.dimension = *settings.dimension;
       }
     else
@@ -157,15 +150,15 @@ namespace wearlink::analysis
      */
     Replacement
     wolf_replacement(const std::vector<double> &series,
-                     const Embedding &          emb,
-                     const KdTree &             tree,
-                     const WolfOptions &        options,
+                     const Embedding           &emb,
+                     const KdTree              &tree,
+                     const WolfOptions         &options,
                      const std::size_t          i,
                      const std::size_t          j_evolved,
                      const double               max_scale,
                      const std::vector<double> &y_ref,
-                     std::vector<double> &      y_old,
-                     NeighbourFilter &          filter)
+                     std::vector<double>       &y_old,
+                     NeighbourFilter           &filter)
     {
       delay_vector(series, emb, j_evolved, y_old);
       double v_norm = 0.0;
@@ -174,9 +167,9 @@ namespace wearlink::analysis
           y_old[d] -= y_ref[d];
           v_norm += y_old[d] * y_old[d];
         }
-      v_norm                                 = std::sqrt(v_norm);
-      filter.query_index                     = i;
-      filter.max_distance                    = max_scale_multiplier * max_scale;
+      v_norm                                  = std::sqrt(v_norm);
+      filter.query_index                      = i;
+      filter.max_distance                     = max_scale_multiplier * max_scale;
       const std::vector<Neighbour> candidates = tree.k_nearest(y_ref.data(), options.n_candidates, filter);
       std::vector<double>          angles(candidates.size());
       for (std::size_t c = 0; c < candidates.size(); ++c)
@@ -188,8 +181,7 @@ namespace wearlink::analysis
           angles[c]           = std::acos(std::clamp(cosine, -1.0, 1.0));
         }
       std::size_t chosen = candidates.size();
-      for (double angle_limit = options.max_angle; angle_limit < pi && chosen == candidates.size();
-           angle_limit *= 2.0)
+      for (double angle_limit = options.max_angle; angle_limit < pi && chosen == candidates.size(); angle_limit *= 2.0)
         for (unsigned int mult = 1; mult <= max_scale_multiplier && chosen == candidates.size(); ++mult)
           {
             double best = angle_limit;
@@ -221,11 +213,11 @@ namespace wearlink::analysis
   // angle limit; if still nothing qualifies, keep the evolved neighbour.
   WolfResult
   wolf_exponent(const std::vector<double> &series,
-                const Embedding &          emb,
+                const Embedding           &emb,
                 const std::size_t          theiler_window,
-                const WolfOptions &        options)
+                const WolfOptions         &options)
   {
-    WolfResult out;
+    WolfResult        out;
     const std::size_t E = options.evolution_steps.value_or(6 * emb.delay);
     if (E < 1)
       throw InputError("The Wolf evolution time must be at least 1 sample.");
@@ -397,9 +389,8 @@ namespace wearlink::analysis
       const double      rise  = rise_after(smoothed, start);
       if (rise < min_divergence)
         return false;
-      const double peak = *std::max_element(smoothed.begin() + start, smoothed.end());
-      const double low_second_half =
-        *std::min_element(smoothed.begin() + smoothed.size() / 2, smoothed.end());
+      const double peak            = *std::max_element(smoothed.begin() + start, smoothed.end());
+      const double low_second_half = *std::min_element(smoothed.begin() + smoothed.size() / 2, smoothed.end());
       return low_second_half >= peak - 0.1 * rise;
     }
 
@@ -417,8 +408,8 @@ namespace wearlink::analysis
     /** |y_{i+k} - ((1 - f) y_{j+k} + f y_{j+k+1})| [units of the series]. */
     double
     pair_distance(const std::vector<double> &series,
-                  const Embedding &          emb,
-                  const NeighbourPair &      pair,
+                  const Embedding           &emb,
+                  const NeighbourPair       &pair,
                   const std::size_t          k)
     {
       if (pair.f == 0.0)
@@ -426,9 +417,9 @@ namespace wearlink::analysis
       double s = 0.0;
       for (unsigned int d = 0; d < emb.dimension; ++d)
         {
-          const std::size_t o    = d * emb.delay;
-          const double      diff = series[pair.i + k + o] - (1.0 - pair.f) * series[pair.j + k + o] -
-                              pair.f * series[pair.j + k + 1 + o];
+          const std::size_t o = d * emb.delay;
+          const double      diff =
+            series[pair.i + k + o] - (1.0 - pair.f) * series[pair.j + k + o] - pair.f * series[pair.j + k + 1 + o];
           s += diff * diff;
         }
       return std::sqrt(s);
@@ -445,10 +436,10 @@ namespace wearlink::analysis
      */
     NeighbourPair
     refine_along_trajectory(const std::vector<double> &series,
-                            const Embedding &          emb,
+                            const Embedding           &emb,
                             const std::vector<double> &y,
                             const std::size_t          i,
-                            const Neighbour &          nb,
+                            const Neighbour           &nb,
                             const double               min_distance)
     {
       NeighbourPair best{i, nb.index, 0.0};
@@ -494,8 +485,8 @@ namespace wearlink::analysis
     resolves_trajectory(const std::vector<double> &series, const Embedding &emb, const std::size_t M)
     {
       const std::size_t stride = std::max<std::size_t>(1, M / 10000);
-      double            step = 0.0;
-      std::size_t       n    = 0;
+      double            step   = 0.0;
+      std::size_t       n      = 0;
       for (std::size_t i = 0; i + 1 < M; i += stride, ++n)
         step += distance(series, emb, i, i + 1);
       const double extent = series_extent(series) * std::sqrt(static_cast<double>(emb.dimension));
@@ -539,11 +530,11 @@ namespace wearlink::analysis
               std::size_t k90 = 1;
               while (k90 < start && curve[k90] < curve[0] + 0.9 * level)
                 ++k90;
-              region.begin = 0;
-              region.end   = std::max<std::size_t>(k90, 2);
-              region.rule  = "UNRESOLVED: the separation saturates within 2 delays (the embedding's "
-                             "nearest neighbours are not close in the full state); initial rise to "
-                             "90 % of the plateau fitted; compare at a shorter delay";
+              region.begin    = 0;
+              region.end      = std::max<std::size_t>(k90, 2);
+              region.rule     = "UNRESOLVED: the separation saturates within 2 delays (the embedding's "
+                                "nearest neighbours are not close in the full state); initial rise to "
+                                "90 % of the plateau fitted; compare at a shorter delay";
               region.resolved = false;
               return region;
             }
@@ -557,7 +548,7 @@ namespace wearlink::analysis
       for (std::size_t k = 0; k <= K; ++k)
         {
           const std::size_t lo = k > h ? k - h : 0, hi = std::min(K, k + h);
-          slope[k]             = (smoothed[hi] - smoothed[lo]) / (hi - lo);
+          slope[k] = (smoothed[hi] - smoothed[lo]) / (hi - lo);
         }
       double best_rise = 0.0;
       for (std::size_t a = 0; a < K; ++a)
@@ -579,10 +570,9 @@ namespace wearlink::analysis
                 }
             }
         }
-      region.rule = best_rise > 0.0 ?
-                      "straightest rise: the window with the largest rise in which the local "
-                      "slope varies by less than 20%" :
-                      "no straight part found: whole curve after 2 delays";
+      region.rule = best_rise > 0.0 ? "straightest rise: the window with the largest rise in which the local "
+                                      "slope varies by less than 20%" :
+                                      "no straight part found: whole curve after 2 delays";
       return region;
     }
   } // namespace
@@ -600,8 +590,8 @@ namespace wearlink::analysis
      */
     std::vector<NeighbourPair>
     rosenstein_pairs(const std::vector<double> &series,
-                     const Embedding &          emb,
-                     const KdTree &             tree,
+                     const Embedding           &emb,
+                     const KdTree              &tree,
                      const std::size_t          n_tree,
                      const std::size_t          theiler_window,
                      const std::size_t          max_references,
@@ -637,8 +627,8 @@ namespace wearlink::analysis
      * max(64, 16 τ) on) once the smoothed curve has saturated.
      */
     std::vector<double>
-    mean_log_divergence(const std::vector<double> &       series,
-                        const Embedding &                 emb,
+    mean_log_divergence(const std::vector<double>        &series,
+                        const Embedding                  &emb,
                         const std::vector<NeighbourPair> &pairs,
                         const std::size_t                 K_cap,
                         const bool                        stop_at_saturation)
@@ -699,9 +689,9 @@ namespace wearlink::analysis
   // unsmoothed curve.
   RosensteinResult
   rosenstein_exponent(const std::vector<double> &series,
-                      const Embedding &          emb,
+                      const Embedding           &emb,
                       const std::size_t          theiler_window,
-                      const RosensteinOptions &  options)
+                      const RosensteinOptions   &options)
   {
     RosensteinResult out;
     check_length("Rosenstein", series.size(), emb, 8, theiler_window);
@@ -722,15 +712,15 @@ namespace wearlink::analysis
     // Neighbours need K_cap + 1 samples of future (the +1 for the interpolation).
     const std::size_t n_tree = M - K_cap - 1;
     const KdTree      tree(series, emb.dimension, emb.delay, n_tree);
-    out.interpolated         = options.interpolate.value_or(resolves_trajectory(series, emb, M));
+    out.interpolated = options.interpolate.value_or(resolves_trajectory(series, emb, M));
 
     const std::vector<NeighbourPair> pairs =
       rosenstein_pairs(series, emb, tree, n_tree, theiler_window, options.max_references, out.interpolated);
     out.n_references = pairs.size();
 
-    const std::size_t smoothing = 2 * emb.delay;
-    auto &            curve     = out.mean_log_divergence;
-    curve                       = mean_log_divergence(series, emb, pairs, K_cap, !options.horizon);
+    const std::size_t smoothing      = 2 * emb.delay;
+    auto             &curve          = out.mean_log_divergence;
+    curve                            = mean_log_divergence(series, emb, pairs, K_cap, !options.horizon);
     const std::vector<double> smooth = moving_average(curve, smoothing);
     out.saturated                    = has_saturated(smooth, emb.delay);
     const std::size_t K              = curve.size() - 1;
@@ -741,8 +731,10 @@ namespace wearlink::analysis
         region.end   = std::min(options.fit_end.value_or(K), K);
         if (region.begin >= region.end)
           throw InputError("The Rosenstein fit region [" + std::to_string(region.begin) + ", " +
-                           std::to_string(region.end) + "] samples is empty; the divergence "
-                           "curve has " + std::to_string(curve.size()) + " samples.");
+                           std::to_string(region.end) +
+                           "] samples is empty; the divergence "
+                           "curve has " +
+                           std::to_string(curve.size()) + " samples.");
         region.rule = "given by the caller";
       }
     else
@@ -782,11 +774,12 @@ namespace wearlink::analysis
   {
     for (std::size_t i = 0; i < series.size(); ++i)
       if (!std::isfinite(series[i]))
-        throw InputError("Sample " + std::to_string(i) + " of the series is not a finite number; "
+        throw InputError("Sample " + std::to_string(i) +
+                         " of the series is not a finite number; "
                          "the Lyapunov exponent needs a complete series.");
     if (settings.sample_interval && !(*settings.sample_interval > 0.0))
-      throw InputError("The sample interval dt must be > 0 s (given: " +
-                       std::to_string(*settings.sample_interval) + ").");
+      throw InputError("The sample interval dt must be > 0 s (given: " + std::to_string(*settings.sample_interval) +
+                       ").");
     LyapunovEstimate out;
     out.method          = settings.method;
     out.sample_interval = settings.sample_interval;
@@ -798,10 +791,8 @@ namespace wearlink::analysis
           out.exponent_per_sample = out.wolf->exponent_per_sample;
           break;
         case LyapunovMethod::rosenstein:
-          out.rosenstein = rosenstein_exponent(series,
-                                               out.embedding.embedding,
-                                               out.embedding.theiler_window,
-                                               settings.rosenstein);
+          out.rosenstein =
+            rosenstein_exponent(series, out.embedding.embedding, out.embedding.theiler_window, settings.rosenstein);
           out.exponent_per_sample = out.rosenstein->exponent_per_sample;
           break;
         default:

@@ -49,7 +49,7 @@ namespace wearlink::analysis
     /** Embedding dimension [-]; unset = false nearest neighbours (Kennel 1992). */
     std::optional<unsigned int> dimension;
     /** Theiler window [samples]; unset = default_theiler_window() = m tau. */
-    std::optional<std::size_t> theiler_window;
+    std::optional<std::size_t>   theiler_window;
     MutualInformationOptions     mutual_information;
     FalseNearestNeighbourOptions false_nearest_neighbours;
   };
@@ -57,7 +57,7 @@ namespace wearlink::analysis
   /** The embedding actually used, and how it was found. */
   struct ResolvedEmbedding
   {
-    Embedding   embedding;
+    Embedding embedding;
     /** Theiler window w [samples]: neighbours must be more than w samples apart. */
     std::size_t theiler_window = 0;
     /** Set when the delay was chosen automatically. */
@@ -141,9 +141,9 @@ namespace wearlink::analysis
    */
   WolfResult
   wolf_exponent(const std::vector<double> &series,
-                const Embedding &          embedding,
+                const Embedding           &embedding,
                 std::size_t                theiler_window,
-                const WolfOptions &        options = {});
+                const WolfOptions         &options = {});
 
   /** Settings of Rosenstein's method. */
   struct RosensteinOptions
@@ -227,9 +227,9 @@ namespace wearlink::analysis
    */
   RosensteinResult
   rosenstein_exponent(const std::vector<double> &series,
-                      const Embedding &          embedding,
+                      const Embedding           &embedding,
                       std::size_t                theiler_window,
-                      const RosensteinOptions &  options = {});
+                      const RosensteinOptions   &options = {});
 
   /** Everything a caller needs to report one estimate. */
   struct LyapunovEstimate
@@ -270,6 +270,5 @@ namespace wearlink::analysis
    * series or out-of-range settings.
    */
   LyapunovEstimate
-  estimate_largest_lyapunov_exponent(const std::vector<double> &series,
-                                     const LyapunovSettings &   settings);
+  estimate_largest_lyapunov_exponent(const std::vector<double> &series, const LyapunovSettings &settings);
 } // namespace wearlink::analysis

@@ -17,7 +17,7 @@ namespace wearlink::analysis
   section_spread(const PoincareSection &section)
   {
     std::vector<ChannelSpread> out;
-    const auto &               p = section.points;
+    const auto                &p = section.points;
     if (p.n_samples() == 0)
       return out;
     for (std::size_t c = 0; c < p.names.size(); ++c)
@@ -49,8 +49,8 @@ namespace wearlink::analysis
   lyapunov_of_channel(const RecordedRun &run, const std::string &channel, LyapunovSettings settings)
   {
     if (!(run.sample_interval > 0.0))
-      throw InputError("The run has no uniformly sampled series; the Lyapunov exponent of '" +
-                       channel + "' needs one (list phase-portrait or lyapunov in "
+      throw InputError("The run has no uniformly sampled series; the Lyapunov exponent of '" + channel +
+                       "' needs one (list phase-portrait or lyapunov in "
                        "'Analyses/List of analyses').");
     const std::size_t c      = run.series.index(channel);
     settings.sample_interval = run.sample_interval;
@@ -64,9 +64,8 @@ namespace wearlink::analysis
       }
     catch (const InputError &e)
       {
-        throw InputError("Lyapunov exponent of channel '" + channel + "' (" +
-                         std::to_string(out.n_samples) + " samples every " +
-                         std::to_string(run.sample_interval) + " s): " + e.message());
+        throw InputError("Lyapunov exponent of channel '" + channel + "' (" + std::to_string(out.n_samples) +
+                         " samples every " + std::to_string(run.sample_interval) + " s): " + e.message());
       }
     out.per_driving_period = out.estimate.exponent() * run.driving_period;
     return out;

@@ -42,8 +42,11 @@ namespace wearlink::analysis
     }
 
     void
-    append(SampledChannels &s, const std::vector<Channel> &channels, const double t, const Eigen::VectorXd &y,
-           const unsigned int n_coordinates)
+    append(SampledChannels            &s,
+           const std::vector<Channel> &channels,
+           const double                t,
+           const Eigen::VectorXd      &y,
+           const unsigned int          n_coordinates)
     {
       const mbs::StateView view(y.data(), y.data() + n_coordinates);
       s.time.push_back(t);
@@ -61,8 +64,8 @@ namespace wearlink::analysis
     std::string list;
     for (const auto &n : names)
       list += (list.empty() ? "" : ", ") + n;
-    throw InputError("The channel '" + name + "' was not recorded; recorded channels: " +
-                     (list.empty() ? std::string("none") : list) + ".");
+    throw InputError("The channel '" + name +
+                     "' was not recorded; recorded channels: " + (list.empty() ? std::string("none") : list) + ".");
   }
 
   bool
@@ -148,9 +151,9 @@ namespace wearlink::analysis
     for (double ts = recorded.first_time + recorded.period * n_taken; ts <= c.t + time_slack(c.t);
          ts        = recorded.first_time + recorded.period * n_taken)
       {
-        c.simulation.state_at(std::min(ts, c.t), y_dense);
-        sample(ts, y_dense, n);
-        ++n_taken;
+               c.simulation.state_at(std::min(ts, c.t), y_dense);
+               sample(ts, y_dense, n);
+               ++n_taken;
       }
   }
 

@@ -48,7 +48,7 @@ namespace wearlink::analysis
     /** Driving period T [s]. */
     double period = 0.0;
     /** t_0 [s]. */
-    double first_time = 0.0;
+    double          first_time = 0.0;
     SampledChannels points;
   };
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "app/command_line.h"
 
-#include <deal.II/base/utilities.h>
-
 #include "base/exceptions.h"
+
+#include <deal.II/base/utilities.h>
 
 #include <cmath>
 
@@ -55,9 +55,7 @@ namespace wearlink::app
   }
 
   ParsedArguments
-  parse_arguments(const std::vector<std::string> &args,
-                  const std::vector<OptionSpec> &  spec,
-                  const std::string &              command)
+  parse_arguments(const std::vector<std::string> &args, const std::vector<OptionSpec> &spec, const std::string &command)
   {
     ParsedArguments out;
     for (std::size_t i = 0; i < args.size(); ++i)
@@ -65,7 +63,7 @@ namespace wearlink::app
         const std::string &a = args[i];
         if (a.size() > 1 && a[0] == '-' && !(a.size() > 1 && (std::isdigit(a[1]) || a[1] == '.')))
           {
-            std::string name  = a;
+            std::string name = a;
             std::string value;
             bool        inline_value = false;
             const auto  eq           = a.find('=');
@@ -85,8 +83,7 @@ namespace wearlink::app
                 for (const auto &o : spec)
                   valid += " " + o.name;
                 throw InputError("Unknown option '" + name + "' for `wearlink " + command +
-                                 "`. Valid options:" + valid + ". See `wearlink " + command +
-                                 " --help`.");
+                                 "`. Valid options:" + valid + ". See `wearlink " + command + " --help`.");
               }
             if (s->takes_value)
               {

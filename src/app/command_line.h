@@ -46,8 +46,8 @@ namespace wearlink::app
   /** Parse @p args (without the program and command name) against @p spec. */
   ParsedArguments
   parse_arguments(const std::vector<std::string> &args,
-                  const std::vector<OptionSpec> &  spec,
-                  const std::string &              command);
+                  const std::vector<OptionSpec>  &spec,
+                  const std::string              &command);
 
   /** A sub-command of the wearlink program. */
   struct Command

@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <system_error>
-
 #include <unistd.h>
 
 namespace wearlink
@@ -13,9 +12,9 @@ namespace wearlink
   std::string
   temporary_name_for(const std::string &path)
   {
-    namespace fs      = std::filesystem;
-    const fs::path p  = path;
-    const auto     tn = "." + p.filename().string() + ".partial-" + std::to_string(::getpid());
+    namespace fs          = std::filesystem;
+    const fs::path    p   = path;
+    const auto        tn  = "." + p.filename().string() + ".partial-" + std::to_string(::getpid());
     const std::string ext = p.extension().string();
     // Keep the extension last: gmsh and gnuplot choose their format from it.
     return (p.parent_path() / (tn + ext)).string();
@@ -27,8 +26,7 @@ namespace wearlink
     , out(tmp_path)
   {
     if (!out)
-      throw InputError("Cannot write '" + final_path +
-                       "': the directory does not exist or is not writable.");
+      throw InputError("Cannot write '" + final_path + "': the directory does not exist or is not writable.");
   }
 
   AtomicFile::~AtomicFile()

@@ -42,7 +42,7 @@ namespace wearlink
   EffectLedger::constructions(const std::string &family, const std::string &name) const
   {
     std::lock_guard<std::mutex> lock(mutex);
-    const auto c = counts.find(constructed);
+    const auto                  c = counts.find(constructed);
     if (c == counts.end())
       return 0;
     const auto e = c->second.find(family + "/" + name);
@@ -53,7 +53,7 @@ namespace wearlink
   EffectLedger::constructions(const std::string &family) const
   {
     std::lock_guard<std::mutex> lock(mutex);
-    const auto c = counts.find(constructed);
+    const auto                  c = counts.find(constructed);
     if (c == counts.end())
       return 0;
     long n = 0;
@@ -67,7 +67,7 @@ namespace wearlink
   EffectLedger::resources(const std::string &what) const
   {
     std::lock_guard<std::mutex> lock(mutex);
-    const auto c = counts.find(resource);
+    const auto                  c = counts.find(resource);
     if (c == counts.end())
       return 0;
     const auto e = c->second.find(what);
@@ -78,7 +78,7 @@ namespace wearlink
   EffectLedger::calls(const std::string &what) const
   {
     std::lock_guard<std::mutex> lock(mutex);
-    const auto c = counts.find(call);
+    const auto                  c = counts.find(call);
     if (c == counts.end())
       return 0;
     const auto e = c->second.find(what);

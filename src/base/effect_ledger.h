@@ -48,7 +48,7 @@ namespace wearlink
 
   private:
     EffectLedger() = default;
-    mutable std::mutex                                  mutex;
+    mutable std::mutex                                 mutex;
     std::map<std::string, std::map<std::string, long>> counts;
   };
 } // namespace wearlink

@@ -7,7 +7,8 @@ namespace wearlink
 {
   Error::Error(std::string message)
     : text(std::move(message))
-  {}
+  {
+  }
 
   void
   Error::print_info(std::ostream &out) const

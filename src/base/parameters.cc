@@ -26,8 +26,7 @@ namespace wearlink
     starts_with_word(const std::string &line, const std::string &word)
     {
       return line.compare(0, word.size(), word) == 0 &&
-             (line.size() == word.size() || line[word.size()] == ' ' ||
-              line[word.size()] == '\t');
+             (line.size() == word.size() || line[word.size()] == ' ' || line[word.size()] == '\t');
     }
 
     /** deal.II's messages end with a newline and often start with one. */
@@ -64,8 +63,8 @@ namespace wearlink
     /** One parse of @p text (a balanced chunk of @p filename) into @p prm. */
     void
     parse_chunk(dealii::ParameterHandler &prm,
-                const std::string &       text,
-                const std::string &       filename,
+                const std::string        &text,
+                const std::string        &filename,
                 bool                      skip_undefined)
     {
       std::istringstream in(text);
@@ -86,23 +85,23 @@ namespace wearlink
 
 
   void
-  declare(dealii::ParameterHandler &           prm,
-          const std::string &                  name,
-          const std::string &                  default_value,
+  declare(dealii::ParameterHandler            &prm,
+          const std::string                   &name,
+          const std::string                   &default_value,
           const dealii::Patterns::PatternBase &pattern,
-          const std::string &                  doc,
-          const std::string &                  unit)
+          const std::string                   &doc,
+          const std::string                   &unit)
   {
     prm.declare_entry(name, default_value, pattern, doc + " Units: " + unit + ".");
   }
 
 
   void
-  declare_required(dealii::ParameterHandler &           prm,
-                   const std::string &                  name,
+  declare_required(dealii::ParameterHandler            &prm,
+                   const std::string                   &name,
                    const dealii::Patterns::PatternBase &pattern,
-                   const std::string &                  doc,
-                   const std::string &                  unit)
+                   const std::string                   &doc,
+                   const std::string                   &unit)
   {
     // deal.II wants a default that matches the pattern even for an entry the user must
     // set; it only shows in --print-parameters, where the doc says it is required.
@@ -118,19 +117,13 @@ namespace wearlink
         // "[Selection a|b|c ]": the first choice stands in for the missing default.
         const std::string d = pattern.description(dealii::Patterns::PatternBase::Machine);
         const auto        b = d.find(' ');
-        placeholder         = trim(d.substr(b + 1, d.find('|') == std::string::npos ?
-                                                std::string::npos :
-                                                d.find('|') - b - 1));
+        placeholder = trim(d.substr(b + 1, d.find('|') == std::string::npos ? std::string::npos : d.find('|') - b - 1));
         if (!placeholder.empty() && placeholder.back() == ']')
           placeholder.pop_back();
         placeholder = trim(placeholder);
       }
     Assert(pattern.match(placeholder), dealii::ExcInternalError());
-    prm.declare_entry(name,
-                      placeholder,
-                      pattern,
-                      doc + " Required (no default). Units: " + unit + ".",
-                      true);
+    prm.declare_entry(name, placeholder, pattern, doc + " Required (no default). Units: " + unit + ".", true);
   }
 
 
@@ -144,7 +137,8 @@ namespace wearlink
   ParameterReader::ParameterReader(dealii::ParameterHandler &prm, std::string file)
     : prm(prm)
     , filename(std::move(file))
-  {}
+  {
+  }
 
 
   void
@@ -265,9 +259,7 @@ namespace wearlink
 
 
   void
-  ParameterReader::fail(const std::string &entry,
-                        const std::string &allowed,
-                        const std::string &hint) const
+  ParameterReader::fail(const std::string &entry, const std::string &allowed, const std::string &hint) const
   {
     std::string value;
     try
@@ -296,9 +288,7 @@ namespace wearlink
 
 
   void
-  read_prm_file(dealii::ParameterHandler &prm,
-                const std::string &       filename,
-                bool                      skip_undefined)
+  read_prm_file(dealii::ParameterHandler &prm, const std::string &filename, bool skip_undefined)
   {
     namespace fs = std::filesystem;
     std::ifstream in(filename);
@@ -338,8 +328,8 @@ namespace wearlink
               inc = base / inc;
             parse_chunk(prm, chunk, filename, skip_undefined);
             if (!fs::exists(inc))
-              throw InputError("In " + filename + " line " + std::to_string(line_no) +
-                               ": the included file '" + inc.string() +
+              throw InputError("In " + filename + " line " + std::to_string(line_no) + ": the included file '" +
+                               inc.string() +
                                "' does not exist (include paths are relative to the "
                                "including file).");
             read_prm_file(prm, inc.string(), skip_undefined);
@@ -375,18 +365,16 @@ namespace wearlink
       {
         const auto eq = o.find('=');
         if (eq == std::string::npos)
-          throw InputError("The override '--set " + o +
-                           "' must have the form \"Section/Sub/Entry=value\".");
+          throw InputError("The override '--set " + o + "' must have the form \"Section/Sub/Entry=value\".");
         const std::string path  = trim(o.substr(0, eq));
         const std::string value = trim(o.substr(eq + 1));
-        auto parts = dealii::Utilities::split_string_list(path, '/');
+        auto              parts = dealii::Utilities::split_string_list(path, '/');
         for (auto &p : parts)
           p = trim(p);
         const std::string              entry = parts.back();
         const std::vector<std::string> sections(parts.begin(), parts.end() - 1);
         if (!sections.empty() && !prm.subsection_path_exists(sections))
-          throw InputError("The override '--set " + o + "' names the subsection '" +
-                           path.substr(0, path.rfind('/')) +
+          throw InputError("The override '--set " + o + "' names the subsection '" + path.substr(0, path.rfind('/')) +
                            "', which this scene does not declare. Run `wearlink "
                            "--print-parameters` to see the declared entries.");
         for (const auto &s : sections)
@@ -400,7 +388,8 @@ namespace wearlink
         catch (const dealii::ExceptionBase &)
           {
             ok  = false;
-            why = "there is no entry '" + entry + "' there. Run `wearlink --print-parameters` "
+            why = "there is no entry '" + entry +
+                  "' there. Run `wearlink --print-parameters` "
                   "to see the declared entries.";
           }
         if (ok)

@@ -23,20 +23,20 @@ namespace wearlink
 {
   /** Declare an entry; @p unit is appended to @p doc as "Units: unit.". */
   void
-  declare(dealii::ParameterHandler &       prm,
-          const std::string &              name,
-          const std::string &              default_value,
+  declare(dealii::ParameterHandler            &prm,
+          const std::string                   &name,
+          const std::string                   &default_value,
           const dealii::Patterns::PatternBase &pattern,
-          const std::string &              doc,
-          const std::string &              unit);
+          const std::string                   &doc,
+          const std::string                   &unit);
 
   /** Declare an entry that the scene must set (no silent default for physical data). */
   void
-  declare_required(dealii::ParameterHandler &       prm,
-                   const std::string &              name,
+  declare_required(dealii::ParameterHandler            &prm,
+                   const std::string                   &name,
                    const dealii::Patterns::PatternBase &pattern,
-                   const std::string &              doc,
-                   const std::string &              unit);
+                   const std::string                   &doc,
+                   const std::string                   &unit);
 
   /** Pattern of a 2D point or vector "x, y". */
   dealii::Patterns::List
@@ -86,9 +86,7 @@ namespace wearlink
 
     /** Throw an InputError "In FILE, 'PATH' is VALUE; ALLOWED. HINT". */
     [[noreturn]] void
-    fail(const std::string &entry,
-         const std::string &allowed,
-         const std::string &hint = "") const;
+    fail(const std::string &entry, const std::string &allowed, const std::string &hint = "") const;
 
     /** Throw an InputError about the current subsection as a whole. */
     [[noreturn]] void
@@ -114,9 +112,7 @@ namespace wearlink
    * check_required_entries()), so that command-line overrides can still supply them.
    */
   void
-  read_prm_file(dealii::ParameterHandler &prm,
-                const std::string &       filename,
-                bool                      skip_undefined = false);
+  read_prm_file(dealii::ParameterHandler &prm, const std::string &filename, bool skip_undefined = false);
 
   /** Throw an InputError listing every required entry the scene did not set. */
   void
@@ -127,7 +123,6 @@ namespace wearlink
    * or a value outside the entry's pattern is an InputError naming the override.
    */
   void
-  apply_overrides(dealii::ParameterHandler &      prm,
-                  const std::vector<std::string> &overrides);
+  apply_overrides(dealii::ParameterHandler &prm, const std::vector<std::string> &overrides);
 
 } // namespace wearlink

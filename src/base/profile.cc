@@ -15,7 +15,7 @@ namespace wearlink
 {
   namespace
   {
-    constexpr double two_pi = 6.283185307179586476925286766559;
+    constexpr double       two_pi     = 6.283185307179586476925286766559;
     constexpr unsigned int min_points = 8;
 
     /** Position of @p psi in sample units: index k and fraction f in [0, 1). */
@@ -57,8 +57,7 @@ namespace wearlink
   {
     std::ifstream in(filename);
     if (!in)
-      throw InputError("Cannot open the profile file '" + filename +
-                       "': it does not exist or is not readable.");
+      throw InputError("Cannot open the profile file '" + filename + "': it does not exist or is not readable.");
     std::vector<double> angles, radii;
     std::string         line;
     unsigned int        line_no     = 0;
@@ -75,11 +74,11 @@ namespace wearlink
         std::istringstream ls(line);
         std::string        a_text, r_text;
         ls >> a_text >> r_text;
-        char *     end_a = nullptr;
-        char *     end_r = nullptr;
-        const double a   = std::strtod(a_text.c_str(), &end_a);
-        const double rr  = std::strtod(r_text.c_str(), &end_r);
-        const bool numeric = !a_text.empty() && !r_text.empty() && *end_a == '\0' && *end_r == '\0';
+        char        *end_a   = nullptr;
+        char        *end_r   = nullptr;
+        const double a       = std::strtod(a_text.c_str(), &end_a);
+        const double rr      = std::strtod(r_text.c_str(), &end_r);
+        const bool   numeric = !a_text.empty() && !r_text.empty() && *end_a == '\0' && *end_r == '\0';
         if (!numeric)
           {
             if (angles.empty() && radii.empty() && !header_seen)
@@ -87,29 +86,25 @@ namespace wearlink
                 header_seen = true; // one header line before the data (after comments)
                 continue;
               }
-            throw InputError("In profile file '" + filename + "' line " +
-                             std::to_string(line_no) +
+            throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
                              ": expected two numbers 'angle_rad, radius_m'.");
           }
         if (!std::isfinite(a) || !std::isfinite(rr))
-          throw InputError("In profile file '" + filename + "' line " +
-                           std::to_string(line_no) +
+          throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
                            ": the angle and radius must be finite numbers (found NaN or inf).");
         if (!(rr > 0))
-          throw InputError("In profile file '" + filename + "' line " +
-                           std::to_string(line_no) + ": the radius must be > 0 m.");
+          throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
+                           ": the radius must be > 0 m.");
         if (!angles.empty() && !(a > angles.back()))
-          throw InputError("In profile file '" + filename + "' line " +
-                           std::to_string(line_no) +
+          throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
                            ": angles must increase strictly (a profile that turns back "
                            "on itself is self-intersecting).");
         angles.push_back(a);
         radii.push_back(rr);
       }
     if (angles.size() < min_points)
-      throw InputError("The profile file '" + filename + "' has " +
-                       std::to_string(angles.size()) + " points; at least " +
-                       std::to_string(min_points) + " are needed.");
+      throw InputError("The profile file '" + filename + "' has " + std::to_string(angles.size()) +
+                       " points; at least " + std::to_string(min_points) + " are needed.");
     if (!(angles.back() - angles.front() < two_pi))
       throw InputError("In profile file '" + filename +
                        "', the angles span more than one turn (2π rad): the profile would "
@@ -130,14 +125,14 @@ namespace wearlink
           return from_samples(radii, "profile file '" + filename + "'");
       }
     // Periodic linear resampling onto ψ_k = 2πk/n.
-    const std::size_t m = angles.size();
+    const std::size_t   m = angles.size();
     std::vector<double> out(n);
     for (unsigned int k = 0; k < n; ++k)
       {
         double psi = two_pi * k / n;
         // bring psi into [angles[0], angles[0] + 2π)
         psi -= two_pi * std::floor((psi - angles[0]) / two_pi);
-        std::size_t j = std::upper_bound(angles.begin(), angles.end(), psi) - angles.begin();
+        std::size_t  j  = std::upper_bound(angles.begin(), angles.end(), psi) - angles.begin();
         const double a0 = angles[j - 1];
         const double r0 = radii[j - 1];
         const double a1 = j < m ? angles[j] : angles[0] + two_pi;
@@ -151,7 +146,7 @@ namespace wearlink
   Profile::write_csv(const std::string &filename, const std::string &header_comment) const
   {
     AtomicFile f(filename);
-    auto &     os = f.stream();
+    auto      &os = f.stream();
     if (!header_comment.empty())
       os << "# " << header_comment << '\n';
     os << "angle_rad,radius_m\n" << std::setprecision(17);
@@ -236,12 +231,11 @@ namespace wearlink
   Profile::check(const std::string &what) const
   {
     if (r.size() < min_points)
-      throw InputError("The " + what + " has " + std::to_string(r.size()) +
-                       " points; at least " + std::to_string(min_points) + " are needed.");
+      throw InputError("The " + what + " has " + std::to_string(r.size()) + " points; at least " +
+                       std::to_string(min_points) + " are needed.");
     for (std::size_t k = 0; k < r.size(); ++k)
       if (!std::isfinite(r[k]) || !(r[k] > 0))
-        throw InputError("The " + what + " has radius " + std::to_string(r[k]) +
-                         " m at point " + std::to_string(k) +
+        throw InputError("The " + what + " has radius " + std::to_string(r[k]) + " m at point " + std::to_string(k) +
                          "; every radius must be a finite number > 0.");
   }
 } // namespace wearlink

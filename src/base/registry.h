@@ -45,19 +45,16 @@ namespace wearlink
     /** @param family user-facing family name, e.g. "normal force law". */
     explicit Registry(std::string family)
       : family_name(std::move(family))
-    {}
+    {
+    }
 
     /** Add a plugin. Names are unique; adding one twice is a programming error. */
     void
-    add(const std::string &name,
-        const std::string &description,
-        Declare            declare,
-        Factory            create)
+    add(const std::string &name, const std::string &description, Declare declare, Factory create)
     {
       for (const auto &e : entries)
         AssertThrow(e.name != name,
-                    dealii::ExcMessage("Plugin '" + name + "' registered twice in family '" +
-                                       family_name + "'."));
+                    dealii::ExcMessage("Plugin '" + name + "' registered twice in family '" + family_name + "'."));
       entries.push_back({name, description, std::move(declare), std::move(create)});
     }
 

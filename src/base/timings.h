@@ -15,7 +15,8 @@ namespace wearlink
   public:
     Stopwatch()
       : start(std::chrono::steady_clock::now())
-    {}
+    {
+    }
 
     /** Seconds since construction or the last restart(). */
     double

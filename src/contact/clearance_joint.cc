@@ -12,9 +12,8 @@ namespace wearlink::contact
                     const Material &pin,
                     EffectiveRadius form)
   {
-    const double r_star = form == EffectiveRadius::internal ?
-                            bore_radius * pin_radius / (bore_radius - pin_radius) :
-                            bore_radius * pin_radius / (bore_radius + pin_radius);
+    const double r_star = form == EffectiveRadius::internal ? bore_radius * pin_radius / (bore_radius - pin_radius) :
+                                                              bore_radius * pin_radius / (bore_radius + pin_radius);
     return 4.0 / (3.0 * (bushing.compliance() + pin.compliance())) * std::sqrt(r_star);
   }
 
@@ -30,7 +29,8 @@ namespace wearlink::contact
                                                              description.geometry.bushing,
                                                              description.geometry.pin_material,
                                                              description.effective_radius))
-  {}
+  {
+  }
 
   void
   ClearanceJoint::set_profiles(const Profile &bore, const Profile &pin)
@@ -43,10 +43,10 @@ namespace wearlink::contact
   void
   ClearanceJoint::contact_kinematics(const mbs::StateView &s, Contact &c) const
   {
-    const int    bb = description.bushing_body;
-    const int    pb = description.pin_body;
-    const auto   p_bore = s.point(bb, description.bushing_point);
-    const auto   p_pin  = s.point(pb, description.pin_point);
+    const int  bb       = description.bushing_body;
+    const int  pb       = description.pin_body;
+    const auto p_bore   = s.point(bb, description.bushing_point);
+    const auto p_pin    = s.point(pb, description.pin_point);
     const bool per_area = description.clearance_form == ClearanceForm::per_area && !gap.round();
     c.gap               = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
                                      gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
@@ -61,13 +61,11 @@ namespace wearlink::contact
     c.q_bore            = p_bore + c.gap.bore_radius * n;
     c.q_pin             = p_pin + c.gap.pin_radius * n;
     // Material-point velocities at the contact points.
-    const mbs::Vec2 v_bore =
-      s.velocity(bb) + s.angular_velocity(bb) * mbs::perp(c.q_bore - s.position(bb));
-    const mbs::Vec2 v_pin =
-      s.velocity(pb) + s.angular_velocity(pb) * mbs::perp(c.q_pin - s.position(pb));
-    const mbs::Vec2 v_rel = v_pin - v_bore;
-    c.rate                = v_rel.dot(n);
-    c.slide               = v_rel.dot(c.t);
+    const mbs::Vec2 v_bore = s.velocity(bb) + s.angular_velocity(bb) * mbs::perp(c.q_bore - s.position(bb));
+    const mbs::Vec2 v_pin  = s.velocity(pb) + s.angular_velocity(pb) * mbs::perp(c.q_pin - s.position(pb));
+    const mbs::Vec2 v_rel  = v_pin - v_bore;
+    c.rate                 = v_rel.dot(n);
+    c.slide                = v_rel.dot(c.t);
   }
 
   void
@@ -116,11 +114,11 @@ namespace wearlink::contact
   double
   ClearanceJoint::event_value(const mbs::StateView &s) const
   {
-    const auto p_bore = s.point(description.bushing_body, description.bushing_point);
-    const auto p_pin  = s.point(description.pin_body, description.pin_point);
-    const auto e      = p_pin - p_bore;
-    const double tb   = s.angle(description.bushing_body);
-    const double tp   = s.angle(description.pin_body);
+    const auto   p_bore = s.point(description.bushing_body, description.bushing_point);
+    const auto   p_pin  = s.point(description.pin_body, description.pin_point);
+    const auto   e      = p_pin - p_bore;
+    const double tb     = s.angle(description.bushing_body);
+    const double tp     = s.angle(description.pin_body);
     if (description.clearance_form == ClearanceForm::per_area && !gap.round())
       return gap.evaluate_per_area(e, tb, tp).penetration;
     return gap.evaluate(e, tb, tp).penetration;
@@ -145,15 +143,14 @@ namespace wearlink::contact
     JointDiagnostics d;
     Contact          c;
     contact_kinematics(s, c);
-    const int bb          = description.bushing_body;
-    d.bushing_angle       = s.angle(bb);
-    d.pin_angle           = s.angle(description.pin_body);
-    d.eccentricity        = s.point(description.pin_body, description.pin_point) -
-                     s.point(bb, description.bushing_point);
-    d.local_eccentricity  = mbs::rotate(d.eccentricity, -d.bushing_angle);
-    d.penetration         = c.gap.penetration;
-    d.normal              = c.gap.normal;
-    d.contact_angle       = c.gap.angle;
+    const int bb    = description.bushing_body;
+    d.bushing_angle = s.angle(bb);
+    d.pin_angle     = s.angle(description.pin_body);
+    d.eccentricity  = s.point(description.pin_body, description.pin_point) - s.point(bb, description.bushing_point);
+    d.local_eccentricity = mbs::rotate(d.eccentricity, -d.bushing_angle);
+    d.penetration        = c.gap.penetration;
+    d.normal             = c.gap.normal;
+    d.contact_angle      = c.gap.angle;
     if (c.gap.penetration > 0)
       {
         double fel;

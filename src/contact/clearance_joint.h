@@ -48,12 +48,12 @@ namespace wearlink::contact
 
   struct ClearanceJointDescription
   {
-    std::string   name;
-    int           bushing_body = mbs::ground;
-    mbs::Vec2     bushing_point{0, 0}; ///< bore centre in the bushing body's frame [m]
-    int           pin_body = mbs::ground;
-    mbs::Vec2     pin_point{0, 0};     ///< pin centre in the pin body's frame [m]
-    JointGeometry geometry;
+    std::string     name;
+    int             bushing_body = mbs::ground;
+    mbs::Vec2       bushing_point{0, 0}; ///< bore centre in the bushing body's frame [m]
+    int             pin_body = mbs::ground;
+    mbs::Vec2       pin_point{0, 0}; ///< pin centre in the pin body's frame [m]
+    JointGeometry   geometry;
     EffectiveRadius effective_radius = EffectiveRadius::internal;
     ClearanceForm   clearance_form   = ClearanceForm::exact;
   };
@@ -61,25 +61,25 @@ namespace wearlink::contact
   /** Everything about the joint at one state, for recording and pressure models. */
   struct JointDiagnostics
   {
-    mbs::Vec2 eccentricity{0, 0};       ///< pin centre − bore centre, global [m]
-    mbs::Vec2 local_eccentricity{0, 0}; ///< the same in the bushing body's frame [m]
-    double    penetration      = 0;     ///< δ [m]
-    double    penetration_rate = 0;     ///< δ̇ [m/s] (0 out of contact)
-    double    sliding_velocity = 0;     ///< v_t [m/s] (0 out of contact)
-    double    normal_force     = 0;     ///< F_n [N]
-    double    friction_force   = 0;     ///< F_t [N]
-    mbs::Vec2 normal{1, 0};             ///< n, global
-    double    contact_angle    = 0;     ///< φ* [rad], global
-    mbs::Vec2 force_on_pin{0, 0};       ///< −F_n n + F_t t [N]
+    mbs::Vec2 eccentricity{0, 0};               ///< pin centre − bore centre, global [m]
+    mbs::Vec2 local_eccentricity{0, 0};         ///< the same in the bushing body's frame [m]
+    double    penetration      = 0;             ///< δ [m]
+    double    penetration_rate = 0;             ///< δ̇ [m/s] (0 out of contact)
+    double    sliding_velocity = 0;             ///< v_t [m/s] (0 out of contact)
+    double    normal_force     = 0;             ///< F_n [N]
+    double    friction_force   = 0;             ///< F_t [N]
+    mbs::Vec2 normal{1, 0};                     ///< n, global
+    double    contact_angle = 0;                ///< φ* [rad], global
+    mbs::Vec2 force_on_pin{0, 0};               ///< −F_n n + F_t t [N]
     double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
   };
 
   class ClearanceJoint : public mbs::ForceElement
   {
   public:
-    ClearanceJoint(ClearanceJointDescription           description,
-                   std::unique_ptr<NormalForceLaw>     normal_law,
-                   std::unique_ptr<FrictionLaw>        friction_law);
+    ClearanceJoint(ClearanceJointDescription       description,
+                   std::unique_ptr<NormalForceLaw> normal_law,
+                   std::unique_ptr<FrictionLaw>    friction_law);
 
     const std::string &
     name() const override
@@ -185,16 +185,16 @@ namespace wearlink::contact
     Gap                             gap;
     double                          contact_stiffness;
 
-    bool           in_contact               = false;
-    double         captured_impact_velocity = 0;
-    long           impacts                  = 0;
-    mutable long   force_evaluations        = 0;
+    bool         in_contact               = false;
+    double       captured_impact_velocity = 0;
+    long         impacts                  = 0;
+    mutable long force_evaluations        = 0;
   };
 
   /** K = 4/(3(σ1 + σ2)) √R* (seed eq. 10), R* per @p form from the nominal radii. */
   double
-  contact_stiffness(double bore_radius,
-                    double pin_radius,
+  contact_stiffness(double          bore_radius,
+                    double          pin_radius,
                     const Material &bushing,
                     const Material &pin,
                     EffectiveRadius form);

@@ -19,7 +19,8 @@ namespace wearlink::contact
     , r1(bore_profile.mean_radius())
     , r2(pin_profile.mean_radius())
     , min_clearance(bore_profile.min_radius() - pin_profile.max_radius())
-  {}
+  {
+  }
 
   GapResult
   Gap::evaluate(const mbs::Vec2 &e, double tb, double tp) const
@@ -47,19 +48,20 @@ namespace wearlink::contact
         return r;
       }
     // Directions with e·u(φ) ≥ min_clearance: |φ − φ_e| ≤ acos(min_clearance/|e|).
-    const double half = min_clearance > 0 ? std::acos(std::min(1.0, min_clearance / ne)) :
-                                            0.5 * two_pi;
+    const double half = min_clearance > 0 ? std::acos(std::min(1.0, min_clearance / ne)) : 0.5 * two_pi;
     const double lo = phi_e - half, hi = phi_e + half;
 
     // Kinks of both profiles inside [lo, hi], merged in increasing order.
     const unsigned int nb = bore.n_points(), np = pin.n_points();
     const double       db = two_pi / nb, dp = two_pi / np;
-    double next_b = tb + std::ceil((lo - tb) / db) * db;
-    double next_p = tp + std::ceil((lo - tp) / dp) * dp;
+    double             next_b = tb + std::ceil((lo - tb) / db) * db;
+    double             next_p = tp + std::ceil((lo - tp) / dp) * dp;
     // h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p), the part of g that is linear between kinks.
-    auto h = [&](double phi) { return bore.radius(phi - tb) - pin.radius(phi - tp); };
-    double       best = std::numeric_limits<double>::infinity(), phi = phi_e;
-    auto consider = [&](double x, double hx) {
+    auto h = [&](double phi) {
+      return bore.radius(phi - tb) - pin.radius(phi - tp);
+    };
+    double best = std::numeric_limits<double>::infinity(), phi = phi_e;
+    auto   consider = [&](double x, double hx) {
       const double g = hx - ne * std::cos(x - phi_e);
       if (g < best)
         {
@@ -93,11 +95,11 @@ namespace wearlink::contact
         ha = hb;
       }
     const double g = best;
-    r.penetration = -g;
-    r.angle       = phi;
-    r.normal      = mbs::Vec2(std::cos(phi), std::sin(phi));
-    r.bore_radius = bore.radius(phi - tb);
-    r.pin_radius  = pin.radius(phi - tp);
+    r.penetration  = -g;
+    r.angle        = phi;
+    r.normal       = mbs::Vec2(std::cos(phi), std::sin(phi));
+    r.bore_radius  = bore.radius(phi - tb);
+    r.pin_radius   = pin.radius(phi - tp);
     return r;
   }
 

@@ -69,13 +69,12 @@ namespace wearlink::contact
     double
     gap(double phi, const mbs::Vec2 &e, double tb, double tp) const
     {
-      return bore.radius(phi - tb) - pin.radius(phi - tp) - e.x() * std::cos(phi) -
-             e.y() * std::sin(phi);
+      return bore.radius(phi - tb) - pin.radius(phi - tp) - e.x() * std::cos(phi) - e.y() * std::sin(phi);
     }
 
     Profile bore, pin;
     bool    is_round;
-    double  r1, r2;          ///< radii when round
-    double  min_clearance;   ///< min R1* − max R2*
+    double  r1, r2;        ///< radii when round
+    double  min_clearance; ///< min R1* − max R2*
   };
 } // namespace wearlink::contact

@@ -60,13 +60,13 @@ namespace wearlink::contact
    */
   struct ContactLoad
   {
-    double bushing_angle = 0;           ///< θ of the body holding the bore [rad]
-    double pin_angle     = 0;           ///< θ of the body holding the pin [rad]
-    std::array<double, 2> eccentricity{}; ///< pin centre − bore centre, global [m]
-    std::array<double, 2> force{};        ///< force of the bushing on the pin, global [N]
-    double penetration   = 0;           ///< δ of the rigid-body contact model [m]
-    double normal_force  = 0;           ///< F_n ≥ 0 [N]
-    double contact_angle = 0;           ///< φ*, global direction from bore centre to contact [rad]
+    double                bushing_angle = 0; ///< θ of the body holding the bore [rad]
+    double                pin_angle     = 0; ///< θ of the body holding the pin [rad]
+    std::array<double, 2> eccentricity{};    ///< pin centre − bore centre, global [m]
+    std::array<double, 2> force{};           ///< force of the bushing on the pin, global [N]
+    double                penetration   = 0; ///< δ of the rigid-body contact model [m]
+    double                normal_force  = 0; ///< F_n ≥ 0 [N]
+    double                contact_angle = 0; ///< φ*, global direction from bore centre to contact [rad]
   };
 
   /** Contact pressure per discrete area of each surface. */

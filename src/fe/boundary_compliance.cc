@@ -89,8 +89,7 @@ namespace wearlink::fe
       std::vector<unsigned int> chosen{j};
       for (unsigned int d = 1; chosen.size() < block && 2 * d <= n; ++d)
         for (const unsigned int k : {(j + d) % n, (j + n - d) % n})
-          if (chosen.size() < block && columns[k].empty() &&
-              std::find(chosen.begin(), chosen.end(), k) == chosen.end())
+          if (chosen.size() < block && columns[k].empty() && std::find(chosen.begin(), chosen.end(), k) == chosen.end())
             chosen.push_back(k);
       return chosen;
     }
@@ -101,7 +100,7 @@ namespace wearlink::fe
   BoundaryCompliance::compute_pin_block(unsigned int j)
   {
     const auto         start  = std::chrono::steady_clock::now();
-    const auto &       nodes  = problem.pin_nodes;
+    const auto        &nodes  = problem.pin_nodes;
     const auto         chosen = missing_neighbours(pin_columns, j, block_size);
     const unsigned int b      = chosen.size();
     Eigen::MatrixXd    rhs    = Eigen::MatrixXd::Zero(factorization->matrix.rows(), b);
@@ -126,7 +125,7 @@ namespace wearlink::fe
   BoundaryCompliance::compute_bore_block(unsigned int c)
   {
     const auto         start  = std::chrono::steady_clock::now();
-    const auto &       nodes  = problem.bore_nodes;
+    const auto        &nodes  = problem.bore_nodes;
     const unsigned int n      = nodes.size();
     const auto         chosen = missing_neighbours(bore_columns, c, block_size / 2);
     const unsigned int b      = chosen.size();
@@ -188,12 +187,12 @@ namespace wearlink::fe
   {
     if (std::isnan(bore_bounds[c]))
       {
-        const auto &       col = bore_column(c);
+        const auto        &col = bore_column(c);
         const unsigned int q   = bore_columns.size();
         double             b   = 0;
         for (unsigned int n = 0; n < q; ++n)
-          b = std::max(b, std::hypot(col[2 * n], col[2 * n + 1]) +
-                            std::hypot(col[2 * q + 2 * n], col[2 * q + 2 * n + 1]));
+          b = std::max(b,
+                       std::hypot(col[2 * n], col[2 * n + 1]) + std::hypot(col[2 * q + 2 * n], col[2 * q + 2 * n + 1]));
         bore_bounds[c] = b;
       }
     return bore_bounds[c];

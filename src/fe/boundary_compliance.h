@@ -103,15 +103,15 @@ namespace wearlink::fe
 
     struct Factorization; // CHOLMOD through Eigen (kept out of this header)
 
-    const ElasticityProblem &           problem;
-    std::unique_ptr<Factorization>      factorization;
+    const ElasticityProblem       &problem;
+    std::unique_ptr<Factorization> factorization;
     /** Row of each DoF in the reduced (unclamped) system, −1 for clamped DoFs. */
-    std::vector<long>                   reduced_index;
-    std::vector<std::vector<double>>    pin_columns;
-    std::vector<std::vector<double>>    bore_columns;
-    std::vector<double>                 pin_bounds;  ///< NaN until computed
-    std::vector<double>                 bore_bounds; ///< NaN until computed
-    unsigned long                       n_solves = 0;
-    double                              seconds_in_columns = 0;
+    std::vector<long>                reduced_index;
+    std::vector<std::vector<double>> pin_columns;
+    std::vector<std::vector<double>> bore_columns;
+    std::vector<double>              pin_bounds;  ///< NaN until computed
+    std::vector<double>              bore_bounds; ///< NaN until computed
+    unsigned long                    n_solves           = 0;
+    double                           seconds_in_columns = 0;
   };
 } // namespace wearlink::fe

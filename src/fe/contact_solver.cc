@@ -5,6 +5,7 @@
 #include "base/exceptions.h"
 #include "fe/boundary_ids.h"
 
+#include <Eigen/Dense>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -17,8 +18,6 @@
 #include <deal.II/lac/petsc_vector.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
-
-#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
@@ -79,11 +78,11 @@ namespace wearlink::fe
      * worst violation is corrected, which makes the iteration monotone.
      */
     std::vector<unsigned int>
-    update_active_set(const std::vector<unsigned int> &             active,
-                      const std::vector<double> &                   lambda,
-                      const std::vector<double> &                   gap,
-                      double                                        tolerance,
-                      std::set<std::vector<unsigned int>> &         history)
+    update_active_set(const std::vector<unsigned int>     &active,
+                      const std::vector<double>           &lambda,
+                      const std::vector<double>           &gap,
+                      double                               tolerance,
+                      std::set<std::vector<unsigned int>> &history)
     {
       std::vector<char> is_active(gap.size(), 0);
       for (const auto i : active)
@@ -153,10 +152,10 @@ namespace wearlink::fe
      * smallest gap is taken; if none does, the closest one.
      */
     void
-    ensure_two_active(std::vector<unsigned int> &               active,
-                      const std::vector<double> &               gap_estimate,
+    ensure_two_active(std::vector<unsigned int>               &active,
+                      const std::vector<double>               &gap_estimate,
                       const std::vector<dealii::Tensor<1, 2>> &normal,
-                      const dealii::Tensor<1, 2> &              load)
+                      const dealii::Tensor<1, 2>              &load)
     {
       const auto cross = [](const dealii::Tensor<1, 2> &a, const dealii::Tensor<1, 2> &b) {
         return a[0] * b[1] - a[1] * b[0];
@@ -176,8 +175,8 @@ namespace wearlink::fe
                 }
               if (active.size() == 1 && gap_estimate[j] < g_bracketing)
                 {
-                  const auto & ni = normal[active[0]];
-                  const auto & nj = normal[j];
+                  const auto  &ni = normal[active[0]];
+                  const auto  &nj = normal[j];
                   const double d  = cross(ni, nj);
                   if (d != 0.0 && cross(load, nj) / d >= 0.0 && cross(ni, load) / d >= 0.0)
                     {
@@ -207,12 +206,12 @@ namespace wearlink::fe
   // formula is exact; otherwise a few Newton steps on t follow.
   ContactKinematics
   compute_kinematics(const ElasticityProblem &problem,
-                     const Profile &          bore,
+                     const Profile           &bore,
                      double                   relative_angle,
-                     const Tensor<1, 2> &     eccentricity)
+                     const Tensor<1, 2>      &eccentricity)
   {
-    const auto &       nodes = problem.pin_nodes;
-    const auto &       faces = problem.bore_faces;
+    const auto        &nodes = problem.pin_nodes;
+    const auto        &faces = problem.bore_faces;
     const unsigned int m     = nodes.size();
     const bool         round = bore.is_round();
 
@@ -228,11 +227,11 @@ namespace wearlink::fe
 
     for (unsigned int i = 0; i < m; ++i)
       {
-        const Tensor<1, 2> x = eccentricity + rotate(nodes[i].point, relative_angle);
-        const Tensor<1, 2> n = rotate(nodes[i].normal, relative_angle);
+        const Tensor<1, 2> x      = eccentricity + rotate(nodes[i].point, relative_angle);
+        const Tensor<1, 2> n      = rotate(nodes[i].normal, relative_angle);
         const double       radius = bore.radius(std::atan2(x[1], x[0]));
         const double       b      = x * n;
-        double t = -b + std::sqrt(std::max(b * b - x * x + radius * radius, 0.0));
+        double             t      = -b + std::sqrt(std::max(b * b - x * x + radius * radius, 0.0));
         if (!round)
           for (unsigned int it = 0; it < 20; ++it)
             {
@@ -251,10 +250,11 @@ namespace wearlink::fe
         k.normal[i]              = n;
         k.bore_angle[i]          = alpha;
 
-        auto it = std::upper_bound(faces.begin(), faces.end(), alpha,
-                                   [](double a, const SurfaceFace &f) { return a < f.begin; });
-        unsigned int f = it == faces.begin() ? faces.size() - 1 : (it - faces.begin()) - 1;
-        double d = alpha - faces[f].begin;
+        auto         it = std::upper_bound(faces.begin(), faces.end(), alpha, [](double a, const SurfaceFace &f) {
+          return a < f.begin;
+        });
+        unsigned int f  = it == faces.begin() ? faces.size() - 1 : (it - faces.begin()) - 1;
+        double       d  = alpha - faces[f].begin;
         d -= 2 * pi * std::floor(d / (2 * pi));
         if (d > faces[f].span)
           {
@@ -271,7 +271,7 @@ namespace wearlink::fe
             else
               d = faces[f].span;
           }
-        const double xi = std::clamp(d / faces[f].span, 0.0, 1.0);
+        const double xi       = std::clamp(d / faces[f].span, 0.0, 1.0);
         const auto   n_points = static_cast<unsigned int>(faces[f].nodes.size());
         const auto   w        = lagrange_weights(n_points, xi);
         k.n_masters[i]        = n_points;
@@ -288,10 +288,10 @@ namespace wearlink::fe
   std::vector<unsigned int>
   initial_active_set(const ContactKinematics &kinematics,
                      bool                     force_control,
-                     const Tensor<1, 2> &     load,
+                     const Tensor<1, 2>      &load,
                      double                   effective_modulus)
   {
-    const double load_per_length = load.norm();
+    const double              load_per_length = load.norm();
     std::vector<unsigned int> active;
     const double              tol = gap_tolerance(kinematics);
     for (unsigned int i = 0; i < kinematics.g0.size(); ++i)
@@ -321,24 +321,24 @@ namespace wearlink::fe
      * gathered on every rank.
      */
     Vector<double>
-    solve_distributed(const ElasticityProblem &               problem,
-                      const AffineConstraints<double> &       constraints,
-                      const std::array<global_dof_index, 2> & load_dofs,
-                      const Tensor<1, 2> &                    load)
+    solve_distributed(const ElasticityProblem               &problem,
+                      const AffineConstraints<double>       &constraints,
+                      const std::array<global_dof_index, 2> &load_dofs,
+                      const Tensor<1, 2>                    &load)
     {
-      const MPI_Comm     comm  = MPI_COMM_WORLD;
-      const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-      const auto         owned = DoFTools::locally_owned_dofs_per_subdomain(problem.dof_handler)[rank];
+      const MPI_Comm         comm  = MPI_COMM_WORLD;
+      const unsigned int     rank  = Utilities::MPI::this_mpi_process(comm);
+      const auto             owned = DoFTools::locally_owned_dofs_per_subdomain(problem.dof_handler)[rank];
       DynamicSparsityPattern dsp(problem.dof_handler.n_dofs());
       DoFTools::make_sparsity_pattern(problem.dof_handler, dsp, constraints, false);
       PETScWrappers::MPI::SparseMatrix matrix;
       matrix.reinit(owned, owned, dsp, comm);
       PETScWrappers::MPI::Vector rhs(owned, comm), solution(owned, comm);
 
-      FEValues<2>        fe_values(problem.fe, problem.quadrature(), update_gradients | update_JxW_values);
-      const unsigned int dofs_per_cell = problem.fe.n_dofs_per_cell();
-      FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-      Vector<double>     cell_rhs(dofs_per_cell);
+      FEValues<2>                   fe_values(problem.fe, problem.quadrature(), update_gradients | update_JxW_values);
+      const unsigned int            dofs_per_cell = problem.fe.n_dofs_per_cell();
+      FullMatrix<double>            cell_matrix(dofs_per_cell, dofs_per_cell);
+      Vector<double>                cell_rhs(dofs_per_cell);
       std::vector<global_dof_index> dof_indices(dofs_per_cell);
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
         if (cell->subdomain_id() == rank)
@@ -365,12 +365,13 @@ namespace wearlink::fe
 
 
   CondensedContactSolver::CondensedContactSolver(const ElasticityProblem &problem,
-                                                 BoundaryCompliance &     compliance,
+                                                 BoundaryCompliance      &compliance,
                                                  unsigned int             max_iterations)
     : problem(problem)
     , compliance(compliance)
     , max_iterations(max_iterations)
-  {}
+  {
+  }
 
 
   // One load state of the condensed problem. With the active set 𝒜 fixed, the
@@ -393,7 +394,8 @@ namespace wearlink::fe
         : kin(kin)
         , compliance(compliance)
         , q(q)
-      {}
+      {
+      }
 
       /** Bore part of A(i, s), read point by point. */
       double
@@ -402,7 +404,7 @@ namespace wearlink::fe
         double u = 0;
         for (unsigned int a = 0; a < kin.n_masters[s]; ++a)
           {
-            const auto & col = compliance.bore_column(kin.masters[s][a]);
+            const auto  &col = compliance.bore_column(kin.masters[s][a]);
             const double fx  = kin.weights[s][a] * kin.normal[s][0];
             const double fy  = kin.weights[s][a] * kin.normal[s][1];
             for (unsigned int c = 0; c < kin.n_masters[i]; ++c)
@@ -426,7 +428,7 @@ namespace wearlink::fe
         std::vector<double> v(2 * q, 0.0);
         for (unsigned int a = 0; a < kin.n_masters[j]; ++a)
           {
-            const auto & col = compliance.bore_column(kin.masters[j][a]);
+            const auto  &col = compliance.bore_column(kin.masters[j][a]);
             const double fx  = kin.weights[j][a] * kin.normal[j][0];
             const double fy  = kin.weights[j][a] * kin.normal[j][1];
             for (unsigned int r = 0; r < 2 * q; ++r)
@@ -497,8 +499,8 @@ namespace wearlink::fe
       }
 
     private:
-      const ContactKinematics &                             kin;
-      BoundaryCompliance &                                  compliance;
+      const ContactKinematics                              &kin;
+      BoundaryCompliance                                   &compliance;
       const unsigned int                                    q;
       std::unordered_map<unsigned int, std::vector<double>> bore_fields;
     };
@@ -526,12 +528,12 @@ namespace wearlink::fe
      * (S = Nᵀ A⁻¹ N, U = S⁻¹ (P + Nᵀ A⁻¹ g0)), under displacement control λ = −A⁻¹ g0.
      */
     ActiveSolution
-    solve_active_system(const ContactKinematics &        kin,
+    solve_active_system(const ContactKinematics         &kin,
                         const std::vector<unsigned int> &active,
-                        const ActiveColumns &            cols,
-                        ComplianceReader &               reader,
+                        const ActiveColumns             &cols,
+                        ComplianceReader                &reader,
                         const bool                       force_control,
-                        const Tensor<1, 2> &             load)
+                        const Tensor<1, 2>              &load)
     {
       const unsigned int k = active.size();
       Eigen::MatrixXd    A(k, k);
@@ -540,8 +542,8 @@ namespace wearlink::fe
       for (unsigned int s = 0; s < k; ++s)
         {
           for (unsigned int r = 0; r < k; ++r)
-            A(r, s) = (*cols.pin[s])[active[r]] +
-                      (cols.fields ? reader.field_normal(active[r], *cols.bore[s]) : reader.bore_normal(active[r], active[s]));
+            A(r, s) = (*cols.pin[s])[active[r]] + (cols.fields ? reader.field_normal(active[r], *cols.bore[s]) :
+                                                                 reader.bore_normal(active[r], active[s]));
           N(s, 0) = kin.normal[active[s]][0];
           N(s, 1) = kin.normal[active[s]][1];
           g0(s)   = kin.g0[active[s]];
@@ -576,16 +578,16 @@ namespace wearlink::fe
      * evaluate.
      */
     void
-    candidate_gaps(const ContactKinematics &        kin,
+    candidate_gaps(const ContactKinematics         &kin,
                    const std::vector<unsigned int> &active,
-                   const ActiveColumns &            cols,
-                   ComplianceReader &               reader,
-                   const Eigen::VectorXd &          lambda_active,
-                   const std::vector<double> &      lambda,
-                   const Tensor<1, 2> &             U,
+                   const ActiveColumns             &cols,
+                   ComplianceReader                &reader,
+                   const Eigen::VectorXd           &lambda_active,
+                   const std::vector<double>       &lambda,
+                   const Tensor<1, 2>              &U,
                    const double                     max_weight_sum,
                    const double                     tolerance,
-                   std::vector<double> &            gap)
+                   std::vector<double>             &gap)
     {
       const unsigned int k = active.size();
       double             E = 0;
@@ -628,9 +630,7 @@ namespace wearlink::fe
   // the active set is updated until it repeats. The last active set warm-starts the
   // next load state (consecutive states of a mechanism are close).
   ContactSolution
-  CondensedContactSolver::solve(const ContactKinematics &kin,
-                                bool                     force_control,
-                                const Tensor<1, 2> &     load)
+  CondensedContactSolver::solve(const ContactKinematics &kin, bool force_control, const Tensor<1, 2> &load)
   {
     const unsigned int m         = problem.pin_nodes.size();
     const double       tolerance = gap_tolerance(kin);
@@ -638,8 +638,7 @@ namespace wearlink::fe
     // Warm start from the previous load state's active set when the load is close to
     // it (consecutive states of a mechanism cycle); otherwise start from the first
     // touching candidates, as the reference solver does.
-    const bool warm = force_control && !previous_active.empty() &&
-                      (load - previous_load).norm() <= 0.25 * load.norm();
+    const bool warm = force_control && !previous_active.empty() && (load - previous_load).norm() <= 0.25 * load.norm();
     std::vector<unsigned int> active =
       warm ? previous_active : initial_active_set(kin, force_control, load, problem.effective_modulus());
     if (force_control)
@@ -690,8 +689,7 @@ namespace wearlink::fe
   // the pin and +λ_i n_i (interpolated) on the bore, one solve with the clamped
   // factorization, plus the pin's rigid translation U (in the pin frame) on its DoFs.
   Vector<double>
-  CondensedContactSolver::displacement_field(const ContactKinematics &kin,
-                                             const ContactSolution &  sol) const
+  CondensedContactSolver::displacement_field(const ContactKinematics &kin, const ContactSolution &sol) const
   {
     Vector<double> u(problem.dof_handler.n_dofs());
     for (unsigned int i = 0; i < problem.pin_nodes.size(); ++i)
@@ -708,8 +706,8 @@ namespace wearlink::fe
             }
         }
     compliance.solve_clamped(u);
-    const Tensor<1, 2> U_pin = rotate(sol.pin_translation, -kin.relative_angle);
-    std::vector<char>  done(u.size(), 0);
+    const Tensor<1, 2>            U_pin = rotate(sol.pin_translation, -kin.relative_angle);
+    std::vector<char>             done(u.size(), 0);
     std::vector<global_dof_index> dofs(problem.fe.n_dofs_per_cell());
     for (const auto &cell : problem.dof_handler.active_cell_iterators())
       if (cell->material_id() == material_ids::pin)
@@ -732,7 +730,8 @@ namespace wearlink::fe
     : problem(problem)
     , max_iterations(max_iterations)
     , distributed(distributed)
-  {}
+  {
+  }
 
 
   // Serial: copy K into a pattern with room for the constraints' couplings, condense,
@@ -740,15 +739,15 @@ namespace wearlink::fe
   // partition through the constraints into a PETSc matrix (rows of its own DoFs) and
   // MUMPS factors the distributed system; the solution is gathered on every rank.
   Vector<double>
-  ReferenceContactSolver::solve_constrained(const AffineConstraints<double> &       constraints,
-                                            const std::array<global_dof_index, 2> & load_dofs,
-                                            const Tensor<1, 2> &                    load) const
+  ReferenceContactSolver::solve_constrained(const AffineConstraints<double>       &constraints,
+                                            const std::array<global_dof_index, 2> &load_dofs,
+                                            const Tensor<1, 2>                    &load) const
   {
     const auto n = problem.dof_handler.n_dofs();
     EffectLedger::instance().add_resource("factorizations");
     if (!distributed)
       {
-        const auto &           K = problem.stiffness_matrix;
+        const auto            &K = problem.stiffness_matrix;
         DynamicSparsityPattern dsp(n);
         for (types::global_dof_index row = 0; row < n; ++row)
           for (auto e = problem.sparsity_pattern.begin(row); e != problem.sparsity_pattern.end(row); ++e)
@@ -794,67 +793,64 @@ namespace wearlink::fe
      * normal component.
      */
     void
-    active_set_constraints(const ElasticityProblem &        problem,
-                           const ContactKinematics &        kin,
+    active_set_constraints(const ElasticityProblem         &problem,
+                           const ContactKinematics         &kin,
                            const std::vector<unsigned int> &active,
                            const bool                       force_control,
-                           AffineConstraints<double> &      constraints)
+                           AffineConstraints<double>       &constraints)
     {
       const auto &pin  = problem.pin_nodes;
       const auto &bore = problem.bore_nodes;
       const auto &core = problem.core_nodes;
-    for (const auto d : problem.outer_dofs)
-      constraints.add_line(d);
-    for (unsigned int c = 0; c < core.size(); ++c)
-      for (unsigned int d = 0; d < 2; ++d)
-        if (!force_control)
-          constraints.add_line(core[c][d]);
-        else if (c > 0)
-          {
+      for (const auto d : problem.outer_dofs)
+        constraints.add_line(d);
+      for (unsigned int c = 0; c < core.size(); ++c)
+        for (unsigned int d = 0; d < 2; ++d)
+          if (!force_control)
             constraints.add_line(core[c][d]);
-            constraints.add_entry(core[c][d], core[0][d], 1.0);
-          }
-    for (const auto i : active)
-      {
-        const auto &       nu   = pin[i].normal;
-        const auto &       nb   = kin.normal[i];
-        const unsigned int comp = std::abs(nu[0]) >= std::abs(nu[1]) ? 0 : 1;
-        const unsigned int other = 1 - comp;
-        const auto         dof  = pin[i].dofs[comp];
-        constraints.add_line(dof);
-        constraints.add_entry(dof, pin[i].dofs[other], -nu[other] / nu[comp]);
-        for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
-          {
-            const auto &b = bore[kin.masters[i][a]];
-            const double w = kin.weights[i][a] / nu[comp];
-            if (w != 0)
-              {
-                constraints.add_entry(dof, b.dofs[0], w * nb[0]);
-                constraints.add_entry(dof, b.dofs[1], w * nb[1]);
-              }
-          }
-        constraints.set_inhomogeneity(dof, kin.g0[i] / nu[comp]);
-      }
-    constraints.close();
+          else if (c > 0)
+            {
+              constraints.add_line(core[c][d]);
+              constraints.add_entry(core[c][d], core[0][d], 1.0);
+            }
+      for (const auto i : active)
+        {
+          const auto        &nu    = pin[i].normal;
+          const auto        &nb    = kin.normal[i];
+          const unsigned int comp  = std::abs(nu[0]) >= std::abs(nu[1]) ? 0 : 1;
+          const unsigned int other = 1 - comp;
+          const auto         dof   = pin[i].dofs[comp];
+          constraints.add_line(dof);
+          constraints.add_entry(dof, pin[i].dofs[other], -nu[other] / nu[comp]);
+          for (unsigned int a = 0; a < kin.n_masters[i]; ++a)
+            {
+              const auto  &b = bore[kin.masters[i][a]];
+              const double w = kin.weights[i][a] / nu[comp];
+              if (w != 0)
+                {
+                  constraints.add_entry(dof, b.dofs[0], w * nb[0]);
+                  constraints.add_entry(dof, b.dofs[1], w * nb[1]);
+                }
+            }
+          constraints.set_inhomogeneity(dof, kin.g0[i] / nu[comp]);
+        }
+      constraints.close();
     }
   } // namespace
 
   ContactSolution
-  ReferenceContactSolver::solve(const ContactKinematics &kin,
-                                bool                     force_control,
-                                const Tensor<1, 2> &     load) const
+  ReferenceContactSolver::solve(const ContactKinematics &kin, bool force_control, const Tensor<1, 2> &load) const
   {
-    const auto &       K     = problem.stiffness_matrix;
-    const auto &       pin   = problem.pin_nodes;
-    const auto &       bore  = problem.bore_nodes;
-    const auto &       core  = problem.core_nodes;
-    const unsigned int m     = pin.size();
-    const auto         n     = problem.dof_handler.n_dofs();
+    const auto        &K         = problem.stiffness_matrix;
+    const auto        &pin       = problem.pin_nodes;
+    const auto        &bore      = problem.bore_nodes;
+    const auto        &core      = problem.core_nodes;
+    const unsigned int m         = pin.size();
+    const auto         n         = problem.dof_handler.n_dofs();
     const double       tolerance = gap_tolerance(kin);
-    const Tensor<1, 2> P_pin = rotate(load, -kin.relative_angle);
+    const Tensor<1, 2> P_pin     = rotate(load, -kin.relative_angle);
 
-    std::vector<unsigned int>           active =
-      initial_active_set(kin, force_control, load, problem.effective_modulus());
+    std::vector<unsigned int> active = initial_active_set(kin, force_control, load, problem.effective_modulus());
     std::set<std::vector<unsigned int>> history;
     ContactSolution                     sol;
     std::vector<double>                 lambda(m), gap(m);

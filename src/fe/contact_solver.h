@@ -55,13 +55,13 @@ namespace wearlink::fe
   /** Geometry of one load state: where each pin candidate meets the bore. */
   struct ContactKinematics
   {
-    double               relative_angle = 0; ///< θ_pin − θ_bushing [rad]
-    dealii::Tensor<1, 2> eccentricity;       ///< reference pin position, bushing frame [m]
-    std::vector<double>               g0;     ///< initial gap per pin candidate [m]
-    std::vector<dealii::Tensor<1, 2>> normal; ///< pin normal, bushing frame
-    std::vector<double>               bore_angle; ///< bushing-frame angle of the contact point on the bore
-    std::vector<std::array<unsigned int, 3>> masters; ///< bore nodes of the face met
-    std::vector<std::array<double, 3>>       weights; ///< their interpolation weights
+    double                                   relative_angle = 0; ///< θ_pin − θ_bushing [rad]
+    dealii::Tensor<1, 2>                     eccentricity;       ///< reference pin position, bushing frame [m]
+    std::vector<double>                      g0;                 ///< initial gap per pin candidate [m]
+    std::vector<dealii::Tensor<1, 2>>        normal;             ///< pin normal, bushing frame
+    std::vector<double>                      bore_angle; ///< bushing-frame angle of the contact point on the bore
+    std::vector<std::array<unsigned int, 3>> masters;    ///< bore nodes of the face met
+    std::vector<std::array<double, 3>>       weights;    ///< their interpolation weights
     std::vector<unsigned char>               n_masters;
   };
 
@@ -71,8 +71,8 @@ namespace wearlink::fe
    * normal ray onto the bore profile @p bore.
    */
   ContactKinematics
-  compute_kinematics(const ElasticityProblem &   problem,
-                     const Profile &             bore,
+  compute_kinematics(const ElasticityProblem    &problem,
+                     const Profile              &bore,
                      double                      relative_angle,
                      const dealii::Tensor<1, 2> &eccentricity);
 
@@ -87,9 +87,9 @@ namespace wearlink::fe
      * reach of the contact (see CondensedContactSolver::solve), a lower bound for the
      * others (still far above the tolerance).
      */
-    std::vector<double>  gap;
-    unsigned int         iterations = 0;
-    unsigned int         n_active   = 0;
+    std::vector<double> gap;
+    unsigned int        iterations = 0;
+    unsigned int        n_active   = 0;
     /** Full displacement field (reference solver only; empty otherwise). */
     dealii::Vector<double> displacement;
   };
@@ -98,7 +98,7 @@ namespace wearlink::fe
   {
   public:
     CondensedContactSolver(const ElasticityProblem &problem,
-                           BoundaryCompliance &     compliance,
+                           BoundaryCompliance      &compliance,
                            unsigned int             max_iterations);
 
     /**
@@ -117,11 +117,11 @@ namespace wearlink::fe
     displacement_field(const ContactKinematics &kinematics, const ContactSolution &solution) const;
 
   private:
-    const ElasticityProblem &  problem;
-    BoundaryCompliance &       compliance;
-    const unsigned int         max_iterations;
-    std::vector<unsigned int>  previous_active;
-    dealii::Tensor<1, 2>       previous_load;
+    const ElasticityProblem  &problem;
+    BoundaryCompliance       &compliance;
+    const unsigned int        max_iterations;
+    std::vector<unsigned int> previous_active;
+    dealii::Tensor<1, 2>      previous_load;
   };
 
   class ReferenceContactSolver
@@ -135,9 +135,7 @@ namespace wearlink::fe
      *        factors in parallel (deal.II step-17 style). The active-set decisions are
      *        made on the gathered solution, identically on every rank.
      */
-    ReferenceContactSolver(const ElasticityProblem &problem,
-                           unsigned int             max_iterations,
-                           bool                     distributed = false);
+    ReferenceContactSolver(const ElasticityProblem &problem, unsigned int max_iterations, bool distributed = false);
 
     ContactSolution
     solve(const ContactKinematics &kinematics, bool force_control, const dealii::Tensor<1, 2> &load) const;
@@ -146,8 +144,8 @@ namespace wearlink::fe
     /** Solve K u = f under @p constraints; f = @p load at the DoFs @p load_dofs. */
     dealii::Vector<double>
     solve_constrained(const dealii::AffineConstraints<double> &constraints,
-                      const std::array<global_dof_index, 2> &  load_dofs,
-                      const dealii::Tensor<1, 2> &             load) const;
+                      const std::array<global_dof_index, 2>   &load_dofs,
+                      const dealii::Tensor<1, 2>              &load) const;
 
     const ElasticityProblem &problem;
     const unsigned int       max_iterations;
@@ -166,8 +164,8 @@ namespace wearlink::fe
    * iteration and costs ~20 iterations at 1 kN (measured), each touching new columns.
    */
   std::vector<unsigned int>
-  initial_active_set(const ContactKinematics &  kinematics,
-                     bool                       force_control,
+  initial_active_set(const ContactKinematics    &kinematics,
+                     bool                        force_control,
                      const dealii::Tensor<1, 2> &load,
-                     double                     effective_modulus);
+                     double                      effective_modulus);
 } // namespace wearlink::fe

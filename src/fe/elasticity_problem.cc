@@ -9,11 +9,11 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/numerics/data_out.h>
@@ -50,26 +50,27 @@ namespace wearlink::fe
       StressPostprocessor(const contact::Material &pin, const contact::Material &bushing)
         : pin(lame(pin))
         , bushing(lame(bushing))
-      {}
+      {
+      }
 
       void
       evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &inputs,
-                            std::vector<Vector<double>> &             computed) const override
+                            std::vector<Vector<double>>              &computed) const override
       {
-        const auto cell = inputs.template get_cell<2>();
+        const auto cell   = inputs.template get_cell<2>();
         const auto [l, m] = cell->material_id() == material_ids::pin ? pin : bushing;
         for (unsigned int q = 0; q < computed.size(); ++q)
           {
-            const auto & g   = inputs.solution_gradients[q];
+            const auto  &g   = inputs.solution_gradients[q];
             const double exx = g[0][0], eyy = g[1][1], exy = 0.5 * (g[0][1] + g[1][0]);
             const double tr  = exx + eyy;
             const double sxx = l * tr + 2 * m * exx;
             const double syy = l * tr + 2 * m * eyy;
             const double sxy = 2 * m * exy;
             const double szz = l * tr;
-            const double vm  = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
-                                               (szz - sxx) * (szz - sxx)) +
-                                        3 * sxy * sxy);
+            const double vm =
+              std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                        3 * sxy * sxy);
             computed[q](0) = sxx;
             computed[q](1) = syy;
             computed[q](2) = sxy;
@@ -109,21 +110,21 @@ namespace wearlink::fe
       const double c = std::cos(psi), s = std::sin(psi);
       // Tangent dX/dψ = r' e_r + r e_ψ; outward normal ∝ r e_r − r' e_ψ.
       Tensor<1, 2> n;
-      n[0]             = r * c + dr * s;
-      n[1]             = r * s - dr * c;
+      n[0] = r * c + dr * s;
+      n[1] = r * s - dr * c;
       return {Point<2>(r * c, r * s), n / n.norm()};
     }
   } // namespace
 
 
-  ElasticityProblem::ElasticityProblem(const std::string &       msh_file,
-                                       unsigned int              degree,
-                                       unsigned int              refinements,
-                                       const contact::Material & pin_material,
-                                       const contact::Material & bushing_material,
-                                       const Profile &           pin_profile,
-                                       const Profile &           bore_profile,
-                                       unsigned int              n_partitions)
+  ElasticityProblem::ElasticityProblem(const std::string       &msh_file,
+                                       unsigned int             degree,
+                                       unsigned int             refinements,
+                                       const contact::Material &pin_material,
+                                       const contact::Material &bushing_material,
+                                       const Profile           &pin_profile,
+                                       const Profile           &bore_profile,
+                                       unsigned int             n_partitions)
     : fe(FE_Q<2>(degree), 2)
     , dof_handler(triangulation)
     , msh_file(msh_file)
@@ -133,7 +134,8 @@ namespace wearlink::fe
     , bushing_material(bushing_material)
     , pin_profile(pin_profile)
     , bore_profile(bore_profile)
-  {}
+  {
+  }
 
 
   void
@@ -185,11 +187,10 @@ namespace wearlink::fe
 
   void
   ElasticityProblem::cell_stiffness(const DoFHandler<2>::active_cell_iterator &cell,
-                                    FEValues<2> &                               fe_values,
-                                    FullMatrix<double> &                        cell_matrix) const
+                                    FEValues<2>                               &fe_values,
+                                    FullMatrix<double>                        &cell_matrix) const
   {
-    const auto [l, m] =
-      lame(cell->material_id() == material_ids::pin ? pin_material : bushing_material);
+    const auto [l, m]                = lame(cell->material_id() == material_ids::pin ? pin_material : bushing_material);
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     fe_values.reinit(cell);
     cell_matrix = 0;
@@ -202,9 +203,8 @@ namespace wearlink::fe
             {
               const unsigned int cj = fe.system_to_component_index(j).first;
               const auto         gj = fe_values.shape_grad(j, q);
-              cell_matrix(i, j) += (l * gi[ci] * gj[cj] + m * gi[cj] * gj[ci] +
-                                    (ci == cj ? m * (gi * gj) : 0.0)) *
-                                   fe_values.JxW(q);
+              cell_matrix(i, j) +=
+                (l * gi[ci] * gj[cj] + m * gi[cj] * gj[ci] + (ci == cj ? m * (gi * gj) : 0.0)) * fe_values.JxW(q);
             }
         }
   }
@@ -216,9 +216,9 @@ namespace wearlink::fe
   void
   ElasticityProblem::assemble_system()
   {
-    FEValues<2>        fe_values(fe, quadrature(), update_gradients | update_JxW_values);
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    FEValues<2>                   fe_values(fe, quadrature(), update_gradients | update_JxW_values);
+    const unsigned int            dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>            cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<global_dof_index> dof_indices(dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -240,16 +240,16 @@ namespace wearlink::fe
   void
   ElasticityProblem::extract_contact_surfaces()
   {
-    const MappingQ<2>      mapping(1);
-    std::vector<Point<2>>  support(dof_handler.n_dofs());
+    const MappingQ<2>     mapping(1);
+    std::vector<Point<2>> support(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
 
-    const QGauss<1>    face_quadrature(fe.degree + 1);
-    FEFaceValues<2>    fe_face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    const QGauss<1>               face_quadrature(fe.degree + 1);
+    FEFaceValues<2>               fe_face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
+    const unsigned int            dofs_per_cell = fe.n_dofs_per_cell();
     std::vector<global_dof_index> dof_indices(dofs_per_cell);
 
-    std::map<global_dof_index, SurfaceNode> pin_map, bore_map;
+    std::map<global_dof_index, SurfaceNode>      pin_map, bore_map;
     std::map<global_dof_index, global_dof_index> core_map;
     std::vector<global_dof_index>                outer;
     std::vector<std::vector<global_dof_index>>   bore_face_dofs;
@@ -267,7 +267,7 @@ namespace wearlink::fe
               if (fe.has_support_on_face(i, f))
                 {
                   const auto [component, base] = fe.system_to_component_index(i);
-                  points[base][component]       = dof_indices[i];
+                  points[base][component]      = dof_indices[i];
                   if (component == 0)
                     x_index[base] = i;
                 }
@@ -282,26 +282,25 @@ namespace wearlink::fe
                 }
             else if (id == boundary_ids::pin_surface || id == boundary_ids::bore_surface)
               {
-                const bool is_pin  = id == boundary_ids::pin_surface;
-                auto &     nodes   = is_pin ? pin_map : bore_map;
+                const bool  is_pin  = id == boundary_ids::pin_surface;
+                auto       &nodes   = is_pin ? pin_map : bore_map;
                 const auto &profile = is_pin ? pin_profile : bore_profile;
                 fe_face_values.reinit(cell, f);
                 std::vector<global_dof_index> face_dofs;
                 for (const auto &p : points)
                   {
-                    const unsigned int i    = x_index[p.first];
-                    auto               it   = nodes.find(p.second[0]);
+                    const unsigned int i  = x_index[p.first];
+                    auto               it = nodes.find(p.second[0]);
                     if (it == nodes.end())
                       {
                         SurfaceNode node;
-                        node.dofs  = p.second;
-                        node.angle = polar_angle(support[p.second[0]]);
+                        node.dofs                         = p.second;
+                        node.angle                        = polar_angle(support[p.second[0]]);
                         std::tie(node.point, node.normal) = on_profile(profile, node.angle);
-                        it = nodes.emplace(p.second[0], node).first;
+                        it                                = nodes.emplace(p.second[0], node).first;
                       }
                     for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                      it->second.weight +=
-                        fe_face_values.shape_value_component(i, q, 0) * fe_face_values.JxW(q);
+                      it->second.weight += fe_face_values.shape_value_component(i, q, 0) * fe_face_values.JxW(q);
                     face_dofs.push_back(p.second[0]);
                   }
                 if (!is_pin)
@@ -310,16 +309,13 @@ namespace wearlink::fe
           }
 
     AssertThrow(!pin_map.empty() && !bore_map.empty() && !core_map.empty() && !outer.empty(),
-                ExcMessage("The mesh '" + msh_file +
-                           "' lacks one of the boundary ids of fe/boundary_ids.h."));
+                ExcMessage("The mesh '" + msh_file + "' lacks one of the boundary ids of fe/boundary_ids.h."));
 
     auto sorted = [](const std::map<global_dof_index, SurfaceNode> &m) {
       std::vector<SurfaceNode> v;
       for (const auto &e : m)
         v.push_back(e.second);
-      std::sort(v.begin(), v.end(), [](const SurfaceNode &a, const SurfaceNode &b) {
-        return a.angle < b.angle;
-      });
+      std::sort(v.begin(), v.end(), [](const SurfaceNode &a, const SurfaceNode &b) { return a.angle < b.angle; });
       return v;
     };
     pin_nodes  = sorted(pin_map);
@@ -349,21 +345,23 @@ namespace wearlink::fe
         SurfaceFace face;
         for (const auto d : dofs)
           face.nodes.push_back(bore_index[d]);
-        const double ref = bore_nodes[face.nodes[0]].angle;
-        auto unwrap = [&](unsigned int k) {
+        const double ref    = bore_nodes[face.nodes[0]].angle;
+        auto         unwrap = [&](unsigned int k) {
           double a = bore_nodes[k].angle - ref;
           a -= 2 * pi * std::round(a / (2 * pi));
           return a;
         };
-        std::sort(face.nodes.begin(), face.nodes.end(),
-                  [&](unsigned int a, unsigned int b) { return unwrap(a) < unwrap(b); });
+        std::sort(face.nodes.begin(), face.nodes.end(), [&](unsigned int a, unsigned int b) {
+          return unwrap(a) < unwrap(b);
+        });
         face.begin = bore_nodes[face.nodes.front()].angle;
         face.span  = unwrap(face.nodes.back()) - unwrap(face.nodes.front());
         AssertThrow(face.span > 0, ExcInternalError());
         bore_faces.push_back(face);
       }
-    std::sort(bore_faces.begin(), bore_faces.end(),
-              [](const SurfaceFace &a, const SurfaceFace &b) { return a.begin < b.begin; });
+    std::sort(bore_faces.begin(), bore_faces.end(), [](const SurfaceFace &a, const SurfaceFace &b) {
+      return a.begin < b.begin;
+    });
   }
 
 
@@ -373,7 +371,8 @@ namespace wearlink::fe
     DataOut<2> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
-      2, DataComponentInterpretation::component_is_part_of_vector);
+      2,
+      DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(displacement,
                              std::vector<std::string>(2, "displacement_m"),
                              DataOut<2>::type_dof_data,

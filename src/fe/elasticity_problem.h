@@ -19,13 +19,13 @@
 #include "contact/pressure_model.h"
 
 #include <deal.II/base/point.h>
-#include <deal.II/base/tensor.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -41,11 +41,11 @@ namespace wearlink::fe
   /** One support point of a contact surface (a contact candidate). */
   struct SurfaceNode
   {
-    double angle = 0;                   ///< polar angle in the body's frame [rad], in (−π, π]
-    dealii::Point<2>     point;         ///< R*(angle) (cos, sin): on the profile [m]
-    dealii::Tensor<1, 2> normal;        ///< unit normal of the profile, pointing away from the centre
-    double               weight = 0;    ///< lumped length ∫ N_i ds on the surface [m]
-    std::array<global_dof_index, 2> dofs{}; ///< x and y DoF (body-frame components)
+    double                          angle = 0;  ///< polar angle in the body's frame [rad], in (−π, π]
+    dealii::Point<2>                point;      ///< R*(angle) (cos, sin): on the profile [m]
+    dealii::Tensor<1, 2>            normal;     ///< unit normal of the profile, pointing away from the centre
+    double                          weight = 0; ///< lumped length ∫ N_i ds on the surface [m]
+    std::array<global_dof_index, 2> dofs{};     ///< x and y DoF (body-frame components)
   };
 
   /** One boundary face of a contact surface, for interpolating along it. */
@@ -65,14 +65,14 @@ namespace wearlink::fe
      * @param degree FE_Q degree (1 or 2)
      * @param refinements global refinements of the mesh
      */
-    ElasticityProblem(const std::string &        msh_file,
-                      unsigned int               degree,
-                      unsigned int               refinements,
-                      const contact::Material &  pin_material,
-                      const contact::Material &  bushing_material,
-                      const Profile &            pin_profile,
-                      const Profile &            bore_profile,
-                      unsigned int               n_partitions = 1);
+    ElasticityProblem(const std::string       &msh_file,
+                      unsigned int             degree,
+                      unsigned int             refinements,
+                      const contact::Material &pin_material,
+                      const contact::Material &bushing_material,
+                      const Profile           &pin_profile,
+                      const Profile           &bore_profile,
+                      unsigned int             n_partitions = 1);
 
     /**
      * Read the mesh (and, for n_partitions > 1, partition it with METIS and number the
@@ -97,8 +97,8 @@ namespace wearlink::fe
      */
     void
     cell_stiffness(const dealii::DoFHandler<2>::active_cell_iterator &cell,
-                   dealii::FEValues<2> &                               fe_values,
-                   dealii::FullMatrix<double> &                        matrix) const;
+                   dealii::FEValues<2>                               &fe_values,
+                   dealii::FullMatrix<double>                        &matrix) const;
 
     /** 1/E* = Σ (1 − ν²)/E of the two bodies [Pa] (REFERENCE.md §5). */
     double
@@ -111,10 +111,10 @@ namespace wearlink::fe
     dealii::QGauss<2>
     quadrature() const;
 
-    dealii::Triangulation<2>    triangulation;
-    dealii::FESystem<2>         fe;
-    dealii::DoFHandler<2>       dof_handler;
-    dealii::SparsityPattern     sparsity_pattern;
+    dealii::Triangulation<2>     triangulation;
+    dealii::FESystem<2>          fe;
+    dealii::DoFHandler<2>        dof_handler;
+    dealii::SparsityPattern      sparsity_pattern;
     dealii::SparseMatrix<double> stiffness_matrix;
 
     std::vector<SurfaceNode> pin_nodes;  ///< sorted by angle
@@ -138,12 +138,12 @@ namespace wearlink::fe
     void
     build_bore_faces(const std::vector<std::vector<dealii::types::global_dof_index>> &bore_face_dofs);
 
-    const std::string        msh_file;
-    const unsigned int       refinements;
-    const unsigned int       n_partitions;
-    const contact::Material  pin_material;
-    const contact::Material  bushing_material;
-    const Profile            pin_profile;
-    const Profile            bore_profile;
+    const std::string       msh_file;
+    const unsigned int      refinements;
+    const unsigned int      n_partitions;
+    const contact::Material pin_material;
+    const contact::Material bushing_material;
+    const Profile           pin_profile;
+    const Profile           bore_profile;
   };
 } // namespace wearlink::fe

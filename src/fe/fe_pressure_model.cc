@@ -6,14 +6,14 @@
 #include "fe/pin_bushing_model.h"
 
 #include <filesystem>
-
 #include <unistd.h>
 
 namespace wearlink::fe
 {
   FePressureModel::FePressureModel(const FeSettings &settings)
     : settings(settings)
-  {}
+  {
+  }
 
   // A temporary mesh directory is the model's own: it goes with the model (the meshes
   // a user wants to keep are written where 'Mesh directory' says, and the wear layer
@@ -35,13 +35,12 @@ namespace wearlink::fe
   {
     if (mesh_directory.empty())
       {
-        namespace fs   = std::filesystem;
-        mesh_directory = settings.mesh_directory.empty() ?
-                           (fs::temp_directory_path() /
-                            ("wearlink-fe-" + std::to_string(::getpid()) + "-" +
-                             std::to_string(reinterpret_cast<std::uintptr_t>(this))))
+        namespace fs        = std::filesystem;
+        mesh_directory      = settings.mesh_directory.empty() ?
+                                (fs::temp_directory_path() / ("wearlink-fe-" + std::to_string(::getpid()) + "-" +
+                                                         std::to_string(reinterpret_cast<std::uintptr_t>(this))))
                              .string() :
-                           settings.mesh_directory;
+                                settings.mesh_directory;
         owns_mesh_directory = settings.mesh_directory.empty();
         make_output_directory(mesh_directory);
       }
@@ -53,9 +52,9 @@ namespace wearlink::fe
         past_compliance_time += model->compliance_time();
       }
     model.reset();
-    geometry = g;
+    geometry              = g;
     const std::string msh = mesh_directory + "/pin_bushing_" + std::to_string(mesh_counter++) + ".msh";
-    model = std::make_unique<PinBushingModel>(geometry, settings, msh);
+    model                 = std::make_unique<PinBushingModel>(geometry, settings, msh);
     model->prepare_condensed();
   }
 
@@ -80,17 +79,16 @@ namespace wearlink::fe
   void
   FePressureModel::evaluate(const contact::ContactLoad &load, contact::SurfacePressure &out)
   {
-    AssertThrow(model != nullptr,
-                dealii::ExcMessage("The fe pressure model was evaluated before update_geometry()."));
+    AssertThrow(model != nullptr, dealii::ExcMessage("The fe pressure model was evaluated before update_geometry()."));
     out.pin.assign(geometry.pin.n_points(), 0.0);
     out.bore.assign(geometry.bore.n_points(), 0.0);
     if (load.force[0] == 0 && load.force[1] == 0)
       return;
     LoadCase lc;
-    lc.control       = Control::force;
-    lc.bushing_angle = load.bushing_angle;
-    lc.pin_angle     = load.pin_angle;
-    lc.load          = {-load.force[0], -load.force[1]};
+    lc.control            = Control::force;
+    lc.bushing_angle      = load.bushing_angle;
+    lc.pin_angle          = load.pin_angle;
+    lc.load               = {-load.force[0], -load.force[1]};
     const ContactResult r = model->solve(lc, SolverKind::condensed);
     out                   = model->surface_pressure(r);
   }

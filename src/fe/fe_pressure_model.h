@@ -50,7 +50,7 @@ namespace wearlink::fe
   private:
     const FeSettings                 settings;
     std::string                      mesh_directory;
-    unsigned int                     mesh_counter = 0;
+    unsigned int                     mesh_counter        = 0;
     bool                             owns_mesh_directory = false; ///< a temporary directory, removed with the model
     contact::JointGeometry           geometry;
     std::unique_ptr<PinBushingModel> model;

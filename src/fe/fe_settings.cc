@@ -34,41 +34,73 @@ namespace wearlink::fe
   declare_fe_settings(dealii::ParameterHandler &prm)
   {
     using namespace dealii::Patterns;
-    declare(prm, "Surface element size", "25e-6", Double(0),
+    declare(prm,
+            "Surface element size",
+            "25e-6",
+            Double(0),
             "Element size along both contact surfaces (pin and bore). It must resolve "
             "the contact half-width: a Hertz half-width b needs about b/10 or finer.",
             "m");
-    declare(prm, "Maximum element size", "1.5e-3", Double(0),
-            "Largest element size, reached far from the contact surfaces.", "m");
-    declare(prm, "Refined layer thickness", "0.1e-3", Double(0),
+    declare(prm,
+            "Maximum element size",
+            "1.5e-3",
+            Double(0),
+            "Largest element size, reached far from the contact surfaces.",
+            "m");
+    declare(prm,
+            "Refined layer thickness",
+            "0.1e-3",
+            Double(0),
             "Depth below both contact surfaces over which the element size stays at "
             "'Surface element size' before growing: the contact stresses decay over about "
             "one contact half-width, which must be resolved too.",
             "m");
-    declare(prm, "Size growth", "0.3", Double(0),
+    declare(prm,
+            "Size growth",
+            "0.3",
+            Double(0),
             "Growth rate of the element size with the distance d from the nearest "
             "contact surface: h(d) = min(h_surface + growth d, h_max).",
             "none");
-    declare(prm, "Pin core radius fraction", "0.4", Double(0, 0.95),
+    declare(prm,
+            "Pin core radius fraction",
+            "0.4",
+            Double(0, 0.95),
             "The pin is loaded through a rigid core (its centre region, radius = this "
             "fraction of the smallest pin radius): the core translates rigidly by the pin "
             "displacement and does not rotate (the pin's link holds its angle).",
             "none");
-    declare(prm, "Bushing outer radius ratio", "2", Double(1),
+    declare(prm,
+            "Bushing outer radius ratio",
+            "2",
+            Double(1),
             "Outer radius of the bushing ring / mean bore radius; the outer edge is "
             "fixed. Used by the `fe` pressure model (the `contact` command takes the "
             "outer radius from its geometry section).",
             "none");
-    declare(prm, "Element degree", "1", Integer(1, 2),
-            "Polynomial degree of the FE_Q elements (plane-strain elasticity).", "none");
-    declare(prm, "Global refinements", "0", Integer(0, 6),
+    declare(prm,
+            "Element degree",
+            "1",
+            Integer(1, 2),
+            "Polynomial degree of the FE_Q elements (plane-strain elasticity).",
+            "none");
+    declare(prm,
+            "Global refinements",
+            "0",
+            Integer(0, 6),
             "Uniform refinements of the gmsh mesh (each halves every element size).",
             "none");
-    declare(prm, "Maximum active-set iterations", "100", Integer(1),
+    declare(prm,
+            "Maximum active-set iterations",
+            "100",
+            Integer(1),
             "Iteration limit of the active-set contact solvers; exceeding it is a "
             "numerical error that names the load case.",
             "none");
-    declare(prm, "Mesh directory", "", Anything(),
+    declare(prm,
+            "Mesh directory",
+            "",
+            Anything(),
             "Directory for the generated gmsh .msh files; empty: a temporary directory "
             "(the `contact` command always uses its output directory).",
             "none");

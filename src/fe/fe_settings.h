@@ -50,7 +50,7 @@ namespace wearlink::fe
      * circumference, needed when the load direction changes, as in a wear loop). Set
      * by the `contact` command for its fixed load direction; not a plugin parameter.
      */
-    double refined_arc_half_angle = 4;
+    double refined_arc_half_angle  = 4;
     double refined_arc_bore_centre = 0; ///< bushing-frame centre of the refined arc [rad]
     double refined_arc_pin_centre  = 0; ///< pin-frame centre of the refined arc [rad]
     /**

@@ -77,12 +77,12 @@ namespace wearlink::fe
      * uniformly spaced ones and @p n_segments their segment count.
      */
     std::vector<int>
-    add_profile_curve(const Profile &    profile,
-                      double             h,
-                      double             centre,
-                      double             half_angle,
-                      std::vector<int> & refined,
-                      unsigned long &    n_segments)
+    add_profile_curve(const Profile    &profile,
+                      double            h,
+                      double            centre,
+                      double            half_angle,
+                      std::vector<int> &refined,
+                      unsigned long    &n_segments)
     {
       const int        n = static_cast<int>(profile.n_points());
       std::vector<int> points(n);
@@ -95,8 +95,8 @@ namespace wearlink::fe
       std::vector<std::pair<int, int>> pieces;
       std::vector<bool>                uniform;
       const double                     step = 2 * pi / n;
-      int i0 = static_cast<int>(std::floor((centre - half_angle) / step));
-      int i1 = static_cast<int>(std::ceil((centre + half_angle) / step));
+      int                              i0   = static_cast<int>(std::floor((centre - half_angle) / step));
+      int                              i1   = static_cast<int>(std::ceil((centre + half_angle) / step));
       if (half_angle >= pi || i1 - i0 + 2 > n)
         for (int q = 0; q < 4; ++q)
           {
@@ -122,9 +122,8 @@ namespace wearlink::fe
           const int c = gmsh::model::geo::addSpline(piece);
           if (uniform[p])
             {
-              const int segments = std::max(
-                2,
-                static_cast<int>(std::lround(arc_length(profile, pieces[p].first, pieces[p].second) / h)));
+              const int segments =
+                std::max(2, static_cast<int>(std::lround(arc_length(profile, pieces[p].first, pieces[p].second) / h)));
               gmsh::model::geo::mesh::setTransfiniteCurve(c, segments + 1);
               n_segments += segments;
               refined.push_back(c);
@@ -162,17 +161,19 @@ namespace wearlink::fe
   {
     bore.check("bore profile");
     pin.check("pin profile");
-    const auto positive = [](double v) { return std::isfinite(v) && v > 0; };
-    if (!positive(spec.surface_element_size) || !positive(spec.max_element_size) ||
-        !positive(spec.size_growth) || !(spec.layer_thickness >= 0))
+    const auto positive = [](double v) {
+      return std::isfinite(v) && v > 0;
+    };
+    if (!positive(spec.surface_element_size) || !positive(spec.max_element_size) || !positive(spec.size_growth) ||
+        !(spec.layer_thickness >= 0))
       throw InputError("The FE mesh sizes must be finite and > 0 (surface element size " +
-                       number(spec.surface_element_size) + " m, maximum element size " +
-                       number(spec.max_element_size) + " m, size growth " +
-                       number(spec.size_growth) + ").");
+                       number(spec.surface_element_size) + " m, maximum element size " + number(spec.max_element_size) +
+                       " m, size growth " + number(spec.size_growth) + ").");
     if (!(pin.max_radius() < bore.min_radius()))
-      throw InputError("The pin is not inside the bore: the largest pin radius (" +
-                       number(pin.max_radius()) + " m) must be smaller than the smallest bore "
-                       "radius (" + number(bore.min_radius()) +
+      throw InputError("The pin is not inside the bore: the largest pin radius (" + number(pin.max_radius()) +
+                       " m) must be smaller than the smallest bore "
+                       "radius (" +
+                       number(bore.min_radius()) +
                        " m) so that the pin fits at any relative rotation. Check the radii "
                        "(bore radius > pin radius) and the profile files.");
     if (!(positive(spec.core_radius) && spec.core_radius < pin.min_radius()))
@@ -181,16 +182,15 @@ namespace wearlink::fe
                        number(pin.min_radius()) + " m).");
     if (!(positive(spec.outer_radius) && spec.outer_radius > bore.max_radius()))
       throw InputError("The bushing outer radius (" + number(spec.outer_radius) +
-                       " m) must be larger than the largest bore radius (" +
-                       number(bore.max_radius()) + " m).");
+                       " m) must be larger than the largest bore radius (" + number(bore.max_radius()) + " m).");
   }
 
 
   MeshStatistics
-  write_pin_bushing_mesh(const Profile &bore,
-                         const Profile &pin,
+  write_pin_bushing_mesh(const Profile           &bore,
+                         const Profile           &pin,
                          const MeshSpecification &spec,
-                         const std::string &msh_path)
+                         const std::string       &msh_path)
   {
     check_pin_bushing_geometry(bore, pin, spec);
     // Sizes before the final split of every element into quadrilaterals (see below).
@@ -204,19 +204,21 @@ namespace wearlink::fe
     // Pin annulus: surface (outer) loop and rigid-core hole.
     std::vector<int> refined;
     unsigned long    pin_segments = 0, bore_segments = 0;
-    const auto pin_curves = add_profile_curve(pin, h, spec.pin_refined_centre, spec.refined_half_angle, refined, pin_segments);
+    const auto       pin_curves =
+      add_profile_curve(pin, h, spec.pin_refined_centre, spec.refined_half_angle, refined, pin_segments);
     const auto core_curves = add_circle(spec.core_radius, H);
     const int  pin_loop    = gmsh::model::geo::addCurveLoop(pin_curves);
     const int  core_loop   = gmsh::model::geo::addCurveLoop(core_curves);
     const int  pin_area    = gmsh::model::geo::addPlaneSurface({pin_loop, core_loop});
 
     // Bushing ring: fixed outer circle and the bore as its hole.
-    const auto bore_curves = add_profile_curve(bore, h, spec.bore_refined_centre, spec.refined_half_angle, refined, bore_segments);
+    const auto bore_curves =
+      add_profile_curve(bore, h, spec.bore_refined_centre, spec.refined_half_angle, refined, bore_segments);
     stats.n_refined_surface_segments = 2 * (pin_segments + bore_segments);
-    const auto outer_curves = add_circle(spec.outer_radius, H);
-    const int  outer_loop   = gmsh::model::geo::addCurveLoop(outer_curves);
-    const int  bore_loop    = gmsh::model::geo::addCurveLoop(bore_curves);
-    const int  ring_area    = gmsh::model::geo::addPlaneSurface({outer_loop, bore_loop});
+    const auto outer_curves          = add_circle(spec.outer_radius, H);
+    const int  outer_loop            = gmsh::model::geo::addCurveLoop(outer_curves);
+    const int  bore_loop             = gmsh::model::geo::addCurveLoop(bore_curves);
+    const int  ring_area             = gmsh::model::geo::addPlaneSurface({outer_loop, bore_loop});
     gmsh::model::geo::synchronize();
 
     name_group(2, {pin_area}, "MaterialID:" + std::to_string(material_ids::pin));
@@ -230,8 +232,8 @@ namespace wearlink::fe
     // growing linearly with the distance d from them, h(d) = min(h + growth (d − t), H).
     // (Distance from the refined, uniformly spaced arcs of both surfaces.)
     const std::vector<double> surface_curves(refined.begin(), refined.end());
-    const double samples = static_cast<double>(std::max(pin_segments, bore_segments)) + 10;
-    const int distance = gmsh::model::mesh::field::add("Distance");
+    const double              samples  = static_cast<double>(std::max(pin_segments, bore_segments)) + 10;
+    const int                 distance = gmsh::model::mesh::field::add("Distance");
     gmsh::model::mesh::field::setNumbers(distance, "CurvesList", surface_curves);
     gmsh::model::mesh::field::setNumber(distance, "NumPointsPerCurve", samples);
     const int threshold = gmsh::model::mesh::field::add("Threshold");
@@ -239,14 +241,16 @@ namespace wearlink::fe
     gmsh::model::mesh::field::setNumber(threshold, "LcMin", h);
     gmsh::model::mesh::field::setNumber(threshold, "LcMax", H);
     gmsh::model::mesh::field::setNumber(threshold, "DistMin", spec.layer_thickness);
-    gmsh::model::mesh::field::setNumber(threshold, "DistMax",
+    gmsh::model::mesh::field::setNumber(threshold,
+                                        "DistMax",
                                         spec.layer_thickness + std::max((H - h) / (2 * spec.size_growth), h));
     gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
 
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::option::setNumber("Mesh.Algorithm", 6); // Frontal-Delaunay (algorithm 8 crashes in gmsh 4.8 with a background field)
+    gmsh::option::setNumber("Mesh.Algorithm",
+                            6); // Frontal-Delaunay (algorithm 8 crashes in gmsh 4.8 with a background field)
     gmsh::option::setNumber("Mesh.RecombineAll", 1);
     gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
     // Blossom recombination can leave a few triangles; splitting every element

@@ -42,7 +42,7 @@ namespace wearlink::fe
      * `contact` command) is centred on the angles below, and the size grows with the
      * distance from the arc elsewhere.
      */
-    double refined_half_angle = 4;
+    double refined_half_angle  = 4;
     double bore_refined_centre = 0; ///< centre of the refined arc, bushing frame [rad]
     double pin_refined_centre  = 0; ///< centre of the refined arc, pin frame [rad]
   };
@@ -50,8 +50,8 @@ namespace wearlink::fe
   /** Counts of the generated mesh. */
   struct MeshStatistics
   {
-    unsigned long n_nodes         = 0;
-    unsigned long n_quadrilaterals = 0;
+    unsigned long n_nodes                    = 0;
+    unsigned long n_quadrilaterals           = 0;
     unsigned long n_refined_surface_segments = 0; ///< both surfaces, at the surface size
   };
 
@@ -69,8 +69,8 @@ namespace wearlink::fe
    * call is one gmsh session (counted in the EffectLedger as "gmsh sessions").
    */
   MeshStatistics
-  write_pin_bushing_mesh(const Profile &bore,
-                         const Profile &pin,
+  write_pin_bushing_mesh(const Profile           &bore,
+                         const Profile           &pin,
                          const MeshSpecification &spec,
-                         const std::string &msh_path);
+                         const std::string       &msh_path);
 } // namespace wearlink::fe

@@ -66,7 +66,7 @@ namespace wearlink::fe
     contact_edge(double x_last, double p_last, double x_inner, double p_inner, double x_outside)
     {
       const double p2_last = p_last * p_last, p2_inner = p_inner * p_inner;
-      double       edge    = 0.5 * (x_last + x_outside);
+      double       edge = 0.5 * (x_last + x_outside);
       if (p2_inner > p2_last)
         edge = x_last + p2_last * (x_last - x_inner) / (p2_inner - p2_last);
       const double lo = std::min(x_last, x_outside), hi = std::max(x_last, x_outside);
@@ -84,17 +84,17 @@ namespace wearlink::fe
     {
       settings.check("the FE model settings");
       for (const auto *m : {&geometry.bushing, &geometry.pin_material})
-        if (!(std::isfinite(m->youngs_modulus) && m->youngs_modulus > 0 &&
-              std::isfinite(m->poisson_ratio) && m->poisson_ratio > -1 && m->poisson_ratio < 0.5))
+        if (!(std::isfinite(m->youngs_modulus) && m->youngs_modulus > 0 && std::isfinite(m->poisson_ratio) &&
+              m->poisson_ratio > -1 && m->poisson_ratio < 0.5))
           throw InputError("The FE model needs Young's moduli > 0 Pa and Poisson ratios in "
                            "(−1, 0.5) for both bodies.");
       if (!(std::isfinite(geometry.axial_length) && geometry.axial_length > 0))
         throw InputError("The axial length of the joint must be > 0 m.");
 
       MeshSpecification spec;
-      spec.core_radius          = settings.core_radius_fraction * geometry.pin.min_radius();
-      spec.outer_radius         = settings.outer_radius > 0 ? settings.outer_radius :
-                                                              settings.outer_radius_ratio * geometry.bore.mean_radius();
+      spec.core_radius = settings.core_radius_fraction * geometry.pin.min_radius();
+      spec.outer_radius =
+        settings.outer_radius > 0 ? settings.outer_radius : settings.outer_radius_ratio * geometry.bore.mean_radius();
       spec.surface_element_size = settings.surface_element_size;
       spec.max_element_size     = settings.max_element_size;
       spec.size_growth          = settings.size_growth;
@@ -106,16 +106,15 @@ namespace wearlink::fe
 
       // Under MPI every rank holds the whole mesh (replicated, partitioned by METIS
       // for the distributed reference solver); rank 0 writes it, the others wait.
-      const unsigned int n_ranks =
-        settings.distribute_reference ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
-      auto start = Clock::now();
+      const unsigned int n_ranks = settings.distribute_reference ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
+      auto               start   = Clock::now();
       if (n_ranks == 1 || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         stats.mesh = write_pin_bushing_mesh(geometry.bore, geometry.pin, spec, msh_path);
       if (n_ranks > 1)
         MPI_Barrier(MPI_COMM_WORLD);
       stats.mesh_time = seconds_since(start);
-      start            = Clock::now();
-      problem          = std::make_unique<ElasticityProblem>(msh_path,
+      start           = Clock::now();
+      problem         = std::make_unique<ElasticityProblem>(msh_path,
                                                     settings.degree,
                                                     settings.refinements,
                                                     geometry.pin_material,
@@ -153,19 +152,19 @@ namespace wearlink::fe
       const auto start = Clock::now();
       if (kind == SolverKind::condensed)
         prepare_condensed();
-      const double       L              = geometry.axial_length;
-      const double       relative_angle = load.pin_angle - load.bushing_angle;
-      const bool         force_control  = load.control == Control::force;
-      Tensor<1, 2>       P, e;
+      const double L              = geometry.axial_length;
+      const double relative_angle = load.pin_angle - load.bushing_angle;
+      const bool   force_control  = load.control == Control::force;
+      Tensor<1, 2> P, e;
       if (force_control)
         {
           const Tensor<1, 2> F = rotate(tensor(load.load), -load.bushing_angle);
           if (!(F.norm() > 0) || !std::isfinite(F.norm()))
             throw InputError("A force-controlled load state needs a finite, non-zero load.");
-          P                 = F / L;
-          const double phi  = std::atan2(F[1], F[0]);
-          const double s    = geometry.bore.radius(phi) - geometry.pin.radius(phi - relative_angle);
-          e                 = s * F / F.norm();
+          P                = F / L;
+          const double phi = std::atan2(F[1], F[0]);
+          const double s   = geometry.bore.radius(phi) - geometry.pin.radius(phi - relative_angle);
+          e                = s * F / F.norm();
         }
       else
         e = rotate(tensor(load.eccentricity), -load.bushing_angle);
@@ -188,25 +187,25 @@ namespace wearlink::fe
       ++n_solves;
 
       ContactResult r;
-      r.iterations = iterations;
-      r.n_active   = sol.n_active;
-      const auto &nodes = problem->pin_nodes;
-      const unsigned int m = nodes.size();
+      r.iterations             = iterations;
+      r.n_active               = sol.n_active;
+      const auto        &nodes = problem->pin_nodes;
+      const unsigned int m     = nodes.size();
       r.pin_angle.resize(m);
       r.bore_angle = kin.bore_angle;
       r.pressure.resize(m);
       r.force.resize(m);
       for (unsigned int i = 0; i < m; ++i)
         {
-          r.pin_angle[i] = nodes[i].angle;
-          r.pressure[i]  = sol.lambda[i] / nodes[i].weight;
-          r.force[i]     = sol.lambda[i] * L;
+          r.pin_angle[i]  = nodes[i].angle;
+          r.pressure[i]   = sol.lambda[i] / nodes[i].weight;
+          r.force[i]      = sol.lambda[i] * L;
           r.peak_pressure = std::max(r.peak_pressure, r.pressure[i]);
         }
       const Tensor<1, 2> resultant = rotate(sol.resultant * L, load.bushing_angle);
       const Tensor<1, 2> ecc       = rotate(e + sol.pin_translation, load.bushing_angle);
-      r.resultant        = {resultant[0], resultant[1]};
-      r.pin_displacement = {ecc[0], ecc[1]};
+      r.resultant                  = {resultant[0], resultant[1]};
+      r.pin_displacement           = {ecc[0], ecc[1]};
       if (force_control)
         r.equilibrium_relative_residual = (resultant - tensor(load.load)).norm() / tensor(load.load).norm();
       contact_extent(kin, sol, r);
@@ -229,12 +228,12 @@ namespace wearlink::fe
     {
       if (sol.resultant.norm() == 0)
         return;
-      const double       direction = std::atan2(sol.resultant[1], sol.resultant[0]);
-      const unsigned int m         = kin.g0.size();
+      const double        direction = std::atan2(sol.resultant[1], sol.resultant[0]);
+      const unsigned int  m         = kin.g0.size();
       std::vector<double> beta(m), s(m);
       for (unsigned int i = 0; i < m; ++i)
         {
-          beta[i] = wrap(kin.bore_angle[i] - direction);
+          beta[i]          = wrap(kin.bore_angle[i] - direction);
           const double psi = wrap(problem->pin_nodes[i].angle - (direction - kin.relative_angle));
           s[i]             = psi * geometry.pin.radius(problem->pin_nodes[i].angle);
         }
@@ -252,19 +251,24 @@ namespace wearlink::fe
       if (first < 0)
         return;
       auto edge = [&](int k_last, int k_inner, int k_out, const std::vector<double> &x) {
-        const auto at = [&](int k) { return order[(k + m) % m]; };
-        return contact_edge(x[at(k_last)], r.pressure[at(k_last)],
-                            x[at(k_inner)], r.pressure[at(k_inner)], x[at(k_out)]);
+        const auto at = [&](int k) {
+          return order[(k + m) % m];
+        };
+        return contact_edge(x[at(k_last)],
+                            r.pressure[at(k_last)],
+                            x[at(k_inner)],
+                            r.pressure[at(k_inner)],
+                            x[at(k_out)]);
       };
-      const bool single = first == last;
-      const int  inner_right = single ? last : last - 1;
-      const int  inner_left  = single ? first : first + 1;
-      const double beta_r = edge(last, inner_right, last + 1, beta);
-      const double beta_l = edge(first, inner_left, first - 1, beta);
-      const double s_r    = edge(last, inner_right, last + 1, s);
-      const double s_l    = edge(first, inner_left, first - 1, s);
-      r.half_angle        = 0.5 * (beta_r - beta_l);
-      r.half_width        = 0.5 * (s_r - s_l);
+      const bool   single      = first == last;
+      const int    inner_right = single ? last : last - 1;
+      const int    inner_left  = single ? first : first + 1;
+      const double beta_r      = edge(last, inner_right, last + 1, beta);
+      const double beta_l      = edge(first, inner_left, first - 1, beta);
+      const double s_r         = edge(last, inner_right, last + 1, s);
+      const double s_l         = edge(first, inner_left, first - 1, s);
+      r.half_angle             = 0.5 * (beta_r - beta_l);
+      r.half_width             = 0.5 * (s_r - s_l);
     }
 
     // Tributary arcs of the nodal forces, collected on the discrete areas of each
@@ -273,8 +277,8 @@ namespace wearlink::fe
     surface_pressure(const ContactResult &r) const
     {
       contact::SurfacePressure out;
-      const unsigned int       m = r.force.size();
-      auto collect = [&](const std::vector<double> &angle, const Profile &profile) {
+      const unsigned int       m       = r.force.size();
+      auto                     collect = [&](const std::vector<double> &angle, const Profile &profile) {
         const unsigned int  n  = profile.n_points();
         const double        da = 2 * pi / n;
         std::vector<double> p(n, 0.0);
@@ -306,22 +310,23 @@ namespace wearlink::fe
       return out;
     }
 
-    const contact::JointGeometry             geometry;
-    const FeSettings                         settings;
-    SetupStatistics                          stats;
-    std::unique_ptr<ElasticityProblem>       problem;
-    std::unique_ptr<BoundaryCompliance>      compliance;
-    std::unique_ptr<CondensedContactSolver>  condensed;
-    std::unique_ptr<ReferenceContactSolver>  reference;
-    unsigned long                            n_solves = 0;
+    const contact::JointGeometry            geometry;
+    const FeSettings                        settings;
+    SetupStatistics                         stats;
+    std::unique_ptr<ElasticityProblem>      problem;
+    std::unique_ptr<BoundaryCompliance>     compliance;
+    std::unique_ptr<CondensedContactSolver> condensed;
+    std::unique_ptr<ReferenceContactSolver> reference;
+    unsigned long                           n_solves = 0;
   };
 
 
   PinBushingModel::PinBushingModel(const contact::JointGeometry &geometry,
-                                   const FeSettings &            settings,
-                                   const std::string &           msh_path)
+                                   const FeSettings             &settings,
+                                   const std::string            &msh_path)
     : impl(std::make_unique<Impl>(geometry, settings, msh_path))
-  {}
+  {
+  }
 
   PinBushingModel::~PinBushingModel()
   {

@@ -64,13 +64,13 @@ namespace wearlink::fe
     /** Pin centre − bore centre at equilibrium, global [m]. */
     std::array<double, 2> pin_displacement{};
     /** |resultant − load| / |load| (force control; 0 for displacement control). */
-    double equilibrium_relative_residual = 0;
-    double peak_pressure = 0;  ///< [Pa]
-    double half_angle    = 0;  ///< half the contact arc seen from the bore centre [rad]
-    double half_width    = 0;  ///< half the contact arc length along the pin surface [m]
-    unsigned int n_active   = 0;
-    unsigned int iterations = 0; ///< active-set iterations (summed over kinematic updates)
-    double       solve_time = 0; ///< wall time of this load state [s]
+    double       equilibrium_relative_residual = 0;
+    double       peak_pressure                 = 0; ///< [Pa]
+    double       half_angle                    = 0; ///< half the contact arc seen from the bore centre [rad]
+    double       half_width                    = 0; ///< half the contact arc length along the pin surface [m]
+    unsigned int n_active                      = 0;
+    unsigned int iterations                    = 0; ///< active-set iterations (summed over kinematic updates)
+    double       solve_time                    = 0; ///< wall time of this load state [s]
     /** Per pin contact candidate (sorted by pin-frame angle): */
     std::vector<double> pin_angle;  ///< pin-frame angle [rad]
     std::vector<double> bore_angle; ///< bushing-frame angle of its contact point [rad]
@@ -82,12 +82,12 @@ namespace wearlink::fe
   struct SetupStatistics
   {
     MeshStatistics mesh;
-    unsigned long  n_dofs                = 0;
-    unsigned long  n_pin_candidates      = 0;
-    unsigned long  n_bore_candidates     = 0;
-    double         mesh_time             = 0; ///< gmsh [s]
-    double         assembly_time         = 0; ///< read mesh, DoFs, assemble K [s]
-    double         factorization_time    = 0; ///< clamped factorization (condensed) [s]
+    unsigned long  n_dofs             = 0;
+    unsigned long  n_pin_candidates   = 0;
+    unsigned long  n_bore_candidates  = 0;
+    double         mesh_time          = 0; ///< gmsh [s]
+    double         assembly_time      = 0; ///< read mesh, DoFs, assemble K [s]
+    double         factorization_time = 0; ///< clamped factorization (condensed) [s]
   };
 
   class PinBushingModel
@@ -98,9 +98,7 @@ namespace wearlink::fe
      * factorization of the condensed solver is built on its first use (or by
      * prepare_condensed()). InputError for an invalid geometry.
      */
-    PinBushingModel(const contact::JointGeometry &geometry,
-                    const FeSettings &            settings,
-                    const std::string &           msh_path);
+    PinBushingModel(const contact::JointGeometry &geometry, const FeSettings &settings, const std::string &msh_path);
     ~PinBushingModel();
     PinBushingModel(const PinBushingModel &) = delete;
     PinBushingModel &

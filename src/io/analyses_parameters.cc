@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "io/analyses_parameters.h"
-#include "base/text.h"
 
 #include "base/exceptions.h"
 #include "base/numbers.h"
 #include "base/parameters.h"
+#include "base/text.h"
 #include "io/scene.h"
 
 #include <cmath>
@@ -17,7 +17,7 @@ namespace wearlink::io
 
   namespace
   {
-    namespace P = dealii::Patterns;
+    namespace P                      = dealii::Patterns;
     const char *const analysis_names = "phase-portrait|poincare|lyapunov";
 
     /** Relative difference below which two driver speeds are the same [-]. */
@@ -392,15 +392,16 @@ namespace wearlink::io
       {
         if (item.empty())
           continue;
-        const auto colon = item.find(':');
-        std::istringstream values(colon == std::string::npos ? std::string() : item.substr(colon + 1));
+        const auto                   colon = item.find(':');
+        std::istringstream           values(colon == std::string::npos ? std::string() : item.substr(colon + 1));
         analysis::PublishedExponents p;
         p.channel = dealii::Utilities::trim(item.substr(0, colon));
         std::string rest;
         if (colon == std::string::npos || p.channel.empty() || !(values >> p.before >> p.after) || (values >> rest) ||
             !std::isfinite(p.before) || !std::isfinite(p.after))
           {
-            const std::string what = "'" + item + "' is not 'CHANNEL: BEFORE AFTER' (two numbers, e.g. "
+            const std::string what = "'" + item +
+                                     "' is not 'CHANNEL: BEFORE AFTER' (two numbers, e.g. "
                                      "'A_ex_m: 0.041 0.076')";
             throw InputError(where.empty() ? what : where + ": " + what + ".");
           }

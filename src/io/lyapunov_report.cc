@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "io/lyapunov_report.h"
-#include "base/text.h"
 
 #include "base/atomic_file.h"
+#include "base/text.h"
 #include "io/plot.h"
 
 #include <iomanip>
@@ -18,11 +18,11 @@ namespace wearlink::io
   write_lyapunov_curve(const analysis::LyapunovEstimate &est, const std::string &column, const std::string &stem)
   {
     using analysis::LyapunovEstimate;
-    const auto & emb = est.embedding;
-    const double dt  = est.sample_interval.value_or(1.0);
-    const std::string time_name = est.sample_interval ? "time_s" : "time_samples";
-    const std::string rate_unit = est.sample_interval ? "per_s" : "per_sample";
-    PlotSpec          plot;
+    const auto        &emb       = est.embedding;
+    const double       dt        = est.sample_interval.value_or(1.0);
+    const std::string  time_name = est.sample_interval ? "time_s" : "time_samples";
+    const std::string  rate_unit = est.sample_interval ? "per_s" : "per_sample";
+    PlotSpec           plot;
     std::ostringstream csv;
     csv << std::setprecision(10);
     if (est.wolf)
@@ -44,14 +44,13 @@ namespace wearlink::io
         final_value.y       = {est.exponent(), est.exponent()};
         final_value.options = "dt 2 lw 2 lc rgb 'red'";
         plot.series         = {running, final_value};
-        plot.title          = "Wolf et al. 1985: largest Lyapunov exponent of '" + column + "' = " +
-                     format_number(est.exponent(), 4) + " " + (est.sample_interval ? "1/s" : "1/sample") +
-                     " (m = " + std::to_string(emb.embedding.dimension) +
-                     ", tau = " + std::to_string(emb.embedding.delay) +
-                     ", E = " + std::to_string(w.evolution_steps) + " samples)";
+        plot.title =
+          "Wolf et al. 1985: largest Lyapunov exponent of '" + column + "' = " + format_number(est.exponent(), 4) +
+          " " + (est.sample_interval ? "1/s" : "1/sample") + " (m = " + std::to_string(emb.embedding.dimension) +
+          ", tau = " + std::to_string(emb.embedding.delay) + ", E = " + std::to_string(w.evolution_steps) + " samples)";
         plot.x_label = est.sample_interval ? "evolution time [s]" : "evolution time [samples]";
-        plot.y_label = est.sample_interval ? "running estimate [1/s, natural log]" :
-                                             "running estimate [1/sample, natural log]";
+        plot.y_label =
+          est.sample_interval ? "running estimate [1/s, natural log]" : "running estimate [1/sample, natural log]";
       }
     else
       {
@@ -78,8 +77,8 @@ namespace wearlink::io
             csv << "\n";
           }
         plot.series = {curve, line};
-        plot.title  = "Rosenstein et al. 1993: largest Lyapunov exponent of '" + column + "' = " +
-                     format_number(est.exponent(), 4) + " " + (est.sample_interval ? "1/s" : "1/sample") +
+        plot.title  = "Rosenstein et al. 1993: largest Lyapunov exponent of '" + column +
+                     "' = " + format_number(est.exponent(), 4) + " " + (est.sample_interval ? "1/s" : "1/sample") +
                      " (m = " + std::to_string(emb.embedding.dimension) +
                      ", tau = " + std::to_string(emb.embedding.delay) + " samples)";
         plot.x_label = est.sample_interval ? "time [s]" : "time [samples]";

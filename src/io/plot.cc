@@ -13,7 +13,6 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
-
 #include <unistd.h>
 
 namespace wearlink::io
@@ -67,7 +66,7 @@ namespace wearlink::io
       std::string plot_cmd = "plot ";
       for (std::size_t i = 0; i < spec.series.size(); ++i)
         {
-          const auto &   s    = spec.series[i];
+          const auto    &s    = spec.series[i];
           const fs::path data = dir / (prefix + "series" + std::to_string(i) + ".dat");
           std::ofstream  out(data);
           out << std::setprecision(12);
@@ -78,8 +77,8 @@ namespace wearlink::io
               else
                 out << '\n'; // a gap in the line
             }
-          plot_cmd += (i ? ", " : "") + quote(data.string()) + " using 1:2 with " + s.style + " " +
-                      s.options + " title " + quote(s.title);
+          plot_cmd += (i ? ", " : "") + quote(data.string()) + " using 1:2 with " + s.style + " " + s.options +
+                      " title " + quote(s.title);
         }
       if (spec.series.empty())
         plot_cmd += "NaN notitle";
@@ -93,7 +92,9 @@ namespace wearlink::io
      * name, then rename to @p png_path.
      */
     bool
-    render(const std::string &png_path, const int width, const int height,
+    render(const std::string                                                  &png_path,
+           const int                                                           width,
+           const int                                                           height,
            const std::function<std::string(const std::filesystem::path &dir)> &body)
     {
       namespace fs = std::filesystem;
@@ -103,9 +104,8 @@ namespace wearlink::io
                     << " (apt-get install gnuplot-nox)\n";
           return false;
         }
-      const fs::path dir = fs::temp_directory_path() /
-                           ("wearlink-plot-" + std::to_string(::getpid()) + "-" +
-                            std::to_string(std::hash<std::string>()(png_path)));
+      const fs::path dir = fs::temp_directory_path() / ("wearlink-plot-" + std::to_string(::getpid()) + "-" +
+                                                        std::to_string(std::hash<std::string>()(png_path)));
       fs::create_directories(dir);
       const std::string  tmp_png = temporary_name_for(png_path);
       std::ostringstream script;
@@ -140,15 +140,16 @@ namespace wearlink::io
   bool
   plot_png(const PlotSpec &spec, const std::string &png_path)
   {
-    return render(png_path, spec.width, spec.height,
-                  [&](const std::filesystem::path &dir) { return panel_script(spec, dir, ""); });
+    return render(png_path, spec.width, spec.height, [&](const std::filesystem::path &dir) {
+      return panel_script(spec, dir, "");
+    });
   }
 
   bool
   plot_panels_png(const std::vector<PlotSpec> &panels,
                   const unsigned int           columns,
-                  const std::string &          title,
-                  const std::string &          png_path,
+                  const std::string           &title,
+                  const std::string           &png_path,
                   const int                    width,
                   const int                    height)
   {

@@ -32,7 +32,7 @@ namespace wearlink::io
     /** Equal scales on both axes (profiles, trajectories). */
     bool equal_axes = false;
     /** Polar plot: x is the angle [rad], y the radius. */
-    bool polar = false;
+    bool polar  = false;
     int  width  = 1000;
     int  height = 700;
     /** Extra gnuplot commands, placed before the plot command. */
@@ -51,8 +51,8 @@ namespace wearlink::io
   bool
   plot_panels_png(const std::vector<PlotSpec> &panels,
                   unsigned int                 columns,
-                  const std::string &          title,
-                  const std::string &          png_path,
+                  const std::string           &title,
+                  const std::string           &png_path,
                   int                          width  = 1600,
                   int                          height = 700);
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "io/recorded_run_files.h"
-#include "io/json_file.h"
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "io/json_file.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -42,8 +42,10 @@ namespace wearlink::io
     std::string
     unit_of(const std::string &name)
     {
-      for (const auto &[suffix, unit] : std::vector<std::pair<std::string, std::string>>{
-             {"_rad_s", "rad/s"}, {"_m_s", "m/s"}, {"_rad", "rad"}, {"_m", "m"}})
+      for (const auto &[suffix, unit] : std::vector<std::pair<std::string, std::string>>{{"_rad_s", "rad/s"},
+                                                                                         {"_m_s", "m/s"},
+                                                                                         {"_rad", "rad"},
+                                                                                         {"_m", "m"}})
         if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
           return unit;
       return "";
@@ -76,9 +78,8 @@ namespace wearlink::io
             continue;
           const auto fields = dealii::Utilities::split_string_list(line, ',');
           if (fields.size() != header.size())
-            throw InputError("'" + path + "', line " + std::to_string(line_no) + ": " +
-                             std::to_string(fields.size()) + " fields, the header has " +
-                             std::to_string(header.size()) + ".");
+            throw InputError("'" + path + "', line " + std::to_string(line_no) + ": " + std::to_string(fields.size()) +
+                             " fields, the header has " + std::to_string(header.size()) + ".");
           s.time.push_back(std::stod(fields[skip]));
           for (std::size_t c = 0; c < s.names.size(); ++c)
             s.values[c].push_back(std::stod(fields[skip + 1 + c]));
@@ -95,7 +96,7 @@ namespace wearlink::io
     if (!summary.contains("analyses"))
       throw InputError("The run in '" + output_directory +
                        "' recorded no analyses ('Analyses/List of analyses' was empty).");
-    const Json &          a = summary.at("analyses");
+    const Json           &a = summary.at("analyses");
     analysis::RecordedRun run;
     run.label = label;
     if (a.contains("driving_period_s"))

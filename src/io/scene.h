@@ -9,8 +9,8 @@
 // entries of the parts that are active, construct only the chosen plugins, cross-check.
 #pragma once
 
-#include "contact/clearance_joint.h"
 #include "analysis/analyses_settings.h"
+#include "contact/clearance_joint.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
 #include "wear/wear_settings.h"
@@ -26,10 +26,10 @@ namespace wearlink::io
 {
   struct Scene
   {
-    std::string file;  ///< the scene file as given
+    std::string file; ///< the scene file as given
     /** The --set overrides it was read with (to read the same scene again). */
     std::vector<std::string> overrides;
-    std::string title;
+    std::string              title;
 
     std::unique_ptr<mbs::Mechanism> mechanism;
     /** The clearance joints (owned by the mechanism as force elements). */
@@ -43,7 +43,7 @@ namespace wearlink::io
     double                  start_time = 0; ///< [s]
     double                  end_time   = 0; ///< [s]
 
-    double output_interval  = 1e-3; ///< time-series sampling [s]; 0: every step
+    double output_interval   = 1e-3; ///< time-series sampling [s]; 0: every step
     bool   write_time_series = true;
 
     /** The nonlinear-dynamics analyses the scene lists (analysis/analyses_settings.h). */

@@ -69,11 +69,7 @@ namespace wearlink::io
     declare_body(ParameterHandler &prm)
     {
       declare_required(prm, "Mass", P::Double(0), "Mass of the body.", "kg");
-      declare_required(prm,
-                       "Moment of inertia",
-                       P::Double(0),
-                       "Moment of inertia about the centre of mass.",
-                       "kg m²");
+      declare_required(prm, "Moment of inertia", P::Double(0), "Moment of inertia about the centre of mass.", "kg m²");
       declare_required(prm,
                        "Initial position",
                        point_pattern(),
@@ -126,12 +122,7 @@ namespace wearlink::io
               "Attachment point in body 1's frame (centre of mass origin, body x-axis); "
               "global coordinates if body 1 is ground.",
               "m");
-      declare(prm,
-              "Point on body 2",
-              "0, 0",
-              point_pattern(),
-              "Attachment point in body 2's frame.",
-              "m");
+      declare(prm, "Point on body 2", "0, 0", point_pattern(), "Attachment point in body 2's frame.", "m");
       declare(prm,
               "Axis on body 1",
               "1, 0",
@@ -144,12 +135,7 @@ namespace wearlink::io
               P::Double(),
               "translational, fixed-angle and angle-driver: θ2 − θ1 at t = 0.",
               "rad");
-      declare(prm,
-              "Angular velocity",
-              "0",
-              P::Double(),
-              "angle-driver: constant rate of θ2 − θ1.",
-              "rad/s");
+      declare(prm, "Angular velocity", "0", P::Double(), "angle-driver: constant rate of θ2 − θ1.", "rad/s");
       declare(prm,
               "Model",
               "ideal",
@@ -167,11 +153,7 @@ namespace wearlink::io
               "attachment points are the bore and pin centres.",
               "none");
       declare_required(prm, "Bore radius", P::Double(0), "Nominal bore radius R1.", "m");
-      declare_required(prm,
-                       "Radial clearance",
-                       P::Double(0),
-                       "c = R1 − R2 (> 0); the pin radius is R1 − c.",
-                       "m");
+      declare_required(prm, "Radial clearance", P::Double(0), "c = R1 − R2 (> 0); the pin radius is R1 − c.", "m");
       declare_required(prm,
                        "Axial length",
                        P::Double(0),
@@ -246,12 +228,7 @@ namespace wearlink::io
               "contact onset/separation located in time (recommended).",
               "none");
       declare(prm, "Time step", "1e-4", P::Double(0), "rk4 step size.", "s");
-      declare(prm,
-              "Relative tolerance",
-              "1e-6",
-              P::Double(0),
-              "dopri5: relative error tolerance per step.",
-              "none");
+      declare(prm, "Relative tolerance", "1e-6", P::Double(0), "dopri5: relative error tolerance per step.", "none");
       declare(prm,
               "Position tolerance",
               "1e-9",
@@ -265,12 +242,7 @@ namespace wearlink::io
               "dopri5: absolute error tolerance of velocities (m/s, rad/s).",
               "m/s");
       declare(prm, "Maximum step", "1e-3", P::Double(0), "dopri5: largest step.", "s");
-      declare(prm,
-              "Minimum step",
-              "1e-14",
-              P::Double(0),
-              "dopri5: a step below this is a numerical failure.",
-              "s");
+      declare(prm, "Minimum step", "1e-14", P::Double(0), "dopri5: a step below this is a numerical failure.", "s");
       declare(prm,
               "Baumgarte alpha",
               "5",
@@ -304,9 +276,7 @@ namespace wearlink::io
     }
 
     void
-    declare_scene(ParameterHandler &              prm,
-                  const std::vector<std::string> &bodies,
-                  const std::vector<std::string> &joints)
+    declare_scene(ParameterHandler &prm, const std::vector<std::string> &bodies, const std::vector<std::string> &joints)
     {
       declare_top(prm);
       for (const auto &b : bodies)
@@ -331,10 +301,10 @@ namespace wearlink::io
     // Pre-scan: the names that decide which subsections exist.
 
     void
-    pre_scan(const std::string &              file,
-             const std::vector<std::string> & overrides,
-             std::vector<std::string> &       bodies,
-             std::vector<std::string> &       joints)
+    pre_scan(const std::string              &file,
+             const std::vector<std::string> &overrides,
+             std::vector<std::string>       &bodies,
+             std::vector<std::string>       &joints)
     {
       ParameterHandler prm;
       prm.enter_subsection("Mechanism");
@@ -367,8 +337,8 @@ namespace wearlink::io
 
     /** Required entries inside inactive parts of the tree are not required. */
     void
-    check_active_required_entries(const ParameterHandler &prm,
-                                  const std::string &     file,
+    check_active_required_entries(const ParameterHandler         &prm,
+                                  const std::string              &file,
                                   const std::vector<std::string> &inactive_prefixes)
     {
       std::vector<std::string> missing;
@@ -379,8 +349,7 @@ namespace wearlink::io
           for (std::size_t i = 0; i < m.size(); ++i)
             if (m[i] == '.')
               p += '/';
-            else if (m[i] == '_' && i + 2 < m.size() + 1 && std::isxdigit(m[i + 1]) &&
-                     std::isxdigit(m[i + 2]))
+            else if (m[i] == '_' && i + 2 < m.size() + 1 && std::isxdigit(m[i + 1]) && std::isxdigit(m[i + 2]))
               {
                 p += static_cast<char>(std::stoi(m.substr(i + 1, 2), nullptr, 16));
                 i += 2;
@@ -421,22 +390,22 @@ namespace wearlink::io
     // Construction.
 
     void
-    build_clearance_joint(Scene &                scene,
-                          ParameterReader &      r,
-                          const std::string &    joint,
-                          int                    body_1,
-                          const mbs::Vec2 &      point_1,
-                          int                    body_2,
-                          const mbs::Vec2 &      point_2)
+    build_clearance_joint(Scene             &scene,
+                          ParameterReader   &r,
+                          const std::string &joint,
+                          int                body_1,
+                          const mbs::Vec2   &point_1,
+                          int                body_2,
+                          const mbs::Vec2   &point_2)
     {
       r.enter("Clearance");
       contact::ClearanceJointDescription d;
-      d.name                = joint;
-      const bool bush_on_1  = r.get("Bushing on") == "body 1";
-      d.bushing_body        = bush_on_1 ? body_1 : body_2;
-      d.bushing_point       = bush_on_1 ? point_1 : point_2;
-      d.pin_body            = bush_on_1 ? body_2 : body_1;
-      d.pin_point           = bush_on_1 ? point_2 : point_1;
+      d.name               = joint;
+      const bool bush_on_1 = r.get("Bushing on") == "body 1";
+      d.bushing_body       = bush_on_1 ? body_1 : body_2;
+      d.bushing_point      = bush_on_1 ? point_1 : point_2;
+      d.pin_body           = bush_on_1 ? body_2 : body_1;
+      d.pin_point          = bush_on_1 ? point_2 : point_1;
       if (d.pin_body == mbs::ground && d.bushing_body == mbs::ground)
         r.fail_section("a clearance joint needs at least one moving body.");
 
@@ -465,24 +434,21 @@ namespace wearlink::io
       d.geometry.bore = profile("Bore profile file", bore);
       d.geometry.pin  = profile("Pin profile file", pin_radius);
       if (!(d.geometry.bore.mean_radius() > d.geometry.pin.mean_radius()))
-        r.fail_section("the pin profile (mean radius " +
-                       format_number(d.geometry.pin.mean_radius()) +
+        r.fail_section("the pin profile (mean radius " + format_number(d.geometry.pin.mean_radius()) +
                        " m) is not smaller than the bore profile (mean radius " +
-                       format_number(d.geometry.bore.mean_radius()) +
-                       " m): the pin does not fit in the bore.");
+                       format_number(d.geometry.bore.mean_radius()) + " m): the pin does not fit in the bore.");
 
-      d.geometry.axial_length             = r.get_positive("Axial length");
-      d.geometry.bushing.youngs_modulus   = r.get_positive("Bushing elastic modulus");
-      d.geometry.bushing.poisson_ratio    = r.get_double("Bushing Poisson ratio");
+      d.geometry.axial_length                = r.get_positive("Axial length");
+      d.geometry.bushing.youngs_modulus      = r.get_positive("Bushing elastic modulus");
+      d.geometry.bushing.poisson_ratio       = r.get_double("Bushing Poisson ratio");
       d.geometry.pin_material.youngs_modulus = r.get_positive("Pin elastic modulus");
       d.geometry.pin_material.poisson_ratio  = r.get_double("Pin Poisson ratio");
       if (!(d.geometry.bushing.poisson_ratio < 0.5))
         r.fail("Bushing Poisson ratio", "it must be < 0.5 (incompressible is not allowed)");
       if (!(d.geometry.pin_material.poisson_ratio < 0.5))
         r.fail("Pin Poisson ratio", "it must be < 0.5 (incompressible is not allowed)");
-      d.effective_radius = r.get("Effective radius") == "internal" ?
-                             contact::EffectiveRadius::internal :
-                             contact::EffectiveRadius::seed_printed;
+      d.effective_radius = r.get("Effective radius") == "internal" ? contact::EffectiveRadius::internal :
+                                                                     contact::EffectiveRadius::seed_printed;
 
       auto normal = contact::normal_force_laws().create(r.get("Normal force law"), r, "Normal force law");
       std::unique_ptr<contact::FrictionLaw> friction;
@@ -493,21 +459,18 @@ namespace wearlink::io
       const mbs::Vec2 e0 = vec(r.get_point("Initial eccentricity"));
       if (!(e0.norm() < clearance))
         r.fail("Initial eccentricity",
-               "its length must be smaller than the radial clearance (" +
-                 format_number(clearance) + " m)");
+               "its length must be smaller than the radial clearance (" + format_number(clearance) + " m)");
       if (auto w = wear::read_joint_wear(r, joint))
         scene.wear.push_back(std::move(w));
       r.leave();
 
-      auto joint_element = std::make_unique<contact::ClearanceJoint>(std::move(d),
-                                                                      std::move(normal),
-                                                                      std::move(friction));
+      auto joint_element =
+        std::make_unique<contact::ClearanceJoint>(std::move(d), std::move(normal), std::move(friction));
       const auto &desc = joint_element->get_description();
       // Rotate e0 with the bushing's initial angle guess (exact after assembly for a
       // ground bushing; a good guess otherwise).
-      const double bushing_angle = desc.bushing_body == mbs::ground ?
-                                     0.0 :
-                                     scene.mechanism->get_bodies()[desc.bushing_body].initial_angle;
+      const double bushing_angle =
+        desc.bushing_body == mbs::ground ? 0.0 : scene.mechanism->get_bodies()[desc.bushing_body].initial_angle;
       scene.assembly_constraints.push_back(mbs::make_revolute(joint,
                                                               desc.bushing_body,
                                                               desc.bushing_point,
@@ -519,8 +482,8 @@ namespace wearlink::io
     }
 
     void
-    build_scene(Scene &                         scene,
-                ParameterHandler &              prm,
+    build_scene(Scene                          &scene,
+                ParameterHandler               &prm,
                 const std::vector<std::string> &bodies,
                 const std::vector<std::string> &joints)
     {
@@ -558,9 +521,9 @@ namespace wearlink::io
             r.fail("Body 2", "it must be a moving body; put 'ground' in Body 1");
           if (b1 == b2)
             r.fail("Body 2", "it must differ from Body 1");
-          const mbs::Vec2 p1 = vec(r.get_point("Point on body 1"));
-          const mbs::Vec2 p2 = vec(r.get_point("Point on body 2"));
-          const bool clearance = r.get("Model") == "clearance";
+          const mbs::Vec2 p1        = vec(r.get_point("Point on body 1"));
+          const mbs::Vec2 p2        = vec(r.get_point("Point on body 2"));
+          const bool      clearance = r.get("Model") == "clearance";
           if (clearance && type != "revolute")
             r.fail("Model", "'clearance' is only allowed for Type = revolute");
 
@@ -579,16 +542,15 @@ namespace wearlink::io
               const mbs::Vec2 axis = vec(r.get_point("Axis on body 1"));
               if (!(axis.norm() > 0))
                 r.fail("Axis on body 1", "it must be a non-zero direction");
-              mech.add_constraint(mbs::make_translational(
-                name, b1, p1, axis, b2, p2, r.get_double("Angle offset")));
+              mech.add_constraint(mbs::make_translational(name, b1, p1, axis, b2, p2, r.get_double("Angle offset")));
             }
           else if (type == "fixed-angle")
             mech.add_constraint(mbs::make_fixed_angle(name, b1, b2, r.get_double("Angle offset")));
           else if (type == "angle-driver")
             {
               scene.drivers.push_back(static_cast<unsigned int>(mech.get_constraints().size()));
-              mech.add_constraint(mbs::make_angle_driver(
-                name, b1, b2, r.get_double("Angle offset"), r.get_double("Angular velocity")));
+              mech.add_constraint(
+                mbs::make_angle_driver(name, b1, b2, r.get_double("Angle offset"), r.get_double("Angular velocity")));
             }
           else
             r.fail("Type", "valid joint types are " + std::string(joint_types));
@@ -597,12 +559,11 @@ namespace wearlink::io
 
       // Numerics.
       r.enter("Integrator");
-      auto &is = scene.simulation.integrator;
-      is.type  = mbs::parse_integrator_type(r.get("Method"));
+      auto &is              = scene.simulation.integrator;
+      is.type               = mbs::parse_integrator_type(r.get("Method"));
       is.time_step          = r.get_positive("Time step");
       is.relative_tolerance = r.get_positive("Relative tolerance");
-      is.absolute_tolerance = {r.get_positive("Position tolerance"),
-                               r.get_positive("Velocity tolerance")};
+      is.absolute_tolerance = {r.get_positive("Position tolerance"), r.get_positive("Velocity tolerance")};
       is.max_step           = r.get_positive("Maximum step");
       is.min_step           = r.get_positive("Minimum step");
       if (!(is.min_step < is.max_step))
@@ -631,8 +592,8 @@ namespace wearlink::io
       for (const auto &c : scene.assembly_constraints)
         m += c->n_equations();
       if (m > mech.n_coordinates())
-        throw InputError("In " + scene.file + ", the joints impose " + std::to_string(m) +
-                         " constraint equations on " + std::to_string(mech.n_coordinates()) +
+        throw InputError("In " + scene.file + ", the joints impose " + std::to_string(m) + " constraint equations on " +
+                         std::to_string(mech.n_coordinates()) +
                          " coordinates (3 per body): the mechanism is over-constrained. "
                          "Remove a joint or driver.");
     }

@@ -55,8 +55,8 @@ namespace wearlink::io
     void
     plot_profile(const std::string &path,
                  const std::string &title,
-                 const Profile &    initial,
-                 const Profile &    worn,
+                 const Profile     &initial,
+                 const Profile     &worn,
                  double             magnification)
     {
       PlotSpec spec;
@@ -64,8 +64,8 @@ namespace wearlink::io
       spec.polar  = true;
       spec.width  = 800;
       spec.height = 800;
-      PlotSeries a{"initial", {}, {}, "lines", "dt 2 lc rgb 'gray40'"};
-      PlotSeries b{"worn (wear magnified)", {}, {}, "lines", "lw 2 lc rgb 'red'"};
+      PlotSeries     a{"initial", {}, {}, "lines", "dt 2 lc rgb 'gray40'"};
+      PlotSeries     b{"worn (wear magnified)", {}, {}, "lines", "lw 2 lc rgb 'red'"};
       const unsigned n = initial.n_points();
       for (unsigned k = 0; k <= n; ++k)
         {
@@ -76,7 +76,8 @@ namespace wearlink::io
           b.x.push_back(psi);
           b.y.push_back(initial[i] + magnification * (worn[i] - initial[i]));
         }
-      const double rmax = std::max(initial.max_radius(), initial.max_radius() + magnification * (worn.max_radius() - initial.min_radius()));
+      const double       rmax = std::max(initial.max_radius(),
+                                   initial.max_radius() + magnification * (worn.max_radius() - initial.min_radius()));
       std::ostringstream extra;
       extra << "set rrange [0:" << 1.05 * rmax << "]\nset xrange [" << -1.05 * rmax << ":" << 1.05 * rmax
             << "]\nset yrange [" << -1.05 * rmax << ":" << 1.05 * rmax << "]\n";
@@ -92,7 +93,8 @@ namespace wearlink::io
     , n(m.n_coordinates())
     , interval(dt)
     , duration(d)
-  {}
+  {
+  }
 
   void
   ResponseRecorder::on_start(const mbs::StepContext &c)
@@ -109,15 +111,15 @@ namespace wearlink::io
   ResponseRecorder::on_step(const mbs::StepContext &c)
   {
     for (double ts = t_start + t.size() * interval; ts <= c.t && ts - t_start <= duration * (1 + 1e-12);
-         ts = t_start + t.size() * interval)
+         ts        = t_start + t.size() * interval)
       {
-        c.simulation.state_at(ts, ys);
-        c.simulation.derivative_at(ts, ys, fs);
-        t.push_back(ts - t_start);
-        x.push_back(ys[3 * body]);
-        y.push_back(ys[3 * body + 1]);
-        ax.push_back(fs[n + 3 * body]);
-        ay.push_back(fs[n + 3 * body + 1]);
+               c.simulation.state_at(ts, ys);
+               c.simulation.derivative_at(ts, ys, fs);
+               t.push_back(ts - t_start);
+               x.push_back(ys[3 * body]);
+               y.push_back(ys[3 * body + 1]);
+               ax.push_back(fs[n + 3 * body]);
+               ay.push_back(fs[n + 3 * body + 1]);
       }
   }
 
@@ -153,9 +155,16 @@ namespace wearlink::io
     std::ostringstream os;
     os << "iteration,revolutions,extrapolation_factor";
     for (const auto &j : st.joints)
-      for (const char *q : {"_volume_pin_mm3", "_volume_bushing_mm3", "_mass_loss_pin_mg", "_mass_loss_bushing_mg",
-                            "_max_depth_pin_um", "_max_depth_bushing_um", "_archard_volume_pin_mm3",
-                            "_archard_volume_bushing_mm3", "_mean_normal_force_N", "_sliding_distance_m"})
+      for (const char *q : {"_volume_pin_mm3",
+                            "_volume_bushing_mm3",
+                            "_mass_loss_pin_mg",
+                            "_mass_loss_bushing_mg",
+                            "_max_depth_pin_um",
+                            "_max_depth_bushing_um",
+                            "_archard_volume_pin_mm3",
+                            "_archard_volume_bushing_mm3",
+                            "_mean_normal_force_N",
+                            "_sliding_distance_m"})
         os << ',' << j.name << q;
     os << '\n' << std::setprecision(10);
     double revolutions = 0;
@@ -167,10 +176,10 @@ namespace wearlink::io
           {
             const auto &r = st.joints[i].history[it];
             const auto &a = scene.wear[i]->archard;
-            os << ',' << r.volume_pin * 1e9 << ',' << r.volume_bore * 1e9 << ','
-               << r.volume_pin * a.pin_density * 1e6 << ',' << r.volume_bore * a.bushing_density * 1e6 << ','
-               << r.max_depth_pin * 1e6 << ',' << r.max_depth_bore * 1e6 << ',' << r.archard_pin * 1e9 << ','
-               << r.archard_bore * 1e9 << ',' << r.mean_normal_force << ',' << r.sliding_distance;
+            os << ',' << r.volume_pin * 1e9 << ',' << r.volume_bore * 1e9 << ',' << r.volume_pin * a.pin_density * 1e6
+               << ',' << r.volume_bore * a.bushing_density * 1e6 << ',' << r.max_depth_pin * 1e6 << ','
+               << r.max_depth_bore * 1e6 << ',' << r.archard_pin * 1e9 << ',' << r.archard_bore * 1e9 << ','
+               << r.mean_normal_force << ',' << r.sliding_distance;
           }
         os << '\n';
       }
@@ -198,7 +207,10 @@ namespace wearlink::io
   }
 
   void
-  write_wear_outputs(const std::string &dir, const Scene &scene, const wear::WearState &st, const ResponseRecorder &after)
+  write_wear_outputs(const std::string      &dir,
+                     const Scene            &scene,
+                     const wear::WearState  &st,
+                     const ResponseRecorder &after)
   {
     // Wear depth vs angle, per iteration (seed Fig 5).
     for (const auto &j : st.joints)
@@ -225,18 +237,18 @@ namespace wearlink::io
         write_file_atomically(dir + "/wear_depth_" + j.name + ".csv", os.str());
 
         PlotSpec spec;
-        spec.title   = "Joint " + j.name + ": wear depth after each iteration (pin: solid, bushing: dashed)";
-        spec.x_label = "angle in the body's own frame [deg]";
-        spec.y_label = "wear depth [um]";
-        spec.extra   = "set xrange [0:360]\nset xtics 45\n";
+        spec.title            = "Joint " + j.name + ": wear depth after each iteration (pin: solid, bushing: dashed)";
+        spec.x_label          = "angle in the body's own frame [deg]";
+        spec.y_label          = "wear depth [um]";
+        spec.extra            = "set xrange [0:360]\nset xtics 45\n";
         const unsigned stride = std::max(1u, (n_it + 5) / 6);
         for (unsigned it = 0; it < n_it; ++it)
           {
             if ((n_it - 1 - it) % stride != 0)
               continue;
             const std::string colour = std::to_string(spec.series.size() / 2 + 1); // distinct per curve pair
-            PlotSeries p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + colour};
-            PlotSeries b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + colour};
+            PlotSeries        p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + colour};
+            PlotSeries        b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + colour};
             for (unsigned k = 0; k < n; ++k)
               {
                 p.x.push_back(360.0 * k / n);
@@ -278,10 +290,16 @@ namespace wearlink::io
         };
         const double m_bore = magnification(n_it ? j.history.back().max_depth_bore : 0.0);
         const double m_pin  = magnification(n_it ? j.history.back().max_depth_pin : 0.0);
-        plot_profile(dir + "/profile_" + j.name + "_bore.png", title("Joint " + j.name + ": bushing bore surface", m_bore),
-                     j.initial_bore, j.bore, m_bore);
-        plot_profile(dir + "/profile_" + j.name + "_pin.png", title("Joint " + j.name + ": pin surface", m_pin),
-                     j.initial_pin, j.pin, m_pin);
+        plot_profile(dir + "/profile_" + j.name + "_bore.png",
+                     title("Joint " + j.name + ": bushing bore surface", m_bore),
+                     j.initial_bore,
+                     j.bore,
+                     m_bore);
+        plot_profile(dir + "/profile_" + j.name + "_pin.png",
+                     title("Joint " + j.name + ": pin surface", m_pin),
+                     j.initial_pin,
+                     j.pin,
+                     m_pin);
       }
 
     // Worn volume vs revolutions.

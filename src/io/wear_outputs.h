@@ -57,9 +57,9 @@ namespace wearlink::io
 
   /** Every file of the list above except wear_history.csv and response_before.csv. */
   void
-  write_wear_outputs(const std::string &     dir,
-                     const Scene &           scene,
-                     const wear::WearState & state,
+  write_wear_outputs(const std::string      &dir,
+                     const Scene            &scene,
+                     const wear::WearState  &state,
                      const ResponseRecorder &after);
 
   /** Write the two closed curves as a gmsh MSH 2.2 ASCII file (true scale) [m]. */

@@ -14,7 +14,7 @@ namespace wearlink::mbs
     /** Φ, Φq, Φt of the mechanism's constraints followed by the extra ones. */
     struct AllConstraints
     {
-      const Mechanism &                               mechanism;
+      const Mechanism                                &mechanism;
       const std::vector<std::unique_ptr<Constraint>> &extra;
 
       unsigned int
@@ -48,9 +48,9 @@ namespace wearlink::mbs
       evaluate(double                 t,
                const Eigen::VectorXd &q,
                const Eigen::VectorXd &v,
-               Eigen::VectorXd &      phi,
-               Eigen::MatrixXd &      jac,
-               Eigen::VectorXd &      phi_t) const
+               Eigen::VectorXd       &phi,
+               Eigen::MatrixXd       &jac,
+               Eigen::VectorXd       &phi_t) const
       {
         Eigen::VectorXd p0, pt0, g0;
         Eigen::MatrixXd j0;
@@ -61,8 +61,8 @@ namespace wearlink::mbs
         phi.setZero(m);
         phi_t.setZero(m);
         jac.setZero(m, n);
-        phi.head(m0)   = p0;
-        phi_t.head(m0) = pt0;
+        phi.head(m0)    = p0;
+        phi_t.head(m0)  = pt0;
         jac.topRows(m0) = j0;
         const StateView s(q.data(), v.data());
         ConstraintRows  r;
@@ -87,12 +87,12 @@ namespace wearlink::mbs
   } // namespace
 
   AssemblyResult
-  assemble(const Mechanism &                               mechanism,
+  assemble(const Mechanism                                &mechanism,
            double                                          t0,
            const std::vector<std::unique_ptr<Constraint>> &extra,
-           const AssemblyOptions &                         options,
-           Eigen::VectorXd &                               q,
-           Eigen::VectorXd &                               v)
+           const AssemblyOptions                          &options,
+           Eigen::VectorXd                                &q,
+           Eigen::VectorXd                                &v)
   {
     const AllConstraints all{mechanism, extra};
     const unsigned int   n = mechanism.n_coordinates();
@@ -144,10 +144,9 @@ namespace wearlink::mbs
         Eigen::Index worst = 0;
         phi.cwiseAbs().maxCoeff(&worst);
         std::ostringstream os;
-        os << "The mechanism cannot be assembled at t = " << t0 << " s: after "
-           << result.iterations << " Newton iterations the largest constraint residual is "
-           << residual << " (in joint '" << all.name_of_row(static_cast<unsigned int>(worst))
-           << "'); allowed is " << options.tolerance
+        os << "The mechanism cannot be assembled at t = " << t0 << " s: after " << result.iterations
+           << " Newton iterations the largest constraint residual is " << residual << " (in joint '"
+           << all.name_of_row(static_cast<unsigned int>(worst)) << "'); allowed is " << options.tolerance
            << ". Check the link lengths and attachment points (Joint */Point on body 1|2), "
               "or move the initial guesses (Body */Initial position, Initial angle) "
               "closer to the intended assembly branch.";
@@ -161,8 +160,7 @@ namespace wearlink::mbs
     if (!(vres <= 1e-8 * (1 + v.cwiseAbs().maxCoeff())))
       {
         std::ostringstream os;
-        os << "The initial velocities cannot satisfy the constraints at t = " << t0
-           << " s (residual " << vres
+        os << "The initial velocities cannot satisfy the constraints at t = " << t0 << " s (residual " << vres
            << "): the mechanism is at a singular position. Start from another time or "
               "initial pose.";
         throw InputError(os.str());

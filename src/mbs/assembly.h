@@ -38,10 +38,10 @@ namespace wearlink::mbs
    * near the guess.
    */
   AssemblyResult
-  assemble(const Mechanism &                               mechanism,
+  assemble(const Mechanism                                &mechanism,
            double                                          t0,
            const std::vector<std::unique_ptr<Constraint>> &extra,
-           const AssemblyOptions &                         options,
-           Eigen::VectorXd &                               q,
-           Eigen::VectorXd &                               v);
+           const AssemblyOptions                          &options,
+           Eigen::VectorXd                                &q,
+           Eigen::VectorXd                                &v);
 } // namespace wearlink::mbs

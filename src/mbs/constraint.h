@@ -25,7 +25,7 @@ namespace wearlink::mbs
   /** Values of at most two constraint equations and their derivatives. */
   struct ConstraintRows
   {
-    unsigned int n = 0;
+    unsigned int n           = 0;
     double       phi[2]      = {0, 0};
     double       phi_t[2]    = {0, 0};
     double       gamma[2]    = {0, 0};
@@ -40,7 +40,8 @@ namespace wearlink::mbs
       : name(std::move(name))
       , body_i(body_i)
       , body_j(body_j)
-    {}
+    {
+    }
     virtual ~Constraint() = default;
 
     virtual unsigned int
@@ -62,19 +63,19 @@ namespace wearlink::mbs
   std::unique_ptr<Constraint>
   make_revolute(const std::string &name,
                 int                body_i,
-                const Vec2 &       s_i,
+                const Vec2        &s_i,
                 int                body_j,
-                const Vec2 &       s_j,
-                const Vec2 &       offset = Vec2(0, 0));
+                const Vec2        &s_j,
+                const Vec2        &offset = Vec2(0, 0));
 
   /** @p axis_i: axis direction in body i's frame (normalized here). */
   std::unique_ptr<Constraint>
   make_translational(const std::string &name,
                      int                body_i,
-                     const Vec2 &       s_i,
-                     const Vec2 &       axis_i,
+                     const Vec2        &s_i,
+                     const Vec2        &axis_i,
                      int                body_j,
-                     const Vec2 &       s_j,
+                     const Vec2        &s_j,
                      double             angle_offset);
 
   std::unique_ptr<Constraint>
@@ -82,9 +83,5 @@ namespace wearlink::mbs
 
   /** θ_j − θ_i = θ0 + ω t. @p angular_velocity ω [rad/s]. */
   std::unique_ptr<Constraint>
-  make_angle_driver(const std::string &name,
-                    int                body_i,
-                    int                body_j,
-                    double             angle_offset,
-                    double             angular_velocity);
+  make_angle_driver(const std::string &name, int body_i, int body_j, double angle_offset, double angular_velocity);
 } // namespace wearlink::mbs

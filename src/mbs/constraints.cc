@@ -41,7 +41,8 @@ namespace wearlink::mbs
         , s_i(si)
         , s_j(sj)
         , offset(e0)
-      {}
+      {
+      }
 
       unsigned int
       n_equations() const override
@@ -58,17 +59,17 @@ namespace wearlink::mbs
       void
       evaluate(double, const StateView &s, ConstraintRows &out) const override
       {
-        out.n          = 2;
-        const Vec2 a_i = s.to_global(body_i, s_i);
-        const Vec2 a_j = s.to_global(body_j, s_j);
-        const Vec2 p_i = body_i == ground ? s_i : Vec2(s.position(body_i) + a_i);
-        const Vec2 p_j = s.position(body_j) + a_j;
-        const Vec2 phi = p_j - p_i - offset;
-        const Vec2 b_i = perp(a_i);
-        const Vec2 b_j = perp(a_j);
-        const double wi = s.angular_velocity(body_i);
-        const double wj = s.angular_velocity(body_j);
-        const Vec2 gamma = wj * wj * a_j - (body_i == ground ? Vec2(0, 0) : Vec2(wi * wi * a_i));
+        out.n              = 2;
+        const Vec2   a_i   = s.to_global(body_i, s_i);
+        const Vec2   a_j   = s.to_global(body_j, s_j);
+        const Vec2   p_i   = body_i == ground ? s_i : Vec2(s.position(body_i) + a_i);
+        const Vec2   p_j   = s.position(body_j) + a_j;
+        const Vec2   phi   = p_j - p_i - offset;
+        const Vec2   b_i   = perp(a_i);
+        const Vec2   b_j   = perp(a_j);
+        const double wi    = s.angular_velocity(body_i);
+        const double wj    = s.angular_velocity(body_j);
+        const Vec2   gamma = wj * wj * a_j - (body_i == ground ? Vec2(0, 0) : Vec2(wi * wi * a_i));
         for (unsigned int d = 0; d < 2; ++d)
           {
             out.phi[d]      = phi[d];
@@ -92,17 +93,18 @@ namespace wearlink::mbs
     public:
       Translational(const std::string &name,
                     int                bi,
-                    const Vec2 &       si,
-                    const Vec2 &       ui,
+                    const Vec2        &si,
+                    const Vec2        &ui,
                     int                bj,
-                    const Vec2 &       sj,
+                    const Vec2        &sj,
                     double             theta0)
         : Constraint(name, bi, bj)
         , s_i(si)
         , normal_i(perp(ui.normalized()))
         , s_j(sj)
         , theta0(theta0)
-      {}
+      {
+      }
 
       unsigned int
       n_equations() const override
@@ -119,7 +121,7 @@ namespace wearlink::mbs
       void
       evaluate(double, const StateView &s, ConstraintRows &out) const override
       {
-        out.n            = 2;
+        out.n             = 2;
         const double th_i = s.angle(body_i);
         const double wi   = s.angular_velocity(body_i);
         const double wj   = s.angular_velocity(body_j);
@@ -144,8 +146,7 @@ namespace wearlink::mbs
         if (body_i == ground)
           out.gamma[0] = n.dot(wj * wj * a_j);
         else
-          out.gamma[0] = wi * wi * n.dot(d) - 2 * wi * perp(n).dot(dd) +
-                         n.dot(wj * wj * a_j - wi * wi * a_i);
+          out.gamma[0] = wi * wi * n.dot(d) - 2 * wi * perp(n).dot(dd) + n.dot(wj * wj * a_j - wi * wi * a_i);
 
         set_angle_row(out, 1, body_i, s.angle(body_j) - th_i - theta0);
       }
@@ -161,7 +162,8 @@ namespace wearlink::mbs
       FixedAngle(const std::string &name, int bi, int bj, double theta0)
         : Constraint(name, bi, bj)
         , theta0(theta0)
-      {}
+      {
+      }
 
       unsigned int
       n_equations() const override
@@ -193,7 +195,8 @@ namespace wearlink::mbs
         : Constraint(name, bi, bj)
         , theta0(theta0)
         , omega(omega)
-      {}
+      {
+      }
 
       unsigned int
       n_equations() const override
@@ -221,12 +224,7 @@ namespace wearlink::mbs
   } // namespace
 
   std::unique_ptr<Constraint>
-  make_revolute(const std::string &name,
-                int                body_i,
-                const Vec2 &       s_i,
-                int                body_j,
-                const Vec2 &       s_j,
-                const Vec2 &       offset)
+  make_revolute(const std::string &name, int body_i, const Vec2 &s_i, int body_j, const Vec2 &s_j, const Vec2 &offset)
   {
     return std::make_unique<Revolute>(name, body_i, s_i, body_j, s_j, offset);
   }
@@ -234,10 +232,10 @@ namespace wearlink::mbs
   std::unique_ptr<Constraint>
   make_translational(const std::string &name,
                      int                body_i,
-                     const Vec2 &       s_i,
-                     const Vec2 &       axis_i,
+                     const Vec2        &s_i,
+                     const Vec2        &axis_i,
                      int                body_j,
-                     const Vec2 &       s_j,
+                     const Vec2        &s_j,
                      double             angle_offset)
   {
     return std::make_unique<Translational>(name, body_i, s_i, axis_i, body_j, s_j, angle_offset);
@@ -250,11 +248,7 @@ namespace wearlink::mbs
   }
 
   std::unique_ptr<Constraint>
-  make_angle_driver(const std::string &name,
-                    int                body_i,
-                    int                body_j,
-                    double             angle_offset,
-                    double             angular_velocity)
+  make_angle_driver(const std::string &name, int body_i, int body_j, double angle_offset, double angular_velocity)
   {
     return std::make_unique<AngleDriver>(name, body_i, body_j, angle_offset, angular_velocity);
   }

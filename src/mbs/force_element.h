@@ -21,9 +21,9 @@ namespace wearlink::mbs
   /** Where force elements add their contributions. */
   struct ForceAccumulator
   {
-    double *g = nullptr;                ///< generalized forces, 3 per body [N, N, N m]
-    double  damping_power  = 0;         ///< power dissipated by contact damping [W]
-    double  friction_power = 0;         ///< power dissipated by friction [W]
+    double *g              = nullptr; ///< generalized forces, 3 per body [N, N, N m]
+    double  damping_power  = 0;       ///< power dissipated by contact damping [W]
+    double  friction_power = 0;       ///< power dissipated by friction [W]
 
     /** Apply force @p f [N] at global point @p at [m] to body @p b (not ground). */
     void
@@ -77,6 +77,7 @@ namespace wearlink::mbs
      */
     virtual void
     on_event(double /*t*/, const StateView & /*s*/, bool /*onset*/)
-    {}
+    {
+    }
   };
 } // namespace wearlink::mbs

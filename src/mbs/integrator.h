@@ -43,14 +43,14 @@ namespace wearlink::mbs
 
   struct IntegratorSettings
   {
-    IntegratorType type       = IntegratorType::dopri5;
-    double         time_step  = 1e-4;  ///< rk4 step [s]
+    IntegratorType type               = IntegratorType::dopri5;
+    double         time_step          = 1e-4; ///< rk4 step [s]
     double         relative_tolerance = 1e-6;
     /** Absolute tolerance per component; components with a value ≤ 0 are not error-controlled. */
     std::vector<double> absolute_tolerance;
-    double         max_step   = 1e-3;  ///< [s]
-    double         min_step   = 1e-14; ///< below this a step is a NumericalError [s]
-    double         initial_step = 0;   ///< 0: automatic [s]
+    double              max_step     = 1e-3;  ///< [s]
+    double              min_step     = 1e-14; ///< below this a step is a NumericalError [s]
+    double              initial_step = 0;     ///< 0: automatic [s]
   };
 
   class Integrator
@@ -97,8 +97,8 @@ namespace wearlink::mbs
       return f;
     }
 
-    long n_accepted = 0;
-    long n_rejected = 0;
+    long n_accepted    = 0;
+    long n_rejected    = 0;
     long n_evaluations = 0;
 
   protected:
@@ -107,7 +107,7 @@ namespace wearlink::mbs
     void
     evaluate(double time, const Eigen::VectorXd &state, Eigen::VectorXd &derivative);
 
-    OdeSystem &        system;
+    OdeSystem         &system;
     IntegratorSettings settings;
     double             t = 0, t_prev = 0;
     Eigen::VectorXd    y, y_prev, f, f_prev;

@@ -92,8 +92,7 @@ namespace wearlink::mbs
         if (!y.allFinite())
           {
             std::ostringstream os;
-            os << "rk4: the state became non-finite at t = " << t
-               << " s; the step " << settings.time_step
+            os << "rk4: the state became non-finite at t = " << t << " s; the step " << settings.time_step
                << " s is too large for this contact stiffness (use a smaller step or "
                   "Integrator/Method = dopri5).";
             throw NumericalError(os.str());
@@ -132,14 +131,12 @@ namespace wearlink::mbs
       constexpr double a21 = 1.0 / 5;
       constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
       constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
-      constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561,
-                       a54 = -212.0 / 729;
-      constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247,
-                       a64 = 49.0 / 176, a65 = -5103.0 / 18656;
-      constexpr double a71 = 35.0 / 384, a73 = 500.0 / 1113, a74 = 125.0 / 192,
-                       a75 = -2187.0 / 6784, a76 = 11.0 / 84;
-      constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
-                       e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+      constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
+      constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
+                       a65 = -5103.0 / 18656;
+      constexpr double a71 = 35.0 / 384, a73 = 500.0 / 1113, a74 = 125.0 / 192, a75 = -2187.0 / 6784, a76 = 11.0 / 84;
+      constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525,
+                       e7 = -1.0 / 40;
       constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 32700410799,
                        d4 = -10690763975.0 / 1880347072, d5 = 701980252875.0 / 199316789632,
                        d6 = -1453857185.0 / 822651844, d7 = 69997945.0 / 29380423;
@@ -156,8 +153,7 @@ namespace wearlink::mbs
           v->setZero(n);
         tolerance.resize(n);
         for (unsigned int i = 0; i < n; ++i)
-          tolerance[i] = i < settings.absolute_tolerance.size() ? settings.absolute_tolerance[i] :
-                                                                   1e-9;
+          tolerance[i] = i < settings.absolute_tolerance.size() ? settings.absolute_tolerance[i] : 1e-9;
         h = settings.initial_step;
       }
 
@@ -171,13 +167,11 @@ namespace wearlink::mbs
           {
             double hs = std::min({h, settings.max_step, t_limit - t});
             if (!(hs > 0))
-              throw NumericalError("dopri5: no time left to step (t = " + std::to_string(t) +
-                                   " s).");
+              throw NumericalError("dopri5: no time left to step (t = " + std::to_string(t) + " s).");
             if (hs < settings.min_step && hs < t_limit - t)
               {
                 std::ostringstream os;
-                os << "dopri5: the step size fell to " << hs << " s at t = " << t
-                   << " s (minimum " << settings.min_step
+                os << "dopri5: the step size fell to " << hs << " s at t = " << t << " s (minimum " << settings.min_step
                    << " s); the error tolerance cannot be met there. Loosen "
                       "Integrator/Relative tolerance or look for a singular position.";
                 throw NumericalError(os.str());
@@ -193,19 +187,19 @@ namespace wearlink::mbs
             evaluate(t + c5 * hs, tmp, k5);
             tmp = y + hs * (a61 * f + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
             evaluate(t + hs, tmp, k6);
-            tmp = y + hs * (a71 * f + a73 * k3 + a74 * k4 + a75 * k5 + a76 * k6);
+            tmp                = y + hs * (a71 * f + a73 * k3 + a74 * k4 + a75 * k5 + a76 * k6);
             const double t_new = (hs >= t_limit - t) ? t_limit : t + hs;
             evaluate(t_new, tmp, k7);
             err = hs * (e1 * f + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
 
-            double       sum = 0;
+            double       sum          = 0;
             unsigned int n_controlled = 0;
             for (Eigen::Index i = 0; i < y.size(); ++i)
               if (tolerance[i] > 0)
                 {
-                  const double sc = tolerance[i] + settings.relative_tolerance *
-                                                     std::max(std::abs(y[i]), std::abs(tmp[i]));
-                  const double r  = err[i] / sc;
+                  const double sc =
+                    tolerance[i] + settings.relative_tolerance * std::max(std::abs(y[i]), std::abs(tmp[i]));
+                  const double r = err[i] / sc;
                   sum += r * r;
                   ++n_controlled;
                 }
@@ -215,12 +209,12 @@ namespace wearlink::mbs
 
             // PI step-size control (Hairer's dopri5: β = 0.04).
             constexpr double beta = 0.04, safe = 0.9, fac_min = 0.2, fac_max = 10.0;
-            const double     expo = 0.2 - 0.75 * beta;
+            const double     expo  = 0.2 - 0.75 * beta;
             const double     fac11 = std::pow(error_norm, expo);
             if (error_norm <= 1.0)
               {
-                double fac = fac11 / std::pow(fac_old, beta);
-                fac        = std::max(1.0 / fac_max, std::min(1.0 / fac_min, fac / safe));
+                double fac   = fac11 / std::pow(fac_old, beta);
+                fac          = std::max(1.0 / fac_max, std::min(1.0 / fac_min, fac / safe));
                 double h_new = hs / fac;
                 if (last_rejected)
                   h_new = std::min(h_new, hs);
@@ -272,7 +266,7 @@ namespace wearlink::mbs
       double
       initial_step_size()
       {
-        double d0 = 0, d1 = 0;
+        double       d0 = 0, d1 = 0;
         unsigned int n_controlled = 0;
         for (Eigen::Index i = 0; i < y.size(); ++i)
           if (tolerance[i] > 0)
@@ -282,8 +276,8 @@ namespace wearlink::mbs
               d1 += (f[i] / sc) * (f[i] / sc);
               ++n_controlled;
             }
-        d0 = std::sqrt(d0 / std::max(1u, n_controlled));
-        d1 = std::sqrt(d1 / std::max(1u, n_controlled));
+        d0        = std::sqrt(d0 / std::max(1u, n_controlled));
+        d1        = std::sqrt(d1 / std::max(1u, n_controlled));
         double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
         h0        = std::min(h0, settings.max_step);
         tmp       = y + h0 * f;
@@ -296,12 +290,12 @@ namespace wearlink::mbs
               d2 += ((k2[i] - f[i]) / sc) * ((k2[i] - f[i]) / sc);
             }
         d2 = std::sqrt(d2 / std::max(1u, n_controlled)) / h0;
-        const double h1 = std::max(d1, d2) <= 1e-15 ? std::max(1e-6, h0 * 1e-3) :
-                                                      std::pow(0.01 / std::max(d1, d2), 0.2);
+        const double h1 =
+          std::max(d1, d2) <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / std::max(d1, d2), 0.2);
         return std::min({100 * h0, h1, settings.max_step});
       }
 
-      Eigen::VectorXd k2, k3, k4, k5, k6, k7, tmp, err, r2, r3, r4, r5;
+      Eigen::VectorXd     k2, k3, k4, k5, k6, k7, tmp, err, r2, r3, r4, r5;
       std::vector<double> tolerance;
       double              h       = 0;
       double              fac_old = 1e-4;

@@ -70,7 +70,7 @@ namespace wearlink::mbs
     schur.assign(std::size_t(n_equations) * n_equations, 0.0);
 
     // Coupling graph of the constraint rows: two rows are coupled when they share a body.
-    const unsigned int m = n_equations;
+    const unsigned int                     m = n_equations;
     std::vector<std::vector<unsigned int>> adjacent(m);
     for (unsigned int b = 0; b < nb; ++b)
       for (const auto &[c1, s1] : body_constraints[b])
@@ -94,7 +94,7 @@ namespace wearlink::mbs
         for (unsigned int r = 0; r < m; ++r)
           if (!visited[r] && (start == m || adjacent[r].size() < adjacent[start].size()))
             start = r;
-        visited[start] = true;
+        visited[start]   = true;
         std::size_t head = order.size();
         order.push_back(start);
         while (head < order.size())
@@ -133,8 +133,8 @@ namespace wearlink::mbs
 
   void
   Mechanism::evaluate_constraints(double           t,
-                                  const double *   q,
-                                  const double *   v,
+                                  const double    *q,
+                                  const double    *v,
                                   Eigen::VectorXd &phi,
                                   Eigen::MatrixXd &jacobian,
                                   Eigen::VectorXd &phi_t,
@@ -218,8 +218,8 @@ namespace wearlink::mbs
         const auto &r   = rows[c];
         for (unsigned int k = 0; k < r.n; ++k)
           {
-            double jv   = r.phi_t[k];
-            double jmg  = 0;
+            double jv  = r.phi_t[k];
+            double jmg = 0;
             for (unsigned int d = 0; d < 3; ++d)
               {
                 if (con.body_i != ground)
@@ -232,8 +232,7 @@ namespace wearlink::mbs
                 jv += r.jac_j[k][d] * v[col];
                 jmg += r.jac_j[k][d] * inverse_mass[col] * forces[col];
               }
-            const double gamma_hat = r.gamma[k] - 2 * baumgarte_alpha * jv -
-                                     baumgarte_beta * baumgarte_beta * r.phi[k];
+            const double gamma_hat = r.gamma[k] - 2 * baumgarte_alpha * jv - baumgarte_beta * baumgarte_beta * r.phi[k];
             rhs[row_offset[c] + k] = jmg - gamma_hat;
           }
       }
@@ -258,7 +257,7 @@ namespace wearlink::mbs
                 const auto &r2 = rows[c2];
                 for (unsigned int k1 = 0; k1 < r1.n; ++k1)
                   {
-                    const double *j1 = side1 == 0 ? r1.jac_i[k1] : r1.jac_j[k1];
+                    const double      *j1  = side1 == 0 ? r1.jac_i[k1] : r1.jac_j[k1];
                     const unsigned int row = permuted[row_offset[c1] + k1];
                     for (unsigned int k2 = 0; k2 < r2.n; ++k2)
                       {
@@ -320,7 +319,7 @@ namespace wearlink::mbs
   Mechanism::solve_multipliers()
   {
     const unsigned int m = n_equations;
-    const double *     L = schur.data();
+    const double      *L = schur.data();
     for (unsigned int r = 0; r < m; ++r)
       work[permuted[r]] = rhs[r];
     for (unsigned int i = 0; i < m; ++i) // L y = rhs

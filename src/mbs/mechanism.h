@@ -29,12 +29,12 @@ namespace wearlink::mbs
   struct Body
   {
     std::string name;
-    double      mass    = 0; ///< [kg]
-    double      inertia = 0; ///< about the centre of mass [kg m²]
-    Vec2        initial_position{0, 0};         ///< guess for assembly [m]
-    double      initial_angle = 0;              ///< guess for assembly [rad]
-    Vec2        initial_velocity{0, 0};         ///< projected onto the constraints [m/s]
-    double      initial_angular_velocity = 0;   ///< [rad/s]
+    double      mass    = 0;                  ///< [kg]
+    double      inertia = 0;                  ///< about the centre of mass [kg m²]
+    Vec2        initial_position{0, 0};       ///< guess for assembly [m]
+    double      initial_angle = 0;            ///< guess for assembly [rad]
+    Vec2        initial_velocity{0, 0};       ///< projected onto the constraints [m/s]
+    double      initial_angular_velocity = 0; ///< [rad/s]
   };
 
   /** Power terms of one right-hand-side evaluation, for the energy balance. */
@@ -124,13 +124,13 @@ namespace wearlink::mbs
      * right-hand side uses the block form internally.
      */
     void
-    evaluate_constraints(double                 t,
-                         const double *         q,
-                         const double *         v,
-                         Eigen::VectorXd &      phi,
-                         Eigen::MatrixXd &      jacobian,
-                         Eigen::VectorXd &      phi_t,
-                         Eigen::VectorXd &      gamma) const;
+    evaluate_constraints(double           t,
+                         const double    *q,
+                         const double    *v,
+                         Eigen::VectorXd &phi,
+                         Eigen::MatrixXd &jacobian,
+                         Eigen::VectorXd &phi_t,
+                         Eigen::VectorXd &gamma) const;
 
     /**
      * Accelerations q̈ [n] and multipliers λ [m] at (t, q, v); @p power receives the
@@ -193,9 +193,9 @@ namespace wearlink::mbs
     double                                     baumgarte_beta  = 5;
 
     // Set up by finalize().
-    unsigned int               n_equations = 0;
-    std::vector<unsigned int>  row_offset;
-    std::vector<double>        inverse_mass; // per coordinate
+    unsigned int              n_equations = 0;
+    std::vector<unsigned int> row_offset;
+    std::vector<double>       inverse_mass; // per coordinate
     /** For each body, the constraints touching it and on which side (0: i, 1: j). */
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> body_constraints;
 
@@ -207,13 +207,13 @@ namespace wearlink::mbs
      * envelope (columns first_column[i]..i of row i) is ever non-zero, so assembly,
      * factorization and solves skip everything outside it.
      */
-    std::vector<double>         schur;
-    std::vector<unsigned int>   permuted;     ///< row r of Φ sits at position permuted[r] in S
-    std::vector<unsigned int>   first_column; ///< envelope start per permuted row
-    Eigen::VectorXd             rhs, lambda, forces;
-    std::vector<double>         trig; ///< cos θ, sin θ per body
-    std::vector<double>         work; ///< permuted right-hand side / solution
+    std::vector<double>       schur;
+    std::vector<unsigned int> permuted;     ///< row r of Φ sits at position permuted[r] in S
+    std::vector<unsigned int> first_column; ///< envelope start per permuted row
+    Eigen::VectorXd           rhs, lambda, forces;
+    std::vector<double>       trig; ///< cos θ, sin θ per body
+    std::vector<double>       work; ///< permuted right-hand side / solution
 
-    long                        evaluations = 0;
+    long evaluations = 0;
   };
 } // namespace wearlink::mbs

@@ -12,13 +12,13 @@ namespace wearlink::mbs
   MechanismOde::rhs(double t, const double *y, double *dydt)
   {
     const unsigned int n = mechanism.n_coordinates();
-    const double *     q = y;
-    const double *     v = y + n;
+    const double      *q = y;
+    const double      *v = y + n;
     for (unsigned int i = 0; i < n; ++i)
       dydt[i] = v[i];
     PowerTerms power;
     mechanism.accelerations(t, q, v, dydt + n, power);
-    double *z = dydt + 2 * n;
+    double *z               = dydt + 2 * n;
     z[reaction_work]        = power.constraint;
     z[reaction_work_abs]    = std::abs(power.constraint);
     z[damping_dissipation]  = power.damping;
@@ -34,9 +34,9 @@ namespace wearlink::mbs
     // Error control on q and v only; the accumulators follow with the same order.
     if (s.absolute_tolerance.size() != system.size())
       {
-        const double pos = s.absolute_tolerance.empty() ? 1e-9 : s.absolute_tolerance[0];
-        const double vel = s.absolute_tolerance.size() < 2 ? 1e-6 : s.absolute_tolerance[1];
-        const unsigned int n = mechanism.n_coordinates();
+        const double       pos = s.absolute_tolerance.empty() ? 1e-9 : s.absolute_tolerance[0];
+        const double       vel = s.absolute_tolerance.size() < 2 ? 1e-6 : s.absolute_tolerance[1];
+        const unsigned int n   = mechanism.n_coordinates();
         s.absolute_tolerance.assign(system.size(), 0.0);
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -52,7 +52,7 @@ namespace wearlink::mbs
   void
   Simulation::initialize(double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0)
   {
-    Eigen::VectorXd y0 = Eigen::VectorXd::Zero(system.size());
+    Eigen::VectorXd y0                       = Eigen::VectorXd::Zero(system.size());
     y0.segment(system.q_offset(), q0.size()) = q0;
     y0.segment(system.v_offset(), v0.size()) = v0;
     initialize_state(t0, y0);
@@ -94,10 +94,12 @@ namespace wearlink::mbs
       integrator->dense_output(t, scratch.data());
       return e.event_value(StateView(scratch.data(), scratch.data() + n));
     };
-    auto after = [&](double f) { return onset ? f > 0 : f <= 0; };
+    auto after = [&](double f) {
+      return onset ? f > 0 : f <= 0;
+    };
 
-    double lo = integrator->previous_time();
-    double hi = integrator->time();
+    double lo   = integrator->previous_time();
+    double hi   = integrator->time();
     double f_lo = val(lo);
     double f_hi = val(hi);
     if (after(f_lo))
@@ -134,8 +136,7 @@ namespace wearlink::mbs
   {
     const unsigned int n = mechanism.n_coordinates();
     {
-      const StepContext c{*this, integrator->time(), integrator->time(), integrator->state(),
-                          integrator->derivative()};
+      const StepContext c{*this, integrator->time(), integrator->time(), integrator->state(), integrator->derivative()};
       for (auto *o : observers)
         o->on_start(c);
     }
@@ -144,7 +145,7 @@ namespace wearlink::mbs
       if (e->has_event())
         event_elements.push_back(e.get());
 
-    Eigen::VectorXd y_start, y_event;
+    Eigen::VectorXd             y_start, y_event;
     std::vector<ForceElement *> triggered;
     std::vector<double>         roots;
     while (integrator->time() < t_end)
@@ -159,10 +160,9 @@ namespace wearlink::mbs
         roots.clear();
         for (auto *e : event_elements)
           {
-            const double f = e->event_value(
-              StateView(integrator->state().data(), integrator->state().data() + n));
-            const bool onset = !e->mode() && f > 0;
-            const bool sep   = e->mode() && f <= 0;
+            const double f     = e->event_value(StateView(integrator->state().data(), integrator->state().data() + n));
+            const bool   onset = !e->mode() && f > 0;
+            const bool   sep   = e->mode() && f <= 0;
             if (onset || sep)
               {
                 triggered.push_back(e);
@@ -195,11 +195,13 @@ namespace wearlink::mbs
           }
 
         if (!integrator->state().allFinite())
-          throw NumericalError("The state became non-finite at t = " +
-                               std::to_string(integrator->time()) + " s.");
+          throw NumericalError("The state became non-finite at t = " + std::to_string(integrator->time()) + " s.");
         {
-          const StepContext c{*this, integrator->previous_time(), integrator->time(),
-                              integrator->state(), integrator->derivative()};
+          const StepContext c{*this,
+                              integrator->previous_time(),
+                              integrator->time(),
+                              integrator->state(),
+                              integrator->derivative()};
           for (auto *o : observers)
             o->on_step(c);
         }
@@ -211,9 +213,7 @@ namespace wearlink::mbs
               {
                 integrator->dense_output(roots[k], scratch.data());
                 y_event = scratch;
-                triggered[k]->on_event(roots[k],
-                                       StateView(y_event.data(), y_event.data() + n),
-                                       !triggered[k]->mode());
+                triggered[k]->on_event(roots[k], StateView(y_event.data(), y_event.data() + n), !triggered[k]->mode());
                 ++events;
               }
             // f at the current point changes with the modes.

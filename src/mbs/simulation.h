@@ -30,16 +30,17 @@ namespace wearlink::mbs
     /** Offsets of the accumulators after q and v. */
     enum Quadrature : unsigned int
     {
-      reaction_work = 0,   ///< ∫ −q̇ᵀΦqᵀλ dt [J]
-      reaction_work_abs,   ///< ∫ |q̇ᵀΦqᵀλ| dt [J]
-      damping_dissipation, ///< ∫ P_damping dt [J]
-      friction_dissipation,///< ∫ P_friction dt [J]
+      reaction_work = 0,    ///< ∫ −q̇ᵀΦqᵀλ dt [J]
+      reaction_work_abs,    ///< ∫ |q̇ᵀΦqᵀλ| dt [J]
+      damping_dissipation,  ///< ∫ P_damping dt [J]
+      friction_dissipation, ///< ∫ P_friction dt [J]
       n_quadratures
     };
 
     explicit MechanismOde(Mechanism &mechanism)
       : mechanism(mechanism)
-    {}
+    {
+    }
 
     unsigned int
     size() const override
@@ -82,8 +83,8 @@ namespace wearlink::mbs
   struct StepContext
   {
     Simulation &simulation;
-    double            t_previous; ///< start of the step [s]
-    double            t;          ///< end of the step [s]
+    double      t_previous; ///< start of the step [s]
+    double      t;          ///< end of the step [s]
     /** State at t: [q | v | z]. */
     const Eigen::VectorXd &y;
     /** f(t, y): [q̇ | q̈ | ż]. */
@@ -96,7 +97,9 @@ namespace wearlink::mbs
     virtual ~StepObserver() = default;
     /** Called once before the first step with the initial state. */
     virtual void
-    on_start(const StepContext &) {}
+    on_start(const StepContext &)
+    {
+    }
     virtual void
     on_step(const StepContext &context) = 0;
   };
@@ -169,7 +172,7 @@ namespace wearlink::mbs
     double
     locate(const ForceElement &e, bool onset) const;
 
-    Mechanism &                 mechanism;
+    Mechanism                  &mechanism;
     SimulationSettings          settings;
     MechanismOde                system;
     std::unique_ptr<Integrator> integrator;

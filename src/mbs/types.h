@@ -52,7 +52,8 @@ namespace wearlink::mbs
       : q(q)
       , v(v)
       , trig(trig)
-    {}
+    {
+    }
 
     /** A(θ_b) s: body-frame vector @p s of body @p b in global axes. */
     Vec2
@@ -97,8 +98,7 @@ namespace wearlink::mbs
     Vec2
     point_velocity(int b, const Vec2 &s) const
     {
-      return b == ground ? Vec2(0, 0) :
-                           Vec2(velocity(b) + angular_velocity(b) * perp(to_global(b, s)));
+      return b == ground ? Vec2(0, 0) : Vec2(velocity(b) + angular_velocity(b) * perp(to_global(b, s)));
     }
 
   private:

@@ -15,7 +15,7 @@ namespace wearlink::wear
   ArchardAccumulator::ArchardAccumulator(const contact::JointGeometry &g,
                                          double                        bore_coefficient,
                                          double                        pin_coefficient,
-                                         contact::PressureModel &      model)
+                                         contact::PressureModel       &model)
     : geometry(g)
     , k_bore(bore_coefficient)
     , k_pin(pin_coefficient)
@@ -118,8 +118,9 @@ namespace wearlink::wear
       return;
     const double scale = s.load.normal_force / key.load.normal_force;
     // Contact direction in each body's frame, now and at the key.
-    const double d_bore = (s.load.contact_angle - s.load.bushing_angle) - (key.load.contact_angle - key.load.bushing_angle);
-    const double d_pin  = (s.load.contact_angle - s.load.pin_angle) - (key.load.contact_angle - key.load.pin_angle);
+    const double d_bore =
+      (s.load.contact_angle - s.load.bushing_angle) - (key.load.contact_angle - key.load.bushing_angle);
+    const double d_pin = (s.load.contact_angle - s.load.pin_angle) - (key.load.contact_angle - key.load.pin_angle);
     shift_periodic(p.bore, d_bore, scale, shifted_bore);
     shift_periodic(p.pin, d_pin, scale, shifted_pin);
     deposit(s, shifted_bore, shifted_pin);

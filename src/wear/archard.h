@@ -45,7 +45,7 @@ namespace wearlink::wear
     ArchardAccumulator(const contact::JointGeometry &geometry,
                        double                        bore_coefficient,
                        double                        pin_coefficient,
-                       contact::PressureModel &      model);
+                       contact::PressureModel       &model);
 
     /** Add the wear of one sample: weight × k_D p |v_t| on every area. */
     void
@@ -98,11 +98,11 @@ namespace wearlink::wear
     double
     pin_area(unsigned int k) const;
 
-    double bore_volume      = 0; ///< Σ_k h_k A_k of the bore, accumulated [m³]
-    double pin_volume       = 0; ///< Σ_k h_k A_k of the pin [m³]
-    double bore_archard     = 0; ///< k_D ∫ F_n |v_t| dt with the bore's k_D [m³]
-    double pin_archard      = 0; ///< the same with the pin's k_D [m³]
-    double sliding_distance = 0; ///< ∫ |v_t| dt over the loaded samples [m]
+    double bore_volume          = 0; ///< Σ_k h_k A_k of the bore, accumulated [m³]
+    double pin_volume           = 0; ///< Σ_k h_k A_k of the pin [m³]
+    double bore_archard         = 0; ///< k_D ∫ F_n |v_t| dt with the bore's k_D [m³]
+    double pin_archard          = 0; ///< the same with the pin's k_D [m³]
+    double sliding_distance     = 0; ///< ∫ |v_t| dt over the loaded samples [m]
     long   pressure_evaluations = 0;
 
   private:
@@ -111,7 +111,7 @@ namespace wearlink::wear
 
     contact::JointGeometry   geometry;
     const double             k_bore, k_pin;
-    contact::PressureModel & model;
+    contact::PressureModel  &model;
     contact::SurfacePressure pressure;
     std::vector<double>      bore_depth_, pin_depth_, shifted_bore, shifted_pin;
   };

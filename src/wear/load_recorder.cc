@@ -22,15 +22,14 @@ namespace wearlink::wear
   load_sample(const contact::JointDiagnostics &d)
   {
     LoadSample s;
-    s.load.bushing_angle   = d.bushing_angle;
-    s.load.pin_angle       = d.pin_angle;
-    s.load.eccentricity    = {d.eccentricity.x(), d.eccentricity.y()};
-    s.load.penetration     = d.penetration;
-    s.load.normal_force    = d.normal_force;
-    s.load.contact_angle   = d.contact_angle;
-    s.load.force           = {-d.normal_force * std::cos(d.contact_angle),
-                              -d.normal_force * std::sin(d.contact_angle)};
-    s.sliding_speed        = std::abs(d.sliding_velocity);
+    s.load.bushing_angle = d.bushing_angle;
+    s.load.pin_angle     = d.pin_angle;
+    s.load.eccentricity  = {d.eccentricity.x(), d.eccentricity.y()};
+    s.load.penetration   = d.penetration;
+    s.load.normal_force  = d.normal_force;
+    s.load.contact_angle = d.contact_angle;
+    s.load.force         = {-d.normal_force * std::cos(d.contact_angle), -d.normal_force * std::sin(d.contact_angle)};
+    s.sliding_speed      = std::abs(d.sliding_velocity);
     return s;
   }
 
@@ -40,7 +39,8 @@ namespace wearlink::wear
     , pending(joints.size())
     , relative_angle(joints.size(), 0.0)
     , rotation(joints.size(), 0.0)
-  {}
+  {
+  }
 
   void
   LoadRecorder::take(unsigned int j, const LoadSample &s, double weight)
@@ -70,11 +70,11 @@ namespace wearlink::wear
   void
   LoadRecorder::on_step(const mbs::StepContext &c)
   {
-    const auto n = c.simulation.get_mechanism().n_coordinates();
+    const auto   n = c.simulation.get_mechanism().n_coordinates();
     const double h = c.t - t_last;
     for (unsigned int j = 0; j < joints.size(); ++j)
       {
-        const auto d = joints[j]->diagnostics(view(c.y, n));
+        const auto   d   = joints[j]->diagnostics(view(c.y, n));
         const double rel = d.pin_angle - d.bushing_angle;
         rotation[j] += std::abs(rel - relative_angle[j]);
         relative_angle[j] = rel;

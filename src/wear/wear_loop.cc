@@ -16,7 +16,7 @@ namespace wearlink::wear
     }
   } // namespace
 
-  WearLoop::WearLoop(const WearLoopSettings &               settings,
+  WearLoop::WearLoop(const WearLoopSettings                &settings,
                      std::vector<WearingJoint>              wearing,
                      std::vector<contact::ClearanceJoint *> clearance_joints,
                      const double                           cycle_period,
@@ -26,17 +26,18 @@ namespace wearlink::wear
     , clearance_joints(std::move(clearance_joints))
     , period(cycle_period)
     , advance(std::move(advance))
-  {}
+  {
+  }
 
   void
   WearLoop::start(const double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0, const std::string &fingerprint)
   {
-    const auto n         = q0.size();
-    st                   = WearState();
-    st.fingerprint       = fingerprint;
-    st.time              = t0;
-    st.state             = Eigen::VectorXd::Zero(2 * n + mbs::MechanismOde::n_quadratures);
-    st.state.head(n)     = q0;
+    const auto n           = q0.size();
+    st                     = WearState();
+    st.fingerprint         = fingerprint;
+    st.time                = t0;
+    st.state               = Eigen::VectorXd::Zero(2 * n + mbs::MechanismOde::n_quadratures);
+    st.state.head(n)       = q0;
     st.state.segment(n, n) = v0;
     st.modes.assign(2 * clearance_joints.size(), 0.0);
     for (const auto &w : wearing)
@@ -72,8 +73,8 @@ namespace wearlink::wear
   bool
   WearLoop::finished() const
   {
-    const bool target_reached = settings.extrapolation == Extrapolation::adaptive &&
-                                st.revolutions >= settings.target_revolutions * (1 - 1e-12);
+    const bool target_reached =
+      settings.extrapolation == Extrapolation::adaptive && st.revolutions >= settings.target_revolutions * (1 - 1e-12);
     return st.iterations_done >= settings.n_iterations || target_reached;
   }
 
@@ -155,7 +156,7 @@ namespace wearlink::wear
   void
   WearLoop::update_profiles(const unsigned int        i,
                             const ArchardAccumulator &increment,
-                            const LoadRecorder &      loads,
+                            const LoadRecorder       &loads,
                             const double              factor)
   {
     auto &js   = st.joints[i];
@@ -169,8 +170,8 @@ namespace wearlink::wear
     if (worn_through)
       throw NumericalError("Wear iteration " + std::to_string(st.iterations_done + 1) + ": the pin of joint " +
                            js.name + " is worn through (a radius ≤ 0). Reduce the extrapolation.");
-    js.bore = Profile::from_samples(bore, "worn bore of joint " + js.name);
-    js.pin  = Profile::from_samples(pin, "worn pin of joint " + js.name);
+    js.bore           = Profile::from_samples(bore, "worn bore of joint " + js.name);
+    js.pin            = Profile::from_samples(pin, "worn pin of joint " + js.name);
     IterationRecord r = js.history.empty() ? IterationRecord() : js.history.back();
     r.volume_pin += factor * increment.pin_volume;
     r.volume_bore += factor * increment.bore_volume;
@@ -200,7 +201,7 @@ namespace wearlink::wear
       {
         auto &js = st.joints[i];
         wearing[i].joint->set_profiles(js.bore, js.pin);
-        auto &     model = *wearing[i].wear->model;
+        auto      &model = *wearing[i].wear->model;
         const bool fe    = model.requires_fe_geometry();
         if (fe && st.iterations_done % settings.remesh_interval != 0)
           continue; // the fe model keeps its mesh between re-meshes

@@ -42,7 +42,7 @@ namespace wearlink::wear
   struct WearingJoint
   {
     contact::ClearanceJoint *joint = nullptr; ///< not owned
-    JointWear *              wear  = nullptr; ///< not owned
+    JointWear               *wear  = nullptr; ///< not owned
   };
 
   /**
@@ -52,7 +52,7 @@ namespace wearlink::wear
    */
   using AdvanceDynamics = std::function<Eigen::VectorXd(double                                  t0,
                                                         double                                  t1,
-                                                        const Eigen::VectorXd &                 y0,
+                                                        const Eigen::VectorXd                  &y0,
                                                         const std::vector<mbs::StepObserver *> &observers)>;
 
   class WearLoop
@@ -66,7 +66,7 @@ namespace wearlink::wear
      * @param cycle_period duration of one mechanism cycle [s]
      * @param advance the dynamics
      */
-    WearLoop(const WearLoopSettings &               settings,
+    WearLoop(const WearLoopSettings                &settings,
              std::vector<WearingJoint>              wearing,
              std::vector<contact::ClearanceJoint *> clearance_joints,
              double                                 cycle_period,

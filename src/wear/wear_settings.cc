@@ -255,8 +255,8 @@ namespace wearlink::wear
     s.cycles_per_iteration = r.get_double("Cycles per iteration");
     if (!(s.cycles_per_iteration > 0))
       r.fail("Cycles per iteration", "it must be > 0 cycles");
-    s.n_iterations  = static_cast<unsigned int>(r.get_integer("Number of iterations"));
-    s.extrapolation = r.get("Extrapolation") == "fixed" ? Extrapolation::fixed : Extrapolation::adaptive;
+    s.n_iterations         = static_cast<unsigned int>(r.get_integer("Number of iterations"));
+    s.extrapolation        = r.get("Extrapolation") == "fixed" ? Extrapolation::fixed : Extrapolation::adaptive;
     s.extrapolation_factor = r.get_double("Extrapolation factor");
     s.max_depth_increment  = r.get_double("Maximum depth increment");
     s.max_factor           = r.get_double("Maximum extrapolation factor");
@@ -274,10 +274,10 @@ namespace wearlink::wear
         if (!(s.max_factor >= 1))
           r.fail("Maximum extrapolation factor", "it must be ≥ 1");
       }
-    s.clearance_form = r.get("Clearance model") == "exact" ? contact::ClearanceForm::exact :
-                                                             contact::ClearanceForm::per_area;
-    s.evaluation        = r.get("Pressure evaluation") == "every step" ? PressureEvaluation::every_step :
-                                                                         PressureEvaluation::samples;
+    s.clearance_form =
+      r.get("Clearance model") == "exact" ? contact::ClearanceForm::exact : contact::ClearanceForm::per_area;
+    s.evaluation =
+      r.get("Pressure evaluation") == "every step" ? PressureEvaluation::every_step : PressureEvaluation::samples;
     s.samples_per_cycle = static_cast<unsigned int>(r.get_integer("Load samples per cycle"));
     s.remesh_interval   = static_cast<unsigned int>(r.get_integer("Remesh interval"));
     s.response_cycles   = r.get_double("Response cycles");

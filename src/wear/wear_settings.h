@@ -37,7 +37,7 @@ namespace wearlink::wear
     std::string                             joint;          ///< joint name
     std::string                             pressure_model; ///< plugin name
     ArchardData                             archard;
-    std::unique_ptr<contact::PressureModel> model;          ///< constructed plugin
+    std::unique_ptr<contact::PressureModel> model; ///< constructed plugin
   };
 
   enum class Extrapolation
@@ -55,21 +55,21 @@ namespace wearlink::wear
   /** The wear loop of a scene ("Wear" section). */
   struct WearLoopSettings
   {
-    double             cycle_period         = 0; ///< [s]; 0: 2π/|ω| of the first angle driver
-    double             cycles_per_iteration = 1; ///< simulated cycles per iteration [-]
-    unsigned int       n_iterations         = 1; ///< iterations (fixed), cap (adaptive)
-    Extrapolation      extrapolation        = Extrapolation::fixed;
-    double             extrapolation_factor = 1; ///< fixed factor [-]
-    double             max_depth_increment  = 0; ///< adaptive: cap per iteration [m]
-    double             max_factor           = 0; ///< adaptive: largest factor [-]
-    double             target_revolutions   = 0; ///< adaptive: stop there [-]
-    contact::ClearanceForm clearance_form   = contact::ClearanceForm::exact;
-    PressureEvaluation evaluation           = PressureEvaluation::every_step;
-    unsigned int       samples_per_cycle    = 100;
-    unsigned int       remesh_interval      = 1; ///< iterations between FE re-meshes
-    double             response_cycles      = 1; ///< before/after response [cycles]
-    std::string        response_body;            ///< body whose response is plotted
-    double             magnification        = 0; ///< profile plots; 0: automatic
+    double                 cycle_period         = 0; ///< [s]; 0: 2π/|ω| of the first angle driver
+    double                 cycles_per_iteration = 1; ///< simulated cycles per iteration [-]
+    unsigned int           n_iterations         = 1; ///< iterations (fixed), cap (adaptive)
+    Extrapolation          extrapolation        = Extrapolation::fixed;
+    double                 extrapolation_factor = 1; ///< fixed factor [-]
+    double                 max_depth_increment  = 0; ///< adaptive: cap per iteration [m]
+    double                 max_factor           = 0; ///< adaptive: largest factor [-]
+    double                 target_revolutions   = 0; ///< adaptive: stop there [-]
+    contact::ClearanceForm clearance_form       = contact::ClearanceForm::exact;
+    PressureEvaluation     evaluation           = PressureEvaluation::every_step;
+    unsigned int           samples_per_cycle    = 100;
+    unsigned int           remesh_interval      = 1; ///< iterations between FE re-meshes
+    double                 response_cycles      = 1; ///< before/after response [cycles]
+    std::string            response_body;            ///< body whose response is plotted
+    double                 magnification = 0;        ///< profile plots; 0: automatic
   };
 
   /** Declare the per-joint wear entries (inside "Joint <name>/Clearance"). */

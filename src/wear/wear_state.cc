@@ -66,7 +66,8 @@ namespace wearlink::wear
     public:
       explicit Reader(const std::string &path)
         : path(path)
-      {}
+      {
+      }
 
       [[noreturn]] void
       fail(const std::string &what) const
@@ -179,13 +180,13 @@ namespace wearlink::wear
     read_joint(const Reader &r, const Json &j, const std::string &where)
     {
       JointWearState js;
-      js.name         = r.text(j, "name", where);
-      js.initial_bore = r.profile(j, "initial_bore", where);
-      js.initial_pin  = r.profile(j, "initial_pin", where);
-      js.bore         = r.profile(j, "bore", where);
-      js.pin          = r.profile(j, "pin", where);
-      js.meshed_bore  = r.profile(j, "meshed_bore", where);
-      js.meshed_pin   = r.profile(j, "meshed_pin", where);
+      js.name             = r.text(j, "name", where);
+      js.initial_bore     = r.profile(j, "initial_bore", where);
+      js.initial_pin      = r.profile(j, "initial_pin", where);
+      js.bore             = r.profile(j, "bore", where);
+      js.pin              = r.profile(j, "pin", where);
+      js.meshed_bore      = r.profile(j, "meshed_bore", where);
+      js.meshed_pin       = r.profile(j, "meshed_pin", where);
       const Json &history = r.list(j, "history", where);
       for (std::size_t k = 0; k < history.size(); ++k)
         js.history.push_back(read_record(r, history[k], where + "history[" + std::to_string(k) + "]."));
@@ -196,17 +197,17 @@ namespace wearlink::wear
   void
   WearState::write(const std::string &path) const
   {
-    Json j              = Json::object();
-    j["format"]         = format_name;
-    j["version"]        = format_version;
-    j["fingerprint"]    = fingerprint;
-    j["iterations"]     = iterations_done;
-    j["revolutions"]    = revolutions;
-    j["time_s"]         = time;
-    j["state"]          = to_json(std::vector<double>(state.data(), state.data() + state.size()));
-    j["factors"]        = to_json(factors);
-    j["modes"]          = to_json(modes);
-    j["joints"]         = Json::array();
+    Json j           = Json::object();
+    j["format"]      = format_name;
+    j["version"]     = format_version;
+    j["fingerprint"] = fingerprint;
+    j["iterations"]  = iterations_done;
+    j["revolutions"] = revolutions;
+    j["time_s"]      = time;
+    j["state"]       = to_json(std::vector<double>(state.data(), state.data() + state.size()));
+    j["factors"]     = to_json(factors);
+    j["modes"]       = to_json(modes);
+    j["joints"]      = Json::array();
     for (const auto &js : joints)
       j["joints"].push_back(to_json(js));
     // Doubles are written in their shortest form that reads back to the same bits.
@@ -228,13 +229,13 @@ namespace wearlink::wear
     const double n_iter = r.number(j, "iterations");
     if (!(n_iter >= 0 && n_iter <= 1e9 && n_iter == std::floor(n_iter)))
       r.fail("'iterations' is not a count");
-    s.iterations_done = static_cast<unsigned int>(n_iter);
-    s.revolutions     = r.number(j, "revolutions");
-    s.time            = r.number(j, "time_s");
-    const auto y      = r.numbers(j, "state");
-    s.state           = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
-    s.factors         = r.numbers(j, "factors");
-    s.modes           = r.numbers(j, "modes");
+    s.iterations_done  = static_cast<unsigned int>(n_iter);
+    s.revolutions      = r.number(j, "revolutions");
+    s.time             = r.number(j, "time_s");
+    const auto y       = r.numbers(j, "state");
+    s.state            = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
+    s.factors          = r.numbers(j, "factors");
+    s.modes            = r.numbers(j, "modes");
     const Json &joints = r.list(j, "joints");
     for (std::size_t i = 0; i < joints.size(); ++i)
       s.joints.push_back(read_joint(r, joints[i], "joints[" + std::to_string(i) + "]."));

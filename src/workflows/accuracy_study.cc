@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/accuracy_study.h"
-#include "base/text.h"
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/parameters.h"
+#include "base/text.h"
 #include "io/plot.h"
-#include "workflows/run.h"
 #include "io/scene.h"
 #include "io/wear_outputs.h"
+#include "workflows/run.h"
 #include "workflows/wear_run.h"
 
 #include <algorithm>
@@ -92,10 +92,12 @@ namespace wearlink::workflows
         {"contact-law", "Normal force law of every clearance joint"},
         {"discrete-areas", "Number of discrete areas of every wearing joint's profiles"},
         {"load-sampling", "Wear/Pressure evaluation and Load samples per cycle"},
-        {"wear-step", "wear step: iterations × extrapolation factor at fixed revolutions (adaptive: Maximum "
-                      "depth increment)"},
-        {"simulated-cycles", "Wear/Cycles per iteration × Extrapolation factor at fixed revolutions (how much of "
-                             "the chaotic load history is sampled)"},
+        {"wear-step",
+         "wear step: iterations × extrapolation factor at fixed revolutions (adaptive: Maximum "
+         "depth increment)"},
+        {"simulated-cycles",
+         "Wear/Cycles per iteration × Extrapolation factor at fixed revolutions (how much of "
+         "the chaotic load history is sampled)"},
         {"pressure-model", "Pressure model of every wearing joint"},
         {"fe-element-size", "fe Surface element size"},
         {"fe-degree", "fe Element degree"},
@@ -115,13 +117,15 @@ namespace wearlink::workflows
 
     /** A knob whose single part is written to @p targets. */
     Knob
-    make_knob(const std::string &name, const std::vector<std::string> &targets,
-              const std::vector<std::string> &values, const std::string &reference)
+    make_knob(const std::string              &name,
+              const std::vector<std::string> &targets,
+              const std::vector<std::string> &values,
+              const std::string              &reference)
     {
       Knob k;
       k.name        = name;
       k.description = description_of(name);
-      k.targets = {targets};
+      k.targets     = {targets};
       for (const auto &v : values)
         k.values.push_back({v});
       k.reference = reference;
@@ -159,7 +163,8 @@ namespace wearlink::workflows
         : scene(scene)
         , body(body)
         , force(scene.clearance_joints.size(), 0.0)
-      {}
+      {
+      }
       void
       on_step(const mbs::StepContext &c) override
       {
@@ -167,10 +172,9 @@ namespace wearlink::workflows
         const mbs::StateView s(c.y.data(), c.y.data() + n);
         for (std::size_t k = 0; k < force.size(); ++k)
           force[k] = std::max(force[k], scene.clearance_joints[k]->diagnostics(s).normal_force);
-        acceleration =
-          std::max(acceleration, std::hypot(c.dydt[n + 3 * body], c.dydt[n + 3 * body + 1]));
+        acceleration = std::max(acceleration, std::hypot(c.dydt[n + 3 * body], c.dydt[n + 3 * body + 1]));
       }
-      const io::Scene        &scene;
+      const io::Scene    &scene;
       const int           body;
       std::vector<double> force;
       double              acceleration = 0;
@@ -192,7 +196,7 @@ namespace wearlink::workflows
       const auto  t0 = std::chrono::steady_clock::now();
       try
         {
-          io::Scene        scene = io::read_scene(file, overrides);
+          io::Scene    scene = io::read_scene(file, overrides);
           PeakObserver peaks(scene, io::response_body(scene));
           if (has_wear(scene))
             {
@@ -203,11 +207,11 @@ namespace wearlink::workflows
               const auto r    = run_wear(scene, w);
               for (const auto &js : r.state.joints)
                 {
-                  const auto &h                      = js.history.back();
-                  m.quantities[js.name + " V_pin"]   = h.volume_pin;
-                  m.quantities[js.name + " V_bush"]  = h.volume_bore;
-                  m.quantities[js.name + " h_pin"]   = h.max_depth_pin;
-                  m.quantities[js.name + " h_bush"]  = h.max_depth_bore;
+                  const auto &h                         = js.history.back();
+                  m.quantities[js.name + " V_pin"]      = h.volume_pin;
+                  m.quantities[js.name + " V_bush"]     = h.volume_bore;
+                  m.quantities[js.name + " h_pin"]      = h.max_depth_pin;
+                  m.quantities[js.name + " h_bush"]     = h.max_depth_bore;
                   m.profiles[js.name + " profile_pin"]  = h.depth_pin;
                   m.profiles[js.name + " profile_bush"] = h.depth_bore;
                 }
@@ -245,9 +249,9 @@ namespace wearlink::workflows
     double
     periodic_interpolate(const std::vector<double> &h, double s)
     {
-      const double x  = s * h.size();
-      const auto   i  = static_cast<std::size_t>(std::floor(x)) % h.size();
-      const double w  = x - std::floor(x);
+      const double x = s * h.size();
+      const auto   i = static_cast<std::size_t>(std::floor(x)) % h.size();
+      const double w = x - std::floor(x);
       return (1 - w) * h[i] + w * h[(i + 1) % h.size()];
     }
 
@@ -363,12 +367,16 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
   {
     dealii::ParameterHandler prm;
     prm.enter_subsection("Accuracy study");
-    prm.declare_entry("Knobs", "", dealii::Patterns::Anything(),
+    prm.declare_entry("Knobs",
+                      "",
+                      dealii::Patterns::Anything(),
                       "Knobs to vary, comma-separated; empty: every knob that applies to the scene.");
     for (const auto &name : known_knob_names())
       {
         prm.enter_subsection(name);
-        prm.declare_entry("Values", "", dealii::Patterns::Anything(),
+        prm.declare_entry("Values",
+                          "",
+                          dealii::Patterns::Anything(),
                           "Values of the knob, comma-separated, coarse to fine (the last is the "
                           "reference); the parts of one value are separated by ';'. Empty: built-in.");
         prm.leave_subsection();
@@ -380,12 +388,13 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       }
     catch (const InputError &e)
       {
-        std::string m = e.message();
+        std::string m  = e.message();
         const auto  at = m.find("scene file");
         if (at != std::string::npos)
           m.replace(at, 10, "study file");
-        throw InputError(m + "\nA study file has one subsection 'Accuracy study' with 'Knobs' and one "
-                                       "subsection per knob; the knobs are " +
+        throw InputError(m +
+                         "\nA study file has one subsection 'Accuracy study' with 'Knobs' and one "
+                         "subsection per knob; the knobs are " +
                          join(known_knob_names(), ", ") + ".");
       }
     prm.enter_subsection("Accuracy study");
@@ -413,7 +422,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
   std::vector<Knob>
   knobs_for(const io::Scene &scene, bool quick)
   {
-    std::vector<Knob> knobs;
+    std::vector<Knob>        knobs;
     std::vector<std::string> clearance, wearing, fe;
     for (const auto *j : scene.clearance_joints)
       clearance.push_back(j->name());
@@ -426,11 +435,11 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     const bool wears = !wearing.empty();
     // Scale factors, coarse -> fine, around the scene's value (×1 is the scene's).
     const std::vector<double> coarsen = quick ? std::vector<double>{4, 2, 1} : std::vector<double>{4, 2, 1, 0.5};
-    auto scaled = [&](double base, bool integer) {
+    auto                      scaled  = [&](double base, bool integer) {
       std::vector<std::string> v;
       for (const double f : coarsen)
         {
-          const double x = base * f;
+          const double      x = base * f;
           const std::string s = integer ? std::to_string(std::max(1L, std::lround(x))) : label(x);
           if (std::find(v.begin(), v.end(), s) == v.end())
             v.push_back(s);
@@ -443,10 +452,11 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     if (in.type == mbs::IntegratorType::dopri5)
       {
         Knob k;
-        k.name        = "integrator-tolerance";
-        k.description = description_of("integrator-tolerance");
-        k.targets     = {{"Integrator/Relative tolerance"}, {"Integrator/Position tolerance"},
-                         {"Integrator/Velocity tolerance"}};
+        k.name           = "integrator-tolerance";
+        k.description    = description_of("integrator-tolerance");
+        k.targets        = {{"Integrator/Relative tolerance"},
+                            {"Integrator/Position tolerance"},
+                            {"Integrator/Velocity tolerance"}};
         const double rel = in.relative_tolerance;
         for (const double f : quick ? std::vector<double>{100, 10, 1} : std::vector<double>{100, 10, 1, 0.1})
           {
@@ -457,21 +467,19 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         knobs.push_back(k);
       }
     else
-      knobs.push_back(make_knob("integrator-step", {"Integrator/Time step"}, scaled(in.time_step, false),
-                                "smallest step"));
+      knobs.push_back(
+        make_knob("integrator-step", {"Integrator/Time step"}, scaled(in.time_step, false), "smallest step"));
 
     // Baumgarte factors: no "finer" value; the scene's is the reference.
     if (!quick)
       {
         Knob k;
-        k.name        = "baumgarte";
-        k.description = "Baumgarte alpha = beta";
-        k.targets     = {{"Integrator/Baumgarte alpha"}, {"Integrator/Baumgarte beta"}};
+        k.name         = "baumgarte";
+        k.description  = "Baumgarte alpha = beta";
+        k.targets      = {{"Integrator/Baumgarte alpha"}, {"Integrator/Baumgarte beta"}};
         const double a = number_of(scene, "Integrator/Baumgarte alpha");
         const double b = number_of(scene, "Integrator/Baumgarte beta");
-        k.values       = {{label(a / 2), label(b / 2)},
-                          {label(a * 2), label(b * 2)},
-                          {label(a), label(b)}};
+        k.values       = {{label(a / 2), label(b / 2)}, {label(a * 2), label(b * 2)}, {label(a), label(b)}};
         k.reference    = "the scene's factors";
         knobs.push_back(k);
       }
@@ -507,7 +515,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       {
         const auto &ws = scene.wear_loop;
         {
-          const double n = number_of(scene, "Joint " + wearing[0] + "/Clearance/Number of discrete areas");
+          const double             n = number_of(scene, "Joint " + wearing[0] + "/Clearance/Number of discrete areas");
           std::vector<std::string> v;
           for (const double f : quick ? std::vector<double>{0.25, 0.5, 1} : std::vector<double>{0.25, 0.5, 1, 2})
             v.push_back(std::to_string(std::max(8L, std::lround(n * f))));
@@ -516,9 +524,9 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
 
         {
           Knob k;
-          k.name        = "load-sampling";
-          k.description = description_of("load-sampling");
-          k.targets     = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
+          k.name                   = "load-sampling";
+          k.description            = description_of("load-sampling");
+          k.targets                = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
           const std::vector<int> n = quick ? std::vector<int>{25, 100} : std::vector<int>{25, 100, 400};
           if (fe.empty())
             {
@@ -540,10 +548,10 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
           {
             // The same revolutions in more, smaller steps.
             Knob k;
-            k.name        = "wear-step";
-            k.description = description_of("wear-step");
-            k.targets     = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
-            const double total = ws.n_iterations * ws.extrapolation_factor;
+            k.name                  = "wear-step";
+            k.description           = description_of("wear-step");
+            k.targets               = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
+            const double      total = ws.n_iterations * ws.extrapolation_factor;
             std::vector<long> counts;
             for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.2, 0.5, 1, 2})
               {
@@ -557,16 +565,18 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
             knobs.push_back(k);
           }
         else
-          knobs.push_back(make_knob("wear-step", {"Wear/Maximum depth increment"},
-                                    scaled(ws.max_depth_increment, false), "smallest depth increment"));
+          knobs.push_back(make_knob("wear-step",
+                                    {"Wear/Maximum depth increment"},
+                                    scaled(ws.max_depth_increment, false),
+                                    "smallest depth increment"));
 
         if (ws.extrapolation == wear::Extrapolation::fixed)
           {
             // The same revolutions from more simulated cycles per iteration.
             Knob k;
-            k.name        = "simulated-cycles";
-            k.description = description_of("simulated-cycles");
-            k.targets     = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
+            k.name                     = "simulated-cycles";
+            k.description              = description_of("simulated-cycles");
+            k.targets                  = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
             const double per_iteration = ws.cycles_per_iteration * ws.extrapolation_factor;
             for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.5, 1, 2, 4})
               {
@@ -579,21 +589,22 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
 
         if (!quick)
           {
-            Knob k = make_knob("pressure-model", paths(wearing, "Pressure model"), {"hertz-strip", "winkler", "fe"},
-                               "fe");
+            Knob k =
+              make_knob("pressure-model", paths(wearing, "Pressure model"), {"hertz-strip", "winkler", "fe"}, "fe");
             knobs.push_back(k);
           }
       }
 
     if (!fe.empty())
       {
-        knobs.push_back(make_knob("fe-element-size", paths(fe, "fe/Surface element size"),
-                                  scaled(number_of(scene, "Joint " + fe[0] + "/Clearance/fe/Surface element size"),
-                                         false),
-                                  "smallest elements"));
+        knobs.push_back(
+          make_knob("fe-element-size",
+                    paths(fe, "fe/Surface element size"),
+                    scaled(number_of(scene, "Joint " + fe[0] + "/Clearance/fe/Surface element size"), false),
+                    "smallest elements"));
         knobs.push_back(make_knob("fe-degree", paths(fe, "fe/Element degree"), {"1", "2"}, "degree 2"));
-        knobs.push_back(make_knob("remesh-interval", {"Wear/Remesh interval"}, {"5", "2", "1"},
-                                  "re-mesh every iteration"));
+        knobs.push_back(
+          make_knob("remesh-interval", {"Wear/Remesh interval"}, {"5", "2", "1"}, "re-mesh every iteration"));
       }
     return knobs;
   }
@@ -622,7 +633,8 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         }
     }
     // A --quick shortening of an entry the user sets anyway is left out.
-    base.erase(std::remove_if(base.begin(), base.end(),
+    base.erase(std::remove_if(base.begin(),
+                              base.end(),
                               [&](const std::string &q) {
                                 const std::string entry = q.substr(0, q.find('='));
                                 for (const auto &o : request.overrides)
@@ -634,13 +646,13 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     base.insert(base.end(), request.overrides.begin(), request.overrides.end());
     study.base_overrides = base;
 
-    io::Scene             scene = io::read_scene(scene_file, base);
-    study.wears             = has_wear(scene);
-    std::vector<Knob> all   = knobs_for(scene, request.quick);
+    io::Scene scene       = io::read_scene(scene_file, base);
+    study.wears           = has_wear(scene);
+    std::vector<Knob> all = knobs_for(scene, request.quick);
 
     // Selection and replacement values, all checked before the first run.
-    std::vector<Knob> knobs;
-    const auto        known = known_knob_names();
+    std::vector<Knob>        knobs;
+    const auto               known = known_knob_names();
     std::vector<std::string> applicable;
     for (const auto &k : all)
       applicable.push_back(k.name);
@@ -654,8 +666,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                            join(applicable, ", ") + ".");
       }
     for (auto &k : all)
-      if (request.knobs.empty() ||
-          std::find(request.knobs.begin(), request.knobs.end(), k.name) != request.knobs.end())
+      if (request.knobs.empty() || std::find(request.knobs.begin(), request.knobs.end(), k.name) != request.knobs.end())
         knobs.push_back(k);
     for (const auto &[name, values] : request.values)
       {
@@ -677,7 +688,8 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                                  for (const auto &t : it->targets)
                                    f.push_back(t.front());
                                  return join(f, ", ");
-                               }() + ").");
+                               }() +
+                               ").");
             it->values.push_back(parts);
             // A value the user typed must make a valid scene.
             auto o = base;
@@ -717,9 +729,9 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
             rows.push_back(r);
             ++done;
             if (request.progress)
-              std::cerr << "[wearlink] study " << done << '/' << total << "  " << k.name << " = " << r.value
-                        << "  " << std::setprecision(3) << r.wall_time << " s"
-                        << (r.ok ? "" : "  FAILED: " + r.failure) << '\n';
+              std::cerr << "[wearlink] study " << done << '/' << total << "  " << k.name << " = " << r.value << "  "
+                        << std::setprecision(3) << r.wall_time << " s" << (r.ok ? "" : "  FAILED: " + r.failure)
+                        << '\n';
           }
         const Measurement &ref = ms.back();
         for (std::size_t i = 0; i < rows.size(); ++i)
@@ -792,8 +804,8 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         ref_time[r.knob] = r.wall_time;
     for (const auto &r : rows)
       {
-        os << "| " << r.knob << " | " << r.value << (r.is_reference ? " **ref**" : "") << " | " << r.reference
-           << " | " << number(r.wall_time) << " | " << number(r.wall_time / ref_time[r.knob], 2) << " | ";
+        os << "| " << r.knob << " | " << r.value << (r.is_reference ? " **ref**" : "") << " | " << r.reference << " | "
+           << number(r.wall_time) << " | " << number(r.wall_time / ref_time[r.knob], 2) << " | ";
         if (!r.ok)
           {
             os << "failed: " << r.failure << " |";
@@ -858,9 +870,9 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     spec.x_label = "wall time of the run [s]";
     spec.y_label = std::string("worst relative error vs the knob's reference") +
                    (study.wears ? " (worn volume, profile shape)" : " (peak force, acceleration)");
-    spec.log_x   = true;
-    spec.log_y   = true;
-    spec.extra   = "set key outside right\nset grid\n";
+    spec.log_x = true;
+    spec.log_y = true;
+    spec.extra = "set key outside right\nset grid\n";
     std::vector<std::string> knobs;
     for (const auto &r : study.rows)
       if (std::find(knobs.begin(), knobs.end(), r.knob) == knobs.end())
@@ -881,8 +893,8 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     // The worn volume alone: robust where depths and profiles meet the chaos floor.
     io::PlotSpec volume = spec;
     volume.series.clear();
-    volume.y_label  = "relative error of the worn volume (largest over surfaces and joints)";
-    point_type      = 4;
+    volume.y_label = "relative error of the worn volume (largest over surfaces and joints)";
+    point_type     = 4;
     for (const auto &k : knobs)
       {
         io::PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};

@@ -30,6 +30,7 @@
 #pragma once
 
 #include "io/scene.h"
+
 #include <map>
 #include <string>
 #include <vector>
@@ -40,20 +41,20 @@ namespace wearlink::workflows
   /** One accuracy knob: the entries it sets and its values, coarse → fine. */
   struct Knob
   {
-    std::string              name;        ///< e.g. "integrator-tolerance"
-    std::string              description; ///< one line, for tables and --help
+    std::string name;        ///< e.g. "integrator-tolerance"
+    std::string description; ///< one line, for tables and --help
     /** Per part of a value, the "Section/Sub/Entry" paths that part is written to. */
     std::vector<std::vector<std::string>> targets;
     /** Each value: one string per part (in a study file: parts separated by ';'). */
     std::vector<std::vector<std::string>> values;
-    std::string reference;                ///< what the last value is, in words
+    std::string                           reference; ///< what the last value is, in words
   };
 
   /** What the user asked for (command line and study file). */
   struct StudyRequest
   {
-    std::vector<std::string> overrides;   ///< applied to every run (after --quick's)
-    bool                     quick = false;
+    std::vector<std::string> overrides; ///< applied to every run (after --quick's)
+    bool                     quick    = false;
     bool                     progress = true;
     /** Knobs to vary (empty: every knob that applies). */
     std::vector<std::string> knobs;
@@ -86,13 +87,13 @@ namespace wearlink::workflows
     std::string knob, value, reference; ///< value and reference as "Entry=v; ..."
     bool        is_reference = false;
     bool        ok           = true;
-    std::string failure;                ///< message of a failed run
-    double      wall_time    = 0;       ///< [s], reading + building + running
+    std::string failure;       ///< message of a failed run
+    double      wall_time = 0; ///< [s], reading + building + running
     /** Measured quantities (name → value), e.g. "A/volume_pin_m3". */
     std::map<std::string, double> quantities;
     /** Relative errors against the knob's reference, same names (+ "A/profile_pin"). */
     std::map<std::string, double> errors;
-    double worst = 0; ///< see the file comment; NaN if unknown
+    double                        worst = 0; ///< see the file comment; NaN if unknown
   };
 
   struct AccuracyStudy

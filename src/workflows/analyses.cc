@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/analyses.h"
-#include "base/text.h"
 
 #include "analysis/channels.h"
 #include "analysis/nonlinear_dynamics.h"
@@ -8,12 +7,13 @@
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/parameters.h"
-#include "io/plot.h"
-#include "workflows/dynamics_comparison.h"
-#include "io/lyapunov_report.h"
+#include "base/text.h"
 #include "io/analyses_parameters.h"
+#include "io/lyapunov_report.h"
+#include "io/plot.h"
 #include "io/recorded_run_files.h"
 #include "io/scene.h"
+#include "workflows/dynamics_comparison.h"
 #include "workflows/shadow_trajectory.h"
 
 #include <algorithm>
@@ -92,7 +92,8 @@ namespace wearlink::workflows
 
   SceneAnalyses::SceneAnalyses(const io::Scene &scene)
     : SceneAnalyses(scene, scene.analyses)
-  {}
+  {
+  }
 
   SceneAnalyses::SceneAnalyses(const io::Scene &scene, const analysis::AnalysesSettings &settings)
     : scene(scene)
@@ -105,7 +106,7 @@ namespace wearlink::workflows
       return;
     period                   = settings.poincare ? io::driving_period(scene) : 0.0;
     const double record_from = scene.start_time + settings.transient;
-    const auto & mech        = *scene.mechanism;
+    const auto  &mech        = *scene.mechanism;
 
     if (settings.phase_portrait || settings.lyapunov)
       {
@@ -192,17 +193,17 @@ namespace wearlink::workflows
     if (shadow)
       {
         ledger.add_calls("lyapunov estimates", 1);
-        Json j                        = Json::object();
-        j["channel"]                  = "state";
-        j["method"]                   = "two-trajectory";
-        j["exponent_per_s"]           = shadow->exponent();
-        j["unit"]                     = "1/s (natural log)";
-        const double T                = recorded_run().driving_period;
+        Json j              = Json::object();
+        j["channel"]        = "state";
+        j["method"]         = "two-trajectory";
+        j["exponent_per_s"] = shadow->exponent();
+        j["unit"]           = "1/s (natural log)";
+        const double T      = recorded_run().driving_period;
         if (T > 0.0)
           j["exponent_per_driving_period"] = shadow->exponent() * T;
-        j["renormalizations"]         = shadow->n_renormalizations();
+        j["renormalizations"]           = shadow->n_renormalizations();
         j["renormalization_interval_s"] = settings.renormalization_interval;
-        j["separation_m"]             = settings.two_trajectory_separation;
+        j["separation_m"]               = settings.two_trajectory_separation;
         if (!out.contains("lyapunov"))
           out["lyapunov"] = Json::array();
         out["lyapunov"].push_back(j);
@@ -220,7 +221,7 @@ namespace wearlink::workflows
               }
             write_file_atomically(output_directory + "/lyapunov_state_two-trajectory.csv", csv.str());
             io::PlotSpec plot;
-            plot.title   = "Two-trajectory (Benettin) largest Lyapunov exponent of the state = " +
+            plot.title = "Two-trajectory (Benettin) largest Lyapunov exponent of the state = " +
                          format_number(shadow->exponent(), 4) + " 1/s";
             plot.x_label = "time [s]";
             plot.y_label = "running estimate [1/s, natural log]";
@@ -235,15 +236,15 @@ namespace wearlink::workflows
   // Outputs from a recorded run.
 
   Json
-  analyse_recorded_run(const analysis::RecordedRun &run,
-                       const analysis::AnalysesSettings &     settings,
-                       const std::string &          output_directory)
+  analyse_recorded_run(const analysis::RecordedRun      &run,
+                       const analysis::AnalysesSettings &settings,
+                       const std::string                &output_directory)
   {
     const bool write = !output_directory.empty();
     if (write)
       make_output_directory(output_directory);
-    const std::string dir = output_directory + "/";
-    Json              out = Json::object();
+    const std::string dir  = output_directory + "/";
+    Json              out  = Json::object();
     Json              list = Json::array();
     for (const auto &n : settings.names())
       list.push_back(n);
@@ -271,15 +272,15 @@ namespace wearlink::workflows
     // Poincaré points of the same pair in red (seed Figs 9-10).
     if (settings.phase_portrait)
       {
-        Json pp            = Json::object();
-        pp["n_samples"]    = run.series.n_samples();
+        Json pp                 = Json::object();
+        pp["n_samples"]         = run.series.n_samples();
         pp["sample_interval_s"] = run.sample_interval;
         if (write)
           {
             for (const auto &pair : phase_pairs(settings))
               {
                 const std::size_t ip = run.series.index(pair.position), iv = run.series.index(pair.velocity);
-                io::PlotSpec          plot;
+                io::PlotSpec      plot;
                 plot.title   = "Phase portrait, " + pair.title + label_suffix(run);
                 plot.x_label = pair.position + " " + unit_label(run.series.units[ip]);
                 plot.y_label = pair.velocity + " " + unit_label(run.series.units[iv]);
@@ -326,9 +327,9 @@ namespace wearlink::workflows
               {
                 if (!run.section.points.has(pair.position))
                   continue;
-                const auto &      p  = run.section.points;
+                const auto       &p  = run.section.points;
                 const std::size_t ip = p.index(pair.position), iv = p.index(pair.velocity);
-                io::PlotSpec          plot;
+                io::PlotSpec      plot;
                 plot.title = "Poincaré section (t = " + format_number(run.section.first_time, 4) + " s + k · " +
                              format_number(run.section.period, 4) + " s), " + pair.title + label_suffix(run);
                 plot.x_label = pair.position + " " + unit_label(p.units[ip]);
@@ -351,7 +352,7 @@ namespace wearlink::workflows
     // Largest Lyapunov exponents of the journal-centre coordinates.
     if (settings.lyapunov)
       {
-        auto &ledger = EffectLedger::instance();
+        auto &ledger  = EffectLedger::instance();
         Json  results = Json::array();
         for (const auto &channel : lyapunov_channels(settings))
           for (const auto method : settings.methods)
@@ -377,8 +378,7 @@ namespace wearlink::workflows
               j["delay_samples"]          = e.embedding.embedding.delay;
               j["embedding_dimension"]    = e.embedding.embedding.dimension;
               j["theiler_window_samples"] = e.embedding.theiler_window;
-              j["delay_rule"] = e.embedding.delay_choice ? analysis::describe(e.embedding.delay_choice->rule) :
-                                                           "given";
+              j["delay_rule"] = e.embedding.delay_choice ? analysis::describe(e.embedding.delay_choice->rule) : "given";
               j["dimension_rule"] = e.embedding.dimension_choice ?
                                       (e.embedding.dimension_choice->below_threshold ?
                                          "false nearest neighbours below 1%" :

@@ -21,10 +21,10 @@
 // compared before and after wear.
 #pragma once
 
-#include "io/scene.h"
 #include "analysis/analyses_settings.h"
 #include "analysis/recorded_run.h"
 #include "base/json.h"
+#include "io/scene.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -41,7 +41,6 @@ namespace wearlink
 namespace wearlink::workflows
 {
   class ShadowTrajectory;
-
 
 
   /**
@@ -73,8 +72,8 @@ namespace wearlink::workflows
     finish(const std::string &output_directory);
 
   private:
-    const io::Scene &                               scene;
-    analysis::AnalysesSettings                            settings;
+    const io::Scene                            &scene;
+    analysis::AnalysesSettings                  settings;
     double                                      period = 0.0;
     std::unique_ptr<analysis::SeriesRecorder>   series;
     std::unique_ptr<analysis::PoincareRecorder> section;
@@ -90,8 +89,8 @@ namespace wearlink::workflows
    * every file atomically.
    */
   Json
-  analyse_recorded_run(const analysis::RecordedRun &run,
-                       const analysis::AnalysesSettings &     settings,
-                       const std::string &          output_directory);
+  analyse_recorded_run(const analysis::RecordedRun      &run,
+                       const analysis::AnalysesSettings &settings,
+                       const std::string                &output_directory);
 
 } // namespace wearlink::workflows

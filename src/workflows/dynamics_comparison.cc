@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/dynamics_comparison.h"
-#include "base/text.h"
 
 #include "analysis/nonlinear_dynamics.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/text.h"
 #include "io/plot.h"
 
 #include <deal.II/base/utilities.h>
@@ -24,9 +24,9 @@ namespace wearlink::workflows
     {
       const double k = std::round(seconds / run.sample_interval);
       if (k < 1.0)
-        throw InputError("The " + what + " delay of " + format_number(seconds, 4) + " s is shorter than the sample interval " +
-                         format_number(run.sample_interval, 4) + " s of the " +
-                         (run.label.empty() ? std::string("recorded") : run.label) + " run.");
+        throw InputError("The " + what + " delay of " + format_number(seconds, 4) +
+                         " s is shorter than the sample interval " + format_number(run.sample_interval, 4) +
+                         " s of the " + (run.label.empty() ? std::string("recorded") : run.label) + " run.");
       return static_cast<std::size_t>(k);
     }
 
@@ -47,11 +47,11 @@ namespace wearlink::workflows
     };
 
     Estimate
-    estimate(const analysis::RecordedRun &run,
-             const std::string &          channel,
+    estimate(const analysis::RecordedRun   &run,
+             const std::string             &channel,
              const analysis::LyapunovMethod method,
-             const double                 delay_s,
-             const unsigned int           dimension)
+             const double                   delay_s,
+             const unsigned int             dimension)
     {
       Estimate                   out;
       analysis::LyapunovSettings ls;
@@ -80,8 +80,7 @@ namespace wearlink::workflows
     double
     peak_acceleration(const Json &summary, const std::string &b)
     {
-      if (summary.is_object() == false || !summary.contains("bodies") ||
-          !summary.at("bodies").contains(b))
+      if (summary.is_object() == false || !summary.contains("bodies") || !summary.at("bodies").contains(b))
         return std::numeric_limits<double>::quiet_NaN();
       const Json &x = summary.at("bodies").at(b);
       return std::max(json_number(x.at("max_abs_ax_m_s2")), json_number(x.at("max_abs_ay_m_s2")));
@@ -100,8 +99,7 @@ namespace wearlink::workflows
     double
     periods(const ComparedRun &r)
     {
-      if (r.summary.is_object() == false || !r.summary.contains("simulated_time_s") ||
-          !(r.run.driving_period > 0.0))
+      if (r.summary.is_object() == false || !r.summary.contains("simulated_time_s") || !(r.run.driving_period > 0.0))
         return std::numeric_limits<double>::quiet_NaN();
       return json_number(r.summary.at("simulated_time_s")) / r.run.driving_period;
     }
@@ -118,9 +116,9 @@ namespace wearlink::workflows
     /** Phase-portrait panel of one run, on the given axis ranges. */
     io::PlotSpec
     phase_panel(const analysis::RecordedRun &run,
-                const std::string &          position,
-                const std::string &          velocity,
-                const std::string &          range)
+                const std::string           &position,
+                const std::string           &velocity,
+                const std::string           &range)
     {
       io::PlotSpec p;
       p.title   = run.label;
@@ -128,7 +126,8 @@ namespace wearlink::workflows
       p.y_label = velocity + " [m/s]";
       p.extra   = range + "set key below\n";
       io::PlotSeries orbit;
-      orbit.title   = std::to_string(run.series.n_samples()) + " samples every " + format_number(run.sample_interval, 3) + " s";
+      orbit.title =
+        std::to_string(run.series.n_samples()) + " samples every " + format_number(run.sample_interval, 3) + " s";
       orbit.x       = run.series.values[run.series.index(position)];
       orbit.y       = run.series.values[run.series.index(velocity)];
       orbit.options = "lw 0.4 lc rgb '#707070'";
@@ -137,7 +136,8 @@ namespace wearlink::workflows
       if (s.n_samples() > 0 && s.has(position) && s.has(velocity))
         {
           io::PlotSeries points;
-          points.title   = std::to_string(s.n_samples()) + " Poincaré points (one per " + format_number(run.section.period, 3) + " s)";
+          points.title =
+            std::to_string(s.n_samples()) + " Poincaré points (one per " + format_number(run.section.period, 3) + " s)";
           points.style   = "points";
           points.options = "pt 7 ps 0.7 lc rgb 'red'";
           points.x       = s.values[s.index(position)];
@@ -151,8 +151,8 @@ namespace wearlink::workflows
     std::string
     common_range(const analysis::RecordedRun &a,
                  const analysis::RecordedRun &b,
-                 const std::string &          x,
-                 const std::string &          y)
+                 const std::string           &x,
+                 const std::string           &y)
     {
       auto range = [&](const std::string &c) {
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -163,7 +163,7 @@ namespace wearlink::workflows
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
               }
-        const double pad = 0.05 * std::max(hi - lo, 1e-30);
+        const double       pad = 0.05 * std::max(hi - lo, 1e-30);
         std::ostringstream s;
         s << std::setprecision(10) << '[' << lo - pad << ':' << hi + pad << ']';
         return s.str();
@@ -173,15 +173,15 @@ namespace wearlink::workflows
   } // namespace
 
   DynamicsComparison
-  compare_dynamics(const ComparedRun &               before,
-                   const ComparedRun &               after,
+  compare_dynamics(const ComparedRun                &before,
+                   const ComparedRun                &after,
                    const DynamicsComparisonSettings &settings,
-                   const std::string &               output_directory)
+                   const std::string                &output_directory)
   {
     const bool        write = !output_directory.empty();
     const std::string dir   = output_directory + "/";
-    const auto &      b     = before.run;
-    const auto &      a     = after.run;
+    const auto       &b     = before.run;
+    const auto       &a     = after.run;
     // Check what would make the comparison fail before anything is written.
     if (!settings.methods.empty())
       for (const auto *r : {&b, &a})
@@ -196,10 +196,10 @@ namespace wearlink::workflows
       make_output_directory(output_directory);
 
     DynamicsComparison out;
-    Json &             json = out.json;
-    json                    = Json::object();
-    json["before"]          = b.label;
-    json["after"]           = a.label;
+    Json              &json  = out.json;
+    json                     = Json::object();
+    json["before"]           = b.label;
+    json["after"]            = a.label;
     Json               files = Json::array();
     std::ostringstream md;
     md << "# Dynamics before and after wear\n\n"
@@ -211,7 +211,8 @@ namespace wearlink::workflows
       md << "\n## Contact and motion indicators\n\n| quantity | before | after | after / before |\n|---|---|---|---|\n";
       Json ind = Json::object();
       auto row = [&](const std::string &name, const std::string &key, const double vb, const double va) {
-        md << "| " << name << " | " << format_number(vb, 4) << " | " << format_number(va, 4) << " | " << format_number(va / vb, 3) << " |\n";
+        md << "| " << name << " | " << format_number(vb, 4) << " | " << format_number(va, 4) << " | "
+           << format_number(va / vb, 3) << " |\n";
         Json r      = Json::object();
         r["before"] = vb;
         r["after"]  = va;
@@ -219,23 +220,33 @@ namespace wearlink::workflows
       };
       for (const auto &j : settings.joints)
         {
-          row("joint " + j + ": impacts per driving period", j + "_impacts_per_period",
-              joint_value(before.summary, j, "impacts") / pb, joint_value(after.summary, j, "impacts") / pa);
-          row("joint " + j + ": fraction of time in contact", j + "_fraction_in_contact",
-              joint_value(before.summary, j, "fraction_in_contact"), joint_value(after.summary, j, "fraction_in_contact"));
-          row("joint " + j + ": peak contact force [N]", j + "_max_normal_force_N",
-              joint_value(before.summary, j, "max_normal_force_N"), joint_value(after.summary, j, "max_normal_force_N"));
+          row("joint " + j + ": impacts per driving period",
+              j + "_impacts_per_period",
+              joint_value(before.summary, j, "impacts") / pb,
+              joint_value(after.summary, j, "impacts") / pa);
+          row("joint " + j + ": fraction of time in contact",
+              j + "_fraction_in_contact",
+              joint_value(before.summary, j, "fraction_in_contact"),
+              joint_value(after.summary, j, "fraction_in_contact"));
+          row("joint " + j + ": peak contact force [N]",
+              j + "_max_normal_force_N",
+              joint_value(before.summary, j, "max_normal_force_N"),
+              joint_value(after.summary, j, "max_normal_force_N"));
           for (const char *d : {"x", "y"})
             {
               const std::string c = j + "_e" + d + "_m";
               if (b.section.points.n_samples() > 0 || a.section.points.n_samples() > 0)
-                row("joint " + j + ": spread of the Poincaré points in e_" + d + " [m]", c + "_poincare_spread",
-                    section_spread(b, c), section_spread(a, c));
+                row("joint " + j + ": spread of the Poincaré points in e_" + d + " [m]",
+                    c + "_poincare_spread",
+                    section_spread(b, c),
+                    section_spread(a, c));
             }
         }
       for (const auto &body : settings.bodies)
-        row("body " + body + ": peak acceleration [m/s²]", body + "_peak_acceleration_m_s2",
-            peak_acceleration(before.summary, body), peak_acceleration(after.summary, body));
+        row("body " + body + ": peak acceleration [m/s²]",
+            body + "_peak_acceleration_m_s2",
+            peak_acceleration(before.summary, body),
+            peak_acceleration(after.summary, body));
       json["indicators"] = ind;
     }
 
@@ -249,10 +260,13 @@ namespace wearlink::workflows
               continue;
             const std::string range = common_range(b, a, x, v);
             const std::string png   = "before_after_phase_" + j + "_" + d + ".png";
-            if (io::plot_panels_png({phase_panel(b, x, v, range), phase_panel(a, x, v, range)}, 2,
-                                "Joint " + j + ": journal centre relative to the bushing, " + d +
-                                  " direction (phase portrait, Poincaré points in red)",
-                                dir + png, 1600, 750))
+            if (io::plot_panels_png({phase_panel(b, x, v, range), phase_panel(a, x, v, range)},
+                                    2,
+                                    "Joint " + j + ": journal centre relative to the bushing, " + d +
+                                      " direction (phase portrait, Poincaré points in red)",
+                                    dir + png,
+                                    1600,
+                                    750))
               files.push_back(png);
           }
 
@@ -264,10 +278,11 @@ namespace wearlink::workflows
           for (const auto &d : settings.directions)
             channels.push_back(j + "_e" + d + "_m");
 
-        md << "\n## Largest Lyapunov exponents at one embedding for both runs\n\n"
-           << "Natural log, per second; per sample = times the sample interval (before "
-           << format_number(b.sample_interval, 3) << " s, after " << format_number(a.sample_interval, 3) << " s).\n\n"
-           << "| channel | method | delay [s] | m | before [1/s] | after [1/s] | after / before | before per sample | after per sample";
+        md
+          << "\n## Largest Lyapunov exponents at one embedding for both runs\n\n"
+          << "Natural log, per second; per sample = times the sample interval (before "
+          << format_number(b.sample_interval, 3) << " s, after " << format_number(a.sample_interval, 3) << " s).\n\n"
+          << "| channel | method | delay [s] | m | before [1/s] | after [1/s] | after / before | before per sample | after per sample";
         const bool have_published = !settings.published.empty();
         if (have_published)
           md << " | published before | published after | published after / before";
@@ -281,8 +296,8 @@ namespace wearlink::workflows
         scan_csv << std::setprecision(8)
                  << "channel,method,delay_s,embedding_dimension,before_per_s,after_per_s,ratio,before_resolved,"
                     "after_resolved\n";
-        Json                  lle  = Json::array();
-        Json                  scan = Json::array();
+        Json                      lle  = Json::array();
+        Json                      scan = Json::array();
         std::vector<io::PlotSpec> scan_panels;
 
         for (const auto &c : channels)
@@ -296,7 +311,8 @@ namespace wearlink::workflows
             const auto   emb     = analysis::resolve_embedding(channel_values(b, c), es);
             const double delay_s = emb.embedding.delay * b.sample_interval;
             const auto   m       = emb.embedding.dimension;
-            const auto   pub     = std::find_if(settings.published.begin(), settings.published.end(),
+            const auto   pub     = std::find_if(settings.published.begin(),
+                                          settings.published.end(),
                                           [&](const analysis::PublishedExponents &p) { return p.channel == c; });
 
             io::PlotSpec panel;
@@ -310,14 +326,16 @@ namespace wearlink::workflows
               {
                 const auto   eb = estimate(b, c, method, delay_s, m), ea = estimate(a, c, method, delay_s, m);
                 const double ratio = ea.per_s / eb.per_s;
-                md << "| " << c << " | " << analysis::method_name(method) << " | " << format_number(delay_s, 3) << " | " << m
-                   << " | " << format_number(eb.per_s, 3) << (eb.resolved ? "" : " (unresolved)") << " | " << format_number(ea.per_s, 3)
-                   << (ea.resolved ? "" : " (unresolved)") << " | " << format_number(ratio, 3) << " | "
-                   << format_number(eb.per_s * b.sample_interval, 3) << " | " << format_number(ea.per_s * a.sample_interval, 3);
+                md << "| " << c << " | " << analysis::method_name(method) << " | " << format_number(delay_s, 3) << " | "
+                   << m << " | " << format_number(eb.per_s, 3) << (eb.resolved ? "" : " (unresolved)") << " | "
+                   << format_number(ea.per_s, 3) << (ea.resolved ? "" : " (unresolved)") << " | "
+                   << format_number(ratio, 3) << " | " << format_number(eb.per_s * b.sample_interval, 3) << " | "
+                   << format_number(ea.per_s * a.sample_interval, 3);
                 if (have_published)
                   {
                     if (pub != settings.published.end())
-                      md << " | " << format_number(pub->before, 3) << " | " << format_number(pub->after, 3) << " | " << format_number(pub->after / pub->before, 3);
+                      md << " | " << format_number(pub->before, 3) << " | " << format_number(pub->after, 3) << " | "
+                         << format_number(pub->after / pub->before, 3);
                     else
                       md << " | | |";
                   }
@@ -355,10 +373,10 @@ namespace wearlink::workflows
 
                 // The scan: the same comparison at other delays (same dimension).
                 io::PlotSeries sb, sa;
-                sb.title   = "before, " + analysis::method_name(method);
-                sa.title   = "after, " + analysis::method_name(method);
-                sb.style   = sa.style = "linespoints";
-                const bool wolf = method == analysis::LyapunovMethod::wolf;
+                sb.title = "before, " + analysis::method_name(method);
+                sa.title = "after, " + analysis::method_name(method);
+                sb.style = sa.style = "linespoints";
+                const bool wolf     = method == analysis::LyapunovMethod::wolf;
                 sb.options = std::string("lw 2 pt ") + (wolf ? "6" : "7") + " lc rgb '#1f5fbf'" + (wolf ? " dt 2" : "");
                 sa.options = std::string("lw 2 pt ") + (wolf ? "6" : "7") + " lc rgb '#c0392b'" + (wolf ? " dt 2" : "");
                 for (const double tau : settings.delay_scan)
@@ -366,13 +384,14 @@ namespace wearlink::workflows
                     if (std::round(tau / b.sample_interval) < 1.0 || std::round(tau / a.sample_interval) < 1.0)
                       continue; // below a sample interval: not measurable from these recordings
                     // The common delay is usually one of the scan's: reuse its estimates.
-                    const bool common = std::lround(tau / b.sample_interval) == std::lround(delay_s / b.sample_interval) &&
-                                        std::lround(tau / a.sample_interval) == std::lround(delay_s / a.sample_interval);
+                    const bool common =
+                      std::lround(tau / b.sample_interval) == std::lround(delay_s / b.sample_interval) &&
+                      std::lround(tau / a.sample_interval) == std::lround(delay_s / a.sample_interval);
                     const auto sb_e = common ? eb : estimate(b, c, method, tau, m);
                     const auto sa_e = common ? ea : estimate(a, c, method, tau, m);
-                    scan_csv << c << ',' << analysis::method_name(method) << ',' << tau << ',' << m << ','
-                             << sb_e.per_s << ',' << sa_e.per_s << ',' << sa_e.per_s / sb_e.per_s << ','
-                             << sb_e.resolved << ',' << sa_e.resolved << '\n';
+                    scan_csv << c << ',' << analysis::method_name(method) << ',' << tau << ',' << m << ',' << sb_e.per_s
+                             << ',' << sa_e.per_s << ',' << sa_e.per_s / sb_e.per_s << ',' << sb_e.resolved << ','
+                             << sa_e.resolved << '\n';
                     Json s               = Json::object();
                     s["channel"]         = c;
                     s["method"]          = analysis::method_name(method);
@@ -402,26 +421,28 @@ namespace wearlink::workflows
         if (const auto &se = settings.simulation_exponents)
           {
             const double ratio = se->after / se->before;
-            md << "| state (simulation) | two-trajectory | – | – | " << format_number(se->before, 3) << " | " << format_number(se->after, 3)
-               << " | " << format_number(ratio, 3) << " | – | –" << (have_published ? " | | |" : "") << " |\n";
+            md << "| state (simulation) | two-trajectory | – | – | " << format_number(se->before, 3) << " | "
+               << format_number(se->after, 3) << " | " << format_number(ratio, 3) << " | – | –"
+               << (have_published ? " | | |" : "") << " |\n";
             md << "\nThe two-trajectory row is the exponent of the simulated model itself, no embedding: a "
                   "shadow copy d0 = "
-               << format_number(se->separation, 3) << " m away, renormalized every " << format_number(se->interval, 3) << " s, over "
-               << format_number(se->duration, 3) << " s of each state, relative tolerance " << format_number(se->tolerance, 3) << ".\n";
+               << format_number(se->separation, 3) << " m away, renormalized every " << format_number(se->interval, 3)
+               << " s, over " << format_number(se->duration, 3) << " s of each state, relative tolerance "
+               << format_number(se->tolerance, 3) << ".\n";
             csv << "state,two-trajectory,,," << se->before << ',' << se->after << ',' << ratio << ",,,1,1,,\n";
-            Json r                   = Json::object();
-            r["channel"]             = "state";
-            r["method"]              = "two-trajectory";
-            r["before_per_s"]        = se->before;
-            r["after_per_s"]         = se->after;
-            r["separation_m"]        = se->separation;
+            Json r                          = Json::object();
+            r["channel"]                    = "state";
+            r["method"]                     = "two-trajectory";
+            r["before_per_s"]               = se->before;
+            r["after_per_s"]                = se->after;
+            r["separation_m"]               = se->separation;
             r["renormalization_interval_s"] = se->interval;
-            r["relative_tolerance"]  = se->tolerance;
-            r["duration_s"]          = se->duration;
-            r["unit"]                = "1/s (natural log)";
+            r["relative_tolerance"]         = se->tolerance;
+            r["duration_s"]                 = se->duration;
+            r["unit"]                       = "1/s (natural log)";
             lle.push_back(r);
           }
-        json["lyapunov"] = lle;
+        json["lyapunov"]   = lle;
         const bool scanned = !settings.delay_scan.empty() && !settings.methods.empty();
         if (scanned)
           {
@@ -431,12 +452,14 @@ namespace wearlink::workflows
                   "wear.\n\n| channel | method | delay [s] | before [1/s] | after [1/s] | after / before |\n"
                   "|---|---|---|---|---|---|\n";
             for (std::size_t k = 0; k < scan.size(); ++k)
-              md << "| " << scan[k].at("channel").get<std::string>() << " | " << scan[k].at("method").get<std::string>() << " | "
-                 << format_number(json_number(scan[k].at("delay_s")), 3) << " | " << format_number(json_number(scan[k].at("before_per_s")), 3)
+              md << "| " << scan[k].at("channel").get<std::string>() << " | " << scan[k].at("method").get<std::string>()
+                 << " | " << format_number(json_number(scan[k].at("delay_s")), 3) << " | "
+                 << format_number(json_number(scan[k].at("before_per_s")), 3)
                  << (scan[k].at("before_resolved").get<bool>() ? "" : " (unresolved)") << " | "
                  << format_number(json_number(scan[k].at("after_per_s")), 3)
                  << (scan[k].at("after_resolved").get<bool>() ? "" : " (unresolved)") << " | "
-                 << format_number(json_number(scan[k].at("after_per_s")) / json_number(scan[k].at("before_per_s")), 3) << " |\n";
+                 << format_number(json_number(scan[k].at("after_per_s")) / json_number(scan[k].at("before_per_s")), 3)
+                 << " |\n";
           }
         if (!settings.published.empty())
           md << "\nPublished values: " << settings.published_note << "\n";
@@ -448,10 +471,13 @@ namespace wearlink::workflows
               {
                 write_file_atomically(dir + "before_after_delay_scan.csv", scan_csv.str());
                 files.push_back("before_after_delay_scan.csv");
-                if (io::plot_panels_png(scan_panels, 2,
-                                    "Largest Lyapunov exponent vs embedding delay, before (blue) and after (red) "
-                                    "wear; solid rosenstein, dashed wolf; unresolved estimates left out",
-                                    dir + "before_after_delay_scan.png", 1600, 700))
+                if (io::plot_panels_png(scan_panels,
+                                        2,
+                                        "Largest Lyapunov exponent vs embedding delay, before (blue) and after (red) "
+                                        "wear; solid rosenstein, dashed wolf; unresolved estimates left out",
+                                        dir + "before_after_delay_scan.png",
+                                        1600,
+                                        700))
                   files.push_back("before_after_delay_scan.png");
               }
           }

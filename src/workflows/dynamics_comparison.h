@@ -46,12 +46,12 @@ namespace wearlink::workflows
    */
   struct SimulationExponents
   {
-    double before = 0.0;    ///< [1/s]
-    double after  = 0.0;    ///< [1/s]
-    double separation = 0.0;  ///< d0 [m]
-    double interval   = 0.0;  ///< renormalization interval τ [s]
-    double tolerance  = 0.0;  ///< relative tolerance of both runs
-    double duration   = 0.0;  ///< measured time of each run [s]
+    double before     = 0.0; ///< [1/s]
+    double after      = 0.0; ///< [1/s]
+    double separation = 0.0; ///< d0 [m]
+    double interval   = 0.0; ///< renormalization interval τ [s]
+    double tolerance  = 0.0; ///< relative tolerance of both runs
+    double duration   = 0.0; ///< measured time of each run [s]
   };
 
   struct DynamicsComparisonSettings
@@ -72,7 +72,7 @@ namespace wearlink::workflows
     std::vector<std::string> bodies;
     /** Published exponents to print next to ours, and where they come from. */
     std::vector<analysis::PublishedExponents> published;
-    std::string                     published_note;
+    std::string                               published_note;
     /** If set, the two-trajectory exponents of both states (one row "state"). */
     std::optional<SimulationExponents> simulation_exponents;
   };
@@ -93,8 +93,8 @@ namespace wearlink::workflows
    * is missing from a recording, or a delay is shorter than a sample interval.
    */
   DynamicsComparison
-  compare_dynamics(const ComparedRun &               before,
-                   const ComparedRun &               after,
+  compare_dynamics(const ComparedRun                &before,
+                   const ComparedRun                &after,
                    const DynamicsComparisonSettings &settings,
-                   const std::string &               output_directory);
+                   const std::string                &output_directory);
 } // namespace wearlink::workflows

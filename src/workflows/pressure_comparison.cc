@@ -4,10 +4,10 @@
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "io/plot.h"
-#include "workflows/run.h"
-#include "workflows/wear_run.h"
 #include "wear/archard.h"
 #include "wear/load_recorder.h"
+#include "workflows/run.h"
+#include "workflows/wear_run.h"
 
 #include <algorithm>
 #include <chrono>
@@ -50,7 +50,7 @@ namespace wearlink::workflows
       if (!contact::pressure_models().has(m))
         throw InputError("compare-pressure: unknown pressure model '" + m + "'; the valid names are " +
                          contact::pressure_models().pattern() + ".");
-    const double period = cycle_period(scene);
+    const double                                 period = cycle_period(scene);
     std::vector<const contact::ClearanceJoint *> joints;
     for (const auto &w : scene.wear)
       for (const auto *j : scene.clearance_joints)
@@ -69,11 +69,11 @@ namespace wearlink::workflows
     c.cycles = cycles;
     for (unsigned int i = 0; i < joints.size(); ++i)
       {
-        const auto &w = *scene.wear[i];
+        const auto                        &w = *scene.wear[i];
         std::vector<PressureComparisonRow> rows;
         for (const auto &m : models)
           {
-            const auto t0 = std::chrono::steady_clock::now();
+            const auto      t0 = std::chrono::steady_clock::now();
             ParameterReader reader(*scene.parameters, scene.file);
             reader.enter("Joint " + w.joint);
             reader.enter("Clearance");
@@ -83,8 +83,10 @@ namespace wearlink::workflows
             const auto &g = joints[i]->get_description().geometry;
             model->update_geometry(g);
             wear::ArchardAccumulator acc(g, w.archard.bushing_coefficient, w.archard.pin_coefficient, *model);
-            acc.add_history(rec.samples(i), scene.wear_loop.evaluation == wear::PressureEvaluation::every_step,
-                            period / scene.wear_loop.samples_per_cycle, scene.start_time);
+            acc.add_history(rec.samples(i),
+                            scene.wear_loop.evaluation == wear::PressureEvaluation::every_step,
+                            period / scene.wear_loop.samples_per_cycle,
+                            scene.start_time);
             PressureComparisonRow r;
             r.joint          = w.joint;
             r.model          = m;
@@ -116,18 +118,16 @@ namespace wearlink::workflows
     const std::string  ref = rows.empty() ? "" : rows.back().model;
     os << "Same load history (" << cycles << " cycles) through each pressure model; Archard on both surfaces.\n"
        << "L2 difference: ‖h − h_" << ref << "‖/‖h_" << ref << "‖ of the depth profiles.\n\n";
-    os << std::left << std::setw(6) << "joint" << std::setw(13) << "model" << std::right << std::setw(13)
-       << "V_pin mm³" << std::setw(13) << "V_bush mm³" << std::setw(14) << "kFs_pin mm³" << std::setw(12)
-       << "h_pin µm" << std::setw(9) << "at deg" << std::setw(12) << "h_bush µm" << std::setw(9) << "at deg"
-       << std::setw(11) << "L2 pin" << std::setw(11) << "L2 bush" << std::setw(10) << "evals" << std::setw(10)
-       << "wall s" << '\n';
+    os << std::left << std::setw(6) << "joint" << std::setw(13) << "model" << std::right << std::setw(13) << "V_pin mm³"
+       << std::setw(13) << "V_bush mm³" << std::setw(14) << "kFs_pin mm³" << std::setw(12) << "h_pin µm" << std::setw(9)
+       << "at deg" << std::setw(12) << "h_bush µm" << std::setw(9) << "at deg" << std::setw(11) << "L2 pin"
+       << std::setw(11) << "L2 bush" << std::setw(10) << "evals" << std::setw(10) << "wall s" << '\n';
     for (const auto &r : rows)
       os << std::left << std::setw(6) << r.joint << std::setw(13) << r.model << std::right << std::scientific
          << std::setprecision(4) << std::setw(13) << r.volume_pin * 1e9 << std::setw(13) << r.volume_bore * 1e9
-         << std::setw(14) << r.archard_volume * 1e9 << std::setprecision(3) << std::setw(12)
-         << r.max_depth_pin * 1e6 << std::fixed << std::setprecision(1) << std::setw(9) << r.peak_angle_pin
-         << std::scientific << std::setprecision(3) << std::setw(12) << r.max_depth_bore * 1e6 << std::fixed
-         << std::setprecision(1)
+         << std::setw(14) << r.archard_volume * 1e9 << std::setprecision(3) << std::setw(12) << r.max_depth_pin * 1e6
+         << std::fixed << std::setprecision(1) << std::setw(9) << r.peak_angle_pin << std::scientific
+         << std::setprecision(3) << std::setw(12) << r.max_depth_bore * 1e6 << std::fixed << std::setprecision(1)
          << std::setw(9) << r.peak_angle_bore << std::setprecision(3) << std::setw(11) << r.difference_pin
          << std::setw(11) << r.difference_bore << std::setw(10) << r.evaluations << std::setprecision(2)
          << std::setw(10) << r.wall_time << '\n';

@@ -20,19 +20,19 @@ namespace wearlink::workflows
   struct PressureComparisonRow
   {
     std::string         joint, model;
-    double              volume_pin = 0, volume_bore = 0;     ///< Σ h A over the history [m³]
-    double              archard_volume = 0;                  ///< k_D,pin ∫ F |v| dt [m³]
-    double              max_depth_pin = 0, max_depth_bore = 0; ///< [m]
+    double              volume_pin = 0, volume_bore = 0;         ///< Σ h A over the history [m³]
+    double              archard_volume = 0;                      ///< k_D,pin ∫ F |v| dt [m³]
+    double              max_depth_pin = 0, max_depth_bore = 0;   ///< [m]
     double              peak_angle_pin = 0, peak_angle_bore = 0; ///< body frames [deg]
     double              difference_pin = 0, difference_bore = 0; ///< ‖h − h_ref‖/‖h_ref‖
-    double              wall_time = 0;                       ///< set-up + evaluations [s]
+    double              wall_time   = 0;                         ///< set-up + evaluations [s]
     long                evaluations = 0;
-    std::vector<double> depth_pin, depth_bore;               ///< [m] per area
+    std::vector<double> depth_pin, depth_bore; ///< [m] per area
   };
 
   struct PressureComparison
   {
-    double                             cycles = 0;  ///< simulated cycles
+    double                             cycles = 0; ///< simulated cycles
     std::vector<PressureComparisonRow> rows;
     /** The table as text (what the command prints). */
     std::string

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/run.h"
 
-#include "workflows/analyses.h"
-
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "mbs/assembly.h"
+#include "workflows/analyses.h"
 
 #include <algorithm>
 #include <chrono>
@@ -65,7 +64,7 @@ namespace wearlink::workflows
       void
       on_start(const mbs::StepContext &c) override
       {
-        const auto  n = mech.n_coordinates();
+        const auto n  = mech.n_coordinates();
         energy_start  = mech.kinetic_energy(c.y.data() + n) + mech.potential_energy(c.y.data(), c.y.data() + n);
         t_start       = c.t;
         next_sample   = c.t;
@@ -107,10 +106,11 @@ namespace wearlink::workflows
                 long impacts = 0;
                 for (unsigned int i = 0; i < joints.size(); ++i)
                   impacts += scene.clearance_joints[i]->n_impacts() - joints[i].impacts_at_start;
-                const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+                const double wall =
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
                 std::cerr << "[wearlink] " << std::setw(3) << static_cast<int>(std::round(100 * fraction))
-                          << "%  t = " << c.t << " s  steps " << steps << "  impacts " << impacts
-                          << "  wall " << std::setprecision(3) << wall << " s\n"
+                          << "%  t = " << c.t << " s  steps " << steps << "  impacts " << impacts << "  wall "
+                          << std::setprecision(3) << wall << " s\n"
                           << std::setprecision(6);
                 next_progress += 0.1;
               }
@@ -137,55 +137,54 @@ namespace wearlink::workflows
       Json
       summary(const mbs::Simulation &sim, double wall_time) const
       {
-        Json s = Json::object();
-        s["scene"]                  = scene.file;
-        s["title"]                  = scene.title;
-        s["wall_time_s"]            = wall_time;
-        s["simulated_time_s"]       = sim.time() - t_start;
-        s["integrator"]             = scene.simulation.integrator.type == mbs::IntegratorType::rk4 ? "rk4" : "dopri5";
-        s["steps"]                  = sim.get_integrator().n_accepted;
-        s["rejected_steps"]         = sim.get_integrator().n_rejected;
-        s["rhs_evaluations"]        = rhs_evaluations();
-        s["contact_events"]         = sim.n_events();
-        s["event_restarts"]         = sim.n_event_restarts();
+        Json s                = Json::object();
+        s["scene"]            = scene.file;
+        s["title"]            = scene.title;
+        s["wall_time_s"]      = wall_time;
+        s["simulated_time_s"] = sim.time() - t_start;
+        s["integrator"]       = scene.simulation.integrator.type == mbs::IntegratorType::rk4 ? "rk4" : "dopri5";
+        s["steps"]            = sim.get_integrator().n_accepted;
+        s["rejected_steps"]   = sim.get_integrator().n_rejected;
+        s["rhs_evaluations"]  = rhs_evaluations();
+        s["contact_events"]   = sim.n_events();
+        s["event_restarts"]   = sim.n_event_restarts();
         s["max_constraint_violation_m"] = max_violation;
 
         // Energy balance: ΔT + ΔV = W_reactions − D_damping − D_friction, with the
         // error relative to the energy that flowed (∫|P_reactions| dt + dissipation).
-        const auto &y = sim.state();
-        const auto  n = mech.n_coordinates();
-        const auto  z = 2 * n;
-        using Q       = mbs::MechanismOde;
+        const auto &y          = sim.state();
+        const auto  n          = mech.n_coordinates();
+        const auto  z          = 2 * n;
+        using Q                = mbs::MechanismOde;
         const double kinetic   = mech.kinetic_energy(y.data() + n);
         const double potential = mech.potential_energy(y.data(), y.data() + n);
-        const double throughput = y[z + Q::reaction_work_abs] + y[z + Q::damping_dissipation] +
-                                  y[z + Q::friction_dissipation];
-        Json e = Json::object();
-        e["kinetic_J"]              = kinetic;
-        e["potential_J"]            = potential;
-        e["change_J"]               = kinetic + potential - energy_start;
-        e["reaction_work_J"]        = y[z + Q::reaction_work];
-        e["reaction_work_abs_J"]    = y[z + Q::reaction_work_abs];
-        e["damping_dissipation_J"]  = y[z + Q::damping_dissipation];
-        e["friction_dissipation_J"] = y[z + Q::friction_dissipation];
-        e["max_residual_J"]         = max_energy_residual;
-        s["energy"]                 = e;
-        s["energy_balance_relative_error"] =
-          throughput > 0 ? max_energy_residual / throughput : max_energy_residual;
+        const double throughput =
+          y[z + Q::reaction_work_abs] + y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation];
+        Json e                             = Json::object();
+        e["kinetic_J"]                     = kinetic;
+        e["potential_J"]                   = potential;
+        e["change_J"]                      = kinetic + potential - energy_start;
+        e["reaction_work_J"]               = y[z + Q::reaction_work];
+        e["reaction_work_abs_J"]           = y[z + Q::reaction_work_abs];
+        e["damping_dissipation_J"]         = y[z + Q::damping_dissipation];
+        e["friction_dissipation_J"]        = y[z + Q::friction_dissipation];
+        e["max_residual_J"]                = max_energy_residual;
+        s["energy"]                        = e;
+        s["energy_balance_relative_error"] = throughput > 0 ? max_energy_residual / throughput : max_energy_residual;
 
         Json b = Json::object();
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
           {
-            const auto &x = bodies[i];
-            Json        o = Json::object();
-            o["min_x_m"]         = x.min_x;
-            o["max_x_m"]         = x.max_x;
-            o["min_y_m"]         = x.min_y;
-            o["max_y_m"]         = x.max_y;
-            o["max_abs_vx_m_s"]  = x.max_vx;
-            o["max_abs_vy_m_s"]  = x.max_vy;
-            o["max_abs_ax_m_s2"] = x.max_ax;
-            o["max_abs_ay_m_s2"] = x.max_ay;
+            const auto &x                = bodies[i];
+            Json        o                = Json::object();
+            o["min_x_m"]                 = x.min_x;
+            o["max_x_m"]                 = x.max_x;
+            o["min_y_m"]                 = x.min_y;
+            o["max_y_m"]                 = x.max_y;
+            o["max_abs_vx_m_s"]          = x.max_vx;
+            o["max_abs_vy_m_s"]          = x.max_vy;
+            o["max_abs_ax_m_s2"]         = x.max_ax;
+            o["max_abs_ay_m_s2"]         = x.max_ay;
             b[mech.get_bodies()[i].name] = o;
           }
         s["bodies"] = b;
@@ -193,9 +192,9 @@ namespace wearlink::workflows
         Json j = Json::object();
         for (unsigned int i = 0; i < joints.size(); ++i)
           {
-            const auto *cj = scene.clearance_joints[i];
-            const auto &x  = joints[i];
-            Json        o  = Json::object();
+            const auto *cj            = scene.clearance_joints[i];
+            const auto &x             = joints[i];
+            Json        o             = Json::object();
             o["radial_clearance_m"]   = cj->radial_clearance();
             o["stiffness_N_m1.5"]     = cj->stiffness();
             o["max_normal_force_N"]   = x.max_normal_force;
@@ -204,7 +203,7 @@ namespace wearlink::workflows
             o["fraction_in_contact"]  = x.contact_time / std::max(1e-300, sim.time() - t_start);
             o["impacts"]              = cj->n_impacts() - x.impacts_at_start;
             o["force_evaluations"]    = cj->n_force_evaluations() - x.evaluations_at_start;
-            j[cj->name()] = o;
+            j[cj->name()]             = o;
           }
         s["clearance_joints"] = j;
         return s;
@@ -217,7 +216,7 @@ namespace wearlink::workflows
         const auto n = mech.n_coordinates();
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
           {
-            auto &x = bodies[i];
+            auto &x  = bodies[i];
             x.min_x  = std::min(x.min_x, y[3 * i]);
             x.max_x  = std::max(x.max_x, y[3 * i]);
             x.min_y  = std::min(x.min_y, y[3 * i + 1]);
@@ -231,8 +230,8 @@ namespace wearlink::workflows
         const mbs::StateView s(y.data(), y.data() + n);
         for (unsigned int k = 0; k < joints.size(); ++k)
           {
-            const auto d  = scene.clearance_joints[k]->diagnostics(s);
-            auto &     js = joints[k];
+            const auto d          = scene.clearance_joints[k]->diagnostics(s);
+            auto      &js         = joints[k];
             js.max_normal_force   = std::max(js.max_normal_force, d.normal_force);
             js.max_friction_force = std::max(js.max_friction_force, std::abs(d.friction_force));
             js.max_penetration    = std::max(js.max_penetration, d.penetration);
@@ -240,11 +239,11 @@ namespace wearlink::workflows
             js.contact_time += 0.5 * h * ((in ? 1 : 0) + (js.was_in_contact ? 1 : 0));
             js.was_in_contact = in;
           }
-        using Q = mbs::MechanismOde;
+        using Q               = mbs::MechanismOde;
         const auto   z        = 2 * n;
         const double energy   = mech.kinetic_energy(y.data() + n) + mech.potential_energy(y.data(), y.data() + n);
-        const double residual = energy - energy_start - y[z + Q::reaction_work] +
-                                y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation];
+        const double residual = energy - energy_start - y[z + Q::reaction_work] + y[z + Q::damping_dissipation] +
+                                y[z + Q::friction_dissipation];
         max_energy_residual = std::max(max_energy_residual, std::abs(residual));
         (void)t;
       }
@@ -255,13 +254,26 @@ namespace wearlink::workflows
         auto &os = *csv;
         os << "time_s";
         for (const auto &b : mech.get_bodies())
-          for (const char *q : {"_x_m", "_y_m", "_theta_rad", "_vx_m_s", "_vy_m_s",
-                                "_omega_rad_s", "_ax_m_s2", "_ay_m_s2", "_alpha_rad_s2"})
+          for (const char *q : {"_x_m",
+                                "_y_m",
+                                "_theta_rad",
+                                "_vx_m_s",
+                                "_vy_m_s",
+                                "_omega_rad_s",
+                                "_ax_m_s2",
+                                "_ay_m_s2",
+                                "_alpha_rad_s2"})
             os << ',' << b.name << q;
         for (const auto *j : scene.clearance_joints)
-          for (const char *q : {"_ex_m", "_ey_m", "_ex_local_m", "_ey_local_m",
-                                "_penetration_m", "_normal_force_N", "_friction_force_N",
-                                "_sliding_velocity_m_s", "_contact_angle_rad"})
+          for (const char *q : {"_ex_m",
+                                "_ey_m",
+                                "_ex_local_m",
+                                "_ey_local_m",
+                                "_penetration_m",
+                                "_normal_force_N",
+                                "_friction_force_N",
+                                "_sliding_velocity_m_s",
+                                "_contact_angle_rad"})
             os << ',' << j->name() << q;
         for (const auto d : scene.drivers)
           os << ',' << mech.get_constraints()[d]->name << "_torque_N_m";
@@ -272,7 +284,7 @@ namespace wearlink::workflows
       void
       sample(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, const Eigen::VectorXd &lambda)
       {
-        auto &     os = *csv;
+        auto      &os = *csv;
         const auto n  = mech.n_coordinates();
         os << t;
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
@@ -288,34 +300,32 @@ namespace wearlink::workflows
         for (const auto *j : scene.clearance_joints)
           {
             const auto d = j->diagnostics(s);
-            os << ',' << d.eccentricity.x() << ',' << d.eccentricity.y() << ','
-               << d.local_eccentricity.x() << ',' << d.local_eccentricity.y() << ','
-               << d.penetration << ',' << d.normal_force << ',' << d.friction_force << ','
-               << d.sliding_velocity << ',' << d.contact_angle;
+            os << ',' << d.eccentricity.x() << ',' << d.eccentricity.y() << ',' << d.local_eccentricity.x() << ','
+               << d.local_eccentricity.y() << ',' << d.penetration << ',' << d.normal_force << ',' << d.friction_force
+               << ',' << d.sliding_velocity << ',' << d.contact_angle;
           }
         // The driver applies −λ to body 2's rotation (Φq row +1 on θ2).
         for (const auto d : scene.drivers)
           os << ',' << -lambda[mech.constraint_row(d)];
         using Q      = mbs::MechanismOde;
         const auto z = 2 * n;
-        os << ',' << mech.kinetic_energy(y.data() + n) << ','
-           << mech.potential_energy(y.data(), y.data() + n) << ',' << y[z + Q::reaction_work]
-           << ',' << y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation] << '\n';
+        os << ',' << mech.kinetic_energy(y.data() + n) << ',' << mech.potential_energy(y.data(), y.data() + n) << ','
+           << y[z + Q::reaction_work] << ',' << y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation] << '\n';
       }
 
-      io::Scene &                    scene;
-      mbs::Mechanism &           mech;
-      std::ostream *             csv;
-      double                     interval;
-      bool                       progress;
-      std::vector<BodyExtremes>  bodies;
-      std::vector<JointStatistics> joints;
-      double                     energy_start = 0, t_start = 0, next_sample = 0;
-      long                       n_samples = 0, steps = 0, rhs_at_start = 0;
-      double                     max_violation = 0, max_energy_residual = 0;
-      double                     next_progress = 0.1;
+      io::Scene                            &scene;
+      mbs::Mechanism                       &mech;
+      std::ostream                         *csv;
+      double                                interval;
+      bool                                  progress;
+      std::vector<BodyExtremes>             bodies;
+      std::vector<JointStatistics>          joints;
+      double                                energy_start = 0, t_start = 0, next_sample = 0;
+      long                                  n_samples = 0, steps = 0, rhs_at_start = 0;
+      double                                max_violation = 0, max_energy_residual = 0;
+      double                                next_progress = 0.1;
       std::chrono::steady_clock::time_point wall_start;
-      Eigen::VectorXd            y_sample, f_sample;
+      Eigen::VectorXd                       y_sample, f_sample;
     };
   } // namespace
 
@@ -328,7 +338,7 @@ namespace wearlink::workflows
   Json
   run_scene(io::Scene &scene, const RunOptions &options)
   {
-    const auto wall_start = std::chrono::steady_clock::now();
+    const auto      wall_start = std::chrono::steady_clock::now();
     Eigen::VectorXd q0, v0;
     if (options.initial_state == nullptr)
       assemble_scene(scene, q0, v0);
@@ -351,8 +361,8 @@ namespace wearlink::workflows
     Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
     std::unique_ptr<SceneAnalyses> analyses;
     if (options.analyses)
-      analyses = std::make_unique<SceneAnalyses>(scene, options.analyses_settings ? *options.analyses_settings :
-                                                                                      scene.analyses);
+      analyses =
+        std::make_unique<SceneAnalyses>(scene, options.analyses_settings ? *options.analyses_settings : scene.analyses);
     std::vector<mbs::StepObserver *> observers{&recorder};
     if (analyses)
       for (auto *o : analyses->observers())
@@ -368,11 +378,11 @@ namespace wearlink::workflows
     const Json analyses_summary = analyses ? analyses->finish(options.output_directory) : Json();
     if (analyses && options.recorded != nullptr)
       *options.recorded = analyses->recorded_run();
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    Json summary = recorder.summary(sim, wall);
+    const double wall    = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    Json         summary = recorder.summary(sim, wall);
     if (analyses_summary.is_null() == false)
       summary["analyses"] = analyses_summary;
-    Json ledger  = Json::object();
+    Json ledger = Json::object();
     for (const auto &[category, entries] : EffectLedger::instance().snapshot())
       {
         Json c = Json::object();

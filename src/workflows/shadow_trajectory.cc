@@ -44,7 +44,7 @@ namespace wearlink::workflows
           {
             // First displacement: d0 along the same direction in every velocity
             // coordinate (deterministic; its constraint-violating part decays).
-            Eigen::VectorXd y0 = y_ref;
+            Eigen::VectorXd y0    = y_ref;
             const double    scale = settings.velocity_scale > 0.0 ? settings.velocity_scale : 1.0;
             y0.segment(n_coordinates, n_coordinates).array() +=
               settings.separation / (scale * std::sqrt(static_cast<double>(n_coordinates)));

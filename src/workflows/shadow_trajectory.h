@@ -87,7 +87,7 @@ namespace wearlink::workflows
     distance(const Eigen::VectorXd &a, const Eigen::VectorXd &b) const;
 
     ShadowTrajectorySettings         settings;
-    std::unique_ptr<io::Scene>           shadow_scene;
+    std::unique_ptr<io::Scene>       shadow_scene;
     std::unique_ptr<mbs::Simulation> shadow;
     unsigned int                     n_coordinates = 0;
     double                           next_time     = 0.0;

@@ -50,17 +50,20 @@ namespace wearlink::workflows
      * (bore_<J>.csv, pin_<J>.csv). Outputs in DIR/exponent_before, DIR/exponent_after.
      */
     SimulationExponents
-    two_trajectory_exponents(const io::Scene &scene, const wear::WearState &st, const std::string &dir, const bool progress)
+    two_trajectory_exponents(const io::Scene       &scene,
+                             const wear::WearState &st,
+                             const std::string     &dir,
+                             const bool             progress)
     {
-      const auto &a      = scene.analyses;
-      const auto &is     = scene.simulation.integrator;
-      const double scale = a.two_trajectory_tolerance / is.relative_tolerance;
-      const double T     = io::driving_period(scene);
+      const auto         &a     = scene.analyses;
+      const auto         &is    = scene.simulation.integrator;
+      const double        scale = a.two_trajectory_tolerance / is.relative_tolerance;
+      const double        T     = io::driving_period(scene);
       SimulationExponents out;
-      out.separation = a.two_trajectory_separation;
-      out.interval   = a.renormalization_interval;
-      out.tolerance  = a.two_trajectory_tolerance;
-      out.duration   = a.two_trajectory_cycles * T;
+      out.separation            = a.two_trajectory_separation;
+      out.interval              = a.renormalization_interval;
+      out.tolerance             = a.two_trajectory_tolerance;
+      out.duration              = a.two_trajectory_cycles * T;
       const std::string abs_dir = std::filesystem::absolute(dir).string();
       for (int k = 0; k < 2; ++k)
         {
@@ -89,11 +92,11 @@ namespace wearlink::workflows
             std::cerr << "[wearlink] two-trajectory exponent " << (k == 0 ? "before" : "after") << " wear, "
                       << a.two_trajectory_cycles << " periods at relative tolerance " << a.two_trajectory_tolerance
                       << "\n";
-          io::Scene      s = io::read_scene(scene.file, o);
+          io::Scene  s = io::read_scene(scene.file, o);
           RunOptions ro;
           ro.output_directory = dir + (k == 0 ? "/exponent_before" : "/exponent_after");
           ro.progress         = progress;
-          const Json summary  = run_scene(s, ro);
+          const Json  summary = run_scene(s, ro);
           const Json &l       = summary.at("analyses").at("lyapunov");
           for (std::size_t i = 0; i < l.size(); ++i)
             if (l[i].at("method").get<std::string>() == "two-trajectory")
@@ -109,19 +112,19 @@ namespace wearlink::workflows
      * are left with the worn profiles.
      */
     DynamicsComparison
-    before_after_dynamics(io::Scene &                                      scene,
-                          const wear::WearState &                      st,
+    before_after_dynamics(io::Scene                                    &scene,
+                          const wear::WearState                        &st,
                           const std::vector<contact::ClearanceJoint *> &joints,
-                          const std::string &                          dir,
-                          const bool                                   progress)
+                          const std::string                            &dir,
+                          const bool                                    progress)
     {
       ComparedRun       runs[2];
       const char *const names[2] = {"before", "after"};
       // The shadow trajectory needs its own tolerance and the profiles as files (it
       // reads the scene again): separate runs below, not these.
-      const bool       two_trajectory = scene.analyses.lyapunov && scene.analyses.two_trajectory;
+      const bool                 two_trajectory = scene.analyses.lyapunov && scene.analyses.two_trajectory;
       analysis::AnalysesSettings without_shadow = scene.analyses;
-      without_shadow.two_trajectory   = false;
+      without_shadow.two_trajectory             = false;
       for (int k = 0; k < 2; ++k)
         {
           for (unsigned int i = 0; i < joints.size(); ++i)
@@ -130,30 +133,31 @@ namespace wearlink::workflows
           for (auto *j : scene.clearance_joints)
             j->set_mode(false, 0);
           if (progress)
-            std::cerr << "[wearlink] dynamics " << names[k] << " wear with the scene's analyses, t = "
-                      << scene.start_time << " … " << scene.end_time << " s\n";
+            std::cerr << "[wearlink] dynamics " << names[k]
+                      << " wear with the scene's analyses, t = " << scene.start_time << " … " << scene.end_time
+                      << " s\n";
           RunOptions ro;
-          ro.output_directory = dir.empty() ? std::string() : dir + "/dynamics_" + names[k];
-          ro.progress         = progress;
-          ro.recorded         = &runs[k].run;
+          ro.output_directory  = dir.empty() ? std::string() : dir + "/dynamics_" + names[k];
+          ro.progress          = progress;
+          ro.recorded          = &runs[k].run;
           ro.analyses_settings = &without_shadow;
-          runs[k].summary     = run_scene(scene, ro);
+          runs[k].summary      = run_scene(scene, ro);
           std::ostringstream label;
           label << (k == 0 ? "before wear" : "after wear");
           if (k == 1)
             label << " (" << std::setprecision(6) << st.revolutions << " rev)";
           runs[k].run.label = label.str();
         }
-      const auto &             a = scene.analyses;
+      const auto                &a = scene.analyses;
       DynamicsComparisonSettings cs;
       cs.joints     = a.joints;
       cs.directions = a.directions;
       if (a.lyapunov)
         cs.methods = a.methods;
-      cs.delay          = a.comparison_delay;
-      cs.dimension      = a.comparison_dimension;
-      cs.delay_scan     = a.delay_scan;
-      cs.bodies         = a.bodies;
+      cs.delay                   = a.comparison_delay;
+      cs.dimension               = a.comparison_dimension;
+      cs.delay_scan              = a.delay_scan;
+      cs.bodies                  = a.bodies;
       const std::string response = scene.mechanism->get_bodies()[io::response_body(scene)].name;
       if (!response.empty() && std::find(cs.bodies.begin(), cs.bodies.end(), response) == cs.bodies.end())
         cs.bodies.push_back(response);
@@ -181,7 +185,9 @@ namespace wearlink::workflows
     wear::AdvanceDynamics
     dynamics_of(io::Scene &scene)
     {
-      return [&scene](const double t0, const double t1, const Eigen::VectorXd &y0,
+      return [&scene](const double                            t0,
+                      const double                            t1,
+                      const Eigen::VectorXd                  &y0,
                       const std::vector<mbs::StepObserver *> &observers) {
         Eigen::VectorXd y1;
         RunOptions      ro;
@@ -198,21 +204,26 @@ namespace wearlink::workflows
 
     /** Start @p loop from the scene's assembly, or resume it from its checkpoint. */
     void
-    start_or_resume(wear::WearLoop &loop, io::Scene &scene, const WearRunOptions &options, const std::string &checkpoint)
+    start_or_resume(wear::WearLoop       &loop,
+                    io::Scene            &scene,
+                    const WearRunOptions &options,
+                    const std::string    &checkpoint)
     {
       if (options.resume)
         {
           auto st = wear::WearState::read(checkpoint);
           if (st.fingerprint != fingerprint(scene))
-            throw InputError("Cannot resume from '" + checkpoint + "': it was written for a different scene "
-                             "(or different parameters) than " + scene.file +
+            throw InputError("Cannot resume from '" + checkpoint +
+                             "': it was written for a different scene "
+                             "(or different parameters) than " +
+                             scene.file +
                              ". Only Wear/Number of iterations and Wear/Target revolutions may "
                              "change on resume.");
           const auto n = scene.mechanism->n_coordinates();
           if (st.state.size() != static_cast<Eigen::Index>(2 * n + mbs::MechanismOde::n_quadratures))
             throw InputError("Cannot resume from '" + checkpoint + "': its state has " +
-                             std::to_string(st.state.size()) + " entries, the mechanism of " + scene.file +
-                             " needs " + std::to_string(2 * n + mbs::MechanismOde::n_quadratures) + ".");
+                             std::to_string(st.state.size()) + " entries, the mechanism of " + scene.file + " needs " +
+                             std::to_string(2 * n + mbs::MechanismOde::n_quadratures) + ".");
           loop.resume(std::move(st), checkpoint);
           return;
         }
@@ -231,7 +242,7 @@ namespace wearlink::workflows
     void
     print_progress(const wear::WearLoop &loop, const unsigned int n_iterations, const double seconds)
     {
-      const auto &       st = loop.state();
+      const auto        &st = loop.state();
       std::ostringstream os;
       os << "[wearlink] wear iteration " << st.iterations_done << '/' << n_iterations << "  revolutions "
          << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
@@ -252,10 +263,10 @@ namespace wearlink::workflows
       auto &cj = summary["clearance_joints"];
       for (unsigned int i = 0; i < st.joints.size(); ++i)
         {
-          const auto &                js = st.joints[i];
-          const auto &                w  = *scene.wear[i];
+          const auto                 &js = st.joints[i];
+          const auto                 &w  = *scene.wear[i];
           const wear::IterationRecord r  = js.history.empty() ? wear::IterationRecord() : js.history.back();
-          auto &                      o  = cj[js.name];
+          auto                       &o  = cj[js.name];
           o["pressure_model"]            = w.pressure_model;
           o["wear_volume_pin_m3"]        = r.volume_pin;
           o["wear_volume_bushing_m3"]    = r.volume_bore;
@@ -285,8 +296,8 @@ namespace wearlink::workflows
       const bool        write  = !options.output_directory.empty();
       const std::string dir    = options.output_directory;
       const double      period = cycle_period(scene);
-      const auto &      ws     = scene.wear_loop;
-      const auto &      st     = result.state;
+      const auto       &ws     = scene.wear_loop;
+      const auto       &st     = result.state;
       Stopwatch         outputs;
       for (auto *j : scene.clearance_joints)
         j->set_mode(false, 0);
@@ -302,19 +313,19 @@ namespace wearlink::workflows
       if (write)
         {
           io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
-          result.timings.outputs += outputs.seconds();  // the two-trajectory runs read them
+          result.timings.outputs += outputs.seconds();   // the two-trajectory runs read them
         }
       if (scene.analyses.any())
         {
-          Stopwatch  comparison_time;
-          const auto joints     = wearing_joints(scene);
+          Stopwatch                              comparison_time;
+          const auto                             joints = wearing_joints(scene);
           std::vector<contact::ClearanceJoint *> wearing;
           for (const auto &w : joints)
             wearing.push_back(w.joint);
           auto comparison = before_after_dynamics(scene, st, wearing, write ? dir : std::string(), options.progress);
           result.timings.before_after_dynamics = comparison_time.seconds();
-          result.summary["before_after"]        = comparison.json;
-          result.before_after_report            = comparison.report;
+          result.summary["before_after"]       = comparison.json;
+          result.before_after_report           = comparison.report;
         }
     }
 
@@ -364,7 +375,9 @@ namespace wearlink::workflows
 
     WearRunResult        result;
     unsigned int         done_here = 0;
-    io::ResponseRecorder before(*scene.mechanism, io::response_body(scene), period / 400,
+    io::ResponseRecorder before(*scene.mechanism,
+                                io::response_body(scene),
+                                period / 400,
                                 scene.wear_loop.response_cycles * period);
     while (!loop.finished())
       {

@@ -42,7 +42,7 @@ namespace wearlink::workflows
     Json summary;
     /** Wall time by phase [s]. */
     PhaseTimings timings;
-    bool finished = false;
+    bool         finished = false;
     /**
      * If the scene lists analyses: the before/after-wear comparison as Markdown (also in
      * before_after.md; its numbers are in summary["before_after"]).

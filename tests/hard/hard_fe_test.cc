@@ -146,13 +146,13 @@ namespace
 // load — the gmsh mesh is not symmetric, so that is the discretization's asymmetry.
 TEST(HardCasesFe, NonConvexWornBoreWithTwoContactZones)
 {
-  auto geometry = steel_pair();
-  geometry.bore = worn_bore(0.56e-3, 5e-6, 4);
-  auto settings = settings_about_minus_y(50e-6, 40);
+  auto geometry            = steel_pair();
+  geometry.bore            = worn_bore(0.56e-3, 5e-6, 4);
+  auto            settings = settings_about_minus_y(50e-6, 40);
   PinBushingModel model(geometry, settings, mesh_file("hard_two_zones"));
-  const double    F = 2000;
-  const auto      c = model.solve(load_minus_y(F), SolverKind::condensed);
-  const auto      r = model.solve(load_minus_y(F), SolverKind::reference);
+  const double    F         = 2000;
+  const auto      c         = model.solve(load_minus_y(F), SolverKind::condensed);
+  const auto      r         = model.solve(load_minus_y(F), SolverKind::reference);
   double          in_groove = 0, diff = 0;
   for (std::size_t i = 0; i < c.pressure.size(); ++i)
     {
@@ -162,8 +162,8 @@ TEST(HardCasesFe, NonConvexWornBoreWithTwoContactZones)
       diff = std::max(diff, std::abs(c.pressure[i] - r.pressure[i]));
     }
   std::cout << "two-zone bore, 2 kN: zones " << contact_zones(c) << ", half-angle " << c.half_angle * 180 / pi
-            << "°, peak " << c.peak_pressure / 1e6 << " MPa, force inside the groove " << in_groove
-            << " N, residual " << c.equilibrium_relative_residual << ", iterations " << c.iterations << "\n";
+            << "°, peak " << c.peak_pressure / 1e6 << " MPa, force inside the groove " << in_groove << " N, residual "
+            << c.equilibrium_relative_residual << ", iterations " << c.iterations << "\n";
   EXPECT_EQ(contact_zones(c), 2u);
   EXPECT_EQ(in_groove, 0.0);
   EXPECT_LT(c.equilibrium_relative_residual, 1e-9);
@@ -194,8 +194,8 @@ TEST(HardCasesFe, RemeshAfterDeepLocalWear)
   geometry.bore = Profile::from_samples(r, "V pocket");
   PinBushingModel round(steel_pair(), settings_about_minus_y(50e-6, 30), mesh_file("hard_round"));
   PinBushingModel model(geometry, settings_about_minus_y(50e-6, 30), mesh_file("hard_deep_pocket"));
-  const auto      c = model.solve(load_minus_y(500), SolverKind::condensed);
-  const auto      ref = model.solve(load_minus_y(500), SolverKind::reference);
+  const auto      c       = model.solve(load_minus_y(500), SolverKind::condensed);
+  const auto      ref     = model.solve(load_minus_y(500), SolverKind::reference);
   double          outside = 0, diff = 0;
   for (std::size_t i = 0; i < c.pressure.size(); ++i)
     {
@@ -204,10 +204,9 @@ TEST(HardCasesFe, RemeshAfterDeepLocalWear)
         outside += c.force[i];
       diff = std::max(diff, std::abs(c.pressure[i] - ref.pressure[i]));
     }
-  std::cout << "V pocket, 500 N: " << model.statistics().n_dofs << " DoFs (round bore "
-            << round.statistics().n_dofs << "), zones " << contact_zones(c) << ", pin displacement "
-            << c.pin_displacement[1] << " m, peak " << c.peak_pressure / 1e6 << " MPa, residual "
-            << c.equilibrium_relative_residual << "\n";
+  std::cout << "V pocket, 500 N: " << model.statistics().n_dofs << " DoFs (round bore " << round.statistics().n_dofs
+            << "), zones " << contact_zones(c) << ", pin displacement " << c.pin_displacement[1] << " m, peak "
+            << c.peak_pressure / 1e6 << " MPa, residual " << c.equilibrium_relative_residual << "\n";
   EXPECT_GT(model.statistics().n_dofs, round.statistics().n_dofs);
   EXPECT_LT(c.equilibrium_relative_residual, 1e-9);
   EXPECT_EQ(contact_zones(c), 2u);

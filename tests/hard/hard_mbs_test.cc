@@ -29,8 +29,8 @@ namespace
   Json
   run_recording(io::Scene &scene, double interval, std::vector<std::vector<double>> &values)
   {
-    auto *  joint = scene.clearance_joints.at(0);
-    Sampler sampler(interval, [&](double, const Eigen::VectorXd &y, mbs::Simulation &sim) {
+    auto      *joint = scene.clearance_joints.at(0);
+    Sampler    sampler(interval, [&](double, const Eigen::VectorXd &y, mbs::Simulation &sim) {
       const auto n = sim.get_mechanism().n_coordinates();
       const auto d = joint->diagnostics(mbs::StateView(y.data(), y.data() + n));
       return std::vector<double>{d.penetration, d.normal_force, y[n + 1]};
@@ -69,19 +69,20 @@ namespace
 // the last 5 ms).
 TEST(HardCases, ImpactWithAlmostZeroApproachVelocitySettlesOnHertzStatics)
 {
-  const double m = 1.0, g = 9.81;
+  const double        m = 1.0, g = 9.81;
   std::vector<double> settled;
   for (const double rtol : {1e-6, 5e-7})
     {
-      auto scene = wearlink::testing::scene(
-        pendulum, {eccentricity(1e-10), "Integrator/Relative tolerance=" + format_number(rtol),
-                   "Integrator/Position tolerance=" + format_number(1e-4 * rtol)});
-      const double K = scene.clearance_joints.at(0)->stiffness();
+      auto                             scene = wearlink::testing::scene(pendulum,
+                                            {eccentricity(1e-10),
+                                                                         "Integrator/Relative tolerance=" + format_number(rtol),
+                                                                         "Integrator/Position tolerance=" + format_number(1e-4 * rtol)});
+      const double                     K     = scene.clearance_joints.at(0)->stiffness();
       std::vector<std::vector<double>> v;
-      const Json   s         = run_recording(scene, 1e-4, v);
-      const double delta_s   = std::pow(m * g / K, 2.0 / 3.0);
-      double       mean_d = 0, mean_f = 0;
-      unsigned int count = 0;
+      const Json                       s       = run_recording(scene, 1e-4, v);
+      const double                     delta_s = std::pow(m * g / K, 2.0 / 3.0);
+      double                           mean_d = 0, mean_f = 0;
+      unsigned int                     count = 0;
       for (std::size_t k = v.size() - 50; k < v.size(); ++k, ++count)
         {
           mean_d += v[k][0];
@@ -120,24 +121,26 @@ TEST(HardCases, ImpactWithAlmostZeroApproachVelocitySettlesOnHertzStatics)
 // h = 2 µs, 3e-7 at 1 µs: fourth order across the impact).
 TEST(HardCases, ContactOnsetExactlyAtAStepBoundary)
 {
-  const double m = 1.0, g = 9.81, h = 2e-6, t_star = 5000 * h;
-  const double d = 0.5 * g * t_star * t_star, v0 = g * t_star;
+  const double        m = 1.0, g = 9.81, h = 2e-6, t_star = 5000 * h;
+  const double        d = 0.5 * g * t_star * t_star, v0 = g * t_star;
   std::vector<double> peaks;
   for (const std::vector<std::string> &integrator :
        {std::vector<std::string>{"Integrator/Method=rk4", "Integrator/Time step=" + format_number(h)},
         std::vector<std::string>{"Integrator/Method=rk4", "Integrator/Time step=" + format_number(h / 2)},
-        std::vector<std::string>{"Integrator/Method=dopri5", "Integrator/Relative tolerance=1e-9",
-                                 "Integrator/Position tolerance=1e-13", "Integrator/Maximum step=1e-5"}})
+        std::vector<std::string>{"Integrator/Method=dopri5",
+                                 "Integrator/Relative tolerance=1e-9",
+                                 "Integrator/Position tolerance=1e-13",
+                                 "Integrator/Maximum step=1e-5"}})
     {
       auto overrides = integrator;
-      overrides.insert(overrides.end(), {eccentricity(d), "Joint O/Clearance/Normal force law=hertz",
-                                         "Simulation/End time=0.0106"});
+      overrides.insert(overrides.end(),
+                       {eccentricity(d), "Joint O/Clearance/Normal force law=hertz", "Simulation/End time=0.0106"});
       auto         scene     = wearlink::testing::scene(pendulum, overrides);
       const double K         = scene.clearance_joints.at(0)->stiffness();
       const Json   s         = wearlink::testing::run(scene);
       const double delta_max = std::pow(5 * m * v0 * v0 / (4 * K), 0.4);
       const double force_max = K * std::pow(delta_max, 1.5);
-      const auto & j         = s.at("clearance_joints").at("O");
+      const auto  &j         = s.at("clearance_joints").at("O");
       const double peak      = json_number(j.at("max_normal_force_N"));
       std::cout << integrator[0] << " " << integrator[1] << ": peak force " << peak << " N (Hertz " << force_max
                 << "), approach " << json_number(j.at("max_penetration_m")) << " m (Hertz " << delta_max
@@ -166,20 +169,24 @@ TEST(HardCases, StickSlipNearZeroSlidingSpeed)
   std::vector<double> dissipated;
   for (const double rtol : {1e-7, 5e-8})
     {
-      auto scene = wearlink::testing::scene(
-        pendulum, {eccentricity(1e-9), "Body bob/Initial angle=0.05", "Body bob/Initial position=0.005, -0.1",
-                   "Joint O/Clearance/Friction law=modified-coulomb",
-                   "Joint O/Clearance/modified-coulomb/Friction coefficient=0.5",
-                   "Integrator/Relative tolerance=" + format_number(rtol),
-                   "Integrator/Position tolerance=" + format_number(1e-3 * rtol), "Simulation/End time=0.5"});
-      const Json  s = wearlink::testing::run(scene);
-      const auto &j = s.at("clearance_joints").at("O");
-      const auto &e = s.at("energy");
+      auto        scene = wearlink::testing::scene(pendulum,
+                                            {eccentricity(1e-9),
+                                                    "Body bob/Initial angle=0.05",
+                                                    "Body bob/Initial position=0.005, -0.1",
+                                                    "Joint O/Clearance/Friction law=modified-coulomb",
+                                                    "Joint O/Clearance/modified-coulomb/Friction coefficient=0.5",
+                                                    "Integrator/Relative tolerance=" + format_number(rtol),
+                                                    "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
+                                                    "Simulation/End time=0.5"});
+      const Json  s     = wearlink::testing::run(scene);
+      const auto &j     = s.at("clearance_joints").at("O");
+      const auto &e     = s.at("energy");
       std::cout << "rtol " << rtol << ": friction dissipation " << json_number(e.at("friction_dissipation_J"))
                 << " J, damping " << json_number(e.at("damping_dissipation_J")) << " J, peak F_t "
-                << json_number(j.at("max_friction_force_N")) << " N, peak F_n " << json_number(j.at("max_normal_force_N"))
-                << " N, energy balance " << json_number(s.at("energy_balance_relative_error")) << ", steps "
-                << json_number(s.at("steps")) << "\n";
+                << json_number(j.at("max_friction_force_N")) << " N, peak F_n "
+                << json_number(j.at("max_normal_force_N")) << " N, energy balance "
+                << json_number(s.at("energy_balance_relative_error")) << ", steps " << json_number(s.at("steps"))
+                << "\n";
       expect_finite(s);
       EXPECT_LE(json_number(j.at("max_friction_force_N")), 0.5 * json_number(j.at("max_normal_force_N")) * (1 + 1e-12));
       EXPECT_GT(json_number(e.at("friction_dissipation_J")), 0.0);
@@ -207,14 +214,15 @@ TEST(HardCases, ExtremeClearancesOnTheNineBar)
       std::vector<double> peaks, friction;
       for (const double rtol : {1e-6, 5e-7})
         {
-          auto scene = wearlink::testing::scene(
-            "params/nine_bar_clearance.prm",
-            {"Simulation/End time=0.5", "Joint A/Clearance/Radial clearance=" + format_number(clearance),
-             "Joint B/Clearance/Radial clearance=" + format_number(clearance),
-             "Integrator/Relative tolerance=" + format_number(rtol),
-             "Integrator/Position tolerance=" + format_number(1e-3 * rtol), "Output/Time series=false"});
-          const double K = scene.clearance_joints.at(0)->stiffness();
-          const Json   s = wearlink::testing::run(scene);
+          auto         scene = wearlink::testing::scene("params/nine_bar_clearance.prm",
+                                                {"Simulation/End time=0.5",
+                                                         "Joint A/Clearance/Radial clearance=" + format_number(clearance),
+                                                         "Joint B/Clearance/Radial clearance=" + format_number(clearance),
+                                                         "Integrator/Relative tolerance=" + format_number(rtol),
+                                                         "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
+                                                         "Output/Time series=false"});
+          const double K     = scene.clearance_joints.at(0)->stiffness();
+          const Json   s     = wearlink::testing::run(scene);
           std::cout << "c = " << clearance << " m, rtol " << rtol << ": friction dissipation "
                     << json_number(s.at("energy").at("friction_dissipation_J")) << " J, energy balance "
                     << json_number(s.at("energy_balance_relative_error")) << "\n";
@@ -223,7 +231,7 @@ TEST(HardCases, ExtremeClearancesOnTheNineBar)
           EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e-3);
           for (const char *name : {"A", "B"})
             {
-              const auto & j = s.at("clearance_joints").at(name);
+              const auto  &j = s.at("clearance_joints").at(name);
               const double F = json_number(j.at("max_normal_force_N"));
               const double d = json_number(j.at("max_penetration_m"));
               std::cout << "c = " << clearance << " m, rtol " << rtol << ", joint " << name << ": peak force " << F
@@ -257,13 +265,13 @@ TEST(HardCases, SliderCrankAt5000Rpm)
   std::vector<double> forces, accelerations;
   for (const double rtol : {1e-6, 5e-7})
     {
-      auto scene = wearlink::testing::scene(
-        "params/slider_crank_flores.prm",
-        {"Integrator/Relative tolerance=" + format_number(rtol), "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
-         "Output/Time series=false"});
-      const double K = scene.clearance_joints.at(0)->stiffness();
-      const Json   s = wearlink::testing::run(scene);
-      const auto & j = s.at("clearance_joints").at("B");
+      auto         scene = wearlink::testing::scene("params/slider_crank_flores.prm",
+                                            {"Integrator/Relative tolerance=" + format_number(rtol),
+                                                     "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
+                                                     "Output/Time series=false"});
+      const double K     = scene.clearance_joints.at(0)->stiffness();
+      const Json   s     = wearlink::testing::run(scene);
+      const auto  &j     = s.at("clearance_joints").at("B");
       const double F = json_number(j.at("max_normal_force_N")), d = json_number(j.at("max_penetration_m"));
       const double a = json_number(s.at("bodies").at("slider").at("max_abs_ax_m_s2"));
       std::cout << "rtol " << rtol << ": peak force " << F << " N, penetration " << d << " m (" << d / 0.5e-3
@@ -292,12 +300,13 @@ TEST(HardCases, ThousandCycleRun)
   std::vector<double> impacts, contact;
   for (const double rtol : {1e-6, 5e-7})
     {
-      auto scene = wearlink::testing::scene(
-        "params/slider_crank_flores.prm",
-        {"Simulation/End time=12", "Integrator/Relative tolerance=" + format_number(rtol),
-         "Integrator/Position tolerance=" + format_number(1e-3 * rtol), "Output/Time series=false"});
-      const Json  s = wearlink::testing::run(scene);
-      const auto &j = s.at("clearance_joints").at("B");
+      auto        scene = wearlink::testing::scene("params/slider_crank_flores.prm",
+                                            {"Simulation/End time=12",
+                                                    "Integrator/Relative tolerance=" + format_number(rtol),
+                                                    "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
+                                                    "Output/Time series=false"});
+      const Json  s     = wearlink::testing::run(scene);
+      const auto &j     = s.at("clearance_joints").at("B");
       std::cout << "rtol " << rtol << ": " << json_number(s.at("steps")) << " steps, " << json_number(j.at("impacts"))
                 << " impacts, in contact " << json_number(j.at("fraction_in_contact")) << ", constraint violation "
                 << json_number(s.at("max_constraint_violation_m")) << " m, energy balance "

@@ -15,13 +15,12 @@
 //    appear only for what was listed.
 #include "analysis/channels.h"
 #include "io/json_file.h"
-#include "io/recorded_run_files.h"
 #include "io/plot.h"
-#include "workflows/analyses.h"
+#include "io/recorded_run_files.h"
 #include "scene_support.h"
+#include "workflows/analyses.h"
 
 #include <deal.II/base/utilities.h>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -53,19 +52,20 @@ TEST(Analyses, IdealNineBarPoincareSectionCollapsesToOnePoint)
   // held to their tolerance 1e-8 m/s (rad/s for angular ones), and angles like
   // positions, 1e-9 rad. For scale: within one period the slider moves 0.12 m at up to
   // 1 m/s, so any point taken off the periodic orbit would show up at the 1e-4 level.
-  auto       scene = wl::scene("params/nine_bar_ideal.prm",
-                              {"Simulation/End time=3.0",
-                               "Analyses/List of analyses=poincare",
-                               "Analyses/Section phase=0.1234",
-                               "Output/Time series=false"});
-  const Json s     = wl::run(scene);
-  const Json &p    = s.at("analyses").at("poincare");
+  auto        scene = wl::scene("params/nine_bar_ideal.prm",
+                         {"Simulation/End time=3.0",
+                                 "Analyses/List of analyses=poincare",
+                                 "Analyses/Section phase=0.1234",
+                                 "Output/Time series=false"});
+  const Json  s     = wl::run(scene);
+  const Json &p     = s.at("analyses").at("poincare");
   EXPECT_DOUBLE_EQ(json_number(p.at("period_s")), 0.5);
   ASSERT_EQ(json_number(p.at("n_points")), 6);
   EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-9);
   for (const auto &[name, value] : p.at("spread").items())
     {
-      const double bound = name.find("_v") != std::string::npos || name.find("_omega") != std::string::npos ? 1e-8 : 1e-9;
+      const double bound =
+        name.find("_v") != std::string::npos || name.find("_omega") != std::string::npos ? 1e-8 : 1e-9;
       EXPECT_LT(json_number(value), bound) << name;
     }
 }
@@ -76,18 +76,18 @@ TEST(Analyses, PoincarePointsAreAtTheExactSectionTimes)
   // The recorded crank angle at t_k must match to 1e-9 rad (the driver constraint holds
   // to the reported violation, < 1e-9); t_k = 0.1234 + 0.5 k s are 0.4 ms off the 1 ms
   // output grid, so the nearest time-series sample would be 5e-3 rad off.
-  auto scene = wl::scene("params/nine_bar_ideal.prm",
-                              {"Simulation/End time=2.0",
-                               "Analyses/List of analyses=poincare",
-                               "Analyses/Section phase=0.1234",
-                               "Output/Time series=false"});
+  auto                     scene = wl::scene("params/nine_bar_ideal.prm",
+                         {"Simulation/End time=2.0",
+                                              "Analyses/List of analyses=poincare",
+                                              "Analyses/Section phase=0.1234",
+                                              "Output/Time series=false"});
   workflows::SceneAnalyses analyses(scene);
   workflows::RunOptions    options;
   options.observers = analyses.observers();
   scene.analyses    = {}; // the run's own copy would record the same thing twice
   workflows::run_scene(scene, options);
   const analysis::RecordedRun run = analyses.recorded_run();
-  const auto &                pts = run.section.points;
+  const auto                 &pts = run.section.points;
   ASSERT_EQ(pts.n_samples(), 4u);
   scene.parameters->enter_subsection("Joint drive1");
   const double theta0 = scene.parameters->get_double("Angle offset");
@@ -109,10 +109,10 @@ TEST(Analyses, ClearanceSectionDoesNotCollapse)
   // Bound: a spread of e_x above 5 % of the radial clearance (2.5e-5 m); measured about
   // 2e-4 m over 8 sections after a 1 s transient.
   auto       scene = wl::scene("params/nine_bar_clearance.prm",
-                              {"Simulation/End time=5.0",
-                               "Analyses/List of analyses=poincare",
-                               "Analyses/Transient=1.0",
-                               "Output/Time series=false"});
+                         {"Simulation/End time=5.0",
+                                "Analyses/List of analyses=poincare",
+                                "Analyses/Transient=1.0",
+                                "Output/Time series=false"});
   const Json s     = wl::run(scene);
   EXPECT_GE(json_number(s.at("analyses").at("poincare").at("n_points")), 8);
   EXPECT_GT(spread(s, "A_ex_m"), 0.05 * 0.5e-3);
@@ -135,9 +135,9 @@ TEST(Analyses, UnlistedAnalysesAreNotBuiltAndRecordNothing)
   {
     // Only poincare: no series recorder (0 samples), the whole state per section point:
     // 6 channels for each of 8 bodies + 4 for each of 2 clearance joints = 56.
-    auto       scene = wl::scene("params/nine_bar_clearance.prm",
-                                {"Simulation/End time=1.2", "Analyses/List of analyses=poincare"});
-    const Json s     = wl::run(scene);
+    auto scene =
+      wl::scene("params/nine_bar_clearance.prm", {"Simulation/End time=1.2", "Analyses/List of analyses=poincare"});
+    const Json s = wl::run(scene);
     EXPECT_EQ(ledger.constructions("analysis", "poincare"), 1);
     EXPECT_EQ(ledger.constructions("analysis", "phase-portrait"), 0);
     EXPECT_EQ(ledger.constructions("analysis", "lyapunov"), 0);
@@ -153,11 +153,11 @@ TEST(Analyses, UnlistedAnalysesAreNotBuiltAndRecordNothing)
     // Only the phase portrait of joint A: its 4 channels, sampled every 2 ms from the
     // end of a 0.2 s transient to 1.2 s: 501 samples; no section.
     auto       scene = wl::scene("params/nine_bar_clearance.prm",
-                                {"Simulation/End time=1.2",
-                                 "Analyses/List of analyses=phase-portrait",
-                                 "Analyses/Joints=A",
-                                 "Analyses/Transient=0.2",
-                                 "Analyses/Sample interval=2e-3"});
+                           {"Simulation/End time=1.2",
+                                  "Analyses/List of analyses=phase-portrait",
+                                  "Analyses/Joints=A",
+                                  "Analyses/Transient=0.2",
+                                  "Analyses/Sample interval=2e-3"});
     const Json s     = wl::run(scene);
     EXPECT_EQ(ledger.constructions("analysis", "phase-portrait"), 1);
     EXPECT_EQ(ledger.constructions("analysis", "poincare"), 0);
@@ -176,21 +176,21 @@ TEST(Analyses, PhasePortraitOfTheJournalFillsTheClearanceCircle)
   // impacts per second), so max |e| ≥ c. Its eccentricity rate is bounded by the
   // relative speed of crank and rod pins: a few m/s at most for cranks at 120 rpm
   // with link lengths of tenths of a metre (seed Table 1), so |ė| < 10 m/s.
-  const std::string dir   = wl::fresh_directory("analyses_phase_extent");
-  auto              scene = wl::scene("params/nine_bar_clearance.prm",
-                                 {"Simulation/End time=0.6",
-                                  "Analyses/List of analyses=phase-portrait",
-                                  "Analyses/Joints=A",
-                                  "Analyses/Transient=0.1",
-                                  "Analyses/Sample interval=1e-4"});
+  const std::string     dir   = wl::fresh_directory("analyses_phase_extent");
+  auto                  scene = wl::scene("params/nine_bar_clearance.prm",
+                         {"Simulation/End time=0.6",
+                                           "Analyses/List of analyses=phase-portrait",
+                                           "Analyses/Joints=A",
+                                           "Analyses/Transient=0.1",
+                                           "Analyses/Sample interval=1e-4"});
   workflows::RunOptions options;
   options.output_directory = dir;
   const Json   s           = workflows::run_scene(scene, options);
   const auto   run         = io::read_recorded_run(dir);
-  const double      c     = json_number(s.at("clearance_joints").at("A").at("radial_clearance_m"));
-  const double      pen   = json_number(s.at("clearance_joints").at("A").at("max_penetration_m"));
-  const auto &      ch    = run.series;
-  auto              column = [&](const std::string &name) -> const std::vector<double> & {
+  const double c           = json_number(s.at("clearance_joints").at("A").at("radial_clearance_m"));
+  const double pen         = json_number(s.at("clearance_joints").at("A").at("max_penetration_m"));
+  const auto  &ch          = run.series;
+  auto         column      = [&](const std::string &name) -> const std::vector<double>              &{
     for (std::size_t k = 0; k < ch.names.size(); ++k)
       if (ch.names[k] == name)
         return ch.values[k];
@@ -218,13 +218,13 @@ TEST(Analyses, OutputFilesOnlyForListedAnalyses)
   // A run with poincare and lyapunov on joint A writes the section CSV, its plots and
   // the Lyapunov curves, and no phase-portrait file; summary.json gives every exponent
   // with its unit.
-  const std::string dir = wl::fresh_directory("analyses_outputs");
-  auto              scene = wl::scene("params/nine_bar_clearance.prm",
-                                {"Simulation/End time=3.0",
-                                 "Analyses/List of analyses=poincare, lyapunov",
-                                 "Analyses/Joints=A",
-                                 "Analyses/Transient=0.5",
-                                 "Analyses/Lyapunov/Methods=rosenstein"});
+  const std::string     dir   = wl::fresh_directory("analyses_outputs");
+  auto                  scene = wl::scene("params/nine_bar_clearance.prm",
+                         {"Simulation/End time=3.0",
+                                           "Analyses/List of analyses=poincare, lyapunov",
+                                           "Analyses/Joints=A",
+                                           "Analyses/Transient=0.5",
+                                           "Analyses/Lyapunov/Methods=rosenstein"});
   workflows::RunOptions options;
   options.output_directory = dir;
   const Json s             = workflows::run_scene(scene, options);
@@ -251,14 +251,14 @@ TEST(Analyses, IdealMechanismHasZeroLyapunovExponent)
   // neighbours, which gave 1.7 1/s from the slow growth of the drift). Bound as for the
   // periodic signals of tests/unit/analysis/lyapunov_test.cc: |λ| T < 0.05 per driving
   // period T = 0.5 s.
-  auto       scene = wl::scene("params/nine_bar_ideal.prm",
-                              {"Simulation/End time=10.5",
-                               "Analyses/List of analyses=lyapunov",
-                               "Analyses/Bodies=rod2",
-                               "Analyses/Transient=0.5",
-                               "Output/Time series=false"});
-  const Json s     = wl::run(scene);
-  const Json &l    = s.at("analyses").at("lyapunov");
+  auto        scene = wl::scene("params/nine_bar_ideal.prm",
+                         {"Simulation/End time=10.5",
+                                 "Analyses/List of analyses=lyapunov",
+                                 "Analyses/Bodies=rod2",
+                                 "Analyses/Transient=0.5",
+                                 "Output/Time series=false"});
+  const Json  s     = wl::run(scene);
+  const Json &l     = s.at("analyses").at("lyapunov");
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     EXPECT_NEAR(json_number(l[k].at("exponent_per_s")) * 0.5, 0.0, 0.05) << l[k].at("method").get<std::string>();
@@ -272,14 +272,14 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
   // Poincaré spread and Lyapunov exponent. Tolerances: the files hold 12 significant
   // digits, so a spread agrees to 1e-11 of the channel's magnitude; the exponent, a mean over thousands of
   // neighbour pairs whose distances (~1e-6 m) are perturbed by ~1e-15 m, to 1e-6.
-  const std::string dir   = wl::fresh_directory("analyses_read_back");
-  auto              scene = wl::scene("params/nine_bar_clearance.prm",
-                                {"Simulation/End time=3.0",
-                                 "Analyses/List of analyses=poincare, lyapunov",
-                                 "Analyses/Joints=A",
-                                 "Analyses/Transient=0.5",
-                                 "Analyses/Lyapunov/Methods=rosenstein",
-                                 "Output/Time series=false"});
+  const std::string     dir   = wl::fresh_directory("analyses_read_back");
+  auto                  scene = wl::scene("params/nine_bar_clearance.prm",
+                         {"Simulation/End time=3.0",
+                                           "Analyses/List of analyses=poincare, lyapunov",
+                                           "Analyses/Joints=A",
+                                           "Analyses/Transient=0.5",
+                                           "Analyses/Lyapunov/Methods=rosenstein",
+                                           "Output/Time series=false"});
   workflows::RunOptions options;
   options.output_directory = dir;
   const Json  s            = workflows::run_scene(scene, options);
@@ -309,9 +309,9 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
   EXPECT_NEAR(json_number(again.at("lyapunov")[0].at("exponent_per_s")), l0, 1e-6 * std::abs(l0));
 
   // A run that recorded no analyses has nothing to read back.
-  const std::string plain = wl::fresh_directory("analyses_read_back_none");
-  auto              none  = wl::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.1"});
-  workflows::RunOptions    o2;
+  const std::string     plain = wl::fresh_directory("analyses_read_back_none");
+  auto                  none  = wl::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.1"});
+  workflows::RunOptions o2;
   o2.output_directory = plain;
   workflows::run_scene(none, o2);
   EXPECT_THROW(io::read_recorded_run(plain), InputError);
@@ -330,14 +330,14 @@ TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
   //    for Wolf and Rosenstein). Its value depends on d0 and on the integration tolerance
   //    (82–238 1/s measured), which is why only the sign and scale are asserted.
   {
-    auto       scene = wl::scene("params/nine_bar_ideal.prm",
-                                {"Simulation/End time=5.5",
-                                 "Analyses/List of analyses=lyapunov",
-                                 "Analyses/Transient=0.5",
-                                 "Analyses/Lyapunov/Methods=two-trajectory",
-                                 "Output/Time series=false"});
-    const Json s     = wl::run(scene);
-    const Json &l    = s.at("analyses").at("lyapunov");
+    auto        scene = wl::scene("params/nine_bar_ideal.prm",
+                           {"Simulation/End time=5.5",
+                                   "Analyses/List of analyses=lyapunov",
+                                   "Analyses/Transient=0.5",
+                                   "Analyses/Lyapunov/Methods=two-trajectory",
+                                   "Output/Time series=false"});
+    const Json  s     = wl::run(scene);
+    const Json &l     = s.at("analyses").at("lyapunov");
     ASSERT_EQ(l.size(), 1u);
     EXPECT_EQ(l[0].at("method").get<std::string>(), "two-trajectory");
     EXPECT_EQ(json_number(l[0].at("renormalizations")), 250); // 5 s / 0.02 s
@@ -346,12 +346,12 @@ TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
   }
   {
     auto       scene = wl::scene("params/nine_bar_clearance.prm",
-                                {"Simulation/End time=3.5",
-                                 "Analyses/List of analyses=lyapunov",
-                                 "Analyses/Transient=0.5",
-                                 "Analyses/Lyapunov/Methods=two-trajectory",
-                                 "Output/Time series=false"});
-    const Json s = wl::run(scene);
+                           {"Simulation/End time=3.5",
+                                  "Analyses/List of analyses=lyapunov",
+                                  "Analyses/Transient=0.5",
+                                  "Analyses/Lyapunov/Methods=two-trajectory",
+                                  "Output/Time series=false"});
+    const Json s     = wl::run(scene);
     EXPECT_GT(json_number(s.at("analyses").at("lyapunov")[0].at("exponent_per_s")) * 0.5, 1.0);
   }
 }
@@ -372,19 +372,37 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
   //    the same exponents (values read back with 12 digits: agreement to 1e-6, as in
   //    RecordedRunReadsBackFromItsOutputs).
   const std::string dir = wl::fresh_directory("before_after_wear");
-  const auto        r   = wl::run_wearlink({"run", wl::source_path("params/nine_bar_wear_dynamics.prm"), "--output", dir,
-                                   "--quiet", "--set", "Wear/Number of iterations=1", "--set",
-                                   "Wear/Cycles per iteration=2", "--set", "Simulation/End time=2.5", "--set",
-                                   "Analyses/Before-after wear/Delay scan=0.005, 0.01", "--set",
-                                   "Analyses/Lyapunov/Delay=5", "--set", "Analyses/Lyapunov/Embedding dimension=4",
-                                   "--set", "Analyses/Before-after wear/Two-trajectory cycles=1"});
+  const auto        r   = wl::run_wearlink({"run",
+                                            wl::source_path("params/nine_bar_wear_dynamics.prm"),
+                                            "--output",
+                                            dir,
+                                            "--quiet",
+                                            "--set",
+                                            "Wear/Number of iterations=1",
+                                            "--set",
+                                            "Wear/Cycles per iteration=2",
+                                            "--set",
+                                            "Simulation/End time=2.5",
+                                            "--set",
+                                            "Analyses/Before-after wear/Delay scan=0.005, 0.01",
+                                            "--set",
+                                            "Analyses/Lyapunov/Delay=5",
+                                            "--set",
+                                            "Analyses/Lyapunov/Embedding dimension=4",
+                                            "--set",
+                                            "Analyses/Before-after wear/Two-trajectory cycles=1"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   EXPECT_NE(r.output.find("| A_ex_m | wolf | 0.005 |"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("0.076"), std::string::npos) << "the seed's value is printed";
 
   const std::string plain_dir = wl::fresh_directory("before_after_wear_plain");
-  const auto        p = wl::run_wearlink({"run", wl::source_path("params/nine_bar_clearance.prm"), "--output", plain_dir,
-                                   "--quiet", "--set", "Simulation/End time=2.5"});
+  const auto        p         = wl::run_wearlink({"run",
+                                                  wl::source_path("params/nine_bar_clearance.prm"),
+                                                  "--output",
+                                                  plain_dir,
+                                                  "--quiet",
+                                                  "--set",
+                                                  "Simulation/End time=2.5"});
   ASSERT_EQ(p.exit_status, 0) << p.output;
   const Json plain  = io::read_json_file(plain_dir + "/summary.json");
   const Json before = io::read_json_file(dir + "/dynamics_before/summary.json");
@@ -437,7 +455,9 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
         }
     }
   EXPECT_EQ(summary.at("before_after").at("delay_scan").size(), 8u);
-  for (const char *f : {"before_after.md", "before_after_lyapunov.csv", "dynamics_before/analysis_series.csv",
+  for (const char *f : {"before_after.md",
+                        "before_after_lyapunov.csv",
+                        "dynamics_before/analysis_series.csv",
                         "dynamics_after/poincare_section.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
   if (io::gnuplot_available())
@@ -446,8 +466,8 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
     }
 
   const std::string again_dir = dir + "/again";
-  const auto        c         = wl::run_wearlink({"compare-dynamics", dir + "/dynamics_before", dir + "/dynamics_after",
-                                   "--output", again_dir, "--scan", "none"});
+  const auto        c         = wl::run_wearlink(
+    {"compare-dynamics", dir + "/dynamics_before", dir + "/dynamics_after", "--output", again_dir, "--scan", "none"});
   ASSERT_EQ(c.exit_status, 0) << c.output;
   std::ifstream csv(again_dir + "/before_after_lyapunov.csv");
   std::string   line;
@@ -466,8 +486,8 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
   EXPECT_EQ(k, l.size());
 
   // A missing run directory: exit 2, nothing written.
-  const auto bad = wl::run_wearlink({"compare-dynamics", dir + "/dynamics_before", dir + "/no_such_run", "--output",
-                                     dir + "/bad"});
+  const auto bad =
+    wl::run_wearlink({"compare-dynamics", dir + "/dynamics_before", dir + "/no_such_run", "--output", dir + "/bad"});
   EXPECT_EQ(bad.exit_status, 2) << bad.output;
   EXPECT_NE(bad.output.find("no_such_run"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/bad"));

@@ -16,7 +16,7 @@ TEST(Effects, IdealJointsConstructNoContactCode)
 {
   auto       scene  = wearlink::testing::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.05"});
   const Json s      = wearlink::testing::run(scene);
-  auto &     ledger = EffectLedger::instance();
+  auto      &ledger = EffectLedger::instance();
   EXPECT_EQ(ledger.constructions("joint model", "clearance"), 0);
   EXPECT_EQ(ledger.constructions("joint model", "ideal"), 10);
   EXPECT_EQ(ledger.constructions("normal force law"), 0);
@@ -30,10 +30,11 @@ TEST(Effects, IdealJointsConstructNoContactCode)
 TEST(Effects, FrictionNoneConstructsNoFrictionLaw)
 {
   auto       scene  = wearlink::testing::scene("params/nine_bar_clearance.prm",
-                                         {"Simulation/End time=0.05", "Joint A/Clearance/Friction law=none",
-                                          "Joint B/Clearance/Friction law=none"});
+                                        {"Simulation/End time=0.05",
+                                                "Joint A/Clearance/Friction law=none",
+                                                "Joint B/Clearance/Friction law=none"});
   const Json s      = wearlink::testing::run(scene);
-  auto &     ledger = EffectLedger::instance();
+  auto      &ledger = EffectLedger::instance();
   EXPECT_EQ(ledger.constructions("joint model", "clearance"), 2);
   EXPECT_EQ(ledger.constructions("normal force law", "lankarani-nikravesh"), 2);
   EXPECT_EQ(ledger.constructions("friction law"), 0);

@@ -58,8 +58,7 @@ namespace
       const double t7 = std::atan2((d - c).y(), (d - c).x());
       // E relative to C in the plate frame (x-axis C→D): (0.231395, -0.139128).
       const V ce(0.231395, -0.139128);
-      const V e = c + V(std::cos(t7) * ce.x() - std::sin(t7) * ce.y(),
-                        std::sin(t7) * ce.x() + std::cos(t7) * ce.y());
+      const V e = c + V(std::cos(t7) * ce.x() - std::sin(t7) * ce.y(), std::sin(t7) * ce.x() + std::cos(t7) * ce.y());
       return e.y() - std::sqrt(0.3 * 0.3 - (0.45 - e.x()) * (0.45 - e.x()));
     }
 
@@ -76,18 +75,17 @@ namespace
 
 TEST(NineBar, IdealConstraintsAndIndependentPositionAnalysis)
 {
-  auto scene = wearlink::testing::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.5"});
+  auto                    scene  = wearlink::testing::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.5"});
   const int               slider = body(scene, "slider9");
   NineBarPositionAnalysis analysis;
   double                  max_error = 0;
-  Sampler sampler(1e-3, [&](double t, const Eigen::VectorXd &y, mbs::Simulation &) {
+  Sampler                 sampler(1e-3, [&](double t, const Eigen::VectorXd &y, mbs::Simulation &) {
     max_error = std::max(max_error, std::abs(y[3 * slider + 1] - analysis.slider_y(t)));
     return std::vector<double>{};
   });
-  const Json s = wearlink::testing::run(scene, {&sampler});
+  const Json              s = wearlink::testing::run(scene, {&sampler});
   std::cout << "max constraint violation " << json_number(s.at("max_constraint_violation_m"))
-            << " m; slider vs loop closure " << max_error << " m over "
-            << sampler.times.size() << " samples\n";
+            << " m; slider vs loop closure " << max_error << " m over " << sampler.times.size() << " samples\n";
   EXPECT_EQ(sampler.times.size(), 501u);
   EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-10);
   EXPECT_LT(max_error, 1e-8);
@@ -96,22 +94,22 @@ TEST(NineBar, IdealConstraintsAndIndependentPositionAnalysis)
 TEST(NineBar, EnergyBalance)
 {
   {
-    auto       scene = wearlink::testing::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.5"});
-    const Json s     = wearlink::testing::run(scene);
-    const double err = json_number(s.at("energy_balance_relative_error"));
+    auto         scene = wearlink::testing::scene("params/nine_bar_ideal.prm", {"Simulation/End time=0.5"});
+    const Json   s     = wearlink::testing::run(scene);
+    const double err   = json_number(s.at("energy_balance_relative_error"));
     std::cout << "ideal joints: energy balance relative error " << err << "\n";
     // dopri5 at rtol 1e-8 over ~500 steps: the balance holds to well below 1e-7.
     EXPECT_LT(err, 1e-7);
     EXPECT_EQ(json_number(s.at("energy").at("damping_dissipation_J")), 0.0);
   }
   {
-    auto       scene = wearlink::testing::scene("params/nine_bar_clearance.prm", {"Simulation/End time=0.5"});
-    const Json s     = wearlink::testing::run(scene);
-    const double err = json_number(s.at("energy_balance_relative_error"));
-    const auto & e   = s.at("energy");
-    std::cout << "clearance joints: energy balance relative error " << err
-              << "; damping " << json_number(e.at("damping_dissipation_J"))
-              << " J, friction " << json_number(e.at("friction_dissipation_J")) << " J\n";
+    auto         scene = wearlink::testing::scene("params/nine_bar_clearance.prm", {"Simulation/End time=0.5"});
+    const Json   s     = wearlink::testing::run(scene);
+    const double err   = json_number(s.at("energy_balance_relative_error"));
+    const auto  &e     = s.at("energy");
+    std::cout << "clearance joints: energy balance relative error " << err << "; damping "
+              << json_number(e.at("damping_dissipation_J")) << " J, friction "
+              << json_number(e.at("friction_dissipation_J")) << " J\n";
     EXPECT_LT(err, 1e-3);
     EXPECT_GT(json_number(e.at("friction_dissipation_J")), 0.0);
     EXPECT_GT(json_number(e.at("damping_dissipation_J")), 0.0);
@@ -121,13 +119,13 @@ TEST(NineBar, EnergyBalance)
 TEST(NineBar, ClearanceApproachesIdealJoint)
 {
   // Reference: the reaction of the ideal joint A on the pin (crank 1), +λ_A.
-  const double duration = 0.5, interval = 1e-3;
+  const double                     duration = 0.5, interval = 1e-3;
   std::vector<std::vector<double>> ideal;
   {
-    auto scene = wearlink::testing::scene("params/nine_bar_ideal.prm",
-                                          {"Simulation/End time=" + std::to_string(duration)});
+    auto scene =
+      wearlink::testing::scene("params/nine_bar_ideal.prm", {"Simulation/End time=" + std::to_string(duration)});
     unsigned int row = 0;
-    const auto & cs  = scene.mechanism->get_constraints();
+    const auto  &cs  = scene.mechanism->get_constraints();
     for (unsigned int c = 0; c < cs.size(); ++c)
       if (cs[c]->name == "A")
         row = scene.mechanism->constraint_row(c);
@@ -148,12 +146,13 @@ TEST(NineBar, ClearanceApproachesIdealJoint)
   std::vector<double> errors;
   for (const double c : {5e-4, 1e-4, 2e-5, 4e-6, 1e-6})
     {
-      auto scene = wearlink::testing::scene(
-        "params/nine_bar_clearance.prm",
-        {"Simulation/End time=" + std::to_string(duration),
-         "Joint A/Clearance/Radial clearance=" + format_number(c), "Joint B/Model=ideal", "Joint A/Clearance/Friction law=none"});
-      auto *  joint = scene.clearance_joints.at(0);
-      Sampler sampler(interval, [&](double, const Eigen::VectorXd &y, mbs::Simulation &sim) {
+      auto       scene = wearlink::testing::scene("params/nine_bar_clearance.prm",
+                                            {"Simulation/End time=" + std::to_string(duration),
+                                                   "Joint A/Clearance/Radial clearance=" + format_number(c),
+                                                   "Joint B/Model=ideal",
+                                                   "Joint A/Clearance/Friction law=none"});
+      auto      *joint = scene.clearance_joints.at(0);
+      Sampler    sampler(interval, [&](double, const Eigen::VectorXd &y, mbs::Simulation &sim) {
         const auto n = sim.get_mechanism().n_coordinates();
         const auto d = joint->diagnostics(mbs::StateView(y.data(), y.data() + n));
         return std::vector<double>{d.force_on_pin.x(), d.force_on_pin.y()};
@@ -161,19 +160,18 @@ TEST(NineBar, ClearanceApproachesIdealJoint)
       const Json s = wearlink::testing::run(scene, {&sampler});
       ASSERT_EQ(sampler.values.size(), ideal.size());
       // Compare after the first 0.1 s: the start from a centred pin is a transient.
-      double diff = 0;
+      double       diff  = 0;
       unsigned int count = 0;
       for (std::size_t k = 0; k < ideal.size(); ++k)
         if (sampler.times[k] >= 0.1)
           {
-            diff += std::pow(sampler.values[k][0] - ideal[k][0], 2) +
-                    std::pow(sampler.values[k][1] - ideal[k][1], 2);
+            diff += std::pow(sampler.values[k][0] - ideal[k][0], 2) + std::pow(sampler.values[k][1] - ideal[k][1], 2);
             ++count;
           }
       errors.push_back(std::sqrt(diff / count) / ideal_rms);
       std::cout << "clearance " << std::setw(8) << c << " m: relative RMS difference of the joint-A "
-                << "force from the ideal reaction " << errors.back() << " (" << json_number(s.at("steps"))
-                << " steps, " << json_number(s.at("wall_time_s")) << " s)\n";
+                << "force from the ideal reaction " << errors.back() << " (" << json_number(s.at("steps")) << " steps, "
+                << json_number(s.at("wall_time_s")) << " s)\n";
     }
   for (std::size_t k = 1; k < errors.size(); ++k)
     EXPECT_LT(errors[k], errors[k - 1]) << "not converging at clearance index " << k;
@@ -193,15 +191,14 @@ TEST(NineBar, AdaptiveAgreesWithFixedStepAndConverges)
   auto eccentricities = [](const std::vector<std::string> &overrides, double end) {
     auto o = overrides;
     o.push_back("Simulation/End time=" + format_number(end));
-    auto    scene = wearlink::testing::scene("params/nine_bar_clearance.prm", o);
-    auto *  a     = scene.clearance_joints.at(0);
-    auto *  b     = scene.clearance_joints.at(1);
-    Sampler sampler(1e-4, [&](double, const Eigen::VectorXd &y, mbs::Simulation &sim) {
+    auto       scene = wearlink::testing::scene("params/nine_bar_clearance.prm", o);
+    auto      *a     = scene.clearance_joints.at(0);
+    auto      *b     = scene.clearance_joints.at(1);
+    Sampler    sampler(1e-4, [&](double, const Eigen::VectorXd &y, mbs::Simulation &sim) {
       const auto           n = sim.get_mechanism().n_coordinates();
       const mbs::StateView v(y.data(), y.data() + n);
       const auto           da = a->diagnostics(v), db = b->diagnostics(v);
-      return std::vector<double>{da.eccentricity.x(), da.eccentricity.y(), db.eccentricity.x(),
-                                 db.eccentricity.y()};
+      return std::vector<double>{da.eccentricity.x(), da.eccentricity.y(), db.eccentricity.x(), db.eccentricity.y()};
     });
     const Json summary = wearlink::testing::run(scene, {&sampler});
     return std::make_pair(sampler.values, summary);
@@ -209,8 +206,8 @@ TEST(NineBar, AdaptiveAgreesWithFixedStepAndConverges)
   auto max_difference = [](const std::vector<std::vector<double>> &x, const std::vector<std::vector<double>> &y) {
     double d = 0;
     for (std::size_t k = 0; k < std::min(x.size(), y.size()); ++k)
-      d = std::max({d, std::hypot(x[k][0] - y[k][0], x[k][1] - y[k][1]),
-                    std::hypot(x[k][2] - y[k][2], x[k][3] - y[k][3])});
+      d = std::max(
+        {d, std::hypot(x[k][0] - y[k][0], x[k][1] - y[k][1]), std::hypot(x[k][2] - y[k][2], x[k][3] - y[k][3])});
     return d;
   };
   auto tolerance = [](double rtol) {
@@ -218,9 +215,9 @@ TEST(NineBar, AdaptiveAgreesWithFixedStepAndConverges)
                                     "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
                                     "Integrator/Velocity tolerance=" + format_number(rtol)};
   };
-  const double horizon   = 0.02;
-  const auto   reference = eccentricities(tolerance(1e-10), horizon).first;
-  const auto   rk4       = eccentricities({"Integrator/Method=rk4", "Integrator/Time step=1e-5"}, horizon).first;
+  const double        horizon   = 0.02;
+  const auto          reference = eccentricities(tolerance(1e-10), horizon).first;
+  const auto          rk4       = eccentricities({"Integrator/Method=rk4", "Integrator/Time step=1e-5"}, horizon).first;
   std::vector<double> errors;
   for (const double rtol : {1e-6, 1e-7, 1e-8})
     {
@@ -229,8 +226,8 @@ TEST(NineBar, AdaptiveAgreesWithFixedStepAndConverges)
                 << errors.back() << " m\n";
     }
   const double default_vs_rk4 = max_difference(eccentricities({}, horizon).first, rk4);
-  std::cout << "first 20 ms: dopri5 default vs rk4 1e-5 s: " << default_vs_rk4 << " m; rk4 vs rtol 1e-10: "
-            << max_difference(rk4, reference) << " m\n";
+  std::cout << "first 20 ms: dopri5 default vs rk4 1e-5 s: " << default_vs_rk4
+            << " m; rk4 vs rtol 1e-10: " << max_difference(rk4, reference) << " m\n";
   EXPECT_LT(errors[1], errors[0]);
   EXPECT_LT(errors[2], errors[1]);
   // Measured 1e-8 m at rtol 1e-8: the error follows the tolerance (position tolerance
@@ -246,9 +243,11 @@ TEST(NineBar, AdaptiveAgreesWithFixedStepAndConverges)
   //     the friction dissipation — agree between dopri5 (default) and rk4 at 1e-5 s.
   //     Tolerances: twice the spread measured across dopri5 tolerances 1e-6…1e-10
   //     (0.5%, 1%, 3% and 4%).
-  const Json ds = eccentricities({}, 0.5).second;
-  const Json rs = eccentricities({"Integrator/Method=rk4", "Integrator/Time step=1e-5"}, 0.5).second;
-  auto rel = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
+  const Json ds  = eccentricities({}, 0.5).second;
+  const Json rs  = eccentricities({"Integrator/Method=rk4", "Integrator/Time step=1e-5"}, 0.5).second;
+  auto       rel = [](double a, double b) {
+    return std::abs(a - b) / std::abs(b);
+  };
   for (const char *j : {"A", "B"})
     {
       const double fd = json_number(ds.at("clearance_joints").at(j).at("max_normal_force_N"));

@@ -3,9 +3,9 @@
 #pragma once
 
 #include "base/effect_ledger.h"
-#include "workflows/run.h"
 #include "io/scene.h"
 #include "support/test_support.h"
+#include "workflows/run.h"
 
 #include <functional>
 
@@ -19,7 +19,8 @@ namespace wearlink::testing
     Sampler(double interval, Function f)
       : interval(interval)
       , f(std::move(f))
-    {}
+    {
+    }
     void
     on_start(const mbs::StepContext &c) override
     {

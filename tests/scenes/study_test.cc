@@ -38,7 +38,7 @@ namespace
   std::vector<Row>
   read_csv(const std::string &path)
   {
-    std::ifstream            in(path);
+    std::ifstream                         in(path);
     std::vector<std::vector<std::string>> table;
     for (std::string line; std::getline(in, line);)
       {
@@ -105,9 +105,18 @@ TEST(StudyAccuracy, IntegratorToleranceConvergesOnThePeakContactForce)
                                              "1e-6;1e-9;1e-6, 1e-8;1e-11;1e-8\n"
                                              "  end\n"
                                              "end\n");
-  const auto r = run_wearlink({"study", "accuracy", source_path("params/nine_bar_wear.prm"), "--study", study,
-                               "--set", "Wear/Cycles per iteration=0.25", "--set", "Wear/Number of iterations=1",
-                               "--output", dir + "/out", "--quiet"});
+  const auto        r     = run_wearlink({"study",
+                                          "accuracy",
+                                          source_path("params/nine_bar_wear.prm"),
+                                          "--study",
+                                          study,
+                                          "--set",
+                                          "Wear/Cycles per iteration=0.25",
+                                          "--set",
+                                          "Wear/Number of iterations=1",
+                                          "--output",
+                                          dir + "/out",
+                                          "--quiet"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   const auto rows = read_csv(dir + "/out/accuracy.csv");
   ASSERT_EQ(rows.size(), 5u);
@@ -120,16 +129,22 @@ TEST(StudyAccuracy, IntegratorToleranceConvergesOnThePeakContactForce)
         EXPECT_TRUE(std::isfinite(coarse) && std::isfinite(fine));
         // At least 2× smaller per decade of tolerance (measured: 4–300×).
         EXPECT_LT(fine, 0.5 * coarse) << "joint " << joint << ": peak-force error " << fine << " at "
-                                      << rows[i].at("value") << " vs " << coarse << " at "
-                                      << rows[i - 1].at("value");
+                                      << rows[i].at("value") << " vs " << coarse << " at " << rows[i - 1].at("value");
       }
 }
 
 TEST(StudyAccuracy, QuickStudyVariesTheActiveKnobsAndTimesEveryRun)
 {
   const std::string dir = fresh_directory("study_quick");
-  const auto r = run_wearlink({"study", "accuracy", source_path("params/nine_bar_wear.prm"), "--quick", "--set",
-                               "Wear/Cycles per iteration=0.5", "--output", dir, "--quiet"});
+  const auto        r   = run_wearlink({"study",
+                                        "accuracy",
+                                        source_path("params/nine_bar_wear.prm"),
+                                        "--quick",
+                                        "--set",
+                                        "Wear/Cycles per iteration=0.5",
+                                        "--output",
+                                        dir,
+                                        "--quiet"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   const auto rows = read_csv(dir + "/accuracy.csv");
   // 6 knobs × 3 values in quick mode.
@@ -142,8 +157,8 @@ TEST(StudyAccuracy, QuickStudyVariesTheActiveKnobsAndTimesEveryRun)
       const double t = number(row, "wall_time_s");
       EXPECT_TRUE(std::isfinite(t) && t > 0) << row.at("knob") << " = " << row.at("value") << ": " << t;
     }
-  const std::set<std::string> expected = {"integrator-tolerance", "contact-law", "discrete-areas", "load-sampling",
-                                          "wear-step", "simulated-cycles"};
+  const std::set<std::string> expected =
+    {"integrator-tolerance", "contact-law", "discrete-areas", "load-sampling", "wear-step", "simulated-cycles"};
   std::set<std::string> got;
   for (const auto &[k, v] : by_knob)
     got.insert(k);
@@ -162,8 +177,8 @@ TEST(StudyAccuracy, QuickStudyVariesTheActiveKnobsAndTimesEveryRun)
   // that costs in time is the benchmark's business, not a unit of the default suite.)
   const auto &wear_step = by_knob["wear-step"];
   auto        parts     = [](const Row &row) {
-    const auto  v    = row.at("value");
-    const auto  semi = v.find(';');
+    const auto v    = row.at("value");
+    const auto semi = v.find(';');
     return std::make_pair(std::stod(v.substr(0, semi)), std::stod(v.substr(semi + 1)));
   };
   const auto coarse = parts(wear_step.front()), fine = parts(wear_step.back());
@@ -193,16 +208,20 @@ TEST(StudyAccuracy, UnknownOrInapplicableKnobsAreInputErrorsAndWriteNothing)
     std::string study_text, knobs, message;
   };
   const std::vector<Case> cases = {
-    {"subsection Accuracy study\n  set Knobs = integrator-tolerance, mesh-size\nend\n", "",
+    {"subsection Accuracy study\n  set Knobs = integrator-tolerance, mesh-size\nend\n",
+     "",
      "'Accuracy study/Knobs' names 'mesh-size', which is not a knob; the knobs are integrator-tolerance"},
-    {"subsection Accuracy study\n  subsection mesh-size\n    set Values = 1, 2\n  end\nend\n", "", "mesh-size[\\s\\S]*the knobs are integrator-tolerance"},
-    {"subsection Accuracy study\n  subsection wear-step\n    set Values = 2, 4\n  end\nend\n", "",
+    {"subsection Accuracy study\n  subsection mesh-size\n    set Values = 1, 2\n  end\nend\n",
+     "",
+     "mesh-size[\\s\\S]*the knobs are integrator-tolerance"},
+    {"subsection Accuracy study\n  subsection wear-step\n    set Values = 2, 4\n  end\nend\n",
+     "",
      "needs 2 part\\(s\\) separated by ';'"},
     {"", "fe-degree", "'fe-degree' does not apply to .* the knobs of this scene are integrator-tolerance"},
   };
   for (std::size_t i = 0; i < cases.size(); ++i)
     {
-      const std::string        out = dir + "/out" + std::to_string(i);
+      const std::string        out  = dir + "/out" + std::to_string(i);
       std::vector<std::string> args = {"study", "accuracy", scene, "--output", out, "--quiet"};
       if (!cases[i].study_text.empty())
         {
@@ -227,8 +246,15 @@ TEST(StudyAccuracy, UnknownOrInapplicableKnobsAreInputErrorsAndWriteNothing)
 TEST(StudyAccuracy, SceneWithoutWearHasOnlyDynamicsKnobs)
 {
   const std::string dir = fresh_directory("study_no_wear");
-  const auto r = run_wearlink({"study", "accuracy", source_path("params/nine_bar_clearance.prm"), "--quick", "--set",
-                               "Simulation/End time=0.25", "--output", dir, "--quiet"});
+  const auto        r   = run_wearlink({"study",
+                                        "accuracy",
+                                        source_path("params/nine_bar_clearance.prm"),
+                                        "--quick",
+                                        "--set",
+                                        "Simulation/End time=0.25",
+                                        "--output",
+                                        dir,
+                                        "--quiet"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   const auto            rows = read_csv(dir + "/accuracy.csv");
   std::set<std::string> knobs;

@@ -15,9 +15,9 @@
 //  - Effects: wear off → no wear law, no pressure model, no wear buffers, no gmsh;
 //    wear on with hertz-strip → only that pressure model, still no gmsh.
 #include "contact/clearance_joint.h"
+#include "scene_support.h"
 #include "workflows/pressure_comparison.h"
 #include "workflows/wear_run.h"
-#include "scene_support.h"
 
 #include <gtest/gtest.h>
 
@@ -37,7 +37,8 @@ namespace
       : joints(std::move(j))
       , integral(joints.size(), 0.0)
       , last(joints.size(), 0.0)
-    {}
+    {
+    }
     void
     on_start(const mbs::StepContext &c) override
     {
@@ -84,10 +85,11 @@ namespace
 TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
 {
   // One iteration of half a cycle, factor 1: the summary's volumes are one iteration's.
-  auto scene2 = wearlink::testing::scene("params/nine_bar_wear.prm",
-                                         with(short_run, {"Wear/Number of iterations=1", "Wear/Extrapolation factor=1"}));
-  FrictionWorkObserver work(scene2.clearance_joints);
-  workflows::WearRunOptions   o;
+  auto scene2 =
+    wearlink::testing::scene("params/nine_bar_wear.prm",
+                             with(short_run, {"Wear/Number of iterations=1", "Wear/Extrapolation factor=1"}));
+  FrictionWorkObserver      work(scene2.clearance_joints);
+  workflows::WearRunOptions o;
   o.progress      = false;
   o.final_outputs = false;
   o.observers     = {&work};
@@ -95,9 +97,9 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
   ASSERT_EQ(r.state.joints.size(), 2u);
   for (unsigned i = 0; i < 2; ++i)
     {
-      const auto &js = r.state.joints[i];
-      const auto &w  = *scene2.wear[i];
-      const auto &h  = js.history.back();
+      const auto  &js            = r.state.joints[i];
+      const auto  &w             = *scene2.wear[i];
+      const auto  &h             = js.history.back();
       const double expected_pin  = w.archard.pin_coefficient * work.integral[i];
       const double expected_bore = w.archard.bushing_coefficient * work.integral[i];
       ASSERT_GT(expected_pin, 0) << js.name;
@@ -105,8 +107,8 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
       EXPECT_NEAR(h.volume_bore, expected_bore, 1e-9 * expected_bore) << js.name;
       // Σ depth × area from the stored depths (areas of the profiles the wear was
       // accumulated on: the initial ones).
-      const double length = scene2.clearance_joints[i]->get_description().geometry.axial_length;
-      const double dpsi   = 2 * M_PI / js.pin.n_points();
+      const double length  = scene2.clearance_joints[i]->get_description().geometry.axial_length;
+      const double dpsi    = 2 * M_PI / js.pin.n_points();
       double       sum_pin = 0, sum_bore = 0;
       for (unsigned k = 0; k < js.pin.n_points(); ++k)
         {
@@ -115,8 +117,8 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
         }
       // The stored depth is a difference of radii, R* − R, so each area carries a
       // rounding error of up to 2 ε R: the sum may be off by 2 ε R (2π R L).
-      const double eps       = std::numeric_limits<double>::epsilon();
-      const double round_pin = 2 * eps * js.initial_pin[0] * 2 * M_PI * js.initial_pin[0] * length;
+      const double eps        = std::numeric_limits<double>::epsilon();
+      const double round_pin  = 2 * eps * js.initial_pin[0] * 2 * M_PI * js.initial_pin[0] * length;
       const double round_bore = 2 * eps * js.initial_bore[0] * 2 * M_PI * js.initial_bore[0] * length;
       EXPECT_NEAR(sum_pin, expected_pin, 1e-9 * expected_pin + round_pin) << js.name;
       EXPECT_NEAR(sum_bore, expected_bore, 1e-9 * expected_bore + round_bore) << js.name;
@@ -130,14 +132,14 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
 
 TEST(Wear, ResumedRunEqualsUninterruptedRun)
 {
-  const auto    base = with(short_run, {"Wear/Number of iterations=3", "Wear/Extrapolation factor=2000"});
+  const auto                base = with(short_run, {"Wear/Number of iterations=3", "Wear/Extrapolation factor=2000"});
   workflows::WearRunOptions o;
   o.progress      = false;
   o.final_outputs = false;
 
-  auto straight_scene  = wearlink::testing::scene("params/nine_bar_wear.prm", base);
-  o.output_directory   = wearlink::testing::fresh_directory("wear_straight");
-  const auto straight  = workflows::run_wear(straight_scene, o);
+  auto straight_scene = wearlink::testing::scene("params/nine_bar_wear.prm", base);
+  o.output_directory  = wearlink::testing::fresh_directory("wear_straight");
+  const auto straight = workflows::run_wear(straight_scene, o);
   ASSERT_EQ(straight.state.iterations_done, 3u);
 
   // "Killed" after one iteration of three, then resumed by a fresh process state.
@@ -149,9 +151,9 @@ TEST(Wear, ResumedRunEqualsUninterruptedRun)
     EXPECT_FALSE(k.finished);
     EXPECT_EQ(k.state.iterations_done, 1u);
   }
-  auto s2      = wearlink::testing::scene("params/nine_bar_wear.prm", base);
-  o.stop_after = 0;
-  o.resume     = true;
+  auto s2            = wearlink::testing::scene("params/nine_bar_wear.prm", base);
+  o.stop_after       = 0;
+  o.resume           = true;
   const auto resumed = workflows::run_wear(s2, o);
   ASSERT_TRUE(resumed.finished);
   ASSERT_EQ(resumed.state.iterations_done, 3u);
@@ -183,8 +185,9 @@ TEST(Wear, ResumeRefusesAnotherScene)
     auto s = wearlink::testing::scene("params/nine_bar_wear.prm", with(short_run, {"Wear/Number of iterations=2"}));
     workflows::run_wear(s, o);
   }
-  auto s = wearlink::testing::scene("params/nine_bar_wear.prm",
-                                    with(short_run, {"Wear/Number of iterations=2", "Joint A/Clearance/archard/Pin wear coefficient=1e-12"}));
+  auto s = wearlink::testing::scene(
+    "params/nine_bar_wear.prm",
+    with(short_run, {"Wear/Number of iterations=2", "Joint A/Clearance/archard/Pin wear coefficient=1e-12"}));
   o.stop_after = 0;
   o.resume     = true;
   EXPECT_THROW(workflows::run_wear(s, o), InputError);
@@ -205,8 +208,7 @@ TEST(Effects, WearOffConstructsNoWearCode)
 
 TEST(Effects, HertzStripWearConstructsOnlyItsPressureModel)
 {
-  auto scene = wearlink::testing::scene("params/nine_bar_wear.prm",
-                                        with(short_run, {"Wear/Number of iterations=1"}));
+  auto scene = wearlink::testing::scene("params/nine_bar_wear.prm", with(short_run, {"Wear/Number of iterations=1"}));
   workflows::WearRunOptions o;
   o.progress      = false;
   o.final_outputs = false;
@@ -229,9 +231,10 @@ TEST(Effects, HertzStripWearConstructsOnlyItsPressureModel)
 // non-zero but not bounded, since that difference is the finding, not a defect.
 TEST(Wear, PressureModelComparisonSameLoadsSimilarVolumes)
 {
-  auto       scene = wearlink::testing::scene("params/nine_bar_wear.prm", {"Wear/Pressure evaluation=samples per cycle",
-                                                                         "Wear/Load samples per cycle=200"});
-  const auto c     = workflows::compare_pressure_models(scene, {"hertz-strip", "winkler"}, 0.25);
+  auto scene =
+    wearlink::testing::scene("params/nine_bar_wear.prm",
+                             {"Wear/Pressure evaluation=samples per cycle", "Wear/Load samples per cycle=200"});
+  const auto c = workflows::compare_pressure_models(scene, {"hertz-strip", "winkler"}, 0.25);
   std::cout << c.table();
   ASSERT_EQ(c.rows.size(), 4u); // 2 joints × 2 models
   for (unsigned j = 0; j < 2; ++j)

@@ -3,7 +3,6 @@
 #include "register_all.h"
 
 #include <deal.II/base/exceptions.h>
-
 #include <gtest/gtest.h>
 
 int

@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "support/test_support.h"
 
-#include <unistd.h>
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace wearlink::testing
 {
@@ -54,7 +52,7 @@ namespace wearlink::testing
     run_shell(const std::string &command)
     {
       ProgramResult r;
-      FILE *        pipe = ::popen((command + " 2>&1").c_str(), "r");
+      FILE         *pipe = ::popen((command + " 2>&1").c_str(), "r");
       if (pipe == nullptr)
         throw std::runtime_error("cannot start " + command);
       std::array<char, 4096> buf;
@@ -85,8 +83,8 @@ namespace wearlink::testing
   ProgramResult
   run_wearlink_mpi(unsigned int n_ranks, const std::vector<std::string> &args)
   {
-    return run_shell(shell_quote(WEARLINK_MPIEXEC) + " -np " + std::to_string(n_ranks) +
-                     " --oversubscribe " + quoted_arguments(args));
+    return run_shell(shell_quote(WEARLINK_MPIEXEC) + " -np " + std::to_string(n_ranks) + " --oversubscribe " +
+                     quoted_arguments(args));
   }
 
   std::vector<std::string>

@@ -4,10 +4,10 @@
 // directory with analyses), e.g. a clearance scene run once with fresh and once with
 // worn profile files. A wear scene with analyses does the same by itself.
 #include "app/command_line.h"
+#include "base/exceptions.h"
 #include "io/analyses_parameters.h"
 #include "io/json_file.h"
 #include "io/recorded_run_files.h"
-#include "base/exceptions.h"
 #include "workflows/analyses.h"
 #include "workflows/dynamics_comparison.h"
 
@@ -107,8 +107,9 @@ channel not recorded in both, a delay below the sample interval).
         throw InputError("--delay must be >= 0 s (0: automatic), given " + a.value("--delay") + ".");
       const double m = a.number("--embedding", 0);
       if (!(m >= 0 && m <= 64 && m == std::floor(m)))
-        throw InputError("--embedding must be an integer in [0, 64] (0: automatic), given " + a.value("--embedding") + ".");
-      s.dimension = static_cast<unsigned int>(m);
+        throw InputError("--embedding must be an integer in [0, 64] (0: automatic), given " + a.value("--embedding") +
+                         ".");
+      s.dimension            = static_cast<unsigned int>(m);
       const std::string scan = a.value("--scan", "0.002,0.005,0.01,0.02,0.05");
       if (scan != "none")
         for (const auto &v : a.list("--scan", scan))
@@ -141,9 +142,9 @@ channel not recorded in both, a delay below the sample interval).
   } // namespace
 
   extern const Command compare_dynamics_command;
-  const Command compare_dynamics_command = {"compare-dynamics",
-                                            "compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR]  "
-                                            "dynamics before vs after wear",
-                                            help_text,
-                                            run};
+  const Command        compare_dynamics_command = {"compare-dynamics",
+                                                   "compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR]  "
+                                                          "dynamics before vs after wear",
+                                                   help_text,
+                                                   run};
 } // namespace wearlink::app

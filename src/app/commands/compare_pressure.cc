@@ -4,8 +4,8 @@
 // writes compare_pressure.csv, compare_depth_<J>.csv/.png.
 #include "app/command_line.h"
 #include "base/exceptions.h"
-#include "workflows/pressure_comparison.h"
 #include "io/scene.h"
+#include "workflows/pressure_comparison.h"
 
 #include <filesystem>
 #include <iostream>
@@ -36,21 +36,21 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
     int
     run(const std::vector<std::string> &args)
     {
-      const auto a = parse_arguments(args,
-                                     {{"--output", true}, {"--set", true, true}, {"--models", true}, {"--cycles", true}},
-                                     "compare-pressure");
+      const auto a =
+        parse_arguments(args,
+                        {{"--output", true}, {"--set", true, true}, {"--models", true}, {"--cycles", true}},
+                        "compare-pressure");
       if (a.positional.size() != 1)
         throw InputError("`wearlink compare-pressure` needs exactly one scene file. See --help.");
-      const std::string file  = a.positional[0];
-      io::Scene         scene = io::read_scene(file, a.all("--set"));
+      const std::string              file   = a.positional[0];
+      io::Scene                      scene  = io::read_scene(file, a.all("--set"));
       const std::vector<std::string> models = a.list("--models", "hertz-strip,winkler,fe");
-      const double cycles = a.number("--cycles", scene.wear_loop.cycles_per_iteration);
+      const double                   cycles = a.number("--cycles", scene.wear_loop.cycles_per_iteration);
       if (!(cycles > 0))
         throw InputError("--cycles must be > 0.");
       const auto c = workflows::compare_pressure_models(scene, models, cycles);
       std::cout << c.table();
-      const std::string out =
-        a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_compare");
+      const std::string out = a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_compare");
       workflows::write_pressure_comparison(out, c);
       std::cout << "\nwrote " << out << "/compare_pressure.csv\n";
       return 0;
@@ -58,9 +58,9 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
   } // namespace
 
   extern const Command compare_pressure_command;
-  const Command compare_pressure_command = {"compare-pressure",
-                                            "compare-pressure SCENE.prm [--models a,b,c]  same load history "
-                                            "through several pressure models (wear volumes and profiles)",
-                                            help_text,
-                                            run};
+  const Command        compare_pressure_command = {"compare-pressure",
+                                                   "compare-pressure SCENE.prm [--models a,b,c]  same load history "
+                                                          "through several pressure models (wear volumes and profiles)",
+                                                   help_text,
+                                                   run};
 } // namespace wearlink::app

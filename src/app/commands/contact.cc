@@ -5,13 +5,13 @@
 // the output directory: summary.json, pressure_<k>_<solver>.csv per load state,
 // fields_<k>.vtu (displacement and stress for ParaView) and the gmsh mesh.
 #include "app/command_line.h"
-#include "base/text.h"
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/json.h"
 #include "base/parameters.h"
 #include "base/profile.h"
+#include "base/text.h"
 #include "fe/fe_settings.h"
 #include "fe/pin_bushing_model.h"
 
@@ -67,13 +67,47 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
     {
       using namespace dealii::Patterns;
       prm.enter_subsection("Geometry");
-      declare_required(prm, "Bore radius", Double(0), "Nominal bore radius R1 (used when no bore profile file is given, and for the Hertz comparison).", "m");
-      declare_required(prm, "Pin radius", Double(0), "Nominal pin radius R2 (used when no pin profile file is given, and for the Hertz comparison).", "m");
-      declare_required(prm, "Bushing outer radius", Double(0), "Outer radius of the bushing ring; its outer edge is fixed.", "m");
-      declare_required(prm, "Axial length", Double(0), "Contact length along the pin axis; loads are spread over it (plane strain).", "m");
-      declare(prm, "Number of profile points", "360", Integer(8), "Discrete areas N of each profile (samples at ψ_k = 2πk/N).", "none");
-      declare(prm, "Bore profile file", "", Anything(), "CSV 'angle_rad, radius_m' of the worn bore in the bushing frame; empty: round bore of radius 'Bore radius'. Relative to the case file.", "none");
-      declare(prm, "Pin profile file", "", Anything(), "CSV 'angle_rad, radius_m' of the worn pin in the pin frame; empty: round pin of radius 'Pin radius'. Relative to the case file.", "none");
+      declare_required(
+        prm,
+        "Bore radius",
+        Double(0),
+        "Nominal bore radius R1 (used when no bore profile file is given, and for the Hertz comparison).",
+        "m");
+      declare_required(prm,
+                       "Pin radius",
+                       Double(0),
+                       "Nominal pin radius R2 (used when no pin profile file is given, and for the Hertz comparison).",
+                       "m");
+      declare_required(prm,
+                       "Bushing outer radius",
+                       Double(0),
+                       "Outer radius of the bushing ring; its outer edge is fixed.",
+                       "m");
+      declare_required(prm,
+                       "Axial length",
+                       Double(0),
+                       "Contact length along the pin axis; loads are spread over it (plane strain).",
+                       "m");
+      declare(prm,
+              "Number of profile points",
+              "360",
+              Integer(8),
+              "Discrete areas N of each profile (samples at ψ_k = 2πk/N).",
+              "none");
+      declare(
+        prm,
+        "Bore profile file",
+        "",
+        Anything(),
+        "CSV 'angle_rad, radius_m' of the worn bore in the bushing frame; empty: round bore of radius 'Bore radius'. Relative to the case file.",
+        "none");
+      declare(
+        prm,
+        "Pin profile file",
+        "",
+        Anything(),
+        "CSV 'angle_rad, radius_m' of the worn pin in the pin frame; empty: round pin of radius 'Pin radius'. Relative to the case file.",
+        "none");
       prm.leave_subsection();
       for (const char *body : {"Bushing material", "Pin material"})
         {
@@ -83,17 +117,50 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           prm.leave_subsection();
         }
       prm.enter_subsection("Loads");
-      declare(prm, "Control", "force", Selection("force|displacement"), "force: the load magnitudes are given and the pin's displacement follows; displacement: the eccentricities are given and the contact force follows.", "none");
-      declare(prm, "Load magnitudes", "100", List(Double(0), 1), "Magnitudes of the force on the pin, one load state each (force control).", "N");
-      declare(prm, "Eccentricities", "0.5e-3", List(Double(0), 1), "Pin-centre offsets from the bore centre along 'Load direction', one load state each (displacement control).", "m");
-      declare(prm, "Load direction", "0, -1", point_pattern(), "Direction of the force on the pin (pushing it into the bore), or of the eccentricity; global frame.", "none");
+      declare(
+        prm,
+        "Control",
+        "force",
+        Selection("force|displacement"),
+        "force: the load magnitudes are given and the pin's displacement follows; displacement: the eccentricities are given and the contact force follows.",
+        "none");
+      declare(prm,
+              "Load magnitudes",
+              "100",
+              List(Double(0), 1),
+              "Magnitudes of the force on the pin, one load state each (force control).",
+              "N");
+      declare(
+        prm,
+        "Eccentricities",
+        "0.5e-3",
+        List(Double(0), 1),
+        "Pin-centre offsets from the bore centre along 'Load direction', one load state each (displacement control).",
+        "m");
+      declare(prm,
+              "Load direction",
+              "0, -1",
+              point_pattern(),
+              "Direction of the force on the pin (pushing it into the bore), or of the eccentricity; global frame.",
+              "none");
       declare(prm, "Bushing angle", "0", Double(), "Angle θ of the body holding the bore.", "deg");
       declare(prm, "Pin angle", "0", Double(), "Angle θ of the body holding the pin.", "deg");
       prm.leave_subsection();
       prm.enter_subsection("FE model");
       fe::declare_fe_settings(prm);
-      declare(prm, "Refined arc half-angle", "180", Double(0, 180), "Half-angle of the arc of each contact surface, centred on the load direction, that is meshed at 'Surface element size'; elsewhere the size grows with the distance from it. 180: the whole circumference.", "deg");
-      declare(prm, "Solvers", "condensed, reference", MultipleSelection("condensed|reference"), "Which contact solvers to run (both: their pressures are compared).", "none");
+      declare(
+        prm,
+        "Refined arc half-angle",
+        "180",
+        Double(0, 180),
+        "Half-angle of the arc of each contact surface, centred on the load direction, that is meshed at 'Surface element size'; elsewhere the size grows with the distance from it. 180: the whole circumference.",
+        "deg");
+      declare(prm,
+              "Solvers",
+              "condensed, reference",
+              MultipleSelection("condensed|reference"),
+              "Which contact solvers to run (both: their pressures are compared).",
+              "none");
       prm.leave_subsection();
       prm.enter_subsection("Output");
       declare(prm, "Write VTU", "true", Bool(), "Write fields_<k>.vtu (displacement, stress) per load state.", "none");
@@ -113,7 +180,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
     write_pressure_csv(const std::string &path, const fe::ContactResult &r)
     {
       AtomicFile f(path);
-      auto &     os = f.stream();
+      auto      &os = f.stream();
       os << "# nodal contact pressure per pin contact candidate\n"
          << "pin_angle_deg_pin_frame,bore_angle_deg_bushing_frame,pressure_Pa\n"
          << std::setprecision(12);
@@ -128,15 +195,16 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       // MPI (and PETSc) for the distributed reference solver; a plain run is one rank.
       int                                      mpi_argc   = 1;
       char                                     program[]  = "wearlink";
-      char *                                   mpi_argv[] = {program, nullptr};
-      char **                                  argv_ptr   = mpi_argv;
+      char                                    *mpi_argv[] = {program, nullptr};
+      char                                   **argv_ptr   = mpi_argv;
       dealii::Utilities::MPI::MPI_InitFinalize mpi(mpi_argc, argv_ptr, 1);
-      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      const bool         root    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-      std::ostream       muted(nullptr);
-      std::ostream &     log = root ? std::cout : muted;
+      const unsigned int                       n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      const bool                               root    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      std::ostream                             muted(nullptr);
+      std::ostream                            &log = root ? std::cout : muted;
 
-      const auto a = parse_arguments(args, {{"--output", true}, {"--set", true, true}, {"--print-parameters", false}}, "contact");
+      const auto a =
+        parse_arguments(args, {{"--output", true}, {"--set", true, true}, {"--print-parameters", false}}, "contact");
       dealii::ParameterHandler prm;
       declare_case(prm);
       if (a.has("--print-parameters"))
@@ -158,30 +226,31 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       // Geometry and materials.
       contact::JointGeometry geometry;
       reader.enter("Geometry");
-      const double R1 = reader.get_positive("Bore radius");
-      const double R2 = reader.get_positive("Pin radius");
+      const double R1           = reader.get_positive("Bore radius");
+      const double R2           = reader.get_positive("Pin radius");
       const double outer_radius = reader.get_positive("Bushing outer radius");
       geometry.axial_length     = reader.get_positive("Axial length");
       const auto n_points       = static_cast<unsigned int>(reader.get_integer("Number of profile points"));
-      auto profile = [&](const std::string &entry, double radius, const std::string &what) {
+      auto       profile        = [&](const std::string &entry, double radius, const std::string &what) {
         const std::string f = reader.get(entry);
         if (f.empty())
           return Profile::round(radius, n_points);
         const auto path = std::filesystem::path(f).is_relative() ? base / f : std::filesystem::path(f);
-        Profile p = Profile::read_csv(path.string(), n_points);
+        Profile    p    = Profile::read_csv(path.string(), n_points);
         p.check(what + " profile '" + path.string() + "'");
         return p;
       };
       geometry.bore = profile("Bore profile file", R1, "bore");
       geometry.pin  = profile("Pin profile file", R2, "pin");
       if (!(R2 < R1))
-        reader.fail("Pin radius", "the pin must be smaller than the bore ('Bore radius' = " + format_number(R1, 4) + " m)",
+        reader.fail("Pin radius",
+                    "the pin must be smaller than the bore ('Bore radius' = " + format_number(R1, 4) + " m)",
                     "Set a pin radius below the bore radius (the radial clearance is their difference).");
       if (!(outer_radius > R1))
         reader.fail("Bushing outer radius", "it must exceed the bore radius (" + format_number(R1, 4) + " m)");
       reader.leave();
-      for (auto [section, material] : {std::pair{"Bushing material", &geometry.bushing},
-                                       std::pair{"Pin material", &geometry.pin_material}})
+      for (auto [section, material] :
+           {std::pair{"Bushing material", &geometry.bushing}, std::pair{"Pin material", &geometry.pin_material}})
         {
           reader.enter(section);
           material->youngs_modulus = reader.get_positive("Youngs modulus");
@@ -200,9 +269,9 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       for (const auto &v : reader.get_list(force_control ? "Load magnitudes" : "Eccentricities"))
         {
           fe::LoadCase lc;
-          lc.control       = force_control ? fe::Control::force : fe::Control::displacement;
-          lc.bushing_angle = reader.get_double("Bushing angle") * pi / 180;
-          lc.pin_angle     = reader.get_double("Pin angle") * pi / 180;
+          lc.control             = force_control ? fe::Control::force : fe::Control::displacement;
+          lc.bushing_angle       = reader.get_double("Bushing angle") * pi / 180;
+          lc.pin_angle           = reader.get_double("Pin angle") * pi / 180;
           const double magnitude = std::stod(v);
           if (!(magnitude > 0))
             reader.fail(force_control ? "Load magnitudes" : "Eccentricities", "every value must be > 0");
@@ -213,18 +282,18 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       reader.leave();
 
       reader.enter("FE model");
-      fe::FeSettings settings = fe::read_fe_settings(reader);
-      settings.outer_radius   = outer_radius;
+      fe::FeSettings settings         = fe::read_fe_settings(reader);
+      settings.outer_radius           = outer_radius;
       settings.refined_arc_half_angle = reader.get_double("Refined arc half-angle") * pi / 180;
       if (settings.refined_arc_half_angle >= pi)
         settings.refined_arc_half_angle = 4; // whole circumference
       if (!loads.empty())
         {
-          const double direction_angle = std::atan2(direction[1], direction[0]);
+          const double direction_angle     = std::atan2(direction[1], direction[0]);
           settings.refined_arc_bore_centre = direction_angle - loads[0].bushing_angle;
           settings.refined_arc_pin_centre  = direction_angle - loads[0].pin_angle;
         }
-      const auto solvers      = reader.get_list("Solvers");
+      const auto solvers = reader.get_list("Solvers");
       reader.leave();
       reader.enter("Output");
       const bool write_vtu = reader.get_bool("Write VTU");
@@ -240,8 +309,8 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
         log << "Reference solver distributed over " << n_ranks << " MPI ranks (METIS partitions, MUMPS).\n";
 
       // Set-up (mesh + assembly, then the condensed factorization).
-      log << "Meshing and assembling the pin–bushing pair (surface element size "
-                << settings.surface_element_size * 1e3 << " mm)...\n";
+      log << "Meshing and assembling the pin–bushing pair (surface element size " << settings.surface_element_size * 1e3
+          << " mm)...\n";
       fe::PinBushingModel model(geometry, settings, out + "/pin_bushing.msh");
       {
         std::ostringstream os;
@@ -250,32 +319,31 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           write_file_atomically(out + "/parameters.prm", os.str());
       }
       const auto &st = model.statistics();
-      log << "  " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs << " DoFs, "
-                << st.n_pin_candidates << " pin + " << st.n_bore_candidates
-                << " bore contact candidates; mesh " << format_number(st.mesh_time, 3) << " s, assembly "
-                << format_number(st.assembly_time, 3) << " s\n";
+      log << "  " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs << " DoFs, " << st.n_pin_candidates
+          << " pin + " << st.n_bore_candidates << " bore contact candidates; mesh " << format_number(st.mesh_time, 3)
+          << " s, assembly " << format_number(st.assembly_time, 3) << " s\n";
 
       // Hertz line contact (REFERENCE.md §5): internal contact R* = R1 R2/(R1 − R2).
       const double E_star = contact::effective_modulus(geometry.bushing, geometry.pin_material);
       const double R_star = R1 * R2 / (R1 - R2);
 
-      Json summary = Json::object();
-      summary["case"]                 = file;
-      summary["control"]              = force_control ? "force" : "displacement";
-      summary["n_dofs"]               = st.n_dofs;
-      summary["n_contact_candidates"] = st.n_pin_candidates + st.n_bore_candidates;
+      Json summary                         = Json::object();
+      summary["case"]                      = file;
+      summary["control"]                   = force_control ? "force" : "displacement";
+      summary["n_dofs"]                    = st.n_dofs;
+      summary["n_contact_candidates"]      = st.n_pin_candidates + st.n_bore_candidates;
       summary["n_pin_contact_candidates"]  = st.n_pin_candidates;
       summary["n_bore_contact_candidates"] = st.n_bore_candidates;
-      summary["n_quadrilaterals"]     = st.mesh.n_quadrilaterals;
-      summary["surface_element_size_m"] = settings.surface_element_size;
-      summary["element_degree"]       = settings.degree;
-      summary["effective_modulus_Pa"] = E_star;
-      summary["relative_radius_m"]    = R_star;
-      summary["mesh_time_s"]          = st.mesh_time;
-      summary["assembly_time_s"]      = st.assembly_time;
+      summary["n_quadrilaterals"]          = st.mesh.n_quadrilaterals;
+      summary["surface_element_size_m"]    = settings.surface_element_size;
+      summary["element_degree"]            = settings.degree;
+      summary["effective_modulus_Pa"]      = E_star;
+      summary["relative_radius_m"]         = R_star;
+      summary["mesh_time_s"]               = st.mesh_time;
+      summary["assembly_time_s"]           = st.assembly_time;
 
       std::vector<fe::ContactResult> condensed, reference;
-      Json solvers_json = Json::object();
+      Json                           solvers_json = Json::object();
       if (run_condensed)
         {
           model.prepare_condensed();
@@ -293,14 +361,14 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
               mean += condensed[k].solve_time / loads.size();
               mean_first += first[k] / loads.size();
             }
-          Json s = Json::object();
-          s["setup_time_s"] = st.mesh_time + st.assembly_time + st.factorization_time + model.compliance_time();
+          Json s                    = Json::object();
+          s["setup_time_s"]         = st.mesh_time + st.assembly_time + st.factorization_time + model.compliance_time();
           s["factorization_time_s"] = st.factorization_time;
           s["influence_columns_time_s"] = model.compliance_time();
-          s["n_influence_columns"] = model.n_compliance_solves();
-          s["mean_solve_time_s"] = mean;
-          s["mean_first_solve_time_s"] = mean_first;
-          solvers_json["condensed"] = s;
+          s["n_influence_columns"]      = model.n_compliance_solves();
+          s["mean_solve_time_s"]        = mean;
+          s["mean_first_solve_time_s"]  = mean_first;
+          solvers_json["condensed"]     = s;
         }
       if (run_reference)
         {
@@ -310,15 +378,15 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
               reference.push_back(model.solve(lc, fe::SolverKind::reference));
               mean += reference.back().solve_time / loads.size();
             }
-          Json s = Json::object();
-          s["setup_time_s"]      = st.mesh_time + st.assembly_time;
-          s["mean_solve_time_s"] = mean;
+          Json s                    = Json::object();
+          s["setup_time_s"]         = st.mesh_time + st.assembly_time;
+          s["mean_solve_time_s"]    = mean;
           solvers_json["reference"] = s;
         }
 
       auto case_json = [&](const fe::ContactResult &r, const fe::LoadCase &lc) {
-        Json c = Json::object();
-        const double F = std::hypot(r.resultant[0], r.resultant[1]);
+        Json         c                     = Json::object();
+        const double F                     = std::hypot(r.resultant[0], r.resultant[1]);
         c["load_N"]                        = force_control ? std::hypot(lc.load[0], lc.load[1]) : F;
         c["resultant_N"]                   = vec(r.resultant);
         c["half_angle_deg"]                = r.half_angle * 180 / pi;
@@ -348,33 +416,36 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       // Hertz numbers and the comparison table.
       Json hertz = Json::array();
       log << "\n  load [N]   solver     half-angle [deg]  half-width [mm]  peak p [MPa]  "
-                   "equilibrium res.  time [ms]\n";
+             "equilibrium res.  time [ms]\n";
       double max_difference = 0;
       for (std::size_t k = 0; k < loads.size(); ++k)
         {
-          const auto &primary = !condensed.empty() ? condensed[k] : reference[k];
-          const double F  = force_control ? std::hypot(loads[k].load[0], loads[k].load[1]) :
-                                            std::hypot(primary.resultant[0], primary.resultant[1]);
-          const double P  = F / geometry.axial_length;
-          const double b  = std::sqrt(4 * P * R_star / (pi * E_star));
-          const double p0 = 2 * P / (pi * b);
-          Json h = Json::object();
-          h["load_N"] = F;
-          h["half_width_m"] = b;
-          h["half_angle_deg"] = b / R2 * 180 / pi;
+          const auto  &primary  = !condensed.empty() ? condensed[k] : reference[k];
+          const double F        = force_control ? std::hypot(loads[k].load[0], loads[k].load[1]) :
+                                                  std::hypot(primary.resultant[0], primary.resultant[1]);
+          const double P        = F / geometry.axial_length;
+          const double b        = std::sqrt(4 * P * R_star / (pi * E_star));
+          const double p0       = 2 * P / (pi * b);
+          Json         h        = Json::object();
+          h["load_N"]           = F;
+          h["half_width_m"]     = b;
+          h["half_angle_deg"]   = b / R2 * 180 / pi;
           h["peak_pressure_Pa"] = p0;
           hertz.push_back(h);
-          log << "  " << std::setw(9) << format_number(F, 6) << "  Hertz      " << std::setw(16) << format_number(b / R2 * 180 / pi, 4)
-                    << "  " << std::setw(15) << format_number(b * 1e3, 4) << "  " << std::setw(12) << format_number(p0 / 1e6, 4) << '\n';
+          log << "  " << std::setw(9) << format_number(F, 6) << "  Hertz      " << std::setw(16)
+              << format_number(b / R2 * 180 / pi, 4) << "  " << std::setw(15) << format_number(b * 1e3, 4) << "  "
+              << std::setw(12) << format_number(p0 / 1e6, 4) << '\n';
           for (auto [name, results] : {std::pair{"condensed", &condensed}, std::pair{"reference", &reference}})
             if (!results->empty())
               {
                 const auto &r = (*results)[k];
-                log << "  " << std::setw(9) << "" << "  " << std::setw(9) << std::left << name << std::right
-                          << "  " << std::setw(16) << format_number(r.half_angle * 180 / pi, 4) << "  " << std::setw(15)
-                          << format_number(r.half_width * 1e3, 4) << "  " << std::setw(12) << format_number(r.peak_pressure / 1e6, 4)
-                          << "  " << std::setw(16) << format_number(r.equilibrium_relative_residual, 2) << "  "
-                          << std::setw(9) << format_number(r.solve_time * 1e3, 3) << '\n';
+                log << "  " << std::setw(9) << ""
+                    << "  " << std::setw(9) << std::left << name << std::right << "  " << std::setw(16)
+                    << format_number(r.half_angle * 180 / pi, 4) << "  " << std::setw(15)
+                    << format_number(r.half_width * 1e3, 4) << "  " << std::setw(12)
+                    << format_number(r.peak_pressure / 1e6, 4) << "  " << std::setw(16)
+                    << format_number(r.equilibrium_relative_residual, 2) << "  " << std::setw(9)
+                    << format_number(r.solve_time * 1e3, 3) << '\n';
               }
           if (!condensed.empty() && !reference.empty())
             {
@@ -392,14 +463,16 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
                                json_number(solvers_json["condensed"]["mean_solve_time_s"]);
           summary["reference_to_condensed_time_ratio"] = ratio;
           log << "\n  condensed vs reference: max |Δp| / p_peak = " << format_number(max_difference, 3)
-                    << "; time per load state " << format_number(json_number(solvers_json["condensed"]["mean_solve_time_s"]) * 1e3, 3)
-                    << " ms vs " << format_number(json_number(solvers_json["reference"]["mean_solve_time_s"]) * 1e3, 4)
-                    << " ms (ratio " << format_number(ratio, 4) << ")\n";
+              << "; time per load state "
+              << format_number(json_number(solvers_json["condensed"]["mean_solve_time_s"]) * 1e3, 3) << " ms vs "
+              << format_number(json_number(solvers_json["reference"]["mean_solve_time_s"]) * 1e3, 4) << " ms (ratio "
+              << format_number(ratio, 4) << ")\n";
         }
 
       if (write_vtu)
         for (std::size_t k = 0; k < loads.size(); ++k)
-          model.solve(loads[k], run_condensed ? fe::SolverKind::condensed : fe::SolverKind::reference,
+          model.solve(loads[k],
+                      run_condensed ? fe::SolverKind::condensed : fe::SolverKind::reference,
                       root ? out + "/fields_" + std::to_string(k) + ".vtu" : std::string());
 
       Json ledger = Json::object();
@@ -410,7 +483,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
             c[key] = count;
           ledger[category] = c;
         }
-      summary["ledger"] = ledger;
+      summary["ledger"]    = ledger;
       summary["mpi_ranks"] = n_ranks;
       if (root)
         write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
@@ -420,8 +493,5 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
   } // namespace
 
   extern const Command contact_command;
-  const Command contact_command = {"contact",
-                                   "contact CASE.prm [--output DIR] [--set S/E=V ...]",
-                                   help_text,
-                                   run};
+  const Command contact_command = {"contact", "contact CASE.prm [--output DIR] [--set S/E=V ...]", help_text, run};
 } // namespace wearlink::app

@@ -6,11 +6,12 @@
 // exponent with its units and the embedding used, and writes a convergence plot (PNG)
 // with the plotted data (CSV) and a JSON summary, all atomically.
 #include "analysis/lyapunov.h"
-#include "base/text.h"
+
 #include "app/command_line.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/json.h"
+#include "base/text.h"
 #include "io/lyapunov_report.h"
 
 #include <algorithm>
@@ -124,8 +125,7 @@ series, bad option value).
     {
       std::ifstream in(file);
       if (!in)
-        throw InputError("Cannot open the series file '" + file +
-                         "': it does not exist or is not readable.");
+        throw InputError("Cannot open the series file '" + file + "': it does not exist or is not readable.");
       CsvSeries   out;
       std::string line;
       std::size_t line_no = 0;
@@ -137,15 +137,16 @@ series, bad option value).
         }
       out.columns = split_row(line);
       if (out.columns.empty() || (out.columns.size() == 1 && out.columns[0].empty()))
-        throw InputError("The series file '" + file + "' is empty; it needs a header row "
+        throw InputError("The series file '" + file +
+                         "' is empty; it needs a header row "
                          "with column names and one row per sample.");
       std::string list;
       for (const auto &c : out.columns)
         list += (list.empty() ? "" : ", ") + c;
       const auto it = std::find(out.columns.begin(), out.columns.end(), column);
       if (it == out.columns.end())
-        throw InputError("The series file '" + file + "' has no column '" + column +
-                         "'. Its columns are: " + list + ". Choose one with --column.");
+        throw InputError("The series file '" + file + "' has no column '" + column + "'. Its columns are: " + list +
+                         ". Choose one with --column.");
       const std::size_t col      = it - out.columns.begin();
       std::size_t       time_col = std::numeric_limits<std::size_t>::max();
       for (const char *name : {"t", "time_s"})
@@ -173,8 +174,8 @@ series, bad option value).
                              std::to_string(out.columns.size()) + ".");
           double v = 0.0;
           if (!parse_number(fields[col], v) || !std::isfinite(v))
-            throw InputError("In '" + file + "', line " + std::to_string(line_no) + ", column '" +
-                             column + "' is '" + fields[col] +
+            throw InputError("In '" + file + "', line " + std::to_string(line_no) + ", column '" + column + "' is '" +
+                             fields[col] +
                              "', not a finite number. The Lyapunov exponent needs a complete "
                              "series: remove or repair that sample.");
           out.values.push_back(v);
@@ -182,9 +183,8 @@ series, bad option value).
             {
               double t = 0.0;
               if (!parse_number(fields[time_col], t) || !std::isfinite(t))
-                throw InputError("In '" + file + "', line " + std::to_string(line_no) +
-                                 ", the time column '" + out.time_column + "' is '" +
-                                 fields[time_col] + "', not a finite number.");
+                throw InputError("In '" + file + "', line " + std::to_string(line_no) + ", the time column '" +
+                                 out.time_column + "' is '" + fields[time_col] + "', not a finite number.");
               out.time.push_back(t);
             }
         }
@@ -204,8 +204,8 @@ series, bad option value).
         if (std::abs(s.time[i] - s.time[i - 1] - dt) > time_step_tolerance * dt)
           throw InputError("In '" + file + "', the time column '" + s.time_column +
                            "' is not uniformly sampled: step " + std::to_string(i) + " is " +
-                           std::to_string(s.time[i] - s.time[i - 1]) + " s, the mean step " +
-                           std::to_string(dt) + " s. Resample the series at a fixed interval "
+                           std::to_string(s.time[i] - s.time[i - 1]) + " s, the mean step " + std::to_string(dt) +
+                           " s. Resample the series at a fixed interval "
                            "(or give --dt if the time column is only approximate).");
       return dt;
     }
@@ -229,8 +229,8 @@ series, bad option value).
           used = 0;
         }
       if (text.empty() || used != text.size() || v < min)
-        throw InputError("The option " + option + " needs a whole number >= " + std::to_string(min) +
-                         ", not '" + text + "'.");
+        throw InputError("The option " + option + " needs a whole number >= " + std::to_string(min) + ", not '" + text +
+                         "'.");
       return static_cast<T>(v);
     }
 
@@ -263,8 +263,7 @@ series, bad option value).
                          ". Usage: wearlink lyapunov SERIES.csv --column NAME (see --help).");
       const std::string file = args.positional[0];
       if (!args.has("--column"))
-        throw InputError("`wearlink lyapunov` needs --column NAME: the column of '" + file +
-                         "' to analyse.");
+        throw InputError("`wearlink lyapunov` needs --column NAME: the column of '" + file + "' to analyse.");
       const std::string column = args.value("--column");
 
       LyapunovSettings  settings;
@@ -294,10 +293,10 @@ series, bad option value).
 
       const CsvSeries series = read_csv_column(file, column);
       if (series.values.size() < min_series_length)
-        throw InputError("The column '" + column + "' of '" + file + "' has " +
-                         std::to_string(series.values.size()) + " samples; the Lyapunov "
-                         "exponent needs at least " + std::to_string(min_series_length) +
-                         " (in practice thousands).");
+        throw InputError("The column '" + column + "' of '" + file + "' has " + std::to_string(series.values.size()) +
+                         " samples; the Lyapunov "
+                         "exponent needs at least " +
+                         std::to_string(min_series_length) + " (in practice thousands).");
       if (!settings.sample_interval && !series.time_column.empty())
         {
           settings.sample_interval = sample_interval_from_time(series, file);
@@ -315,35 +314,31 @@ series, bad option value).
         }
 
       // Report.
-      const auto &      emb  = est.embedding;
+      const auto       &emb  = est.embedding;
       const double      dt   = est.sample_interval.value_or(1.0);
       const std::string tu   = est.sample_interval ? " s" : " samples";
       auto              time = [&](const std::size_t samples) {
         return est.sample_interval ? " (" + format_number(samples * dt, 4) + " s)" : std::string();
       };
       std::ostringstream report;
-      report << "wearlink lyapunov: '" << file << "', column '" << column << "', "
-             << series.values.size() << " samples, dt "
-             << (est.sample_interval ? format_number(dt, 6) + " s" : std::string("unknown")) << " ("
+      report << "wearlink lyapunov: '" << file << "', column '" << column << "', " << series.values.size()
+             << " samples, dt " << (est.sample_interval ? format_number(dt, 6) + " s" : std::string("unknown")) << " ("
              << dt_source << ")\n";
-      report << "  delay tau            " << emb.embedding.delay << " samples" << time(emb.embedding.delay)
-             << "  [" << (emb.delay_choice ? describe(emb.delay_choice->rule) : "given by --delay") << "]\n";
+      report << "  delay tau            " << emb.embedding.delay << " samples" << time(emb.embedding.delay) << "  ["
+             << (emb.delay_choice ? describe(emb.delay_choice->rule) : "given by --delay") << "]\n";
       report << "  embedding dimension  " << emb.embedding.dimension << "  [";
       if (emb.dimension_choice)
         {
           report << "false nearest neighbours:";
           for (std::size_t d = 0; d < emb.dimension_choice->false_fraction.size(); ++d)
-            report << " m=" << d + 1 << ": " << format_number(100 * emb.dimension_choice->false_fraction[d], 3)
-                   << "%";
-          report << (emb.dimension_choice->below_threshold ? "; first below 1%" :
-                                                             "; none below 1%, smallest taken");
+            report << " m=" << d + 1 << ": " << format_number(100 * emb.dimension_choice->false_fraction[d], 3) << "%";
+          report << (emb.dimension_choice->below_threshold ? "; first below 1%" : "; none below 1%, smallest taken");
         }
       else
         report << "given by --embedding";
       report << "]\n";
-      report << "  Theiler window       " << emb.theiler_window << " samples" << time(emb.theiler_window)
-             << "  [" << (settings.embedding.theiler_window ? "given by --theiler" : "default m * tau")
-             << "]\n";
+      report << "  Theiler window       " << emb.theiler_window << " samples" << time(emb.theiler_window) << "  ["
+             << (settings.embedding.theiler_window ? "given by --theiler" : "default m * tau") << "]\n";
       report << "  method               " << method_name(est.method)
              << (est.method == LyapunovMethod::wolf ? " (Wolf et al. 1985, fixed evolution time)" :
                                                       " (Rosenstein et al. 1993)")
@@ -351,17 +346,16 @@ series, bad option value).
       if (est.wolf)
         report << "  evolution time       " << est.wolf->evolution_steps << " samples"
                << time(est.wolf->evolution_steps) << ", " << est.wolf->n_segments
-               << " segments, mean replacement angle " << format_number(est.wolf->mean_replacement_angle, 3)
-               << " rad, " << est.wolf->n_kept_neighbours << " without replacement\n";
+               << " segments, mean replacement angle " << format_number(est.wolf->mean_replacement_angle, 3) << " rad, "
+               << est.wolf->n_kept_neighbours << " without replacement\n";
       if (est.rosenstein)
         {
           const auto &r = *est.rosenstein;
           report << "  fit region           samples " << r.fit_begin << " .. " << r.fit_end;
           if (est.sample_interval)
             report << " (" << format_number(r.fit_begin * dt, 4) << " .. " << format_number(r.fit_end * dt, 4) << " s)";
-          report << "  [" << r.fit_rule << "; rms residual " << format_number(r.fit_residual, 3)
-                 << "]\n  " << r.n_references << " reference points, horizon "
-                 << r.mean_log_divergence.size() - 1 << " samples"
+          report << "  [" << r.fit_rule << "; rms residual " << format_number(r.fit_residual, 3) << "]\n  "
+                 << r.n_references << " reference points, horizon " << r.mean_log_divergence.size() - 1 << " samples"
                  << (r.saturated ? ", divergence saturated" : ", no saturation within the horizon")
                  << (r.interpolated ? ", neighbours interpolated between samples" : "") << "\n";
         }
@@ -369,8 +363,8 @@ series, bad option value).
       report << "  largest Lyapunov exponent " << format_number(est.exponent(), 5) << " "
              << (est.sample_interval ? "1/s" : "1/sample") << " (natural log";
       if (est.sample_interval)
-        report << "; = " << format_number(per_sample, 5) << " per sample; = " << format_number(est.exponent() / std::log(2.0), 5)
-               << " bits/s)\n";
+        report << "; = " << format_number(per_sample, 5)
+               << " per sample; = " << format_number(est.exponent() / std::log(2.0), 5) << " bits/s)\n";
       else
         report << ", per sample = per iteration; = " << format_number(per_sample / std::log(2.0), 5)
                << " bits/sample)\n";
@@ -382,18 +376,18 @@ series, bad option value).
           .string();
       const bool plotted = io::write_lyapunov_curve(est, column, stem);
 
-      Json summary                    = Json::object();
-      summary["file"]                 = file;
-      summary["column"]               = column;
-      summary["n_samples"]            = series.values.size();
-      summary["method"]               = method_name(est.method);
-      summary["sample_interval_s"]    = est.sample_interval ? Json(dt) : Json();
-      summary["delay_samples"]        = emb.embedding.delay;
-      summary["embedding_dimension"]  = emb.embedding.dimension;
+      Json summary                      = Json::object();
+      summary["file"]                   = file;
+      summary["column"]                 = column;
+      summary["n_samples"]              = series.values.size();
+      summary["method"]                 = method_name(est.method);
+      summary["sample_interval_s"]      = est.sample_interval ? Json(dt) : Json();
+      summary["delay_samples"]          = emb.embedding.delay;
+      summary["embedding_dimension"]    = emb.embedding.dimension;
       summary["theiler_window_samples"] = emb.theiler_window;
-      summary["exponent"]             = est.exponent();
-      summary["exponent_unit"]        = est.sample_interval ? "1/s (natural log)" : "1/sample (natural log)";
-      summary["exponent_per_sample"]  = per_sample;
+      summary["exponent"]               = est.exponent();
+      summary["exponent_unit"]          = est.sample_interval ? "1/s (natural log)" : "1/sample (natural log)";
+      summary["exponent_per_sample"]    = per_sample;
       if (est.rosenstein)
         {
           summary["fit_begin_samples"] = est.rosenstein->fit_begin;
@@ -412,10 +406,10 @@ series, bad option value).
   } // namespace
 
   extern const Command lyapunov_command;
-  const Command lyapunov_command = {
-    "lyapunov",
-    "lyapunov SERIES.csv --column NAME [--method wolf|rosenstein] [--dt S] [--embedding M] "
-    "[--delay K] [--output DIR]",
-    help_text,
-    run};
+  const Command        lyapunov_command = {
+           "lyapunov",
+           "lyapunov SERIES.csv --column NAME [--method wolf|rosenstein] [--dt S] [--embedding M] "
+                  "[--delay K] [--output DIR]",
+           help_text,
+           run};
 } // namespace wearlink::app

@@ -3,9 +3,10 @@
 // write summary.json, time_series.csv and parameters.prm into the output directory.
 // `--validate` stops after reading, building and assembling (no output is written);
 // `--print-parameters` prints every entry a scene can have.
+#include "workflows/run.h"
+
 #include "app/command_line.h"
 #include "base/exceptions.h"
-#include "workflows/run.h"
 #include "io/scene.h"
 #include "workflows/wear_run.h"
 
@@ -78,9 +79,9 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           return 0;
         }
       if (a.positional.size() != 1)
-        throw InputError("`wearlink run` needs exactly one scene file (given " +
-                         std::to_string(a.positional.size()) + "). See `wearlink run --help`.");
-      const std::string file = a.positional[0];
+        throw InputError("`wearlink run` needs exactly one scene file (given " + std::to_string(a.positional.size()) +
+                         "). See `wearlink run --help`.");
+      const std::string file  = a.positional[0];
       io::Scene         scene = io::read_scene(file, a.all("--set"));
 
       if (a.has("--validate"))
@@ -89,37 +90,36 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
           workflows::assemble_scene(scene, q, v);
           std::cout << "OK: " << file << " — " << scene.mechanism->n_bodies() << " bodies, "
                     << scene.mechanism->n_constraint_equations() << " constraint equations, "
-                    << scene.clearance_joints.size() << " clearance joints; assembles at t = "
-                    << scene.start_time << " s.\n";
+                    << scene.clearance_joints.size() << " clearance joints; assembles at t = " << scene.start_time
+                    << " s.\n";
           return 0;
         }
 
       if (workflows::has_wear(scene) || a.has("--resume"))
         {
           if (!workflows::has_wear(scene))
-            throw InputError("--resume continues a wear run, but no clearance joint of " + file +
-                             " has a Wear law.");
+            throw InputError("--resume continues a wear run, but no clearance joint of " + file + " has a Wear law.");
           workflows::WearRunOptions w;
           w.resume           = a.has("--resume");
-          w.output_directory = a.has("--resume") ? a.value("--resume") :
-                                                   a.value("--output", "output/" + std::filesystem::path(file).stem().string());
+          w.output_directory = a.has("--resume") ?
+                                 a.value("--resume") :
+                                 a.value("--output", "output/" + std::filesystem::path(file).stem().string());
           w.progress         = !a.has("--quiet");
           const auto r       = workflows::run_wear(scene, w);
           if (!r.before_after_report.empty())
             std::cout << r.before_after_report << "\n";
           std::cout << "wrote " << w.output_directory << "/summary.json (" << r.state.iterations_done
-                    << " wear iterations, " << r.state.revolutions << " revolutions, "
-                    << r.timings.total << " s wall)\n";
+                    << " wear iterations, " << r.state.revolutions << " revolutions, " << r.timings.total
+                    << " s wall)\n";
           return 0;
         }
-      const std::string out =
-        a.value("--output", "output/" + std::filesystem::path(file).stem().string());
+      const std::string     out = a.value("--output", "output/" + std::filesystem::path(file).stem().string());
       workflows::RunOptions options;
       options.output_directory = out;
       options.progress         = !a.has("--quiet");
       const Json summary       = workflows::run_scene(scene, options);
-      std::cout << "wrote " << out << "/summary.json (" << json_number(summary.at("steps"))
-                << " steps, " << json_number(summary.at("wall_time_s")) << " s wall)\n";
+      std::cout << "wrote " << out << "/summary.json (" << json_number(summary.at("steps")) << " steps, "
+                << json_number(summary.at("wall_time_s")) << " s wall)\n";
       if (summary.contains("analyses") && summary.at("analyses").contains("lyapunov"))
         {
           const Json &l = summary.at("analyses").at("lyapunov");
@@ -139,9 +139,9 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
   } // namespace
 
   extern const Command run_scene_command;
-  const Command run_scene_command = {"run",
-                                     "run SCENE.prm [--output DIR] [--set S/E=V ...]  "
-                                     "simulate a mechanism scene",
-                                     help_text,
-                                     run};
+  const Command        run_scene_command = {"run",
+                                            "run SCENE.prm [--output DIR] [--set S/E=V ...]  "
+                                                   "simulate a mechanism scene",
+                                            help_text,
+                                            run};
 } // namespace wearlink::app

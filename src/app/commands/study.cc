@@ -44,7 +44,8 @@ Options:
   --set S/E=V         override a scene entry in every run (repeatable)
   --quiet             no progress lines
 
-)") + workflows::study_file_help() + R"(
+)") + workflows::study_file_help() +
+      R"(
 Exit status: 0 success (a run that fails is a row of the table), 2 bad input (nothing
 is written), 3 numerical failure.
 )";
@@ -56,19 +57,19 @@ is written), 3 numerical failure.
         throw InputError("`wearlink study` needs a study kind; the only one is `accuracy`: "
                          "wearlink study accuracy SCENE.prm. See `wearlink study --help`.");
       const std::vector<std::string> rest(args.begin() + 1, args.end());
-      const auto a = parse_arguments(rest,
+      const auto                     a = parse_arguments(rest,
                                      {{"--output", true},
-                                      {"--set", true, true},
-                                      {"--quick", false},
-                                      {"--knobs", true},
-                                      {"--study", true},
-                                      {"--quiet", false}},
+                                                          {"--set", true, true},
+                                                          {"--quick", false},
+                                                          {"--knobs", true},
+                                                          {"--study", true},
+                                                          {"--quiet", false}},
                                      "study accuracy");
       if (a.positional.size() != 1)
         throw InputError("`wearlink study accuracy` needs exactly one scene file (given " +
                          std::to_string(a.positional.size()) + "). See `wearlink study --help`.");
-      const std::string file = a.positional[0];
-      workflows::StudyRequest  request;
+      const std::string       file = a.positional[0];
+      workflows::StudyRequest request;
       request.overrides = a.all("--set");
       request.quick     = a.has("--quick");
       request.progress  = !a.has("--quiet");
@@ -92,9 +93,9 @@ is written), 3 numerical failure.
   } // namespace
 
   extern const Command study_command;
-  const Command study_command = {"study",
-                                 "study accuracy SCENE.prm [--quick]  what accuracy costs in time "
-                                 "(every accuracy knob in turn: error vs wall time)",
-                                 help_text.c_str(),
-                                 run};
+  const Command        study_command = {"study",
+                                        "study accuracy SCENE.prm [--quick]  what accuracy costs in time "
+                                               "(every accuracy knob in turn: error vs wall time)",
+                                        help_text.c_str(),
+                                        run};
 } // namespace wearlink::app

@@ -23,7 +23,6 @@
 //   sweep.json        the command, timings per member and rank, statuses
 // The two CSV files hold no timings or ranks, so serial and MPI runs give equal files.
 #include "analysis/channels.h"
-#include "base/text.h"
 #include "analysis/recorded_run.h"
 #include "app/command_line.h"
 #include "base/atomic_file.h"
@@ -31,11 +30,12 @@
 #include "base/exceptions.h"
 #include "base/json.h"
 #include "base/parameters.h"
+#include "base/text.h"
 #include "io/analyses_parameters.h"
 #include "io/plot.h"
+#include "io/scene.h"
 #include "workflows/analyses.h"
 #include "workflows/run.h"
-#include "io/scene.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -144,7 +144,7 @@ members.csv, bifurcation.png, sweep.json.
     void
     check_entry_exists(dealii::ParameterHandler &prm, const std::string &path, const std::string &file)
     {
-      auto parts = dealii::Utilities::split_string_list(path, '/');
+      auto                           parts = dealii::Utilities::split_string_list(path, '/');
       const std::string              entry = parts.empty() ? "" : parts.back();
       const std::vector<std::string> sections(parts.begin(), parts.empty() ? parts.end() : parts.end() - 1);
       bool                           ok = !entry.empty() && (sections.empty() || prm.subsection_path_exists(sections));
@@ -166,7 +166,8 @@ members.csv, bifurcation.png, sweep.json.
       if (!ok)
         throw InputError("--parameter '" + path + "' is not an entry of the scene " + file +
                          ". Give the full path \"Section/Sub/Entry\", e.g. \"Joint A/Clearance/Radial "
-                         "clearance\"; `wearlink --print-parameters " + file + "` lists them.");
+                         "clearance\"; `wearlink --print-parameters " +
+                         file + "` lists them.");
     }
 
     /** What one member produced. */
@@ -232,19 +233,19 @@ members.csv, bifurcation.png, sweep.json.
      * its own analyses off, a Poincaré recorder on @p channel.
      */
     MemberResult
-    run_member(const std::string &             file,
+    run_member(const std::string              &file,
                const std::vector<std::string> &base_overrides,
-               const std::string &             parameter,
-               const std::string &             channel,
+               const std::string              &parameter,
+               const std::string              &channel,
                const std::size_t               index,
                const double                    value,
                const int                       rank)
     {
       MemberResult m;
-      m.index          = index;
-      m.value          = value;
-      m.rank           = rank;
-      const auto start = std::chrono::steady_clock::now();
+      m.index              = index;
+      m.value              = value;
+      m.rank               = rank;
+      const auto start     = std::chrono::steady_clock::now();
       auto       overrides = base_overrides;
       overrides.push_back(parameter + "=" + format_number(value));
       EffectLedger::instance().reset();
@@ -261,17 +262,17 @@ members.csv, bifurcation.png, sweep.json.
       if (scene)
         try
           {
-            const double period = io::driving_period(*scene);
-            const auto & a      = scene->analyses;
-            const double t0     = scene->start_time + a.section_phase;
-            const double begin  = scene->start_time + a.transient;
-            const double first  = t0 + period * std::ceil(std::max(0.0, begin - t0) / period - 1e-9);
-            const auto   all    = analysis::all_channels(*scene->mechanism, scene->clearance_joints);
+            const double               period = io::driving_period(*scene);
+            const auto                &a      = scene->analyses;
+            const double               t0     = scene->start_time + a.section_phase;
+            const double               begin  = scene->start_time + a.transient;
+            const double               first  = t0 + period * std::ceil(std::max(0.0, begin - t0) / period - 1e-9);
+            const auto                 all    = analysis::all_channels(*scene->mechanism, scene->clearance_joints);
             analysis::PoincareRecorder section({analysis::find_channel(all, channel, "--channel")}, first, period);
             // The member needs its section only: the scene's own analyses and time
             // series are switched off.
             scene->analyses.phase_portrait = scene->analyses.poincare = scene->analyses.lyapunov = false;
-            scene->write_time_series                                              = false;
+            scene->write_time_series                                                             = false;
             workflows::RunOptions options;
             options.observers = {&section};
             workflows::run_scene(*scene, options);
@@ -300,21 +301,21 @@ members.csv, bifurcation.png, sweep.json.
                                       {"--quiet", false}},
                                      "sweep");
       // MPI for this command only. One thread per rank: the ranks are the parallelism.
-      int                                      argc = 1;
-      char                                     program[] = "wearlink";
-      char *                                   argv_storage[] = {program, nullptr};
-      char **                                  argv = argv_storage;
+      int                                      argc           = 1;
+      char                                     program[]      = "wearlink";
+      char                                    *argv_storage[] = {program, nullptr};
+      char                                   **argv           = argv_storage;
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const MPI_Comm                           comm    = MPI_COMM_WORLD;
-      const unsigned int                       rank    = dealii::Utilities::MPI::this_mpi_process(comm);
-      const unsigned int                       n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+      const MPI_Comm                           comm       = MPI_COMM_WORLD;
+      const unsigned int                       rank       = dealii::Utilities::MPI::this_mpi_process(comm);
+      const unsigned int                       n_ranks    = dealii::Utilities::MPI::n_mpi_processes(comm);
       const auto                               wall_start = std::chrono::steady_clock::now();
 
       // Everything below until the member loop is the same on every rank, so a bad
       // input fails on all ranks alike (no rank waits in a collective call).
       if (a.positional.size() != 1)
-        throw InputError("`wearlink sweep` needs exactly one scene file (given " +
-                         std::to_string(a.positional.size()) + "). See `wearlink sweep --help`.");
+        throw InputError("`wearlink sweep` needs exactly one scene file (given " + std::to_string(a.positional.size()) +
+                         "). See `wearlink sweep --help`.");
       const std::string file = a.positional[0];
       if (!a.has("--parameter") || !a.has("--values"))
         throw InputError("`wearlink sweep` needs --parameter \"Section/Entry\" and --values "
@@ -322,7 +323,8 @@ members.csv, bifurcation.png, sweep.json.
       const std::string              parameter = a.value("--parameter");
       const std::vector<double>      values    = parse_values(a.value("--values"));
       const std::vector<std::string> sets      = a.all("--set");
-      const std::string out_dir = a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_sweep");
+      const std::string              out_dir =
+        a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_sweep");
 
       // The base scene must be valid, and the channel and the parameter must exist.
       std::string channel;
@@ -335,15 +337,17 @@ members.csv, bifurcation.png, sweep.json.
         else if (!base.clearance_joints.empty())
           channel = base.clearance_joints.front()->name() + "_ex_m";
         else
-          throw InputError("The scene " + file + " has no clearance joint; choose the channel of "
-                           "the bifurcation diagram with --channel (e.g. " + all.front().name + ").");
+          throw InputError("The scene " + file +
+                           " has no clearance joint; choose the channel of "
+                           "the bifurcation diagram with --channel (e.g. " +
+                           all.front().name + ").");
         io::driving_period(base); // a section needs a driving period
       }
 
       if (rank == 0)
         std::cout << "wearlink sweep: " << file << ", '" << parameter << "' over " << values.size()
-                  << " values, channel " << channel << ", " << n_ranks << " MPI rank"
-                  << (n_ranks == 1 ? "" : "s") << "\n";
+                  << " values, channel " << channel << ", " << n_ranks << " MPI rank" << (n_ranks == 1 ? "" : "s")
+                  << "\n";
 
       // Round-robin members; results serialised as JSON and gathered on rank 0.
       Json mine = Json::array();
@@ -380,15 +384,15 @@ members.csv, bifurcation.png, sweep.json.
       diagram << std::setprecision(12) << "member,parameter_value,section,time_s," << channel << "\n";
       table << std::setprecision(12) << "member,parameter_value,status,n_points,message\n";
       io::PlotSeries points;
-      points.title   = "Poincaré points";
-      points.style   = "points";
-      points.options = "pt 7 ps 0.4 lc rgb 'black'";
+      points.title         = "Poincaré points";
+      points.style         = "points";
+      points.options       = "pt 7 ps 0.4 lc rgb 'black'";
       std::size_t n_failed = 0;
       std::string failed_values;
       for (const auto &m : members)
         {
-          table << m.index << ',' << m.value << ',' << m.status << ',' << m.points.size() << ','
-                << csv_quote(m.message) << '\n';
+          table << m.index << ',' << m.value << ',' << m.status << ',' << m.points.size() << ',' << csv_quote(m.message)
+                << '\n';
           if (m.status != "ok")
             {
               ++n_failed;
@@ -405,23 +409,23 @@ members.csv, bifurcation.png, sweep.json.
       write_file_atomically(out_dir + "/members.csv", table.str());
 
       io::PlotSpec plot;
-      plot.title   = "Bifurcation diagram: " + channel + " at the Poincaré sections vs " + parameter +
+      plot.title = "Bifurcation diagram: " + channel + " at the Poincaré sections vs " + parameter +
                    (n_failed ? " (" + std::to_string(n_failed) + " member(s) failed: " + failed_values + ")" : "");
-      plot.x_label = parameter;
-      plot.y_label = channel;
-      plot.series  = {points};
+      plot.x_label       = parameter;
+      plot.y_label       = channel;
+      plot.series        = {points};
       const bool plotted = io::plot_png(plot, out_dir + "/bifurcation.png");
 
-      Json summary          = Json::object();
-      summary["scene"]      = file;
-      summary["parameter"]  = parameter;
-      summary["channel"]    = channel;
-      summary["n_members"]  = members.size();
-      summary["n_failed"]   = n_failed;
-      summary["mpi_ranks"]  = n_ranks;
+      Json summary           = Json::object();
+      summary["scene"]       = file;
+      summary["parameter"]   = parameter;
+      summary["channel"]     = channel;
+      summary["n_members"]   = members.size();
+      summary["n_failed"]    = n_failed;
+      summary["mpi_ranks"]   = n_ranks;
       summary["wall_time_s"] = wall;
-      double member_time = 0.0;
-      Json   list        = Json::array();
+      double member_time     = 0.0;
+      Json   list            = Json::array();
       for (const auto &m : members)
         {
           member_time += m.wall_time;
@@ -441,8 +445,8 @@ members.csv, bifurcation.png, sweep.json.
 
       std::cout << "  member  value           status   points\n";
       for (const auto &m : members)
-        std::cout << "  " << std::setw(6) << m.index << "  " << std::setw(14) << std::setprecision(6) << m.value
-                  << "  " << std::setw(7) << m.status << "  " << std::setw(6) << m.points.size()
+        std::cout << "  " << std::setw(6) << m.index << "  " << std::setw(14) << std::setprecision(6) << m.value << "  "
+                  << std::setw(7) << m.status << "  " << std::setw(6) << m.points.size()
                   << (m.message.empty() ? "" : "  " + m.message.substr(0, m.message.find('\n'))) << "\n";
       std::cout << "  " << members.size() - n_failed << " of " << members.size() << " members ran; wall "
                 << std::setprecision(4) << wall << " s on " << n_ranks << " rank(s), sum of member times "
@@ -453,9 +457,9 @@ members.csv, bifurcation.png, sweep.json.
   } // namespace
 
   extern const Command sweep_command;
-  const Command sweep_command = {"sweep",
-                                 "sweep SCENE.prm --parameter \"S/E\" --values FROM:TO:COUNT [--channel NAME] "
-                                 "[--output DIR]  bifurcation diagram (MPI: mpirun -np N wearlink sweep ...)",
-                                 help_text,
-                                 run};
+  const Command        sweep_command = {"sweep",
+                                        "sweep SCENE.prm --parameter \"S/E\" --values FROM:TO:COUNT [--channel NAME] "
+                                               "[--output DIR]  bifurcation diagram (MPI: mpirun -np N wearlink sweep ...)",
+                                        help_text,
+                                        run};
 } // namespace wearlink::app

@@ -24,7 +24,8 @@ namespace wearlink::contact
     public:
       explicit Coulomb(ParameterReader &r)
         : mu(r.get_double("Friction coefficient"))
-      {}
+      {
+      }
       double
       force(double normal_force, double v) const override
       {
@@ -89,28 +90,28 @@ namespace wearlink::contact
   register_friction_laws()
   {
     auto &r = friction_laws();
-    r.add("coulomb",
-          "F_t = −μ F_n sign(v_t).",
-          declare_coefficient,
-          [](ParameterReader &p) { return std::make_unique<Coulomb>(p); });
-    r.add("modified-coulomb",
-          "Ambrósio: F_t = −μ c_d F_n v_t/|v_t|, c_d ramps 0→1 between the static and "
-          "dynamic velocity limits (seed eqs 12–13).",
-          [](dealii::ParameterHandler &prm) {
-            declare_coefficient(prm);
-            declare(prm,
-                    "Static velocity limit",
-                    "1e-4",
-                    dealii::Patterns::Double(0.0),
-                    "v0: below this sliding speed the friction force is zero.",
-                    "m/s");
-            declare(prm,
-                    "Dynamic velocity limit",
-                    "2e-4",
-                    dealii::Patterns::Double(0.0),
-                    "v1: above this sliding speed the full Coulomb force acts.",
-                    "m/s");
-          },
-          [](ParameterReader &p) { return std::make_unique<ModifiedCoulomb>(p); });
+    r.add("coulomb", "F_t = −μ F_n sign(v_t).", declare_coefficient, [](ParameterReader &p) {
+      return std::make_unique<Coulomb>(p);
+    });
+    r.add(
+      "modified-coulomb",
+      "Ambrósio: F_t = −μ c_d F_n v_t/|v_t|, c_d ramps 0→1 between the static and "
+      "dynamic velocity limits (seed eqs 12–13).",
+      [](dealii::ParameterHandler &prm) {
+        declare_coefficient(prm);
+        declare(prm,
+                "Static velocity limit",
+                "1e-4",
+                dealii::Patterns::Double(0.0),
+                "v0: below this sliding speed the friction force is zero.",
+                "m/s");
+        declare(prm,
+                "Dynamic velocity limit",
+                "2e-4",
+                dealii::Patterns::Double(0.0),
+                "v1: above this sliding speed the full Coulomb force acts.",
+                "m/s");
+      },
+      [](ParameterReader &p) { return std::make_unique<ModifiedCoulomb>(p); });
   }
 } // namespace wearlink::contact

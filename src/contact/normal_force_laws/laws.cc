@@ -58,7 +58,8 @@ namespace wearlink::contact
     public:
       explicit Hertz(ParameterReader &r)
         : n(r.get_double("Exponent"))
-      {}
+      {
+      }
       void
       evaluate(const NormalContactInput &in, NormalContactOutput &out) const override
       {
@@ -83,8 +84,7 @@ namespace wearlink::contact
         : n(r.get_double("Exponent"))
         , restitution(r.get_double("Restitution coefficient"))
         , min_impact_velocity(r.get_positive("Minimum impact velocity"))
-        , factor(flores ? 8 * (1 - restitution) / (5 * restitution) :
-                          3 * (1 - restitution * restitution) / 4)
+        , factor(flores ? 8 * (1 - restitution) / (5 * restitution) : 3 * (1 - restitution * restitution) / 4)
       {
         if (flores && !(restitution > 0))
           r.fail("Restitution coefficient", "the Flores law needs c_e > 0 (it divides by c_e)");
@@ -95,9 +95,8 @@ namespace wearlink::contact
         elastic(in, n, out);
         // Reference velocity of the hysteresis term: the captured impact velocity,
         // but never below the guard nor below the current |δ̇| (see the header).
-        const double v_impact =
-          std::max({in.impact_velocity, min_impact_velocity, std::abs(in.penetration_rate)});
-        out.force = std::max(0.0, out.elastic_force * (1 + factor * in.penetration_rate / v_impact));
+        const double v_impact = std::max({in.impact_velocity, min_impact_velocity, std::abs(in.penetration_rate)});
+        out.force             = std::max(0.0, out.elastic_force * (1 + factor * in.penetration_rate / v_impact));
       }
       double
       exponent() const override
@@ -121,10 +120,9 @@ namespace wearlink::contact
   register_normal_force_laws()
   {
     auto &r = normal_force_laws();
-    r.add("hertz",
-          "F = K δⁿ, purely elastic (seed eq. 9 without damping).",
-          declare_exponent,
-          [](ParameterReader &p) { return std::make_unique<Hertz>(p); });
+    r.add("hertz", "F = K δⁿ, purely elastic (seed eq. 9 without damping).", declare_exponent, [](ParameterReader &p) {
+      return std::make_unique<Hertz>(p);
+    });
     r.add("lankarani-nikravesh",
           "F = K δⁿ (1 + 3(1 − c_e²) δ̇/(4 δ̇⁻)) (seed eqs 9–11).",
           declare_dissipative,

@@ -45,7 +45,8 @@ namespace wearlink::contact
     {
     public:
       explicit HertzStrip(ParameterReader &)
-      {}
+      {
+      }
 
       void
       update_geometry(const JointGeometry &g) override
@@ -62,14 +63,14 @@ namespace wearlink::contact
         out.pin.assign(pin.n_points(), 0.0);
         if (!(load.normal_force > 0))
           return;
-        const double phi = load.contact_angle;
-        const double r1  = bore.radius(phi - load.bushing_angle);
-        const double r2  = pin.radius(phi - load.pin_angle);
-        const double e_star = effective_modulus(geometry.bushing, geometry.pin_material);
-        const double r_star = r1 * r2 / std::max(r1 - r2, 1e-12 * r1);
+        const double phi       = load.contact_angle;
+        const double r1        = bore.radius(phi - load.bushing_angle);
+        const double r2        = pin.radius(phi - load.pin_angle);
+        const double e_star    = effective_modulus(geometry.bushing, geometry.pin_material);
+        const double r_star    = r1 * r2 / std::max(r1 - r2, 1e-12 * r1);
         const double line_load = load.normal_force / geometry.axial_length;
-        const double b  = std::sqrt(4 * line_load * r_star / (pi * e_star));
-        const double p0 = 2 * line_load / (pi * b);
+        const double b         = std::sqrt(4 * line_load * r_star / (pi * e_star));
+        const double p0        = 2 * line_load / (pi * b);
         spread(bore, load.bushing_angle, r1, phi, b, p0, out.bore);
         spread(pin, load.pin_angle, r2, phi, b, p0, out.pin);
       }
@@ -77,7 +78,7 @@ namespace wearlink::contact
     private:
       /** Area averages of the strip on the areas of @p profile (body angle @p theta). */
       static void
-      spread(const Profile &      profile,
+      spread(const Profile       &profile,
              double               theta,
              double               radius,
              double               phi,
@@ -96,7 +97,7 @@ namespace wearlink::contact
               continue;
             const double s0 = radius * (centre - 0.5 * width);
             const double s1 = radius * (centre + 0.5 * width);
-            p[k] = p0 * b * (strip_primitive(s1, b) - strip_primitive(s0, b)) / (radius * width);
+            p[k]            = p0 * b * (strip_primitive(s1, b) - strip_primitive(s0, b)) / (radius * width);
           }
       }
 

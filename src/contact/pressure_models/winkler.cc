@@ -29,8 +29,8 @@ namespace wearlink::contact
   namespace
   {
     using numbers::pi;
-    constexpr unsigned int sub  = 8; ///< sub-samples per discrete area
-    constexpr double floor_force = 1e-5; ///< [N], see evaluate()
+    constexpr unsigned int sub         = 8;    ///< sub-samples per discrete area
+    constexpr double       floor_force = 1e-5; ///< [N], see evaluate()
 
     double
     foundation_modulus(const Material &m)
@@ -45,7 +45,8 @@ namespace wearlink::contact
       explicit Winkler(ParameterReader &r)
         : thickness(r.get_positive("Layer thickness"))
         , nonlinear(r.get_bool("Nonlinear"))
-      {}
+      {
+      }
 
       void
       update_geometry(const JointGeometry &g) override
@@ -87,7 +88,7 @@ namespace wearlink::contact
         const auto &bore = geometry.bore;
         n                = bore.n_points() * sub;
         dp               = 2 * pi / n;
-        const double tb  = load.bushing_angle, tp = load.pin_angle;
+        const double tb = load.bushing_angle, tp = load.pin_angle;
         target = load.normal_force * Eigen::Vector2d(std::cos(load.contact_angle), std::sin(load.contact_angle));
         phi.resize(n);
         r1.resize(n);
@@ -334,10 +335,10 @@ namespace wearlink::contact
       const bool          nonlinear;
       JointGeometry       geometry;
       double              stiffness = 0, modulus = 0;
-      std::vector<double> phi, r1, r2;   ///< sub-grid angle, bore and pin radius
-      unsigned int        n  = 0;        ///< sub-grid size
-      double              dp = 0;        ///< sub-grid spacing [rad]
-      Eigen::Vector2d     target;        ///< the load vector [N]
+      std::vector<double> phi, r1, r2; ///< sub-grid angle, bore and pin radius
+      unsigned int        n  = 0;      ///< sub-grid size
+      double              dp = 0;      ///< sub-grid spacing [rad]
+      Eigen::Vector2d     target;      ///< the load vector [N]
     };
   } // namespace
 

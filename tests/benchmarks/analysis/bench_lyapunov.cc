@@ -30,16 +30,16 @@ namespace
 int
 main(int argc, char **argv)
 {
-  const std::size_t n  = argc > 1 ? std::stoul(argv[1]) : 1000000;
-  const double      dt = 0.01;
+  const std::size_t   n  = argc > 1 ? std::stoul(argv[1]) : 1000000;
+  const double        dt = 0.01;
   std::vector<double> x;
-  const double t_generate = timed([&] { x = wearlink::testing::lorenz_x(n, dt); });
+  const double        t_generate = timed([&] { x = wearlink::testing::lorenz_x(n, dt); });
 
-  DelayChoice     delay;
-  DimensionChoice dimension;
-  const double    t_delay = timed([&] { delay = choose_delay(x); });
-  const double    t_dim   = timed([&] { dimension = choose_dimension(x, delay.delay); });
-  const Embedding emb{dimension.dimension, delay.delay};
+  DelayChoice       delay;
+  DimensionChoice   dimension;
+  const double      t_delay = timed([&] { delay = choose_delay(x); });
+  const double      t_dim   = timed([&] { dimension = choose_dimension(x, delay.delay); });
+  const Embedding   emb{dimension.dimension, delay.delay};
   const std::size_t w = default_theiler_window(emb);
 
   WolfResult       wolf;
@@ -52,10 +52,17 @@ main(int argc, char **argv)
   std::printf("%-44s %10.3f\n", "generate the series (RK4)", t_generate);
   std::printf("%-44s %10.3f   tau = %zu samples\n", "delay: mutual information (first minimum)", t_delay, delay.delay);
   std::printf("%-44s %10.3f   m = %u\n", "dimension: false nearest neighbours", t_dim, dimension.dimension);
-  std::printf("%-44s %10.3f   %.4f 1/s (natural log), %zu segments of %zu samples\n", "Wolf et al. 1985",
-              t_wolf, wolf.exponent_per_sample / dt, wolf.n_segments, wolf.evolution_steps);
+  std::printf("%-44s %10.3f   %.4f 1/s (natural log), %zu segments of %zu samples\n",
+              "Wolf et al. 1985",
+              t_wolf,
+              wolf.exponent_per_sample / dt,
+              wolf.n_segments,
+              wolf.evolution_steps);
   std::printf("%-44s %10.3f   %.4f 1/s (natural log), %zu reference pairs, horizon %zu samples\n",
-              "Rosenstein et al. 1993", t_rosenstein, rosenstein.exponent_per_sample / dt, rosenstein.n_references,
+              "Rosenstein et al. 1993",
+              t_rosenstein,
+              rosenstein.exponent_per_sample / dt,
+              rosenstein.n_references,
               rosenstein.mean_log_divergence.size() - 1);
   std::printf("%-44s %10.3f\n", "total, automatic embedding + Wolf", t_delay + t_dim + t_wolf);
   std::printf("%-44s %10.3f\n", "total, automatic embedding + Rosenstein", t_delay + t_dim + t_rosenstein);

@@ -16,7 +16,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-
 #include <unistd.h>
 
 namespace
@@ -24,7 +23,7 @@ namespace
   double
   run(const std::string &command)
   {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start  = std::chrono::steady_clock::now();
     const int  status = std::system(command.c_str());
     if (status != 0)
       {
@@ -51,30 +50,35 @@ main()
   const std::string args = " sweep " + wearlink::testing::source_path("params/nine_bar_clearance.prm") +
                            " --parameter 'Joint A/Clearance/Radial clearance' --values 1e-4:8e-4:8"
                            " --set 'Simulation/End time=5' --set 'Analyses/Transient=1' --quiet";
-  const std::string bin  = WEARLINK_BINARY;
-  const double serial = run(bin + args + " --output " + dir + "/serial > " + dir + "/serial.log 2>&1");
-  const double mpi    = run(std::string(WEARLINK_MPIRUN) + " -np 2 --oversubscribe " + bin + args + " --output " + dir +
+  const std::string bin    = WEARLINK_BINARY;
+  const double      serial = run(bin + args + " --output " + dir + "/serial > " + dir + "/serial.log 2>&1");
+  const double mpi  = run(std::string(WEARLINK_MPIRUN) + " -np 2 --oversubscribe " + bin + args + " --output " + dir +
                          "/mpi > " + dir + "/mpi.log 2>&1");
-  const bool same = read(dir + "/serial/bifurcation.csv") == read(dir + "/mpi/bifurcation.csv");
+  const bool   same = read(dir + "/serial/bifurcation.csv") == read(dir + "/mpi/bifurcation.csv");
   std::printf("wearlink sweep, nine-bar with clearance joints, 8 members x 10 crank cycles\n");
   std::printf("%-28s %10s\n", "run", "wall [s]");
   std::printf("%-28s %10.2f\n", "serial (1 rank)", serial);
   std::printf("%-28s %10.2f\n", "mpirun -np 2", mpi);
   std::printf("speed-up %.2f, parallel efficiency %.0f %% (T_serial / (2 T_2)); identical bifurcation.csv: %s\n",
-              serial / mpi, 100.0 * serial / (2.0 * mpi), same ? "yes" : "NO");
+              serial / mpi,
+              100.0 * serial / (2.0 * mpi),
+              same ? "yes" : "NO");
   // Where the time went: member times per rank (from sweep.json) show the load balance;
   // the machine's load during the run shows how much of the two cores was ours.
   for (const char *run : {"serial", "mpi"})
     {
-      const wearlink::Json j      = wearlink::read_json_file(dir + "/" + run + "/sweep.json");
+      const wearlink::Json j       = wearlink::read_json_file(dir + "/" + run + "/sweep.json");
       double               busy[2] = {0.0, 0.0};
       for (std::size_t k = 0; k < j.at("members").size(); ++k)
         {
           const auto &m = j.at("members")[k];
           busy[static_cast<int>(json_number(m.at("rank"))) % 2] += json_number(m.at("wall_time_s"));
         }
-      std::printf("%-8s sum of member times per rank: rank 0 %.2f s, rank 1 %.2f s; command wall %.2f s\n", run,
-                  busy[0], busy[1], json_number(j.at("wall_time_s")));
+      std::printf("%-8s sum of member times per rank: rank 0 %.2f s, rank 1 %.2f s; command wall %.2f s\n",
+                  run,
+                  busy[0],
+                  busy[1],
+                  json_number(j.at("wall_time_s")));
     }
   double load[3] = {0, 0, 0};
   if (std::FILE *f = std::fopen("/proc/loadavg", "r"))

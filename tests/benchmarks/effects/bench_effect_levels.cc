@@ -16,11 +16,11 @@
 //   usage: bench_effect_levels [cycles]
 #include "base/effect_ledger.h"
 #include "base/parameters.h"
-#include "workflows/run.h"
 #include "io/scene.h"
-#include "workflows/wear_run.h"
 #include "register_all.h"
 #include "support/test_support.h"
+#include "workflows/run.h"
+#include "workflows/wear_run.h"
 
 #include <chrono>
 #include <cstdio>
@@ -49,9 +49,9 @@ namespace
   measure(const Level &level)
   {
     EffectLedger::instance().reset();
-    const auto  wall0 = std::chrono::steady_clock::now();
-    const auto  cpu0  = std::clock();
-    io::Scene   scene = io::read_scene(testing::source_path(level.file), level.overrides);
+    const auto wall0 = std::chrono::steady_clock::now();
+    const auto cpu0  = std::clock();
+    io::Scene  scene = io::read_scene(testing::source_path(level.file), level.overrides);
     if (workflows::has_wear(scene))
       {
         workflows::WearRunOptions o;
@@ -72,20 +72,19 @@ int
 main(int argc, char **argv)
 {
   register_all();
-  const int    cycles = argc > 1 ? std::stoi(argv[1]) : 10;
-  const double end    = 0.5 * cycles; // 120 rpm: 0.5 s per crank cycle
-  const std::vector<std::string> dynamics = {"Simulation/End time=" + format_number(end),
-                                             "Output/Time series=false"};
+  const int                      cycles     = argc > 1 ? std::stoi(argv[1]) : 10;
+  const double                   end        = 0.5 * cycles; // 120 rpm: 0.5 s per crank cycle
+  const std::vector<std::string> dynamics   = {"Simulation/End time=" + format_number(end), "Output/Time series=false"};
   const std::vector<std::string> tolerances = {"Integrator/Relative tolerance=1e-6",
                                                "Integrator/Position tolerance=1e-9",
                                                "Integrator/Velocity tolerance=1e-6"};
-  auto with = [](std::vector<std::string> a, const std::vector<std::string> &b) {
+  auto                           with       = [](std::vector<std::string> a, const std::vector<std::string> &b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
   };
   const std::vector<std::string> one_iteration = {"Wear/Cycles per iteration=" + std::to_string(cycles),
                                                   "Wear/Number of iterations=1"};
-  std::vector<std::string> fe = one_iteration;
+  std::vector<std::string>       fe            = one_iteration;
   for (const char *j : {"A", "B"})
     for (const std::string e : {"Pressure model=fe", "fe/Surface element size=2e-4"})
       fe.push_back(std::string("Joint ") + j + "/Clearance/" + e);
@@ -94,7 +93,8 @@ main(int argc, char **argv)
 
   const std::vector<Level> levels = {
     {"ideal joints", "params/nine_bar_ideal.prm", with(dynamics, tolerances)},
-    {"clearance, no friction", "params/nine_bar_clearance.prm",
+    {"clearance, no friction",
+     "params/nine_bar_clearance.prm",
      with(dynamics, {"Joint A/Clearance/Friction law=none", "Joint B/Clearance/Friction law=none"})},
     {"+ friction", "params/nine_bar_clearance.prm", dynamics},
     {"+ wear, hertz-strip", "params/nine_bar_wear.prm", one_iteration},
@@ -109,7 +109,11 @@ main(int argc, char **argv)
       const Cost c = measure(levels[i]);
       if (i == 0)
         ideal = c;
-      std::printf("%-24s %10.3f %10.3f %12.1f %12.1f\n", levels[i].name, c.wall, c.cpu, c.wall / ideal.wall,
+      std::printf("%-24s %10.3f %10.3f %12.1f %12.1f\n",
+                  levels[i].name,
+                  c.wall,
+                  c.cpu,
+                  c.wall / ideal.wall,
                   c.cpu / ideal.cpu);
       std::fflush(stdout);
     }

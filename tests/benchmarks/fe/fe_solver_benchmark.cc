@@ -26,12 +26,12 @@ TEST(FeBenchmark, CondensedVersusReferenceAtDefaultMesh)
   FeSettings settings; // defaults
   settings.outer_radius = 0.024;
   PinBushingModel model(geometry, settings, mesh_file("benchmark"));
-  const auto &    st = model.statistics();
+  const auto     &st = model.statistics();
   const auto      t0 = std::chrono::steady_clock::now();
   model.prepare_condensed();
   const double factor = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const std::vector<double> loads = {100, 1000, 10000, 100000};
+  const std::vector<double>  loads = {100, 1000, 10000, 100000};
   std::vector<ContactResult> cold, warm, ref;
   for (const double F : loads)
     cold.push_back(model.solve(load_minus_y(F), SolverKind::condensed));
@@ -40,7 +40,7 @@ TEST(FeBenchmark, CondensedVersusReferenceAtDefaultMesh)
   for (const double F : loads)
     warm.push_back(model.solve(load_minus_y(F), SolverKind::condensed));
   // Repeat the warm pass a few times for a stable per-state figure.
-  const int repeats = 20;
+  const int           repeats = 20;
   std::vector<double> warm_time(loads.size(), 0.0);
   for (int rep = 0; rep < repeats; ++rep)
     for (std::size_t k = 0; k < loads.size(); ++k)
@@ -50,17 +50,16 @@ TEST(FeBenchmark, CondensedVersusReferenceAtDefaultMesh)
 
   const auto t1 = std::chrono::steady_clock::now();
   model.precompute_compliance();
-  const double all_columns = columns_needed + std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  const double all_columns =
+    columns_needed + std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
 
   const double common = st.mesh_time + st.assembly_time;
-  std::cout << std::setprecision(4) << "default mesh: " << st.mesh.n_quadrilaterals << " quadrilaterals, "
-            << st.n_dofs << " DoFs, " << st.n_pin_candidates << " pin + " << st.n_bore_candidates
-            << " bore candidates\n"
+  std::cout << std::setprecision(4) << "default mesh: " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs
+            << " DoFs, " << st.n_pin_candidates << " pin + " << st.n_bore_candidates << " bore candidates\n"
             << "setup: mesh " << st.mesh_time << " s + assembly " << st.assembly_time
-            << " s; condensed + factorization " << factor << " s + influence columns for these loads "
-            << columns_needed << " s (" << n_columns << " back substitutions) = "
-            << common + factor + columns_needed << " s; full influence matrix " << all_columns
-            << " s; reference " << common << " s\n"
+            << " s; condensed + factorization " << factor << " s + influence columns for these loads " << columns_needed
+            << " s (" << n_columns << " back substitutions) = " << common + factor + columns_needed
+            << " s; full influence matrix " << all_columns << " s; reference " << common << " s\n"
             << "  load [N]  active  condensed [ms]  reference [ms]  ratio   max|Δp|/p_peak\n";
   double mean_c = 0, mean_r = 0;
   for (std::size_t k = 0; k < loads.size(); ++k)
@@ -71,13 +70,13 @@ TEST(FeBenchmark, CondensedVersusReferenceAtDefaultMesh)
       diff /= ref[k].peak_pressure;
       mean_c += warm_time[k] / loads.size();
       mean_r += ref[k].solve_time / loads.size();
-      std::cout << std::setw(10) << loads[k] << std::setw(8) << warm[k].n_active << std::setw(16)
-                << warm_time[k] * 1e3 << std::setw(16) << ref[k].solve_time * 1e3 << std::setw(9)
-                << ref[k].solve_time / warm_time[k] << std::setw(14) << diff << "\n";
+      std::cout << std::setw(10) << loads[k] << std::setw(8) << warm[k].n_active << std::setw(16) << warm_time[k] * 1e3
+                << std::setw(16) << ref[k].solve_time * 1e3 << std::setw(9) << ref[k].solve_time / warm_time[k]
+                << std::setw(14) << diff << "\n";
       EXPECT_LT(diff, 1e-6);
       EXPECT_LT(warm[k].equilibrium_relative_residual, 1e-6);
       EXPECT_LT(ref[k].equilibrium_relative_residual, 1e-6);
     }
-  std::cout << "mean per load state: condensed " << mean_c * 1e3 << " ms, reference " << mean_r * 1e3
-            << " ms, ratio " << mean_r / mean_c << "\n";
+  std::cout << "mean per load state: condensed " << mean_c * 1e3 << " ms, reference " << mean_r * 1e3 << " ms, ratio "
+            << mean_r / mean_c << "\n";
 }

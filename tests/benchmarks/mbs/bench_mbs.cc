@@ -8,10 +8,10 @@
 //   usage: bench_mbs [cycles]
 #include "base/effect_ledger.h"
 #include "base/parameters.h"
-#include "workflows/run.h"
 #include "io/scene.h"
 #include "register_all.h"
 #include "support/test_support.h"
+#include "workflows/run.h"
 
 #include <cstdio>
 #include <ctime>
@@ -26,10 +26,10 @@ namespace
   run(const std::string &file, const std::vector<std::string> &overrides)
   {
     EffectLedger::instance().reset();
-    io::Scene    scene = io::read_scene(testing::source_path(file), overrides);
-    const auto   start = std::clock();
-    Json         s     = workflows::run_scene(scene, workflows::RunOptions());
-    s["cpu_time_s"]    = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+    io::Scene  scene = io::read_scene(testing::source_path(file), overrides);
+    const auto start = std::clock();
+    Json       s     = workflows::run_scene(scene, workflows::RunOptions());
+    s["cpu_time_s"]  = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     return s;
   }
 } // namespace
@@ -38,14 +38,14 @@ int
 main(int argc, char **argv)
 {
   register_all();
-  const int    cycles = argc > 1 ? std::stoi(argv[1]) : 100;
-  const double end    = 0.5 * cycles;
-  const std::vector<std::string> common = {"Simulation/End time=" + format_number(end),
-                                           "Output/Time series=false"};
+  const int                      cycles = argc > 1 ? std::stoi(argv[1]) : 100;
+  const double                   end    = 0.5 * cycles;
+  const std::vector<std::string> common = {"Simulation/End time=" + format_number(end), "Output/Time series=false"};
   // The ideal run uses the clearance scene's integrator settings, so the ratio measures
   // the cost of the clearance joints, not of a tighter tolerance.
   auto ideal_overrides = common;
-  for (const auto &o : {"Integrator/Relative tolerance=1e-6", "Integrator/Position tolerance=1e-9",
+  for (const auto &o : {"Integrator/Relative tolerance=1e-6",
+                        "Integrator/Position tolerance=1e-9",
                         "Integrator/Velocity tolerance=1e-6"})
     ideal_overrides.push_back(o);
 
@@ -54,15 +54,26 @@ main(int argc, char **argv)
 
   auto row = [](const char *name, const Json &s) {
     long events = static_cast<long>(json_number(s.at("contact_events")));
-    std::printf("%-22s %10.3f %10.3f %10.0f %10.0f %12.0f %8ld %14.3e\n", name, json_number(s.at("wall_time_s")),
+    std::printf("%-22s %10.3f %10.3f %10.0f %10.0f %12.0f %8ld %14.3e\n",
+                name,
+                json_number(s.at("wall_time_s")),
                 json_number(s.at("cpu_time_s")),
-                json_number(s.at("steps")), json_number(s.at("rejected_steps")),
-                json_number(s.at("rhs_evaluations")), events,
+                json_number(s.at("steps")),
+                json_number(s.at("rejected_steps")),
+                json_number(s.at("rhs_evaluations")),
+                events,
                 json_number(s.at("cpu_time_s")) / json_number(s.at("rhs_evaluations")));
   };
   std::printf("nine-bar press mechanism, %d crank cycles (%.1f s simulated)\n", cycles, end);
-  std::printf("%-22s %10s %10s %10s %10s %12s %8s %14s\n", "run", "wall [s]", "cpu [s]", "steps", "rejected",
-              "rhs evals", "events", "cpu/rhs [s]");
+  std::printf("%-22s %10s %10s %10s %10s %12s %8s %14s\n",
+              "run",
+              "wall [s]",
+              "cpu [s]",
+              "steps",
+              "rejected",
+              "rhs evals",
+              "events",
+              "cpu/rhs [s]");
   row("clearance A and B", c);
   row("ideal joints", i);
   std::printf("ratio clearance/ideal: wall time %.1f, cpu time %.1f, rhs evaluations %.1f\n",

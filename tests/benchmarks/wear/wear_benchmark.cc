@@ -8,8 +8,8 @@
 // bookkeeping, outputs). Target (issue 4): under 5 minutes on the 2-core development
 // machine. Asserts only that the run did what it says (10 iterations, 50,000
 // revolutions, 20 meshes), never a time.
-#include "workflows/wear_run.h"
 #include "scene_support.h"
+#include "workflows/wear_run.h"
 
 #include <gtest/gtest.h>
 
@@ -20,13 +20,18 @@ using namespace wearlink;
 
 TEST(WearBenchmark, NineBarFiftyThousandRevolutionsWithFe)
 {
-  auto scene = wearlink::testing::scene(
-    "params/nine_bar_wear.prm",
-    {"Joint A/Clearance/Pressure model=fe", "Joint B/Clearance/Pressure model=fe",
-     "Joint A/Clearance/fe/Surface element size=2e-4", "Joint B/Clearance/fe/Surface element size=2e-4",
-     "Wear/Cycles per iteration=1", "Wear/Number of iterations=10", "Wear/Extrapolation factor=5000",
-     "Wear/Pressure evaluation=samples per cycle", "Wear/Load samples per cycle=24", "Wear/Remesh interval=1",
-     "Wear/Response cycles=1"});
+  auto                      scene = wearlink::testing::scene("params/nine_bar_wear.prm",
+                                        {"Joint A/Clearance/Pressure model=fe",
+                                                              "Joint B/Clearance/Pressure model=fe",
+                                                              "Joint A/Clearance/fe/Surface element size=2e-4",
+                                                              "Joint B/Clearance/fe/Surface element size=2e-4",
+                                                              "Wear/Cycles per iteration=1",
+                                                              "Wear/Number of iterations=10",
+                                                              "Wear/Extrapolation factor=5000",
+                                                              "Wear/Pressure evaluation=samples per cycle",
+                                                              "Wear/Load samples per cycle=24",
+                                                              "Wear/Remesh interval=1",
+                                                              "Wear/Response cycles=1"});
   workflows::WearRunOptions o;
   o.output_directory = wearlink::testing::fresh_directory("wear_benchmark");
   o.progress         = true;
@@ -36,9 +41,10 @@ TEST(WearBenchmark, NineBarFiftyThousandRevolutionsWithFe)
   EXPECT_DOUBLE_EQ(r.state.revolutions, 50000.0);
   EXPECT_EQ(EffectLedger::instance().resources("gmsh sessions"), 22); // 2 initial + 2 × 10
 
-  const auto &t      = r.timings;
+  const auto  &t      = r.timings;
   const double solves = t.pressure_evaluation - t.fe_compliance;
-  std::cout << std::fixed << std::setprecision(1) << "\nnine-bar, 50,000 revolutions, fe pressure, re-mesh every iteration:\n"
+  std::cout << std::fixed << std::setprecision(1)
+            << "\nnine-bar, 50,000 revolutions, fe pressure, re-mesh every iteration:\n"
             << "  total            " << t.total << " s\n"
             << "  dynamics         " << t.dynamics << " s (10 cycles + 1 after-wear cycle)\n"
             << "  meshing (gmsh)   " << t.meshing << " s (22 meshes)\n"

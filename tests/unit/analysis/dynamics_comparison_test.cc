@@ -12,9 +12,9 @@
 #include "base/exceptions.h"
 #include "io/analyses_parameters.h"
 #include "io/plot.h"
-#include "workflows/dynamics_comparison.h"
 #include "support/test_support.h"
 #include "unit/analysis/reference_series.h"
+#include "workflows/dynamics_comparison.h"
 
 #include <gtest/gtest.h>
 
@@ -64,9 +64,9 @@ TEST(DynamicsComparison, LorenzRunTwiceAsFastHasTwiceTheExponentPerSecond)
 {
   const auto before = run_of(ref::lorenz_x(30000, 0.01), 0.01, "Lorenz");
   // 0.02 time units of the flow between samples, stamped 0.01 s apart: twice as fast.
-  const auto after = run_of(ref::lorenz_x(30000, 0.02), 0.01, "Lorenz twice as fast");
-  const auto c     = compare_dynamics(before, after, lorenz_settings(), "");
-  const auto &l    = c.json.at("lyapunov");
+  const auto  after = run_of(ref::lorenz_x(30000, 0.02), 0.01, "Lorenz twice as fast");
+  const auto  c     = compare_dynamics(before, after, lorenz_settings(), "");
+  const auto &l     = c.json.at("lyapunov");
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
@@ -86,10 +86,10 @@ TEST(DynamicsComparison, LorenzRunTwiceAsFastHasTwiceTheExponentPerSecond)
 
 TEST(DynamicsComparison, SameFlowAtTwoSampleIntervalsGivesTheSameExponentPerSecond)
 {
-  const auto before = run_of(ref::lorenz_x(30000, 0.01), 0.01, "dt 0.01");
-  const auto after  = run_of(ref::lorenz_x(60000, 0.005), 0.005, "dt 0.005");
-  const auto c      = compare_dynamics(before, after, lorenz_settings(), "");
-  const auto &l     = c.json.at("lyapunov");
+  const auto  before = run_of(ref::lorenz_x(30000, 0.01), 0.01, "dt 0.01");
+  const auto  after  = run_of(ref::lorenz_x(60000, 0.005), 0.005, "dt 0.005");
+  const auto  c      = compare_dynamics(before, after, lorenz_settings(), "");
+  const auto &l      = c.json.at("lyapunov");
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
@@ -116,12 +116,12 @@ TEST(DynamicsComparison, ARunComparedWithItselfGivesOneEverywhereAndWritesTheFil
   run.summary            = wearlink::Json::parse(
     R"({"simulated_time_s": 80, "clearance_joints": {"A": {"impacts": 400, "fraction_in_contact": 0.5,
         "max_normal_force_N": 1000}}})");
-  auto s       = lorenz_settings();
-  s.delay_scan = {0.05, 0.1, 0.2};
-  s.published  = wearlink::io::parse_published_exponents("A_ex_m: 0.041 0.076", "test");
+  auto s                = lorenz_settings();
+  s.delay_scan          = {0.05, 0.1, 0.2};
+  s.published           = wearlink::io::parse_published_exponents("A_ex_m: 0.041 0.076", "test");
   const std::string dir = wearlink::testing::fresh_directory("dynamics_comparison_self");
   const auto        c   = compare_dynamics(run, run, s, dir);
-  const auto &      l   = c.json.at("lyapunov");
+  const auto       &l   = c.json.at("lyapunov");
   for (std::size_t k = 0; k < l.size(); ++k)
     EXPECT_EQ(json_number(l[k].at("after_per_s")), json_number(l[k].at("before_per_s")));
   const auto &scan = c.json.at("delay_scan");
@@ -141,8 +141,8 @@ TEST(DynamicsComparison, ARunComparedWithItselfGivesOneEverywhereAndWritesTheFil
 
 TEST(DynamicsComparison, AChannelMissingFromOneRunIsAnErrorAndWritesNothing)
 {
-  const auto before = run_of(ref::lorenz_x(5000, 0.01), 0.01, "before");
-  auto       after  = before;
+  const auto before      = run_of(ref::lorenz_x(5000, 0.01), 0.01, "before");
+  auto       after       = before;
   after.run.series.names = {"B_ex_m"};
   const std::string dir  = wearlink::testing::fresh_directory("dynamics_comparison_missing") + "/out";
   EXPECT_THROW(compare_dynamics(before, after, lorenz_settings(), dir), InputError);

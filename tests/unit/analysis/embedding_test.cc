@@ -29,8 +29,7 @@ TEST(MutualInformation, SineDelayIsAQuarterPeriod)
       const std::vector<double> x      = ref::sine(20000, 1.0, period);
       const DelayChoice         choice = choose_delay(x);
       EXPECT_EQ(choice.rule, DelayRule::first_minimum);
-      EXPECT_NEAR(static_cast<double>(choice.delay), period / 4, 0.1 * period / 4)
-        << "period " << period << " samples";
+      EXPECT_NEAR(static_cast<double>(choice.delay), period / 4, 0.1 * period / 4) << "period " << period << " samples";
     }
 }
 

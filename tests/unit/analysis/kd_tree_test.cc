@@ -36,7 +36,7 @@ namespace
               const std::size_t          tau,
               const std::size_t          n,
               const std::size_t          q,
-              const NeighbourFilter &    filter)
+              const NeighbourFilter     &filter)
   {
     std::vector<Neighbour> out;
     for (std::size_t j = 0; j < n; ++j)
@@ -51,9 +51,7 @@ namespace
         if (dist > filter.min_distance && dist < filter.max_distance)
           out.push_back({j, dist});
       }
-    std::sort(out.begin(), out.end(), [](const Neighbour &a, const Neighbour &b) {
-      return a.distance < b.distance;
-    });
+    std::sort(out.begin(), out.end(), [](const Neighbour &a, const Neighbour &b) { return a.distance < b.distance; });
     return out;
   }
 } // namespace
@@ -63,8 +61,8 @@ TEST(KdTree, NearestAndKNearestMatchBruteForce)
   // 3000 random delay vectors in dimension 3 (delay 2): exact arithmetic on the same
   // coordinates, so the indices must agree exactly (ties have probability ~0 with
   // random doubles) and the distances to rounding (1e-12).
-  const std::vector<double> x = random_series(3006);
-  const unsigned int        m = 3;
+  const std::vector<double> x   = random_series(3006);
+  const unsigned int        m   = 3;
   const std::size_t         tau = 2, n = 3000;
   const KdTree              tree(x, m, tau, n);
   ASSERT_EQ(tree.n_points(), n);

@@ -92,8 +92,18 @@ TEST(LyapunovCommand, TimeColumnGivesPerSecond)
   // accuracy is tested in lyapunov_test.cc.
   const std::string dir = fresh_directory("lyapunov_command_lorenz");
   write_csv(dir + "/lorenz.csv", {{"t", times(30000, 0.01)}, {"x", ref::lorenz_x(30000, 0.01)}});
-  const auto r = run_wearlink({"lyapunov", dir + "/lorenz.csv", "--column", "x", "--method", "wolf",
-                               "--delay", "18", "--embedding", "3", "--output", dir + "/out"});
+  const auto r = run_wearlink({"lyapunov",
+                               dir + "/lorenz.csv",
+                               "--column",
+                               "x",
+                               "--method",
+                               "wolf",
+                               "--delay",
+                               "18",
+                               "--embedding",
+                               "3",
+                               "--output",
+                               dir + "/out"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   EXPECT_NEAR(reported_exponent(r.output), 0.906, 0.25 * 0.906) << r.output;
   EXPECT_NE(r.output.find("1/s (natural log"), std::string::npos) << r.output;
@@ -129,7 +139,7 @@ TEST(LyapunovCommand, BadInputIsAnInputErrorWithoutOutputs)
     std::vector<std::string> args;
     std::string              expected; ///< regex the message must contain
   };
-  const std::string out = dir + "/out";
+  const std::string       out   = dir + "/out";
   const std::vector<Case> cases = {
     {{"lyapunov", dir + "/missing.csv", "--column", "x"}, "Cannot open the series file '.*missing.csv'"},
     {{"lyapunov", dir + "/good.csv", "--column", "y"}, "has no column 'y'. Its columns are: t, x"},
@@ -151,8 +161,8 @@ TEST(LyapunovCommand, BadInputIsAnInputErrorWithoutOutputs)
       args.insert(args.end(), {"--output", out});
       const auto r = run_wearlink(args);
       EXPECT_EQ(r.exit_status, 2) << r.output;
-      EXPECT_TRUE(std::regex_search(r.output, std::regex(c.expected))) << "expected /" << c.expected
-                                                                        << "/ in: " << r.output;
+      EXPECT_TRUE(std::regex_search(r.output, std::regex(c.expected)))
+        << "expected /" << c.expected << "/ in: " << r.output;
       EXPECT_TRUE(files_in(out).empty()) << r.output;
     }
 }
@@ -161,8 +171,13 @@ TEST(LyapunovCommand, HelpExplainsMethodsDefaultsAndUnits)
 {
   const auto r = run_wearlink({"lyapunov", "--help"});
   ASSERT_EQ(r.exit_status, 0);
-  for (const char *text : {"rosenstein", "wolf", "first minimum of the average mutual",
-                           "false nearest neighbours", "Theiler window", "natural-log", "per second",
+  for (const char *text : {"rosenstein",
+                           "wolf",
+                           "first minimum of the average mutual",
+                           "false nearest neighbours",
+                           "Theiler window",
+                           "natural-log",
+                           "per second",
                            "per sample"})
     EXPECT_NE(r.output.find(text), std::string::npos) << text;
 }

@@ -51,8 +51,7 @@ namespace
     out.rosenstein               = estimate_largest_lyapunov_exponent(series, settings);
     for (const LyapunovEstimate *e : {&out.wolf, &out.rosenstein})
       std::cout << "  " << method_name(e->method) << ": " << e->exponent() << " " << e->unit()
-                << "  (m = " << e->embedding.embedding.dimension
-                << ", tau = " << e->embedding.embedding.delay
+                << "  (m = " << e->embedding.embedding.dimension << ", tau = " << e->embedding.embedding.delay
                 << ", w = " << e->embedding.theiler_window << ")\n";
     return out;
   }
@@ -117,7 +116,7 @@ TEST(LargestLyapunovExponent, PeriodicSignalsGiveZero)
   // noise, both far below it.
   struct Case
   {
-    const char *        name;
+    const char         *name;
     std::vector<double> x;
     double              dt, period;
   };
@@ -142,8 +141,8 @@ TEST(LargestLyapunovExponent, ExactlyRepeatingSineGivesZeroToRounding)
   // circle, whose distance stays constant: |lambda| P must vanish to the level of the
   // fit noise. Bound 1e-3 per period, i.e. a separation that changes by less than 0.1 %
   // per period (measured: 4e-7 Rosenstein, 1.3e-4 Wolf).
-  const double        period = 1.2345, dt = 0.01;
-  const BothMethods   b      = estimate_both(ref::sine(20000, dt, period), dt);
+  const double      period = 1.2345, dt = 0.01;
+  const BothMethods b = estimate_both(ref::sine(20000, dt, period), dt);
   EXPECT_EQ(b.wolf.embedding.embedding.dimension, 2u);
   EXPECT_NEAR(b.wolf.exponent() * period, 0.0, 1e-3);
   EXPECT_NEAR(b.rosenstein.exponent() * period, 0.0, 1e-3);
@@ -183,7 +182,7 @@ TEST(LargestLyapunovExponent, GivenEmbeddingIsUsedAndReported)
 
 TEST(LargestLyapunovExponent, RejectsBadInput)
 {
-  LyapunovSettings settings;
+  LyapunovSettings    settings;
   std::vector<double> x = ref::henon_x(5000);
   x[1234]               = std::nan("");
   EXPECT_THROW(estimate_largest_lyapunov_exponent(x, settings), wearlink::InputError);

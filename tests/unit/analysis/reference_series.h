@@ -39,7 +39,7 @@ namespace wearlink::testing
    */
   template <class F>
   std::vector<double>
-  sample_flow(const F &          f,
+  sample_flow(const F           &f,
               State3             x,
               const double       dt,
               const std::size_t  n,
@@ -84,7 +84,9 @@ namespace wearlink::testing
   inline std::vector<double>
   van_der_pol_x(const std::size_t n, const double dt = 0.05, const double mu = 1.0)
   {
-    const auto f = [mu](const State3 &s) { return State3{{s[1], mu * (1 - s[0] * s[0]) * s[1] - s[0], 0.0}}; };
+    const auto f = [mu](const State3 &s) {
+      return State3{{s[1], mu * (1 - s[0] * s[0]) * s[1] - s[0], 0.0}};
+    };
     return sample_flow(f, {{2.0, 0.0, 0.0}}, dt, n, 4, 200.0);
   }
 

@@ -19,10 +19,10 @@ using wearlink::json_number;
 
 TEST(Json, RoundTripKeepsOrderAndPrecision)
 {
-  Json j         = Json::object();
-  j["b"]         = 1.0 / 3.0;
-  j["a"]         = "text \"quoted\"";
-  Json arr       = Json::array();
+  Json j   = Json::object();
+  j["b"]   = 1.0 / 3.0;
+  j["a"]   = "text \"quoted\"";
+  Json arr = Json::array();
   arr.push_back(1);
   arr.push_back(true);
   arr.push_back(Json());
@@ -31,7 +31,7 @@ TEST(Json, RoundTripKeepsOrderAndPrecision)
 
   const Json back = Json::parse(j.dump(2));
   ASSERT_EQ(back.size(), 4u);
-  EXPECT_EQ(back.begin().key(), "b"); // insertion order, not alphabetical
+  EXPECT_EQ(back.begin().key(), "b");              // insertion order, not alphabetical
   EXPECT_EQ(json_number(back.at("b")), 1.0 / 3.0); // bit-exact: round-trip precision
   EXPECT_EQ(back.at("a").get<std::string>(), "text \"quoted\"");
   EXPECT_EQ(back.at("list").size(), 3u);
@@ -66,10 +66,10 @@ TEST(Json, TextWithNonAsciiAndControlCharactersRoundTrips)
 
 TEST(Json, NonFiniteNumbersAreWrittenAsNullAndReadBackAsNaN)
 {
-  Json j            = Json::object();
-  j["x"]            = std::nan("");
-  j["y"]            = HUGE_VAL;
-  const Json back   = Json::parse(j.dump(-1));
+  Json j          = Json::object();
+  j["x"]          = std::nan("");
+  j["y"]          = HUGE_VAL;
+  const Json back = Json::parse(j.dump(-1));
   EXPECT_TRUE(back.at("x").is_null());
   EXPECT_TRUE(back.at("y").is_null());
   EXPECT_TRUE(std::isnan(json_number(back.at("x"))));

@@ -80,8 +80,7 @@ TEST(Parameters, ErrorsNameFileEntryAndRange)
   const auto missing = message_of([&] { check_required_entries(prm3, dir + "/missing.prm"); });
   EXPECT_NE(missing.find("Joint/Youngs modulus"), std::string::npos) << missing;
 
-  EXPECT_NE(message_of([&] { read_prm_file(prm3, dir + "/nope.prm"); }).find("nope.prm"),
-            std::string::npos);
+  EXPECT_NE(message_of([&] { read_prm_file(prm3, dir + "/nope.prm"); }).find("nope.prm"), std::string::npos);
 }
 
 TEST(Parameters, OverridesAreChecked)

@@ -40,9 +40,9 @@ TEST(Profile, RoundProfileHasPolygonArea)
 TEST(Profile, InterpolatesLinearlyAndPeriodically)
 {
   std::vector<double> r(8, 1.0);
-  r[1] = 2.0;
-  const Profile p  = Profile::from_samples(r);
-  const double  h  = 2 * pi / 8;
+  r[1]            = 2.0;
+  const Profile p = Profile::from_samples(r);
+  const double  h = 2 * pi / 8;
   EXPECT_NEAR(p.radius(0.5 * h), 1.5, 1e-14);
   EXPECT_NEAR(p.radius(1.5 * h), 1.5, 1e-14);
   EXPECT_NEAR(p.radius(0.5 * h + 2 * pi), 1.5, 1e-14);
@@ -89,8 +89,8 @@ TEST(Profile, WrittenProfileReadsBack)
   std::vector<double> r(36);
   for (unsigned k = 0; k < r.size(); ++k)
     r[k] = 0.012 + 1e-6 * std::sin(0.3 * k);
-  const auto        p    = wearlink::Profile::from_samples(r);
-  const std::string dir  = wearlink::testing::fresh_directory("profile_round_trip");
+  const auto        p   = wearlink::Profile::from_samples(r);
+  const std::string dir = wearlink::testing::fresh_directory("profile_round_trip");
   p.write_csv(dir + "/p.csv", "a worn bore");
   const auto q = wearlink::Profile::read_csv(dir + "/p.csv");
   ASSERT_EQ(q.n_points(), p.n_points());

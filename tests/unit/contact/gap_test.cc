@@ -38,7 +38,7 @@ namespace
 
 TEST(Gap, RoundProfilesGiveEccentricityMinusClearance)
 {
-  const Gap gap(Profile::round(0.012, 64), Profile::round(0.0115, 64));
+  const Gap  gap(Profile::round(0.012, 64), Profile::round(0.0115, 64));
   const auto r = gap.evaluate(mbs::Vec2(3e-4, -4e-4), 1.0, -2.0);
   EXPECT_NEAR(r.penetration, 5e-4 - 5e-4, 1e-15);
   EXPECT_NEAR(r.normal.x(), 0.6, 1e-14);
@@ -48,26 +48,26 @@ TEST(Gap, RoundProfilesGiveEccentricityMinusClearance)
 
 TEST(Gap, WornProfilesMatchBruteForceMinimum)
 {
-  constexpr double pi = 3.14159265358979323846;
-  const unsigned   n  = 180;
+  constexpr double    pi = 3.14159265358979323846;
+  const unsigned      n  = 180;
   std::vector<double> bore(n), pin(n);
   for (unsigned k = 0; k < n; ++k)
     {
       const double psi = 2 * pi * k / n;
-      bore[k] = 0.012 + 20e-6 * std::exp(-std::pow((psi - 1.0) / 0.3, 2)) + 3e-6 * std::cos(3 * psi);
-      pin[k]  = 0.0115 - 10e-6 * std::exp(-std::pow((psi - 4.0) / 0.5, 2));
+      bore[k]          = 0.012 + 20e-6 * std::exp(-std::pow((psi - 1.0) / 0.3, 2)) + 3e-6 * std::cos(3 * psi);
+      pin[k]           = 0.0115 - 10e-6 * std::exp(-std::pow((psi - 4.0) / 0.5, 2));
     }
-  const Profile b = Profile::from_samples(bore), p = Profile::from_samples(pin);
-  const Gap     gap(b, p);
-  std::mt19937  rng(7);
+  const Profile                          b = Profile::from_samples(bore), p = Profile::from_samples(pin);
+  const Gap                              gap(b, p);
+  std::mt19937                           rng(7);
   std::uniform_real_distribution<double> u(-pi, pi);
   for (int trial = 0; trial < 20; ++trial)
     {
-      const double     phi_e = u(rng), tb = u(rng), tp = u(rng);
-      const double     mag   = 0.5e-3 + 15e-6 * (trial % 5) / 4.0;
-      const mbs::Vec2  e(mag * std::cos(phi_e), mag * std::sin(phi_e));
-      const double best = scanned_minimum(b, p, e, tb, tp);
-      const auto r = gap.evaluate(e, tb, tp);
+      const double    phi_e = u(rng), tb = u(rng), tp = u(rng);
+      const double    mag = 0.5e-3 + 15e-6 * (trial % 5) / 4.0;
+      const mbs::Vec2 e(mag * std::cos(phi_e), mag * std::sin(phi_e));
+      const double    best = scanned_minimum(b, p, e, tb, tp);
+      const auto      r    = gap.evaluate(e, tb, tp);
       EXPECT_NEAR(r.penetration, -best, 2e-9) << "trial " << trial;
       EXPECT_GE(r.penetration, -best - 1e-15) << "the search can only be better than the grid";
     }
@@ -75,8 +75,8 @@ TEST(Gap, WornProfilesMatchBruteForceMinimum)
 
 TEST(Gap, PocketFacingTheEccentricityReducesPenetration)
 {
-  constexpr double pi = 3.14159265358979323846;
-  const unsigned   n  = 360;
+  constexpr double    pi = 3.14159265358979323846;
+  const unsigned      n  = 360;
   std::vector<double> bore(n);
   for (unsigned k = 0; k < n; ++k)
     {
@@ -110,15 +110,15 @@ TEST(Gap, PerAreaFormReadsTheFacingArea)
   std::vector<double> bore(360, 0.012), pin(360, 0.0115);
   for (unsigned k = 0; k < 360; ++k)
     {
-      bore[k] += 5e-6 * std::cos(2.0 * k * pi / 180); // a smooth worn bore
+      bore[k] += 5e-6 * std::cos(2.0 * k * pi / 180);             // a smooth worn bore
       pin[k] += 30e-6 * std::exp(-std::pow((k - 80.0) / 3.0, 2)); // a 30 µm bump at ψ = 80°
     }
-  const Gap        worn(Profile::from_samples(bore), Profile::from_samples(pin));
-  const double     tb = 0.2, tp = -0.5;
-  const mbs::Vec2  e2 = 5.05e-4 * mbs::Vec2(std::cos(1.0), std::sin(1.0)); // facing φ = 1 rad
-  const auto       per_area = worn.evaluate_per_area(e2, tb, tp);
-  const double     r1 = Profile::from_samples(bore).radius(1.0 - tb);
-  const double     r2 = Profile::from_samples(pin).radius(1.0 - tp);
+  const Gap       worn(Profile::from_samples(bore), Profile::from_samples(pin));
+  const double    tb = 0.2, tp = -0.5;
+  const mbs::Vec2 e2       = 5.05e-4 * mbs::Vec2(std::cos(1.0), std::sin(1.0)); // facing φ = 1 rad
+  const auto      per_area = worn.evaluate_per_area(e2, tb, tp);
+  const double    r1       = Profile::from_samples(bore).radius(1.0 - tb);
+  const double    r2       = Profile::from_samples(pin).radius(1.0 - tp);
   EXPECT_NEAR(per_area.penetration, e2.norm() - (r1 - r2), 1e-15);
   EXPECT_NEAR(per_area.angle, 1.0, 1e-14);
   // The bump at pin angle 80° sits at global 80° + tp ≈ 51.4°, 5.7° from e: the exact
@@ -138,11 +138,11 @@ TEST(Gap, PerAreaFormReadsTheFacingArea)
 // before missed the minimum here by up to 2e-7 m.
 TEST(Gap, JaggedWornProfilesMatchBruteForceMinimum)
 {
-  constexpr double pi = 3.14159265358979323846;
-  const unsigned   n  = 360;
-  std::mt19937     noise_rng(3);
+  constexpr double                       pi = 3.14159265358979323846;
+  const unsigned                         n  = 360;
+  std::mt19937                           noise_rng(3);
   std::uniform_real_distribution<double> noise(-1, 1);
-  std::vector<double> bore(n), pin(n);
+  std::vector<double>                    bore(n), pin(n);
   for (unsigned k = 0; k < n; ++k)
     {
       const double psi = 2 * pi * k / n;
@@ -151,19 +151,19 @@ TEST(Gap, JaggedWornProfilesMatchBruteForceMinimum)
       pin[k]           = 0.0115 - 15e-6 * std::exp(-std::pow(std::remainder(psi - 4.0, 2 * pi) / 0.5, 2)) -
                1e-6 * std::abs(noise(noise_rng));
     }
-  const Profile b = Profile::from_samples(bore), p = Profile::from_samples(pin);
-  const Gap     gap(b, p);
-  std::mt19937  rng(11);
+  const Profile                          b = Profile::from_samples(bore), p = Profile::from_samples(pin);
+  const Gap                              gap(b, p);
+  std::mt19937                           rng(11);
   std::uniform_real_distribution<double> u(-pi, pi), depth(0, 1);
-  int in_contact = 0;
+  int                                    in_contact = 0;
   for (int trial = 0; trial < 40; ++trial)
     {
       const double    tb = u(rng), tp = u(rng);
       const double    phi_e = trial % 2 ? 1.0 + tb + 0.3 * u(rng) / pi : u(rng); // into the pocket, or anywhere
       const double    mag   = 0.5e-3 + 65e-6 * depth(rng);
       const mbs::Vec2 e(mag * std::cos(phi_e), mag * std::sin(phi_e));
-      const double best = scanned_minimum(b, p, e, tb, tp);
-      const auto r = gap.evaluate(e, tb, tp);
+      const double    best = scanned_minimum(b, p, e, tb, tp);
+      const auto      r    = gap.evaluate(e, tb, tp);
       if (best < 0)
         {
           ++in_contact;

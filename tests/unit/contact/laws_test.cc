@@ -31,31 +31,34 @@ namespace
     dealii::ParameterHandler prm;
     registry.declare_all(prm);
     prm.enter_subsection(name);
-    for (const auto &[entry, value] : std::vector<std::pair<std::string, std::string>>{
-           {"Restitution coefficient", std::to_string(restitution)},
-           {"Friction coefficient", "0.2"}})
+    for (const auto &[entry, value] :
+         std::vector<std::pair<std::string, std::string>>{{"Restitution coefficient", std::to_string(restitution)},
+                                                          {"Friction coefficient", "0.2"}})
       try
         {
           prm.set(entry, value);
         }
       catch (const dealii::ExceptionBase &)
-        {}
+        {
+        }
     prm.leave_subsection();
     ParameterReader reader(prm, "test");
     return registry.create(name, reader, "law");
   }
 
   class NormalLawContract : public ::testing::TestWithParam<std::string>
-  {};
+  {
+  };
   class FrictionLawContract : public ::testing::TestWithParam<std::string>
-  {};
+  {
+  };
 } // namespace
 
 TEST_P(NormalLawContract, ZeroNonNegativeContinuousMonotoneAndConservative)
 {
-  const auto law = make(normal_force_laws(), GetParam());
-  const double K = 7.97e10; // nine-bar joint, N/m^1.5
-  auto eval      = [&](double d, double rate, double impact) {
+  const auto   law  = make(normal_force_laws(), GetParam());
+  const double K    = 7.97e10; // nine-bar joint, N/m^1.5
+  auto         eval = [&](double d, double rate, double impact) {
     NormalContactInput in;
     in.penetration      = d;
     in.penetration_rate = rate;
@@ -90,8 +93,8 @@ TEST_P(NormalLawContract, ZeroNonNegativeContinuousMonotoneAndConservative)
 
 TEST_P(FrictionLawContract, OpposesSlidingWithinCoulombBound)
 {
-  const auto law = make(friction_laws(), GetParam());
-  const double fn = 100.0;
+  const auto   law = make(friction_laws(), GetParam());
+  const double fn  = 100.0;
   for (double v : {-1.0, -1e-3, -1e-4, -1e-5, 0.0, 1e-5, 1e-4, 1.5e-4, 1e-3, 1.0})
     {
       const double ft = law->force(fn, v);
@@ -127,11 +130,11 @@ namespace
     const double m = 0.2, K = 7.97e10;
     double       d = 0, v = v0;
     // Contact duration ~ 2.9 (m²/(K² v0))^(1/5) ≈ 1e-4 s here: 1e-8 s steps resolve it.
-    const double h = 1e-8;
-    auto acc = [&](double dd, double vv) {
+    const double h   = 1e-8;
+    auto         acc = [&](double dd, double vv) {
       if (dd <= 0)
         return 0.0;
-      NormalContactInput in{dd, vv, v0, K};
+      NormalContactInput  in{dd, vv, v0, K};
       NormalContactOutput out;
       law.evaluate(in, out);
       return -out.force / m;
@@ -158,8 +161,8 @@ TEST(NormalLaws, EffectiveRestitution)
       const double ln = effective_restitution(*make(normal_force_laws(), "lankarani-nikravesh", ce), 0.5);
       const double fl = effective_restitution(*make(normal_force_laws(), "flores", ce), 0.5);
       const double hz = effective_restitution(*make(normal_force_laws(), "hertz", ce), 0.5);
-      std::cout << "c_e = " << ce << ": effective restitution L-N " << ln << ", Flores " << fl
-                << ", Hertz " << hz << "\n";
+      std::cout << "c_e = " << ce << ": effective restitution L-N " << ln << ", Flores " << fl << ", Hertz " << hz
+                << "\n";
       EXPECT_NEAR(hz, 1.0, 1e-6) << "Hertz is elastic";
       EXPECT_NEAR(fl, ce, 0.03 * ce) << "Flores' law is built to reproduce c_e";
       if (ce == 0.9)

@@ -45,9 +45,7 @@ namespace
     SetUpTestSuite()
     {
       geometry = std::make_unique<contact::JointGeometry>(steel_pair());
-      model    = std::make_unique<PinBushingModel>(*geometry,
-                                                settings_about_minus_y(50e-6, 20),
-                                                mesh_file("round_pair"));
+      model = std::make_unique<PinBushingModel>(*geometry, settings_about_minus_y(50e-6, 20), mesh_file("round_pair"));
       for (const double F : loads)
         {
           condensed.push_back(model->solve(load_minus_y(F), SolverKind::condensed));
@@ -97,8 +95,8 @@ TEST_F(RoundPair, CondensedMatchesReference)
       double diff = 0;
       for (std::size_t i = 0; i < c.pressure.size(); ++i)
         diff = std::max(diff, std::abs(c.pressure[i] - r.pressure[i]));
-      std::cout << "F = " << loads[k] << " N: max |p_condensed − p_reference| / p_peak = "
-                << diff / r.peak_pressure << ", active " << c.n_active << " / " << r.n_active << "\n";
+      std::cout << "F = " << loads[k] << " N: max |p_condensed − p_reference| / p_peak = " << diff / r.peak_pressure
+                << ", active " << c.n_active << " / " << r.n_active << "\n";
       EXPECT_LT(diff, 1e-6 * r.peak_pressure) << "F = " << loads[k] << " N";
       EXPECT_EQ(c.n_active, r.n_active);
       // Pin displacements: equal to 1e-6 of the elastic approach beyond rigid contact.
@@ -113,8 +111,8 @@ TEST_F(RoundPair, SymmetricPressureForSymmetricLoad)
 {
   for (std::size_t k = 0; k < loads.size(); ++k)
     {
-      const auto &r = condensed[k];
-      const auto  n = r.pin_angle.size();
+      const auto &r       = condensed[k];
+      const auto  n       = r.pin_angle.size();
       unsigned    checked = 0;
       for (std::size_t i = 0; i < n; ++i)
         {
@@ -159,14 +157,13 @@ TEST(FeContact, HertzLimitErrorDecreasesWithMeshSize)
   for (const double size : {100e-6, 50e-6, 25e-6})
     {
       PinBushingModel model(geometry, settings_about_minus_y(size, 10), mesh_file("hertz"));
-      const auto      r       = model.solve(load_minus_y(F), SolverKind::condensed);
-      const double    e_b     = r.half_width / h.b - 1;
-      const double    e_p     = r.peak_pressure / h.p0 - 1;
-      error                   = std::max(std::abs(e_b), std::abs(e_p));
-      std::cout << "surface size " << size * 1e6 << " µm: half-width " << r.half_width * 1e3
-                << " mm (Hertz " << h.b * 1e3 << ", error " << 100 * e_b << " %), peak "
-                << r.peak_pressure / 1e6 << " MPa (Hertz " << h.p0 / 1e6 << ", error " << 100 * e_p
-                << " %)\n";
+      const auto      r   = model.solve(load_minus_y(F), SolverKind::condensed);
+      const double    e_b = r.half_width / h.b - 1;
+      const double    e_p = r.peak_pressure / h.p0 - 1;
+      error               = std::max(std::abs(e_b), std::abs(e_p));
+      std::cout << "surface size " << size * 1e6 << " µm: half-width " << r.half_width * 1e3 << " mm (Hertz "
+                << h.b * 1e3 << ", error " << 100 * e_b << " %), peak " << r.peak_pressure / 1e6 << " MPa (Hertz "
+                << h.p0 / 1e6 << ", error " << 100 * e_p << " %)\n";
       EXPECT_LT(error, previous) << "the Hertz error must decrease with the element size";
       previous = error;
     }
@@ -186,11 +183,11 @@ TEST(FeContact, WornPocketWidensArcAndLowersPeak)
   // round contact is ±2.6° and the pocket ±23°, so the widened contact still lies
   // inside the pocket. Factors of 2 are asserted (conservative against the quartic term
   // and the sampled profile).
-  const double d0      = 20e-6;
-  const double c       = R1 - R2;
-  const double phi_w   = std::sqrt(4 * d0 / c);
+  const double d0       = 20e-6;
+  const double c        = R1 - R2;
+  const double phi_w    = std::sqrt(4 * d0 / c);
   auto         geometry = steel_pair();
-  auto &       bore     = geometry.bore.samples();
+  auto        &bore     = geometry.bore.samples();
   for (unsigned int k = 0; k < bore.size(); ++k)
     {
       const double phi = std::remainder(geometry.bore.angle(k) + pi / 2, 2 * pi);
@@ -204,9 +201,9 @@ TEST(FeContact, WornPocketWidensArcAndLowersPeak)
   PinBushingModel worn(geometry, settings_about_minus_y(50e-6, 30, 0.1e-3), mesh_file("pocket"));
   const auto      r = round.solve(load_minus_y(F), SolverKind::condensed);
   const auto      w = worn.solve(load_minus_y(F), SolverKind::condensed);
-  std::cout << "round bore: half-angle " << r.half_angle * 180 / pi << "°, peak "
-            << r.peak_pressure / 1e6 << " MPa; pocket: half-angle " << w.half_angle * 180 / pi
-            << "°, peak " << w.peak_pressure / 1e6 << " MPa\n";
+  std::cout << "round bore: half-angle " << r.half_angle * 180 / pi << "°, peak " << r.peak_pressure / 1e6
+            << " MPa; pocket: half-angle " << w.half_angle * 180 / pi << "°, peak " << w.peak_pressure / 1e6
+            << " MPa\n";
   EXPECT_GT(w.half_angle, 2 * r.half_angle);
   EXPECT_LT(w.peak_pressure, 0.5 * r.peak_pressure);
   EXPECT_LT(w.half_angle, phi_w) << "the contact stays inside the pocket";

@@ -44,12 +44,11 @@ namespace
 
 TEST(FeInput, PinNotInsideBoreIsRejectedBeforeMeshing)
 {
-  auto g = steel_pair();
-  g.pin  = Profile::round(0.0121, 360);
+  auto g              = steel_pair();
+  g.pin               = Profile::round(0.0121, 360);
   const long sessions = EffectLedger::instance().resources("gmsh sessions");
-  const auto msg      = input_error_of([&] {
-    PinBushingModel m(g, settings_about_minus_y(1e-4, 180), mesh_file("bad_pin"));
-  });
+  const auto msg =
+    input_error_of([&] { PinBushingModel m(g, settings_about_minus_y(1e-4, 180), mesh_file("bad_pin")); });
   EXPECT_TRUE(contains(msg, "not inside the bore")) << msg;
   EXPECT_EQ(EffectLedger::instance().resources("gmsh sessions"), sessions);
 }
@@ -57,10 +56,10 @@ TEST(FeInput, PinNotInsideBoreIsRejectedBeforeMeshing)
 
 TEST(FeInput, NegativeOrNonFiniteSizesAreRejected)
 {
-  const auto g = steel_pair();
-  auto       s = settings_about_minus_y(1e-4, 180);
+  const auto g           = steel_pair();
+  auto       s           = settings_about_minus_y(1e-4, 180);
   s.surface_element_size = -1e-5;
-  auto msg = input_error_of([&] { PinBushingModel m(g, s, mesh_file("bad_size")); });
+  auto msg               = input_error_of([&] { PinBushingModel m(g, s, mesh_file("bad_size")); });
   EXPECT_TRUE(contains(msg, "Surface element size")) << msg;
 
   MeshSpecification spec;
@@ -69,12 +68,12 @@ TEST(FeInput, NegativeOrNonFiniteSizesAreRejected)
   spec.surface_element_size = 1e-4;
   spec.max_element_size     = 1e-3;
   spec.size_growth          = 0.3;
-  msg = input_error_of([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
+  msg                       = input_error_of([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
   EXPECT_TRUE(contains(msg, "outer radius")) << msg;
 
   spec.outer_radius         = 0.024;
   spec.surface_element_size = std::numeric_limits<double>::quiet_NaN();
-  msg = input_error_of([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
+  msg                       = input_error_of([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
   EXPECT_TRUE(contains(msg, "finite and > 0")) << msg;
 
   auto g2         = steel_pair();
@@ -119,7 +118,7 @@ TEST(FeInput, ContactCommandRejectsBadCasesWithoutPartialOutput)
   };
   for (const auto &c : cases)
     {
-      const std::string out  = dir + "/out";
+      const std::string        out  = dir + "/out";
       std::vector<std::string> args = {"contact", prm, "--output", out};
       for (const auto &s : c.set)
         {

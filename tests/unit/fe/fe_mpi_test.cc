@@ -5,8 +5,8 @@
 // pressures must agree to the round-off of two different direct solvers on a system
 // with condition number ~1e8: 1e-8 of the peak pressure. Two load states, one in the
 // Hertz regime (1 kN) and one with a wide arc (10 kN), on a coarse mesh (100 µm).
-#include "support/test_support.h"
 #include "io/json_file.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -38,14 +38,18 @@ TEST(FeMpi, DistributedReferenceSolverGivesTheSerialAnswer)
   // Open MPI refuses to start as root unless told that this is intended (CI is root).
   ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  const std::string dir = wearlink::testing::fresh_directory("fe_mpi");
-  const std::vector<std::string> args = {"contact",
-                                         wearlink::testing::source_path("params/pin_bushing.prm"),
-                                         "--set", "FE model/Surface element size=1e-4",
-                                         "--set", "FE model/Solvers=reference",
-                                         "--set", "Output/Write VTU=false",
-                                         "--set", "Loads/Load magnitudes=1000, 10000"};
-  auto serial_args = args;
+  const std::string              dir         = wearlink::testing::fresh_directory("fe_mpi");
+  const std::vector<std::string> args        = {"contact",
+                                                wearlink::testing::source_path("params/pin_bushing.prm"),
+                                                "--set",
+                                                "FE model/Surface element size=1e-4",
+                                                "--set",
+                                                "FE model/Solvers=reference",
+                                                "--set",
+                                                "Output/Write VTU=false",
+                                                "--set",
+                                                "Loads/Load magnitudes=1000, 10000"};
+  auto                           serial_args = args;
   serial_args.insert(serial_args.end(), {"--output", dir + "/serial"});
   auto parallel_args = args;
   parallel_args.insert(parallel_args.end(), {"--output", dir + "/mpi"});
@@ -70,8 +74,8 @@ TEST(FeMpi, DistributedReferenceSolverGivesTheSerialAnswer)
           peak = std::max(peak, a[i]);
           diff = std::max(diff, std::abs(a[i] - b[i]));
         }
-      std::cout << "load state " << k << ": max |p_serial − p_mpi| / p_peak = " << diff / peak
-                << " (peak " << peak / 1e6 << " MPa)\n";
+      std::cout << "load state " << k << ": max |p_serial − p_mpi| / p_peak = " << diff / peak << " (peak "
+                << peak / 1e6 << " MPa)\n";
       EXPECT_GT(peak, 1e7);
       EXPECT_LT(diff / peak, 1e-8);
     }

@@ -12,7 +12,6 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-
 #include <unistd.h>
 
 using namespace wearlink;
@@ -53,7 +52,7 @@ namespace
 TEST(FePlugin, RegisteredAndBuildsNothingUntilGeometry)
 {
   ASSERT_TRUE(contact::pressure_models().has("fe"));
-  auto &     ledger   = EffectLedger::instance();
+  auto      &ledger   = EffectLedger::instance();
   const long sessions = ledger.resources("gmsh sessions");
   const long trias    = ledger.resources("triangulations");
   auto       model    = create_fe_model(1e-4);
@@ -114,9 +113,9 @@ TEST(FePlugin, TemporaryMeshDirectoryGoesWithTheModel)
   // Without 'Mesh directory' the model meshes into a temporary directory of its own
   // (wearlink-fe-<pid>-…); a wear run re-meshes every iteration, so the directory must
   // not outlive the model.
-  namespace fs = std::filesystem;
+  namespace fs             = std::filesystem;
   const std::string prefix = "wearlink-fe-" + std::to_string(::getpid()) + "-";
-  auto count = [&] {
+  auto              count  = [&] {
     unsigned int n = 0;
     for (const auto &e : fs::directory_iterator(fs::temp_directory_path()))
       if (e.path().filename().string().rfind(prefix, 0) == 0)

@@ -28,13 +28,34 @@ namespace
   cases()
   {
     return {
-      {"revolute", [] { return make_revolute("r", 0, Vec2(0.1, -0.2), 1, Vec2(-0.3, 0.05)); }},
-      {"revolute_ground", [] { return make_revolute("r", ground, Vec2(0.4, 0.1), 1, Vec2(-0.3, 0.05)); }},
-      {"revolute_offset", [] { return make_revolute("r", 0, Vec2(0.1, 0), 1, Vec2(0, 0.02), Vec2(1e-4, -2e-4)); }},
-      {"translational", [] { return make_translational("t", 0, Vec2(0.1, 0.2), Vec2(1, 0.5), 1, Vec2(-0.1, 0.3), 0.4); }},
-      {"translational_ground", [] { return make_translational("t", ground, Vec2(0.45, 0), Vec2(0, 1), 1, Vec2(0.01, 0), 1.5); }},
-      {"fixed_angle", [] { return make_fixed_angle("f", 0, 1, 0.3); }},
-      {"angle_driver", [] { return make_angle_driver("d", ground, 1, 5.7645, -12.566); }},
+      {"revolute",
+       [] {
+         return make_revolute("r", 0, Vec2(0.1, -0.2), 1, Vec2(-0.3, 0.05));
+       }},
+      {"revolute_ground",
+       [] {
+         return make_revolute("r", ground, Vec2(0.4, 0.1), 1, Vec2(-0.3, 0.05));
+       }},
+      {"revolute_offset",
+       [] {
+         return make_revolute("r", 0, Vec2(0.1, 0), 1, Vec2(0, 0.02), Vec2(1e-4, -2e-4));
+       }},
+      {"translational",
+       [] {
+         return make_translational("t", 0, Vec2(0.1, 0.2), Vec2(1, 0.5), 1, Vec2(-0.1, 0.3), 0.4);
+       }},
+      {"translational_ground",
+       [] {
+         return make_translational("t", ground, Vec2(0.45, 0), Vec2(0, 1), 1, Vec2(0.01, 0), 1.5);
+       }},
+      {"fixed_angle",
+       [] {
+         return make_fixed_angle("f", 0, 1, 0.3);
+       }},
+      {"angle_driver",
+       [] {
+         return make_angle_driver("d", ground, 1, 5.7645, -12.566);
+       }},
     };
   }
 
@@ -78,10 +99,9 @@ TEST(Constraints, JacobianTimeDerivativeAndGammaMatchFiniteDifferences)
             const auto fp = phi(*c, t, qp), fm = phi(*c, t, qm);
             for (unsigned int k = 0; k < r.n; ++k)
               {
-                const double fd  = (fp[k] - fm[k]) / (2 * h);
+                const double fd   = (fp[k] - fm[k]) / (2 * h);
                 const bool   on_i = i < 3;
-                const double an  = on_i ? (c->body_i == ground ? 0.0 : r.jac_i[k][i]) :
-                                          r.jac_j[k][i - 3];
+                const double an   = on_i ? (c->body_i == ground ? 0.0 : r.jac_i[k][i]) : r.jac_j[k][i - 3];
                 // Map: body 0 is coordinates 0..2, body 1 is 3..5.
                 EXPECT_NEAR(an, fd, 1e-8) << "d phi_" << k << " / d q_" << i;
               }
@@ -106,8 +126,7 @@ TEST(Constraints, JacobianTimeDerivativeAndGammaMatchFiniteDifferences)
                 jv += r.jac_j[k][i] * v[3 + i];
               }
             EXPECT_NEAR(jv, (fp[k] - fm[k]) / (2 * hs), 1e-6) << "dPhi/dt row " << k;
-            EXPECT_NEAR(-r.gamma[k], (fp[k] - 2 * f0[k] + fm[k]) / (hs * hs), 1e-4)
-              << "gamma row " << k;
+            EXPECT_NEAR(-r.gamma[k], (fp[k] - 2 * f0[k] + fm[k]) / (hs * hs), 1e-4) << "gamma row " << k;
           }
       }
 }

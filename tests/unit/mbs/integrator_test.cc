@@ -64,11 +64,11 @@ namespace
 TEST(Integrators, Rk4IsFourthOrder)
 {
   IntegratorSettings s;
-  s.type      = IntegratorType::rk4;
-  s.time_step = two_pi / 100;
-  const auto e1 = run(s);
-  s.time_step   = two_pi / 200;
-  const auto e2 = run(s);
+  s.type             = IntegratorType::rk4;
+  s.time_step        = two_pi / 100;
+  const auto e1      = run(s);
+  s.time_step        = two_pi / 200;
+  const auto   e2    = run(s);
   const double ratio = e1.first / e2.first;
   EXPECT_GT(ratio, 14.0);
   EXPECT_LT(ratio, 18.0);

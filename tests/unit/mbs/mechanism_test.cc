@@ -6,12 +6,12 @@
 //    [M Φqᵀ; Φq 0] (independent path through Eigen's LU) on the nine-bar;
 //  - assembly picks the branch nearest the guess and reports an impossible mechanism.
 #include "base/exceptions.h"
-#include "workflows/run.h"
 #include "io/scene.h"
 #include "mbs/assembly.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
 #include "support/test_support.h"
+#include "workflows/run.h"
 
 #include <Eigen/LU>
 #include <gtest/gtest.h>
@@ -64,7 +64,7 @@ TEST(Mechanism, CompoundPendulumPeriodAndEnergy)
           double lo = c.t_previous, hi = c.t;
           for (int i = 0; i < 60; ++i)
             {
-              const double mid = 0.5 * (lo + hi);
+              const double mid       = 0.5 * (lo + hi);
               (f(mid) < 0 ? lo : hi) = mid;
             }
           times.push_back(hi);
@@ -78,17 +78,17 @@ TEST(Mechanism, CompoundPendulumPeriodAndEnergy)
   const double measured = crossings.times[2] - crossings.times[1];
   EXPECT_NEAR(measured / period, 1.0, 2e-5) << "measured " << measured << " s, linear theory " << period << " s";
 
-  const auto  &y = sim.state();
-  const double e0 = mech.kinetic_energy(v.data()) + mech.potential_energy(q.data(), v.data());
-  const double e1 = mech.kinetic_energy(y.data() + 3) + mech.potential_energy(y.data(), y.data() + 3);
+  const auto  &y     = sim.state();
+  const double e0    = mech.kinetic_energy(v.data()) + mech.potential_energy(q.data(), v.data());
+  const double e1    = mech.kinetic_energy(y.data() + 3) + mech.potential_energy(y.data(), y.data() + 3);
   const double swing = m * g * d * (1 - std::cos(theta0)); // energy scale of the motion
   EXPECT_NEAR(e1, e0, 1e-6 * swing);
 }
 
 TEST(Mechanism, SchurComplementEqualsSaddlePointSolve)
 {
-  io::Scene scene = io::read_scene(wearlink::testing::source_path("params/nine_bar_ideal.prm"));
-  auto &    mech  = *scene.mechanism;
+  io::Scene       scene = io::read_scene(wearlink::testing::source_path("params/nine_bar_ideal.prm"));
+  auto           &mech  = *scene.mechanism;
   Eigen::VectorXd q, v;
   workflows::assemble_scene(scene, q, v);
   // Perturb the state off the constraint manifold so that Baumgarte terms matter too.
@@ -109,14 +109,14 @@ TEST(Mechanism, SchurComplementEqualsSaddlePointSolve)
     {
       const auto &body = mech.get_bodies()[i];
       K(3 * i, 3 * i) = K(3 * i + 1, 3 * i + 1) = body.mass;
-      K(3 * i + 2, 3 * i + 2)                    = body.inertia;
-      b[3 * i]     = body.mass * mech.get_gravity().x();
-      b[3 * i + 1] = body.mass * mech.get_gravity().y();
+      K(3 * i + 2, 3 * i + 2)                   = body.inertia;
+      b[3 * i]                                  = body.mass * mech.get_gravity().x();
+      b[3 * i + 1]                              = body.mass * mech.get_gravity().y();
     }
   K.block(0, n, n, m) = J.transpose();
   K.block(n, 0, m, n) = J;
   const double alpha = 5, beta = 5; // the scene's Baumgarte parameters (defaults)
-  b.tail(m) = gamma - 2 * alpha * (J * v + phit) - beta * beta * phi;
+  b.tail(m)               = gamma - 2 * alpha * (J * v + phit) - beta * beta * phi;
   const Eigen::VectorXd x = K.fullPivLu().solve(b);
   EXPECT_LT((x.head(n) - a).norm(), 1e-9 * x.head(n).norm());
   EXPECT_LT((x.tail(m) - mech.multipliers()).norm(), 1e-9 * x.tail(m).norm());
@@ -137,7 +137,7 @@ TEST(Assembly, FindsTheBranchNearestTheGuessAndReportsImpossibleMechanisms)
   };
   const Guess up{Vec2(0.15, 0.19), 0.6, Vec2(0.34, 0.14), 1.8};
   const Guess down{Vec2(0.08, -0.05), -1.05, Vec2(0.27, -0.10), -2.4};
-  auto build = [](double rocker_length, const Guess &g) {
+  auto        build = [](double rocker_length, const Guess &g) {
     auto mech = std::make_unique<Mechanism>();
     mech->add_body(Body{"crank", 0.1, 1e-4, Vec2(0, 0.05), M_PI / 2});
     mech->add_body(Body{"coupler", 0.3, 3e-3, g.coupler, g.coupler_angle});

@@ -44,11 +44,11 @@ namespace
   steel_joint(unsigned int n_areas)
   {
     contact::JointGeometry g;
-    g.bore                      = Profile::round(0.012, n_areas);
-    g.pin                       = Profile::round(0.0115, n_areas);
-    g.axial_length              = 0.01;
-    g.bushing.youngs_modulus    = 207e9;
-    g.bushing.poisson_ratio     = 0.3;
+    g.bore                        = Profile::round(0.012, n_areas);
+    g.pin                         = Profile::round(0.0115, n_areas);
+    g.axial_length                = 0.01;
+    g.bushing.youngs_modulus      = 207e9;
+    g.bushing.poisson_ratio       = 0.3;
     g.pin_material.youngs_modulus = 207e9;
     g.pin_material.poisson_ratio  = 0.3;
     return g;
@@ -58,14 +58,14 @@ namespace
 TEST(Archard, ConstantLoadOnRotatingPin)
 {
   const unsigned int n_areas = 360, per_area = 8, revolutions = 3;
-  const auto         g       = steel_joint(n_areas);
-  auto               model   = create("hertz-strip");
+  const auto         g     = steel_joint(n_areas);
+  auto               model = create("hertz-strip");
   model->update_geometry(g);
-  const double k_pin = 2e-13, k_bore = 5e-14; // m³/(N m): different, to see both
+  const double             k_pin = 2e-13, k_bore = 5e-14; // m³/(N m): different, to see both
   wear::ArchardAccumulator acc(g, k_bore, k_pin, *model);
 
-  const double force = 100, omega = 4 * pi; // N, rad/s
-  const double r2    = g.pin[0];
+  const double       force = 100, omega = 4 * pi; // N, rad/s
+  const double       r2      = g.pin[0];
   const unsigned int n_steps = n_areas * per_area * revolutions;
   const double       dt      = revolutions * 2 * pi / omega / n_steps;
   for (unsigned int i = 0; i < n_steps; ++i)
@@ -90,8 +90,8 @@ TEST(Archard, ConstantLoadOnRotatingPin)
     ASSERT_NEAR(acc.pin_depth()[k], uniform, 1e-9 * uniform) << "pin area " << k;
 
   // Bushing: the area facing φ* = −π/2 is k = 270; nothing beyond b/R1 + 1 area.
-  const auto & h    = acc.bore_depth();
-  const auto   peak = std::max_element(h.begin(), h.end()) - h.begin();
+  const auto &h    = acc.bore_depth();
+  const auto  peak = std::max_element(h.begin(), h.end()) - h.begin();
   EXPECT_EQ(peak, 270);
   const double line_load = force / g.axial_length;
   const double e_star    = 1 / (2 * (1 - 0.09) / 207e9);
@@ -119,7 +119,7 @@ TEST(Archard, ConstantLoadOnRotatingPin)
 // ~3° here → 3e-3); we ask 1 %.
 TEST(Archard, LocalVolumeMatchesGlobalForWinkler)
 {
-  const auto g = steel_joint(360);
+  const auto               g = steel_joint(360);
   dealii::ParameterHandler prm;
   contact::pressure_models().declare_all(prm);
   prm.enter_subsection("winkler");
@@ -184,9 +184,9 @@ TEST(Archard, SampledShapesKeepTheVolume)
   const auto g     = steel_joint(360);
   auto       model = create("hertz-strip");
   model->update_geometry(g);
-  wear::ArchardAccumulator every(g, 1e-13, 2e-13, *model), sampled(g, 1e-13, 2e-13, *model);
+  wear::ArchardAccumulator      every(g, 1e-13, 2e-13, *model), sampled(g, 1e-13, 2e-13, *model);
   std::vector<wear::LoadSample> history;
-  const double omega = 4 * pi, period = 2 * pi / omega, dt = period / 5000;
+  const double                  omega = 4 * pi, period = 2 * pi / omega, dt = period / 5000;
   for (unsigned int i = 0; i < 5000; ++i)
     {
       wear::LoadSample s;

@@ -20,11 +20,11 @@ using namespace wearlink;
 
 TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
 {
-  constexpr double   pi = 3.14159265358979323846;
-  const unsigned int n  = 360;
+  constexpr double    pi = 3.14159265358979323846;
+  const unsigned int  n  = 360;
   std::vector<double> bore(n), pin(n);
-  unsigned int        seed = 12345;
-  auto noise = [&] { // deterministic pseudo-random numbers in [−1, 1]
+  unsigned int        seed  = 12345;
+  auto                noise = [&] { // deterministic pseudo-random numbers in [−1, 1]
     seed = 1103515245u * seed + 12345u;
     return ((seed >> 8) % 20001) / 10000.0 - 1.0;
   };
@@ -34,8 +34,8 @@ TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
       const double x    = std::remainder(psi - 1.2, 2 * pi) / (25 * pi / 180);
       const double worn = std::abs(x) < 1 ? 60e-6 * (1 - x * x) + 4e-6 * noise() : 0.0;
       bore[k]           = 0.012 + std::max(worn, 0.0);
-      pin[k]            = 0.0115 - 15e-6 * std::exp(-std::pow(std::remainder(psi - 3.0, 2 * pi), 2) / 0.5) -
-               1e-6 * std::abs(noise());
+      pin[k] =
+        0.0115 - 15e-6 * std::exp(-std::pow(std::remainder(psi - 3.0, 2 * pi), 2) / 0.5) - 1e-6 * std::abs(noise());
     }
   contact::JointGeometry g;
   g.bore         = Profile::from_samples(bore, "bore");

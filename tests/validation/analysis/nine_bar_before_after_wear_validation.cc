@@ -23,8 +23,8 @@
 //    (README) gives 100–145 1/s before and 346–362 1/s after wear for d0 = 1e-8 … 1e-6 m
 //    at this tolerance, so the rise is not a matter of d0. With the impacts ×3–4 this is
 //    the seed's "wear strengthens the chaos", measured without an embedding.
-#include "scenes/scene_support.h"
 #include "io/json_file.h"
+#include "scenes/scene_support.h"
 
 #include <gtest/gtest.h>
 
@@ -44,8 +44,11 @@ namespace
 
   /** The scan value of @p channel / @p method at delay @p tau [s]. */
   double
-  scanned(const Json &before_after, const std::string &channel, const std::string &method, const double tau,
-          const char *which)
+  scanned(const Json        &before_after,
+          const std::string &channel,
+          const std::string &method,
+          const double       tau,
+          const char        *which)
   {
     const auto &scan = before_after.at("delay_scan");
     for (std::size_t k = 0; k < scan.size(); ++k)
@@ -59,8 +62,8 @@ namespace
 TEST(NineBarBeforeAfterWear, WornJointsRattleMoreAndExponentsAreComparedAtOneEmbedding)
 {
   const std::string dir = wl::fresh_directory("nine_bar_before_after_wear");
-  const auto        r = wl::run_wearlink({"run", wl::source_path("params/nine_bar_wear_dynamics.prm"), "--output", dir,
-                                   "--quiet"});
+  const auto        r =
+    wl::run_wearlink({"run", wl::source_path("params/nine_bar_wear_dynamics.prm"), "--output", dir, "--quiet"});
   ASSERT_EQ(r.exit_status, 0) << r.output;
   std::printf("%s\n", r.output.c_str());
   const Json  summary = io::read_json_file(dir + "/summary.json");
@@ -76,7 +79,9 @@ TEST(NineBarBeforeAfterWear, WornJointsRattleMoreAndExponentsAreComparedAtOneEmb
     }
   const double ab = indicator(ba, "slider9_peak_acceleration_m_s2", "before"),
                aa = indicator(ba, "slider9_peak_acceleration_m_s2", "after");
-  std::printf("slider peak acceleration %.4g -> %.4g m/s^2 (%+.1f %%; seed test rig +17.3 %%)\n", ab, aa,
+  std::printf("slider peak acceleration %.4g -> %.4g m/s^2 (%+.1f %%; seed test rig +17.3 %%)\n",
+              ab,
+              aa,
               100 * (aa / ab - 1));
   EXPECT_GT(aa / ab, 1.05);
   EXPECT_LT(aa / ab, 1.40);
@@ -85,8 +90,12 @@ TEST(NineBarBeforeAfterWear, WornJointsRattleMoreAndExponentsAreComparedAtOneEmb
     for (const char *which : {"before_per_s", "after_per_s"})
       {
         const double fine = scanned(ba, c, "wolf", 0.002, which), coarse = scanned(ba, c, "wolf", 0.02, which);
-        std::printf("%s wolf %s: %.3g 1/s at 2 ms, %.3g 1/s at 20 ms delay (ratio %.2f)\n", c.c_str(), which, fine,
-                    coarse, fine / coarse);
+        std::printf("%s wolf %s: %.3g 1/s at 2 ms, %.3g 1/s at 20 ms delay (ratio %.2f)\n",
+                    c.c_str(),
+                    which,
+                    fine,
+                    coarse,
+                    fine / coarse);
         EXPECT_GT(fine / coarse, 4.0) << c << ' ' << which;
       }
 
@@ -94,8 +103,10 @@ TEST(NineBarBeforeAfterWear, WornJointsRattleMoreAndExponentsAreComparedAtOneEmb
   ASSERT_EQ(l.size(), 5u);
   const auto &tt = l[4];
   ASSERT_EQ(tt.at("method").get<std::string>(), "two-trajectory");
-  std::printf("two-trajectory exponent of the model: %.4g -> %.4g 1/s (x%.2f)\n", json_number(tt.at("before_per_s")),
-              json_number(tt.at("after_per_s")), json_number(tt.at("after_per_s")) / json_number(tt.at("before_per_s")));
+  std::printf("two-trajectory exponent of the model: %.4g -> %.4g 1/s (x%.2f)\n",
+              json_number(tt.at("before_per_s")),
+              json_number(tt.at("after_per_s")),
+              json_number(tt.at("after_per_s")) / json_number(tt.at("before_per_s")));
   EXPECT_GT(json_number(tt.at("after_per_s")), 1.5 * json_number(tt.at("before_per_s")));
   for (std::size_t k = 0; k < 4; ++k)
     {

@@ -57,16 +57,27 @@ TEST(NineBarLyapunov, JointsAAndBBeforeWear)
   ASSERT_EQ(l.size(), 4u); // (A, B) x (wolf, rosenstein)
   std::printf("\nLargest Lyapunov exponent of the journal-centre x coordinate, nine-bar before wear,\n"
               "100 cycles, sampled every 1 ms (natural log):\n");
-  std::printf("%-6s %-11s %12s %14s %12s %8s %8s %10s\n", "joint", "method", "[1/s]", "[per sample]",
-              "[per cycle]", "delay", "dim", "seed");
+  std::printf("%-6s %-11s %12s %14s %12s %8s %8s %10s\n",
+              "joint",
+              "method",
+              "[1/s]",
+              "[per sample]",
+              "[per cycle]",
+              "delay",
+              "dim",
+              "seed");
   for (std::size_t k = 0; k < l.size(); ++k)
     {
       const std::string channel = l[k].at("channel").get<std::string>();
       const bool        a       = channel == "A_ex_m";
-      std::printf("%-6s %-11s %12.4g %14.4g %12.4g %8.0f %8.0f %10s\n", a ? "A" : "B",
-                  l[k].at("method").get<std::string>().c_str(), json_number(l[k].at("exponent_per_s")),
-                  json_number(l[k].at("exponent_per_sample")), json_number(l[k].at("exponent_per_driving_period")),
-                  json_number(l[k].at("delay_samples")), json_number(l[k].at("embedding_dimension")),
+      std::printf("%-6s %-11s %12.4g %14.4g %12.4g %8.0f %8.0f %10s\n",
+                  a ? "A" : "B",
+                  l[k].at("method").get<std::string>().c_str(),
+                  json_number(l[k].at("exponent_per_s")),
+                  json_number(l[k].at("exponent_per_sample")),
+                  json_number(l[k].at("exponent_per_driving_period")),
+                  json_number(l[k].at("delay_samples")),
+                  json_number(l[k].at("embedding_dimension")),
                   a ? "0.041" : "0.030");
       EXPECT_GT(json_number(l[k].at("exponent_per_s")) * driving_period, 1.0) << channel;
     }
@@ -88,7 +99,8 @@ TEST(NineBarLyapunov, IdealMechanismIsNotChaotic)
   ASSERT_EQ(l.size(), 2u);
   for (std::size_t k = 0; k < l.size(); ++k)
     {
-      std::printf("ideal nine-bar, rod2 x, %s: %.3g 1/s (natural log)\n", l[k].at("method").get<std::string>().c_str(),
+      std::printf("ideal nine-bar, rod2 x, %s: %.3g 1/s (natural log)\n",
+                  l[k].at("method").get<std::string>().c_str(),
                   json_number(l[k].at("exponent_per_s")));
       EXPECT_NEAR(json_number(l[k].at("exponent_per_s")) * driving_period, 0.0, 0.05);
     }

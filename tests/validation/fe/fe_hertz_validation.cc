@@ -26,8 +26,8 @@ using namespace wearlink::fe::testing;
 
 TEST(FeValidation, HertzConvergenceAt100N)
 {
-  const auto   geometry = steel_pair();
-  const Hertz  h        = hertz(geometry, 100);
+  const auto          geometry = steel_pair();
+  const Hertz         h        = hertz(geometry, 100);
   std::vector<double> errors;
   std::cout << "  size [µm]  elements/b  half-width [mm] (err %)  peak [MPa] (err %)  DoFs\n";
   for (const double size : {100e-6, 50e-6, 25e-6, 12.5e-6, 6.25e-6})
@@ -37,10 +37,9 @@ TEST(FeValidation, HertzConvergenceAt100N)
       const double    e_b = r.half_width / h.b - 1;
       const double    e_p = r.peak_pressure / h.p0 - 1;
       errors.push_back(std::max(std::abs(e_b), std::abs(e_p)));
-      std::cout << std::setw(11) << size * 1e6 << std::setw(12) << h.b / size << std::setw(12)
-                << r.half_width * 1e3 << " (" << std::setw(7) << 100 * e_b << ")" << std::setw(12)
-                << r.peak_pressure / 1e6 << " (" << std::setw(7) << 100 * e_p << ")  "
-                << model.statistics().n_dofs << "\n";
+      std::cout << std::setw(11) << size * 1e6 << std::setw(12) << h.b / size << std::setw(12) << r.half_width * 1e3
+                << " (" << std::setw(7) << 100 * e_b << ")" << std::setw(12) << r.peak_pressure / 1e6 << " ("
+                << std::setw(7) << 100 * e_p << ")  " << model.statistics().n_dofs << "\n";
     }
   for (std::size_t k = 1; k < 4; ++k)
     EXPECT_LT(errors[k], errors[k - 1]) << "level " << k;
@@ -51,17 +50,17 @@ TEST(FeValidation, HertzConvergenceAt100N)
 
 TEST(FeValidation, SmallLoadConformingLimit)
 {
-  const auto   geometry = steel_pair();
-  const double E        = contact::effective_modulus(geometry.bushing, geometry.pin_material);
+  const auto      geometry = steel_pair();
+  const double    E        = contact::effective_modulus(geometry.bushing, geometry.pin_material);
   PinBushingModel model(geometry, settings_about_minus_y(6.25e-6, 10), mesh_file("conforming"));
   for (const double F : {30.0, 100.0})
     {
-      const auto   r     = model.solve(load_minus_y(F), SolverKind::condensed);
-      const double P     = F / geometry.axial_length;
-      const double lhs   = P / (E * (R1 - R2));
-      const double rhs   = pi * r.half_angle * r.half_angle / 4;
-      std::cout << "F = " << F << " N: P/(E* ΔR) = " << lhs << ", π ε²/4 = " << rhs
-                << ", ratio " << rhs / lhs << " (limit R2/R1 = " << R2 / R1 << ")\n";
+      const auto   r   = model.solve(load_minus_y(F), SolverKind::condensed);
+      const double P   = F / geometry.axial_length;
+      const double lhs = P / (E * (R1 - R2));
+      const double rhs = pi * r.half_angle * r.half_angle / 4;
+      std::cout << "F = " << F << " N: P/(E* ΔR) = " << lhs << ", π ε²/4 = " << rhs << ", ratio " << rhs / lhs
+                << " (limit R2/R1 = " << R2 / R1 << ")\n";
       EXPECT_NEAR(rhs / lhs, R2 / R1, 0.01 * R2 / R1);
     }
 }
