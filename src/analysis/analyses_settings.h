@@ -40,7 +40,7 @@ namespace wearlink::analysis
     double sample_interval = 1e-3;
     /** Lyapunov: methods, directions ("x", "y") and embedding. */
     std::vector<LyapunovMethod> methods;
-    /** Also the exponent of the simulation itself (io/shadow_trajectory.h). */
+    /** Also the exponent of the simulation itself (workflows/shadow_trajectory.h). */
     bool                        two_trajectory            = false;
     double                      two_trajectory_separation = 1e-6; ///< d0 [m]
     double                      renormalization_interval  = 0.02; ///< τ [s]
@@ -49,7 +49,7 @@ namespace wearlink::analysis
     std::optional<unsigned int> dimension;
 
     /**
-     * Wear scenes: the before/after-wear comparison (io/dynamics_comparison.h), from the
+     * Wear scenes: the before/after-wear comparison (workflows/dynamics_comparison.h), from the
      * entries of `subsection Before-after wear`: common delay [s] and dimension (0 =
      * automatic on the before-wear run), delay scan [s], published exponents to print.
      */

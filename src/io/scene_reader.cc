@@ -96,55 +96,14 @@ namespace wearlink::io
               "rad/s");
     }
 
+    /**
+     * The entries of "Joint <name>/Clearance": geometry, materials, profiles, and every
+     * registered normal force law, friction law and wear model (each in its own
+     * subsection; only the chosen ones are read).
+     */
     void
-    declare_joint(ParameterHandler &prm, const std::string &body_names)
+    declare_clearance(ParameterHandler &prm)
     {
-      declare_required(prm,
-                       "Type",
-                       P::Selection(joint_types),
-                       "revolute: hinge (ideal or with clearance); translational: body 2 slides "
-                       "along an axis fixed in body 1 without rotating relative to it; "
-                       "fixed-angle: θ2 − θ1 = Angle offset; angle-driver: θ2 − θ1 = Angle "
-                       "offset + Angular velocity · t (a rheonomic driver).",
-                       "none");
-      declare(prm,
-              "Body 1",
-              "ground",
-              P::Selection(body_names),
-              "First body (the guide of a translational joint, the frame a driver "
-              "measures from). 'ground' is the fixed frame.",
-              "none");
-      declare_required(prm, "Body 2", P::Selection(body_names), "Second body.", "none");
-      declare(prm,
-              "Point on body 1",
-              "0, 0",
-              point_pattern(),
-              "Attachment point in body 1's frame (centre of mass origin, body x-axis); "
-              "global coordinates if body 1 is ground.",
-              "m");
-      declare(prm, "Point on body 2", "0, 0", point_pattern(), "Attachment point in body 2's frame.", "m");
-      declare(prm,
-              "Axis on body 1",
-              "1, 0",
-              point_pattern(),
-              "Translational joints: sliding direction in body 1's frame.",
-              "none");
-      declare(prm,
-              "Angle offset",
-              "0",
-              P::Double(),
-              "translational, fixed-angle and angle-driver: θ2 − θ1 at t = 0.",
-              "rad");
-      declare(prm, "Angular velocity", "0", P::Double(), "angle-driver: constant rate of θ2 − θ1.", "rad/s");
-      declare(prm,
-              "Model",
-              "ideal",
-              P::Selection("ideal|clearance"),
-              "Revolute joints: 'ideal' is a kinematic constraint (no contact code runs); "
-              "'clearance' is a pin in a bore with contact forces (subsection Clearance).",
-              "none");
-
-      prm.enter_subsection("Clearance");
       declare(prm,
               "Bushing on",
               "body 2",
@@ -212,6 +171,58 @@ namespace wearlink::io
       contact::normal_force_laws().declare_all(prm);
       contact::friction_laws().declare_all(prm);
       wear::declare_joint_wear(prm);
+    }
+
+    void
+    declare_joint(ParameterHandler &prm, const std::string &body_names)
+    {
+      declare_required(prm,
+                       "Type",
+                       P::Selection(joint_types),
+                       "revolute: hinge (ideal or with clearance); translational: body 2 slides "
+                       "along an axis fixed in body 1 without rotating relative to it; "
+                       "fixed-angle: θ2 − θ1 = Angle offset; angle-driver: θ2 − θ1 = Angle "
+                       "offset + Angular velocity · t (a rheonomic driver).",
+                       "none");
+      declare(prm,
+              "Body 1",
+              "ground",
+              P::Selection(body_names),
+              "First body (the guide of a translational joint, the frame a driver "
+              "measures from). 'ground' is the fixed frame.",
+              "none");
+      declare_required(prm, "Body 2", P::Selection(body_names), "Second body.", "none");
+      declare(prm,
+              "Point on body 1",
+              "0, 0",
+              point_pattern(),
+              "Attachment point in body 1's frame (centre of mass origin, body x-axis); "
+              "global coordinates if body 1 is ground.",
+              "m");
+      declare(prm, "Point on body 2", "0, 0", point_pattern(), "Attachment point in body 2's frame.", "m");
+      declare(prm,
+              "Axis on body 1",
+              "1, 0",
+              point_pattern(),
+              "Translational joints: sliding direction in body 1's frame.",
+              "none");
+      declare(prm,
+              "Angle offset",
+              "0",
+              P::Double(),
+              "translational, fixed-angle and angle-driver: θ2 − θ1 at t = 0.",
+              "rad");
+      declare(prm, "Angular velocity", "0", P::Double(), "angle-driver: constant rate of θ2 − θ1.", "rad/s");
+      declare(prm,
+              "Model",
+              "ideal",
+              P::Selection("ideal|clearance"),
+              "Revolute joints: 'ideal' is a kinematic constraint (no contact code runs); "
+              "'clearance' is a pin in a bore with contact forces (subsection Clearance).",
+              "none");
+
+      prm.enter_subsection("Clearance");
+      declare_clearance(prm);
       prm.leave_subsection();
     }
 
@@ -481,6 +492,36 @@ namespace wearlink::io
       scene.mechanism->add_force_element(std::move(joint_element));
     }
 
+    /** Integrator, simulated interval and time-series output of @p scene. */
+    void
+    read_numerics(ParameterReader &r, Scene &scene, mbs::Mechanism &mech)
+    {
+      r.enter("Integrator");
+      auto &is              = scene.simulation.integrator;
+      is.type               = mbs::parse_integrator_type(r.get("Method"));
+      is.time_step          = r.get_positive("Time step");
+      is.relative_tolerance = r.get_positive("Relative tolerance");
+      is.absolute_tolerance = {r.get_positive("Position tolerance"), r.get_positive("Velocity tolerance")};
+      is.max_step           = r.get_positive("Maximum step");
+      is.min_step           = r.get_positive("Minimum step");
+      if (!(is.min_step < is.max_step))
+        r.fail("Minimum step", "it must be smaller than Maximum step (" + format_number(is.max_step) + " s)");
+      mech.set_baumgarte(r.get_double("Baumgarte alpha"), r.get_double("Baumgarte beta"));
+      r.leave();
+
+      r.enter("Simulation");
+      scene.start_time = r.get_double("Start time");
+      scene.end_time   = r.get_double("End time");
+      if (!(scene.end_time > scene.start_time))
+        r.fail("End time", "it must be later than Start time (" + format_number(scene.start_time) + " s)");
+      r.leave();
+
+      r.enter("Output");
+      scene.write_time_series = r.get_bool("Time series");
+      scene.output_interval   = r.get_double("Time series interval");
+      r.leave();
+    }
+
     void
     build_scene(Scene                          &scene,
                 ParameterHandler               &prm,
@@ -557,31 +598,7 @@ namespace wearlink::io
           r.leave();
         }
 
-      // Numerics.
-      r.enter("Integrator");
-      auto &is              = scene.simulation.integrator;
-      is.type               = mbs::parse_integrator_type(r.get("Method"));
-      is.time_step          = r.get_positive("Time step");
-      is.relative_tolerance = r.get_positive("Relative tolerance");
-      is.absolute_tolerance = {r.get_positive("Position tolerance"), r.get_positive("Velocity tolerance")};
-      is.max_step           = r.get_positive("Maximum step");
-      is.min_step           = r.get_positive("Minimum step");
-      if (!(is.min_step < is.max_step))
-        r.fail("Minimum step", "it must be smaller than Maximum step (" + format_number(is.max_step) + " s)");
-      mech.set_baumgarte(r.get_double("Baumgarte alpha"), r.get_double("Baumgarte beta"));
-      r.leave();
-
-      r.enter("Simulation");
-      scene.start_time = r.get_double("Start time");
-      scene.end_time   = r.get_double("End time");
-      if (!(scene.end_time > scene.start_time))
-        r.fail("End time", "it must be later than Start time (" + format_number(scene.start_time) + " s)");
-      r.leave();
-
-      r.enter("Output");
-      scene.write_time_series = r.get_bool("Time series");
-      scene.output_interval   = r.get_double("Time series interval");
-      r.leave();
+      read_numerics(r, scene, mech);
 
       scene.wear_loop = wear::read_wear_loop(r);
       for (auto *j : scene.clearance_joints)

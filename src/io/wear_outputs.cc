@@ -206,141 +206,181 @@ namespace wearlink::io
     write_file_atomically(path, os.str());
   }
 
+  namespace
+  {
+    /** wear_depth_<J>.csv: cumulative depth per area after each iteration (seed Fig 5). */
+    void
+    write_depth_csv(const std::string &dir, const wear::JointWearState &j)
+    {
+      const unsigned     n_it = static_cast<unsigned>(j.history.size());
+      std::ostringstream os;
+      os << "# cumulative wear depth after each iteration; pin angles in the pin's frame, bore angles in "
+            "the bushing's frame\nangle_deg";
+      for (unsigned it = 0; it < n_it; ++it)
+        os << ",pin_it" << it + 1 << "_m";
+      for (unsigned it = 0; it < n_it; ++it)
+        os << ",bushing_it" << it + 1 << "_m";
+      os << '\n' << std::setprecision(10);
+      const unsigned n = j.pin.n_points();
+      for (unsigned k = 0; k < n; ++k)
+        {
+          os << 360.0 * k / n;
+          for (unsigned it = 0; it < n_it; ++it)
+            os << ',' << j.history[it].depth_pin[k];
+          for (unsigned it = 0; it < n_it; ++it)
+            os << ',' << (k < j.history[it].depth_bore.size() ? j.history[it].depth_bore[k] : 0.0);
+          os << '\n';
+        }
+      write_file_atomically(dir + "/wear_depth_" + j.name + ".csv", os.str());
+    }
+
+    /** wear_depth_<J>.png: the depth curves of up to six iterations, pin and bushing. */
+    void
+    plot_depth(const std::string &dir, const wear::JointWearState &j)
+    {
+      const unsigned n_it = static_cast<unsigned>(j.history.size());
+      const unsigned n    = j.pin.n_points();
+      PlotSpec       spec;
+      spec.title            = "Joint " + j.name + ": wear depth after each iteration (pin: solid, bushing: dashed)";
+      spec.x_label          = "angle in the body's own frame [deg]";
+      spec.y_label          = "wear depth [um]";
+      spec.extra            = "set xrange [0:360]\nset xtics 45\n";
+      const unsigned stride = std::max(1u, (n_it + 5) / 6);
+      for (unsigned it = 0; it < n_it; ++it)
+        {
+          if ((n_it - 1 - it) % stride != 0)
+            continue;
+          const std::string colour = std::to_string(spec.series.size() / 2 + 1); // distinct per curve pair
+          PlotSeries        p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + colour};
+          PlotSeries        b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + colour};
+          for (unsigned k = 0; k < n; ++k)
+            {
+              p.x.push_back(360.0 * k / n);
+              p.y.push_back(j.history[it].depth_pin[k] * 1e6);
+            }
+          for (unsigned k = 0; k < j.bore.n_points(); ++k)
+            {
+              b.x.push_back(360.0 * k / j.bore.n_points());
+              b.y.push_back(j.history[it].depth_bore[k] * 1e6);
+            }
+          spec.series.push_back(p);
+          spec.series.push_back(b);
+        }
+      plot_png(spec, dir + "/wear_depth_" + j.name + ".png");
+    }
+
+    /**
+     * The reconstructed profiles (seed Figs 6–7): profiles_<J>.csv/.msh, the worn
+     * profiles as scene profile files (bore_<J>.csv, pin_<J>.csv), and magnified plots.
+     */
+    void
+    write_profiles(const std::string &dir, const Scene &scene, const wear::JointWearState &j)
+    {
+      const unsigned n_it = static_cast<unsigned>(j.history.size());
+      const unsigned n    = j.pin.n_points();
+      // Reconstructed profiles (seed Figs 6–7).
+      std::ostringstream ps;
+      ps << "angle_rad,bore_initial_m,bore_worn_m,pin_initial_m,pin_worn_m\n" << std::setprecision(17);
+      for (unsigned k = 0; k < n; ++k)
+        ps << j.pin.angle(k) << ',' << j.initial_bore[k] << ',' << j.bore[k] << ',' << j.initial_pin[k] << ','
+           << j.pin[k] << '\n';
+      write_file_atomically(dir + "/profiles_" + j.name + ".csv", ps.str());
+      write_profiles_msh(dir + "/profiles_" + j.name + ".msh", j.bore, j.pin);
+      // The worn profiles in the scene's profile-file format, so that a scene can
+      // start from them ('Bore profile file', 'Pin profile file').
+      j.bore.write_csv(dir + "/bore_" + j.name + ".csv", "worn bore of joint " + j.name + ", bushing frame");
+      j.pin.write_csv(dir + "/pin_" + j.name + ".csv", "worn pin of joint " + j.name + ", pin frame");
+      // Each surface at its own magnification (stated in its title), unless fixed.
+      auto magnification = [&](double depth) {
+        const double m = scene.wear_loop.magnification;
+        if (m > 0)
+          return m;
+        return depth > 0 ? nice(0.15 * j.initial_pin.mean_radius() / depth) : 1.0;
+      };
+      auto title = [](const std::string &what, double m) {
+        std::ostringstream t;
+        t << what << " (wear magnified x" << m << ")";
+        return t.str();
+      };
+      const double m_bore = magnification(n_it ? j.history.back().max_depth_bore : 0.0);
+      const double m_pin  = magnification(n_it ? j.history.back().max_depth_pin : 0.0);
+      plot_profile(dir + "/profile_" + j.name + "_bore.png",
+                   title("Joint " + j.name + ": bushing bore surface", m_bore),
+                   j.initial_bore,
+                   j.bore,
+                   m_bore);
+      plot_profile(dir + "/profile_" + j.name + "_pin.png",
+                   title("Joint " + j.name + ": pin surface", m_pin),
+                   j.initial_pin,
+                   j.pin,
+                   m_pin);
+    }
+
+    /** wear_volume.png: worn volume of each surface against revolutions. */
+    void
+    plot_volume(const std::string &dir, const Scene &scene, const wear::WearState &st)
+    {
+      // Worn volume vs revolutions.
+      {
+        PlotSpec spec;
+        spec.title   = "Worn volume";
+        spec.x_label = "revolutions";
+        spec.y_label = "worn volume [mm^3]";
+        for (const auto &j : st.joints)
+          {
+            PlotSeries p{j.name + " pin", {0}, {0}, "linespoints", "lw 2"};
+            PlotSeries b{j.name + " bushing", {0}, {0}, "linespoints", "dt 2 lw 2"};
+            double     revolutions = 0;
+            for (unsigned it = 0; it < j.history.size(); ++it)
+              {
+                revolutions += st.factors[it] * scene.wear_loop.cycles_per_iteration;
+                p.x.push_back(revolutions);
+                p.y.push_back(j.history[it].volume_pin * 1e9);
+                b.x.push_back(revolutions);
+                b.y.push_back(j.history[it].volume_bore * 1e9);
+              }
+            spec.series.push_back(p);
+            spec.series.push_back(b);
+          }
+        plot_png(spec, dir + "/wear_volume.png");
+      }
+    }
+
+    /** response_after.csv and response.png: the response before and after wear (seed Fig 8). */
+    void
+    write_response(const std::string &dir, const ResponseRecorder &after)
+    {
+      // Dynamic response before and after wear (seed Fig 8).
+      after.write_csv(dir + "/response_after.csv");
+      std::vector<double> tb, axb, ayb;
+      PlotSpec            spec;
+      spec.title   = after.body_name + ": acceleration before and after wear (same initial state)";
+      spec.x_label = "time from the start [s]";
+      spec.y_label = "acceleration [m/s^2]";
+      if (read_response(dir + "/response_before.csv", tb, axb, ayb))
+        {
+          spec.series.push_back({"a_y before wear", tb, ayb, "lines", "lw 1 lc rgb 'blue'"});
+          spec.series.push_back({"a_x before wear", tb, axb, "lines", "lw 1 lc rgb 'dark-green'"});
+        }
+      spec.series.push_back({"a_y after wear", after.t, after.ay, "lines", "lw 1 lc rgb 'red'"});
+      spec.series.push_back({"a_x after wear", after.t, after.ax, "lines", "lw 1 lc rgb 'orange'"});
+      plot_png(spec, dir + "/response.png");
+    }
+  } // namespace
+
   void
   write_wear_outputs(const std::string      &dir,
                      const Scene            &scene,
                      const wear::WearState  &st,
                      const ResponseRecorder &after)
   {
-    // Wear depth vs angle, per iteration (seed Fig 5).
     for (const auto &j : st.joints)
       {
-        const unsigned     n_it = static_cast<unsigned>(j.history.size());
-        std::ostringstream os;
-        os << "# cumulative wear depth after each iteration; pin angles in the pin's frame, bore angles in "
-              "the bushing's frame\nangle_deg";
-        for (unsigned it = 0; it < n_it; ++it)
-          os << ",pin_it" << it + 1 << "_m";
-        for (unsigned it = 0; it < n_it; ++it)
-          os << ",bushing_it" << it + 1 << "_m";
-        os << '\n' << std::setprecision(10);
-        const unsigned n = j.pin.n_points();
-        for (unsigned k = 0; k < n; ++k)
-          {
-            os << 360.0 * k / n;
-            for (unsigned it = 0; it < n_it; ++it)
-              os << ',' << j.history[it].depth_pin[k];
-            for (unsigned it = 0; it < n_it; ++it)
-              os << ',' << (k < j.history[it].depth_bore.size() ? j.history[it].depth_bore[k] : 0.0);
-            os << '\n';
-          }
-        write_file_atomically(dir + "/wear_depth_" + j.name + ".csv", os.str());
-
-        PlotSpec spec;
-        spec.title            = "Joint " + j.name + ": wear depth after each iteration (pin: solid, bushing: dashed)";
-        spec.x_label          = "angle in the body's own frame [deg]";
-        spec.y_label          = "wear depth [um]";
-        spec.extra            = "set xrange [0:360]\nset xtics 45\n";
-        const unsigned stride = std::max(1u, (n_it + 5) / 6);
-        for (unsigned it = 0; it < n_it; ++it)
-          {
-            if ((n_it - 1 - it) % stride != 0)
-              continue;
-            const std::string colour = std::to_string(spec.series.size() / 2 + 1); // distinct per curve pair
-            PlotSeries        p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + colour};
-            PlotSeries        b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + colour};
-            for (unsigned k = 0; k < n; ++k)
-              {
-                p.x.push_back(360.0 * k / n);
-                p.y.push_back(j.history[it].depth_pin[k] * 1e6);
-              }
-            for (unsigned k = 0; k < j.bore.n_points(); ++k)
-              {
-                b.x.push_back(360.0 * k / j.bore.n_points());
-                b.y.push_back(j.history[it].depth_bore[k] * 1e6);
-              }
-            spec.series.push_back(p);
-            spec.series.push_back(b);
-          }
-        plot_png(spec, dir + "/wear_depth_" + j.name + ".png");
-
-        // Reconstructed profiles (seed Figs 6–7).
-        std::ostringstream ps;
-        ps << "angle_rad,bore_initial_m,bore_worn_m,pin_initial_m,pin_worn_m\n" << std::setprecision(17);
-        for (unsigned k = 0; k < n; ++k)
-          ps << j.pin.angle(k) << ',' << j.initial_bore[k] << ',' << j.bore[k] << ',' << j.initial_pin[k] << ','
-             << j.pin[k] << '\n';
-        write_file_atomically(dir + "/profiles_" + j.name + ".csv", ps.str());
-        write_profiles_msh(dir + "/profiles_" + j.name + ".msh", j.bore, j.pin);
-        // The worn profiles in the scene's profile-file format, so that a scene can
-        // start from them ('Bore profile file', 'Pin profile file').
-        j.bore.write_csv(dir + "/bore_" + j.name + ".csv", "worn bore of joint " + j.name + ", bushing frame");
-        j.pin.write_csv(dir + "/pin_" + j.name + ".csv", "worn pin of joint " + j.name + ", pin frame");
-        // Each surface at its own magnification (stated in its title), unless fixed.
-        auto magnification = [&](double depth) {
-          const double m = scene.wear_loop.magnification;
-          if (m > 0)
-            return m;
-          return depth > 0 ? nice(0.15 * j.initial_pin.mean_radius() / depth) : 1.0;
-        };
-        auto title = [](const std::string &what, double m) {
-          std::ostringstream t;
-          t << what << " (wear magnified x" << m << ")";
-          return t.str();
-        };
-        const double m_bore = magnification(n_it ? j.history.back().max_depth_bore : 0.0);
-        const double m_pin  = magnification(n_it ? j.history.back().max_depth_pin : 0.0);
-        plot_profile(dir + "/profile_" + j.name + "_bore.png",
-                     title("Joint " + j.name + ": bushing bore surface", m_bore),
-                     j.initial_bore,
-                     j.bore,
-                     m_bore);
-        plot_profile(dir + "/profile_" + j.name + "_pin.png",
-                     title("Joint " + j.name + ": pin surface", m_pin),
-                     j.initial_pin,
-                     j.pin,
-                     m_pin);
+        write_depth_csv(dir, j);
+        plot_depth(dir, j);
+        write_profiles(dir, scene, j);
       }
-
-    // Worn volume vs revolutions.
-    {
-      PlotSpec spec;
-      spec.title   = "Worn volume";
-      spec.x_label = "revolutions";
-      spec.y_label = "worn volume [mm^3]";
-      for (const auto &j : st.joints)
-        {
-          PlotSeries p{j.name + " pin", {0}, {0}, "linespoints", "lw 2"};
-          PlotSeries b{j.name + " bushing", {0}, {0}, "linespoints", "dt 2 lw 2"};
-          double     revolutions = 0;
-          for (unsigned it = 0; it < j.history.size(); ++it)
-            {
-              revolutions += st.factors[it] * scene.wear_loop.cycles_per_iteration;
-              p.x.push_back(revolutions);
-              p.y.push_back(j.history[it].volume_pin * 1e9);
-              b.x.push_back(revolutions);
-              b.y.push_back(j.history[it].volume_bore * 1e9);
-            }
-          spec.series.push_back(p);
-          spec.series.push_back(b);
-        }
-      plot_png(spec, dir + "/wear_volume.png");
-    }
-
-    // Dynamic response before and after wear (seed Fig 8).
-    after.write_csv(dir + "/response_after.csv");
-    std::vector<double> tb, axb, ayb;
-    PlotSpec            spec;
-    spec.title   = after.body_name + ": acceleration before and after wear (same initial state)";
-    spec.x_label = "time from the start [s]";
-    spec.y_label = "acceleration [m/s^2]";
-    if (read_response(dir + "/response_before.csv", tb, axb, ayb))
-      {
-        spec.series.push_back({"a_y before wear", tb, ayb, "lines", "lw 1 lc rgb 'blue'"});
-        spec.series.push_back({"a_x before wear", tb, axb, "lines", "lw 1 lc rgb 'dark-green'"});
-      }
-    spec.series.push_back({"a_y after wear", after.t, after.ay, "lines", "lw 1 lc rgb 'red'"});
-    spec.series.push_back({"a_x after wear", after.t, after.ax, "lines", "lw 1 lc rgb 'orange'"});
-    plot_png(spec, dir + "/response.png");
+    plot_volume(dir, scene, st);
+    write_response(dir, after);
   }
 } // namespace wearlink::io

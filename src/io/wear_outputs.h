@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Files of a wear run (each written atomically; PNGs through gnuplot, base/plot.h):
+// Files of a wear run (each written atomically; PNGs through gnuplot, io/plot.h):
 //   wear_history.csv           per iteration: revolutions, factor, per joint worn volume
 //                              [mm³], mass loss [mg] and largest depth [µm] per surface
 //   wear_depth_<J>.csv/.png    cumulative wear depth vs body-frame angle on pin and

@@ -419,198 +419,403 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /** What the knobs of a scene are built from. */
+    struct KnobContext
+    {
+      const io::Scene         &scene;
+      bool                     quick = false;
+      std::vector<std::string> clearance, wearing, fe; ///< joint names
+      /** Scale factors, coarse -> fine, around the scene's value (×1 is the scene's). */
+      std::vector<double> coarsen;
+
+      /** The scene's value @p base times each factor, without repeats. */
+      std::vector<std::string>
+      scaled(const double base, const bool integer) const
+      {
+        std::vector<std::string> v;
+        for (const double f : coarsen)
+          {
+            const double      x = base * f;
+            const std::string s = integer ? std::to_string(std::max(1L, std::lround(x))) : label(x);
+            if (std::find(v.begin(), v.end(), s) == v.end())
+              v.push_back(s);
+          }
+        return v;
+      }
+    };
+
+    /** The integrator's tolerance (dopri5) or step (rk4), and the Baumgarte factors. */
+    void
+    integrator_knobs(const KnobContext &c, std::vector<Knob> &knobs)
+    {
+      const auto &scene  = c.scene;
+      const bool  quick  = c.quick;
+      auto        scaled = [&](double base, bool integer) {
+        return c.scaled(base, integer);
+      };
+      // Integrator: tolerance (dopri5) or step (rk4).
+      const auto &in = scene.simulation.integrator;
+      if (in.type == mbs::IntegratorType::dopri5)
+        {
+          Knob k;
+          k.name           = "integrator-tolerance";
+          k.description    = description_of("integrator-tolerance");
+          k.targets        = {{"Integrator/Relative tolerance"},
+                              {"Integrator/Position tolerance"},
+                              {"Integrator/Velocity tolerance"}};
+          const double rel = in.relative_tolerance;
+          for (const double f : quick ? std::vector<double>{100, 10, 1} : std::vector<double>{100, 10, 1, 0.1})
+            {
+              const double r = rel * f;
+              k.values.push_back({label(r), label(r * 1e-3), label(r)});
+            }
+          k.reference = "tightest tolerance";
+          knobs.push_back(k);
+        }
+      else
+        knobs.push_back(
+          make_knob("integrator-step", {"Integrator/Time step"}, scaled(in.time_step, false), "smallest step"));
+
+      // Baumgarte factors: no "finer" value; the scene's is the reference.
+      if (!quick)
+        {
+          Knob k;
+          k.name         = "baumgarte";
+          k.description  = "Baumgarte alpha = beta";
+          k.targets      = {{"Integrator/Baumgarte alpha"}, {"Integrator/Baumgarte beta"}};
+          const double a = number_of(scene, "Integrator/Baumgarte alpha");
+          const double b = number_of(scene, "Integrator/Baumgarte beta");
+          k.values       = {{label(a / 2), label(b / 2)}, {label(a * 2), label(b * 2)}, {label(a), label(b)}};
+          k.reference    = "the scene's factors";
+          knobs.push_back(k);
+        }
+    }
+
+    /** The contact law of every clearance joint; the scene's (first joint's) law last. */
+    void
+    contact_law_knob(const KnobContext &c, std::vector<Knob> &knobs)
+    {
+      const auto &scene     = c.scene;
+      const auto &clearance = c.clearance;
+      // Contact law of every clearance joint; the scene's (first joint's) law last.
+      if (!clearance.empty())
+        {
+          const std::string law = entry_of(scene, "Joint " + clearance[0] + "/Clearance/Normal force law");
+          std::string       e   = "";
+          for (const char *section : {"lankarani-nikravesh", "flores"})
+            if (law == section)
+              e = entry_of(scene, "Joint " + clearance[0] + "/Clearance/" + law + "/Restitution coefficient");
+          Knob k;
+          k.name        = "contact-law";
+          k.description = "Normal force law of every clearance joint";
+          k.targets     = {paths(clearance, "Normal force law")};
+          if (!e.empty())
+            {
+              auto t = paths(clearance, "lankarani-nikravesh/Restitution coefficient");
+              auto f = paths(clearance, "flores/Restitution coefficient");
+              t.insert(t.end(), f.begin(), f.end());
+              k.targets.push_back(t);
+            }
+          for (const char *l : {"hertz", "flores", "lankarani-nikravesh"})
+            if (law != l)
+              k.values.push_back(e.empty() ? std::vector<std::string>{l} : std::vector<std::string>{l, e});
+          k.values.push_back(e.empty() ? std::vector<std::string>{law} : std::vector<std::string>{law, e});
+          k.reference = "the scene's law";
+          knobs.push_back(k);
+        }
+    }
+
+    /** Discrete areas, load sampling, wear step, simulated cycles, pressure model. */
+    void
+    wear_knobs(const KnobContext &c, std::vector<Knob> &knobs)
+    {
+      const auto &scene   = c.scene;
+      const auto &fe      = c.fe;
+      const bool  quick   = c.quick;
+      const auto &wearing = c.wearing;
+      const bool  wears   = !wearing.empty();
+      auto        scaled  = [&](double base, bool integer) {
+        return c.scaled(base, integer);
+      };
+      if (wears)
+        {
+          const auto &ws = scene.wear_loop;
+          {
+            const double n = number_of(scene, "Joint " + wearing[0] + "/Clearance/Number of discrete areas");
+            std::vector<std::string> v;
+            for (const double f : quick ? std::vector<double>{0.25, 0.5, 1} : std::vector<double>{0.25, 0.5, 1, 2})
+              v.push_back(std::to_string(std::max(8L, std::lround(n * f))));
+            knobs.push_back(make_knob("discrete-areas", paths(wearing, "Number of discrete areas"), v, "most areas"));
+          }
+
+          {
+            Knob k;
+            k.name                   = "load-sampling";
+            k.description            = description_of("load-sampling");
+            k.targets                = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
+            const std::vector<int> n = quick ? std::vector<int>{25, 100} : std::vector<int>{25, 100, 400};
+            if (fe.empty())
+              {
+                for (const int s : n)
+                  k.values.push_back({"samples per cycle", std::to_string(s)});
+                k.values.push_back({"every step", std::to_string(ws.samples_per_cycle)});
+                k.reference = "every step";
+              }
+            else // the fe model at every loaded step is what samples per cycle avoids
+              {
+                for (const int s : {25, 50, 100, 200})
+                  k.values.push_back({"samples per cycle", std::to_string(s)});
+                k.reference = "200 samples per cycle";
+              }
+            knobs.push_back(k);
+          }
+
+          if (ws.extrapolation == wear::Extrapolation::fixed)
+            {
+              // The same revolutions in more, smaller steps.
+              Knob k;
+              k.name                  = "wear-step";
+              k.description           = description_of("wear-step");
+              k.targets               = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
+              const double      total = ws.n_iterations * ws.extrapolation_factor;
+              std::vector<long> counts;
+              for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.2, 0.5, 1, 2})
+                {
+                  const long c = std::max(1L, std::lround(ws.n_iterations * f));
+                  if (std::find(counts.begin(), counts.end(), c) == counts.end())
+                    counts.push_back(c);
+                }
+              for (const long c : counts)
+                k.values.push_back({std::to_string(c), label(total / c)});
+              k.reference = "most iterations";
+              knobs.push_back(k);
+            }
+          else
+            knobs.push_back(make_knob("wear-step",
+                                      {"Wear/Maximum depth increment"},
+                                      scaled(ws.max_depth_increment, false),
+                                      "smallest depth increment"));
+
+          if (ws.extrapolation == wear::Extrapolation::fixed)
+            {
+              // The same revolutions from more simulated cycles per iteration.
+              Knob k;
+              k.name                     = "simulated-cycles";
+              k.description              = description_of("simulated-cycles");
+              k.targets                  = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
+              const double per_iteration = ws.cycles_per_iteration * ws.extrapolation_factor;
+              for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.5, 1, 2, 4})
+                {
+                  const double c = ws.cycles_per_iteration * f;
+                  k.values.push_back({label(c), label(per_iteration / c)});
+                }
+              k.reference = "most simulated cycles";
+              knobs.push_back(k);
+            }
+
+          if (!quick)
+            {
+              Knob k =
+                make_knob("pressure-model", paths(wearing, "Pressure model"), {"hertz-strip", "winkler", "fe"}, "fe");
+              knobs.push_back(k);
+            }
+        }
+    }
+
+    /** FE element size and degree, re-mesh interval (joints with the fe pressure model). */
+    void
+    fe_knobs(const KnobContext &c, std::vector<Knob> &knobs)
+    {
+      const auto &scene  = c.scene;
+      const auto &fe     = c.fe;
+      auto        scaled = [&](double base, bool integer) {
+        return c.scaled(base, integer);
+      };
+      if (!fe.empty())
+        {
+          knobs.push_back(
+            make_knob("fe-element-size",
+                      paths(fe, "fe/Surface element size"),
+                      scaled(number_of(scene, "Joint " + fe[0] + "/Clearance/fe/Surface element size"), false),
+                      "smallest elements"));
+          knobs.push_back(make_knob("fe-degree", paths(fe, "fe/Element degree"), {"1", "2"}, "degree 2"));
+          knobs.push_back(
+            make_knob("remesh-interval", {"Wear/Remesh interval"}, {"5", "2", "1"}, "re-mesh every iteration"));
+        }
+    }
+  } // namespace
+
   std::vector<Knob>
   knobs_for(const io::Scene &scene, bool quick)
   {
-    std::vector<Knob>        knobs;
-    std::vector<std::string> clearance, wearing, fe;
+    KnobContext c{scene, quick, {}, {}, {}, {}};
     for (const auto *j : scene.clearance_joints)
-      clearance.push_back(j->name());
+      c.clearance.push_back(j->name());
     for (const auto &w : scene.wear)
       {
-        wearing.push_back(w->joint);
+        c.wearing.push_back(w->joint);
         if (w->pressure_model == "fe")
-          fe.push_back(w->joint);
+          c.fe.push_back(w->joint);
       }
-    const bool wears = !wearing.empty();
-    // Scale factors, coarse -> fine, around the scene's value (×1 is the scene's).
-    const std::vector<double> coarsen = quick ? std::vector<double>{4, 2, 1} : std::vector<double>{4, 2, 1, 0.5};
-    auto                      scaled  = [&](double base, bool integer) {
-      std::vector<std::string> v;
-      for (const double f : coarsen)
-        {
-          const double      x = base * f;
-          const std::string s = integer ? std::to_string(std::max(1L, std::lround(x))) : label(x);
-          if (std::find(v.begin(), v.end(), s) == v.end())
-            v.push_back(s);
-        }
-      return v;
-    };
-
-    // Integrator: tolerance (dopri5) or step (rk4).
-    const auto &in = scene.simulation.integrator;
-    if (in.type == mbs::IntegratorType::dopri5)
-      {
-        Knob k;
-        k.name           = "integrator-tolerance";
-        k.description    = description_of("integrator-tolerance");
-        k.targets        = {{"Integrator/Relative tolerance"},
-                            {"Integrator/Position tolerance"},
-                            {"Integrator/Velocity tolerance"}};
-        const double rel = in.relative_tolerance;
-        for (const double f : quick ? std::vector<double>{100, 10, 1} : std::vector<double>{100, 10, 1, 0.1})
-          {
-            const double r = rel * f;
-            k.values.push_back({label(r), label(r * 1e-3), label(r)});
-          }
-        k.reference = "tightest tolerance";
-        knobs.push_back(k);
-      }
-    else
-      knobs.push_back(
-        make_knob("integrator-step", {"Integrator/Time step"}, scaled(in.time_step, false), "smallest step"));
-
-    // Baumgarte factors: no "finer" value; the scene's is the reference.
-    if (!quick)
-      {
-        Knob k;
-        k.name         = "baumgarte";
-        k.description  = "Baumgarte alpha = beta";
-        k.targets      = {{"Integrator/Baumgarte alpha"}, {"Integrator/Baumgarte beta"}};
-        const double a = number_of(scene, "Integrator/Baumgarte alpha");
-        const double b = number_of(scene, "Integrator/Baumgarte beta");
-        k.values       = {{label(a / 2), label(b / 2)}, {label(a * 2), label(b * 2)}, {label(a), label(b)}};
-        k.reference    = "the scene's factors";
-        knobs.push_back(k);
-      }
-
-    // Contact law of every clearance joint; the scene's (first joint's) law last.
-    if (!clearance.empty())
-      {
-        const std::string law = entry_of(scene, "Joint " + clearance[0] + "/Clearance/Normal force law");
-        std::string       e   = "";
-        for (const char *section : {"lankarani-nikravesh", "flores"})
-          if (law == section)
-            e = entry_of(scene, "Joint " + clearance[0] + "/Clearance/" + law + "/Restitution coefficient");
-        Knob k;
-        k.name        = "contact-law";
-        k.description = "Normal force law of every clearance joint";
-        k.targets     = {paths(clearance, "Normal force law")};
-        if (!e.empty())
-          {
-            auto t = paths(clearance, "lankarani-nikravesh/Restitution coefficient");
-            auto f = paths(clearance, "flores/Restitution coefficient");
-            t.insert(t.end(), f.begin(), f.end());
-            k.targets.push_back(t);
-          }
-        for (const char *l : {"hertz", "flores", "lankarani-nikravesh"})
-          if (law != l)
-            k.values.push_back(e.empty() ? std::vector<std::string>{l} : std::vector<std::string>{l, e});
-        k.values.push_back(e.empty() ? std::vector<std::string>{law} : std::vector<std::string>{law, e});
-        k.reference = "the scene's law";
-        knobs.push_back(k);
-      }
-
-    if (wears)
-      {
-        const auto &ws = scene.wear_loop;
-        {
-          const double             n = number_of(scene, "Joint " + wearing[0] + "/Clearance/Number of discrete areas");
-          std::vector<std::string> v;
-          for (const double f : quick ? std::vector<double>{0.25, 0.5, 1} : std::vector<double>{0.25, 0.5, 1, 2})
-            v.push_back(std::to_string(std::max(8L, std::lround(n * f))));
-          knobs.push_back(make_knob("discrete-areas", paths(wearing, "Number of discrete areas"), v, "most areas"));
-        }
-
-        {
-          Knob k;
-          k.name                   = "load-sampling";
-          k.description            = description_of("load-sampling");
-          k.targets                = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
-          const std::vector<int> n = quick ? std::vector<int>{25, 100} : std::vector<int>{25, 100, 400};
-          if (fe.empty())
-            {
-              for (const int s : n)
-                k.values.push_back({"samples per cycle", std::to_string(s)});
-              k.values.push_back({"every step", std::to_string(ws.samples_per_cycle)});
-              k.reference = "every step";
-            }
-          else // the fe model at every loaded step is what samples per cycle avoids
-            {
-              for (const int s : {25, 50, 100, 200})
-                k.values.push_back({"samples per cycle", std::to_string(s)});
-              k.reference = "200 samples per cycle";
-            }
-          knobs.push_back(k);
-        }
-
-        if (ws.extrapolation == wear::Extrapolation::fixed)
-          {
-            // The same revolutions in more, smaller steps.
-            Knob k;
-            k.name                  = "wear-step";
-            k.description           = description_of("wear-step");
-            k.targets               = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
-            const double      total = ws.n_iterations * ws.extrapolation_factor;
-            std::vector<long> counts;
-            for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.2, 0.5, 1, 2})
-              {
-                const long c = std::max(1L, std::lround(ws.n_iterations * f));
-                if (std::find(counts.begin(), counts.end(), c) == counts.end())
-                  counts.push_back(c);
-              }
-            for (const long c : counts)
-              k.values.push_back({std::to_string(c), label(total / c)});
-            k.reference = "most iterations";
-            knobs.push_back(k);
-          }
-        else
-          knobs.push_back(make_knob("wear-step",
-                                    {"Wear/Maximum depth increment"},
-                                    scaled(ws.max_depth_increment, false),
-                                    "smallest depth increment"));
-
-        if (ws.extrapolation == wear::Extrapolation::fixed)
-          {
-            // The same revolutions from more simulated cycles per iteration.
-            Knob k;
-            k.name                     = "simulated-cycles";
-            k.description              = description_of("simulated-cycles");
-            k.targets                  = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
-            const double per_iteration = ws.cycles_per_iteration * ws.extrapolation_factor;
-            for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.5, 1, 2, 4})
-              {
-                const double c = ws.cycles_per_iteration * f;
-                k.values.push_back({label(c), label(per_iteration / c)});
-              }
-            k.reference = "most simulated cycles";
-            knobs.push_back(k);
-          }
-
-        if (!quick)
-          {
-            Knob k =
-              make_knob("pressure-model", paths(wearing, "Pressure model"), {"hertz-strip", "winkler", "fe"}, "fe");
-            knobs.push_back(k);
-          }
-      }
-
-    if (!fe.empty())
-      {
-        knobs.push_back(
-          make_knob("fe-element-size",
-                    paths(fe, "fe/Surface element size"),
-                    scaled(number_of(scene, "Joint " + fe[0] + "/Clearance/fe/Surface element size"), false),
-                    "smallest elements"));
-        knobs.push_back(make_knob("fe-degree", paths(fe, "fe/Element degree"), {"1", "2"}, "degree 2"));
-        knobs.push_back(
-          make_knob("remesh-interval", {"Wear/Remesh interval"}, {"5", "2", "1"}, "re-mesh every iteration"));
-      }
+    c.coarsen = quick ? std::vector<double>{4, 2, 1} : std::vector<double>{4, 2, 1, 0.5};
+    std::vector<Knob> knobs;
+    integrator_knobs(c, knobs);
+    contact_law_knob(c, knobs);
+    wear_knobs(c, knobs);
+    fe_knobs(c, knobs);
     return knobs;
   }
 
   // --------------------------------------------------------------------------------
   // The study.
+
+  namespace
+  {
+    /**
+     * The overrides every run starts from: --quick's shortening (left out for an entry
+     * the user sets anyway) in front of the user's overrides (which win). The scene as
+     * the user gave it is read first (an InputError there is the user's).
+     */
+    std::vector<std::string>
+    base_overrides(const std::string &scene_file, const StudyRequest &request)
+    {
+      // The scene as the user gave it (an InputError here is the user's), then --quick's
+      // shortening in front of the user's overrides (which win).
+      std::vector<std::string> base;
+      {
+        io::Scene scene = io::read_scene(scene_file, request.overrides);
+        if (request.quick)
+          {
+            if (has_wear(scene))
+              base = {"Wear/Cycles per iteration=1", "Wear/Number of iterations=2"};
+            else
+              base = {"Simulation/End time=" +
+                      format_number(scene.start_time + std::min(1.0, scene.end_time - scene.start_time))};
+          }
+      }
+      // A --quick shortening of an entry the user sets anyway is left out.
+      base.erase(std::remove_if(base.begin(),
+                                base.end(),
+                                [&](const std::string &q) {
+                                  const std::string entry = q.substr(0, q.find('='));
+                                  for (const auto &o : request.overrides)
+                                    if (o.substr(0, o.find('=')) == entry)
+                                      return true;
+                                  return false;
+                                }),
+                 base.end());
+      base.insert(base.end(), request.overrides.begin(), request.overrides.end());
+
+      return base;
+    }
+
+    /** The knobs studied (selection and replacement values), all checked before the first run. */
+    std::vector<Knob>
+    selected_knobs(std::vector<Knob>               all,
+                   const std::string              &scene_file,
+                   const StudyRequest             &request,
+                   const std::vector<std::string> &base)
+    {
+      // Selection and replacement values, all checked before the first run.
+      std::vector<Knob>        knobs;
+      const auto               known = known_knob_names();
+      std::vector<std::string> applicable;
+      for (const auto &k : all)
+        applicable.push_back(k.name);
+      for (const auto &name : request.knobs)
+        {
+          if (std::find(known.begin(), known.end(), name) == known.end())
+            throw InputError("Unknown accuracy knob '" + name + "'; the knobs are " + join(known, ", ") + ".");
+          if (std::find(applicable.begin(), applicable.end(), name) == applicable.end())
+            throw InputError("The accuracy knob '" + name + "' does not apply to " + scene_file +
+                             " (an effect the scene does not use is not a knob); the knobs of this scene are " +
+                             join(applicable, ", ") + ".");
+        }
+      for (auto &k : all)
+        if (request.knobs.empty() ||
+            std::find(request.knobs.begin(), request.knobs.end(), k.name) != request.knobs.end())
+          knobs.push_back(k);
+      for (const auto &[name, values] : request.values)
+        {
+          auto it = std::find_if(knobs.begin(), knobs.end(), [&](const Knob &k) { return k.name == name; });
+          if (it == knobs.end())
+            throw InputError("Values are given for the accuracy knob '" + name +
+                             "', which is not studied here; the knobs studied are " +
+                             join(request.knobs.empty() ? applicable : request.knobs, ", ") + ".");
+          it->values.clear();
+          for (const auto &v : values)
+            {
+              const auto parts = split(v, ';');
+              if (parts.size() != it->targets.size())
+                throw InputError("A value of the accuracy knob '" + name + "' is '" + v + "'; it needs " +
+                                 std::to_string(it->targets.size()) + " part(s) separated by ';' (" +
+                                 std::to_string(it->targets.size()) + " settings: first entries " +
+                                 [&] {
+                                   std::vector<std::string> f;
+                                   for (const auto &t : it->targets)
+                                     f.push_back(t.front());
+                                   return join(f, ", ");
+                                 }() +
+                                 ").");
+              it->values.push_back(parts);
+              // A value the user typed must make a valid scene.
+              auto o = base;
+              for (const auto &s : settings_of(*it, parts))
+                o.push_back(s);
+              io::read_scene(scene_file, o);
+            }
+          if (it->values.size() < 2)
+            throw InputError("The accuracy knob '" + name + "' needs at least 2 values (the last is the reference).");
+          it->reference = "the last value given";
+        }
+
+      return knobs;
+    }
+
+    /**
+     * The errors of each row's quantities and profiles against the knob's reference
+     * (its last value), and the worst that counts; the names seen go into @p names.
+     */
+    void
+    errors_against_reference(std::vector<StudyRow>          &rows,
+                             const std::vector<Measurement> &ms,
+                             const bool                      wears,
+                             std::set<std::string>          &names)
+    {
+      const Measurement &ref = ms.back();
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        {
+          auto &r = rows[i];
+          if (!r.ok || !ref.ok)
+            {
+              r.worst = nan;
+              continue;
+            }
+          for (const auto &[q, v] : r.quantities)
+            {
+              r.errors[q] = ref.quantities.count(q) ? relative_error(v, ref.quantities.at(q)) : nan;
+              names.insert(q);
+            }
+          for (const auto &[q, h] : ms[i].profiles)
+            {
+              const bool  has   = ref.profiles.count(q) > 0;
+              std::string shape = q;
+              shape.replace(shape.find("profile_"), 8, "shape_");
+              r.errors[q]     = has ? profile_difference(h, ref.profiles.at(q)) : nan;
+              r.errors[shape] = has ? profile_difference(h, ref.profiles.at(q), shape_window_deg) : nan;
+              names.insert(q);
+              names.insert(shape);
+            }
+          double worst = 0;
+          for (const auto &[q, e] : r.errors)
+            if (counts_for_worst(q, wears))
+              worst = std::isfinite(e) ? std::max(worst, e) : nan;
+          r.worst = worst;
+        }
+    }
+  } // namespace
 
   AccuracyStudy
   run_accuracy_study(const std::string &scene_file, const StudyRequest &request)
@@ -618,89 +823,13 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     AccuracyStudy study;
     study.scene_file = scene_file;
 
-    // The scene as the user gave it (an InputError here is the user's), then --quick's
-    // shortening in front of the user's overrides (which win).
-    std::vector<std::string> base;
-    {
-      io::Scene scene = io::read_scene(scene_file, request.overrides);
-      if (request.quick)
-        {
-          if (has_wear(scene))
-            base = {"Wear/Cycles per iteration=1", "Wear/Number of iterations=2"};
-          else
-            base = {"Simulation/End time=" +
-                    format_number(scene.start_time + std::min(1.0, scene.end_time - scene.start_time))};
-        }
-    }
-    // A --quick shortening of an entry the user sets anyway is left out.
-    base.erase(std::remove_if(base.begin(),
-                              base.end(),
-                              [&](const std::string &q) {
-                                const std::string entry = q.substr(0, q.find('='));
-                                for (const auto &o : request.overrides)
-                                  if (o.substr(0, o.find('=')) == entry)
-                                    return true;
-                                return false;
-                              }),
-               base.end());
-    base.insert(base.end(), request.overrides.begin(), request.overrides.end());
-    study.base_overrides = base;
+    const std::vector<std::string> base = base_overrides(scene_file, request);
+    study.base_overrides                = base;
+    io::Scene scene                     = io::read_scene(scene_file, base);
+    study.wears                         = has_wear(scene);
+    std::vector<Knob> all               = knobs_for(scene, request.quick);
 
-    io::Scene scene       = io::read_scene(scene_file, base);
-    study.wears           = has_wear(scene);
-    std::vector<Knob> all = knobs_for(scene, request.quick);
-
-    // Selection and replacement values, all checked before the first run.
-    std::vector<Knob>        knobs;
-    const auto               known = known_knob_names();
-    std::vector<std::string> applicable;
-    for (const auto &k : all)
-      applicable.push_back(k.name);
-    for (const auto &name : request.knobs)
-      {
-        if (std::find(known.begin(), known.end(), name) == known.end())
-          throw InputError("Unknown accuracy knob '" + name + "'; the knobs are " + join(known, ", ") + ".");
-        if (std::find(applicable.begin(), applicable.end(), name) == applicable.end())
-          throw InputError("The accuracy knob '" + name + "' does not apply to " + scene_file +
-                           " (an effect the scene does not use is not a knob); the knobs of this scene are " +
-                           join(applicable, ", ") + ".");
-      }
-    for (auto &k : all)
-      if (request.knobs.empty() || std::find(request.knobs.begin(), request.knobs.end(), k.name) != request.knobs.end())
-        knobs.push_back(k);
-    for (const auto &[name, values] : request.values)
-      {
-        auto it = std::find_if(knobs.begin(), knobs.end(), [&](const Knob &k) { return k.name == name; });
-        if (it == knobs.end())
-          throw InputError("Values are given for the accuracy knob '" + name +
-                           "', which is not studied here; the knobs studied are " +
-                           join(request.knobs.empty() ? applicable : request.knobs, ", ") + ".");
-        it->values.clear();
-        for (const auto &v : values)
-          {
-            const auto parts = split(v, ';');
-            if (parts.size() != it->targets.size())
-              throw InputError("A value of the accuracy knob '" + name + "' is '" + v + "'; it needs " +
-                               std::to_string(it->targets.size()) + " part(s) separated by ';' (" +
-                               std::to_string(it->targets.size()) + " settings: first entries " +
-                               [&] {
-                                 std::vector<std::string> f;
-                                 for (const auto &t : it->targets)
-                                   f.push_back(t.front());
-                                 return join(f, ", ");
-                               }() +
-                               ").");
-            it->values.push_back(parts);
-            // A value the user typed must make a valid scene.
-            auto o = base;
-            for (const auto &s : settings_of(*it, parts))
-              o.push_back(s);
-            io::read_scene(scene_file, o);
-          }
-        if (it->values.size() < 2)
-          throw InputError("The accuracy knob '" + name + "' needs at least 2 values (the last is the reference).");
-        it->reference = "the last value given";
-      }
+    const std::vector<Knob> knobs = selected_knobs(all, scene_file, request, base);
 
     std::size_t total = 0, done = 0;
     for (const auto &k : knobs)
@@ -733,36 +862,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                         << std::setprecision(3) << r.wall_time << " s" << (r.ok ? "" : "  FAILED: " + r.failure)
                         << '\n';
           }
-        const Measurement &ref = ms.back();
-        for (std::size_t i = 0; i < rows.size(); ++i)
-          {
-            auto &r = rows[i];
-            if (!r.ok || !ref.ok)
-              {
-                r.worst = nan;
-                continue;
-              }
-            for (const auto &[q, v] : r.quantities)
-              {
-                r.errors[q] = ref.quantities.count(q) ? relative_error(v, ref.quantities.at(q)) : nan;
-                names.insert(q);
-              }
-            for (const auto &[q, h] : ms[i].profiles)
-              {
-                const bool  has   = ref.profiles.count(q) > 0;
-                std::string shape = q;
-                shape.replace(shape.find("profile_"), 8, "shape_");
-                r.errors[q]     = has ? profile_difference(h, ref.profiles.at(q)) : nan;
-                r.errors[shape] = has ? profile_difference(h, ref.profiles.at(q), shape_window_deg) : nan;
-                names.insert(q);
-                names.insert(shape);
-              }
-            double worst = 0;
-            for (const auto &[q, e] : r.errors)
-              if (counts_for_worst(q, study.wears))
-                worst = std::isfinite(e) ? std::max(worst, e) : nan;
-            r.worst = worst;
-          }
+        errors_against_reference(rows, ms, study.wears, names);
         study.rows.insert(study.rows.end(), rows.begin(), rows.end());
       }
     study.quantity_names.assign(names.begin(), names.end());

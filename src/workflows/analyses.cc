@@ -235,6 +235,168 @@ namespace wearlink::workflows
   // -----------------------------------------------------------------------------------
   // Outputs from a recorded run.
 
+  namespace
+  {
+    /** Phase portraits: the series, and one PNG per position-velocity pair with the
+     *  Poincaré points of the same pair in red (seed Figs 9-10). */
+    void
+    phase_portraits(const analysis::RecordedRun      &run,
+                    const analysis::AnalysesSettings &settings,
+                    const bool                        write,
+                    const std::string                &dir,
+                    const bool                        have_section,
+                    Json                             &out,
+                    Json                             &files)
+    {
+      Json pp                 = Json::object();
+      pp["n_samples"]         = run.series.n_samples();
+      pp["sample_interval_s"] = run.sample_interval;
+      if (write)
+        {
+          for (const auto &pair : phase_pairs(settings))
+            {
+              const std::size_t ip = run.series.index(pair.position), iv = run.series.index(pair.velocity);
+              io::PlotSpec      plot;
+              plot.title   = "Phase portrait, " + pair.title + label_suffix(run);
+              plot.x_label = pair.position + " " + unit_label(run.series.units[ip]);
+              plot.y_label = pair.velocity + " " + unit_label(run.series.units[iv]);
+              io::PlotSeries orbit;
+              orbit.title   = "phase orbit";
+              orbit.x       = run.series.values[ip];
+              orbit.y       = run.series.values[iv];
+              orbit.options = "lw 0.5 lc rgb 'black'";
+              plot.series.push_back(orbit);
+              if (have_section && run.section.points.has(pair.position) && run.section.points.has(pair.velocity))
+                {
+                  io::PlotSeries points;
+                  points.title   = "Poincaré points (one per " + format_number(run.section.period, 4) + " s)";
+                  points.style   = "points";
+                  points.options = "pt 7 ps 0.8 lc rgb 'red'";
+                  points.x       = run.section.points.values[run.section.points.index(pair.position)];
+                  points.y       = run.section.points.values[run.section.points.index(pair.velocity)];
+                  plot.series.push_back(points);
+                }
+              const std::string png = "phase_portrait_" + pair.position + ".png";
+              if (io::plot_png(plot, dir + png))
+                files.push_back(png);
+            }
+        }
+      out["phase_portrait"] = pp;
+    }
+
+    /** Poincaré section: every state channel at t_k, and its spread. */
+    void
+    poincare_section(const analysis::RecordedRun      &run,
+                     const analysis::AnalysesSettings &settings,
+                     const bool                        write,
+                     const std::string                &dir,
+                     const bool                        have_section,
+                     Json                             &out,
+                     Json                             &files)
+    {
+      Json ps            = Json::object();
+      ps["period_s"]     = run.section.period;
+      ps["first_time_s"] = run.section.first_time;
+      ps["n_points"]     = run.section.points.n_samples();
+      Json spread        = Json::object();
+      for (const auto &c : analysis::section_spread(run.section))
+        spread[c.name] = c.spread;
+      ps["spread"] = spread;
+      if (write)
+        {
+          io::write_sampled_csv(run.section.points, dir + "poincare_section.csv", true);
+          files.push_back("poincare_section.csv");
+          for (const auto &pair : phase_pairs(settings))
+            {
+              if (!run.section.points.has(pair.position))
+                continue;
+              const auto       &p  = run.section.points;
+              const std::size_t ip = p.index(pair.position), iv = p.index(pair.velocity);
+              io::PlotSpec      plot;
+              plot.title = "Poincaré section (t = " + format_number(run.section.first_time, 4) + " s + k · " +
+                           format_number(run.section.period, 4) + " s), " + pair.title + label_suffix(run);
+              plot.x_label = pair.position + " " + unit_label(p.units[ip]);
+              plot.y_label = pair.velocity + " " + unit_label(p.units[iv]);
+              io::PlotSeries points;
+              points.title   = std::to_string(p.n_samples()) + " section points";
+              points.style   = "points";
+              points.options = "pt 7 ps 0.8 lc rgb 'red'";
+              points.x       = p.values[ip];
+              points.y       = p.values[iv];
+              plot.series.push_back(points);
+              const std::string png = "poincare_" + pair.position + ".png";
+              if (io::plot_png(plot, dir + png))
+                files.push_back(png);
+            }
+        }
+      out["poincare"] = ps;
+    }
+
+    /** Largest Lyapunov exponents of the journal-centre coordinates. */
+    void
+    lyapunov_exponents(const analysis::RecordedRun      &run,
+                       const analysis::AnalysesSettings &settings,
+                       const bool                        write,
+                       const std::string                &dir,
+                       const bool                        have_section,
+                       Json                             &out,
+                       Json                             &files)
+    {
+      auto &ledger  = EffectLedger::instance();
+      Json  results = Json::array();
+      for (const auto &channel : lyapunov_channels(settings))
+        for (const auto method : settings.methods)
+          {
+            analysis::LyapunovSettings ls;
+            ls.method              = method;
+            ls.embedding.delay     = settings.delay;
+            ls.embedding.dimension = settings.dimension;
+            const auto r           = analysis::lyapunov_of_channel(run, channel, ls);
+            ledger.add_calls("lyapunov estimates", 1);
+            const auto &e            = r.estimate;
+            Json        j            = Json::object();
+            j["channel"]             = channel;
+            j["method"]              = analysis::method_name(method);
+            j["exponent_per_s"]      = e.exponent();
+            j["unit"]                = "1/s (natural log)";
+            j["exponent_per_sample"] = e.exponent_per_sample;
+            if (run.driving_period > 0.0)
+              j["exponent_per_driving_period"] = r.per_driving_period;
+            j["exponent_bits_per_s"]    = e.exponent() / std::log(2.0);
+            j["n_samples"]              = r.n_samples;
+            j["sample_interval_s"]      = r.sample_interval;
+            j["delay_samples"]          = e.embedding.embedding.delay;
+            j["embedding_dimension"]    = e.embedding.embedding.dimension;
+            j["theiler_window_samples"] = e.embedding.theiler_window;
+            j["delay_rule"] = e.embedding.delay_choice ? analysis::describe(e.embedding.delay_choice->rule) : "given";
+            j["dimension_rule"] = e.embedding.dimension_choice ?
+                                    (e.embedding.dimension_choice->below_threshold ?
+                                       "false nearest neighbours below 1%" :
+                                       "false nearest neighbours: none below 1%, smallest taken") :
+                                    "given";
+            if (e.rosenstein)
+              {
+                j["fit_begin_s"] = e.rosenstein->fit_begin * r.sample_interval;
+                j["fit_end_s"]   = e.rosenstein->fit_end * r.sample_interval;
+                j["saturated"]   = e.rosenstein->saturated;
+                j["resolved"]    = e.rosenstein->resolved;
+                j["fit_rule"]    = e.rosenstein->fit_rule;
+              }
+            if (e.wolf)
+              j["evolution_time_s"] = e.wolf->evolution_steps * r.sample_interval;
+            if (write)
+              {
+                const std::string stem = "lyapunov_" + channel + "_" + analysis::method_name(method);
+                files.push_back(stem + ".csv");
+                if (io::write_lyapunov_curve(e, channel, dir + stem))
+                  files.push_back(stem + ".png");
+              }
+            results.push_back(j);
+          }
+      out["lyapunov"] = results;
+    }
+  } // namespace
+
   Json
   analyse_recorded_run(const analysis::RecordedRun      &run,
                        const analysis::AnalysesSettings &settings,
@@ -268,143 +430,12 @@ namespace wearlink::workflows
         out["series_samples"]           = run.series.n_samples();
       }
 
-    // Phase portraits: the series, and one PNG per position-velocity pair with the
-    // Poincaré points of the same pair in red (seed Figs 9-10).
     if (settings.phase_portrait)
-      {
-        Json pp                 = Json::object();
-        pp["n_samples"]         = run.series.n_samples();
-        pp["sample_interval_s"] = run.sample_interval;
-        if (write)
-          {
-            for (const auto &pair : phase_pairs(settings))
-              {
-                const std::size_t ip = run.series.index(pair.position), iv = run.series.index(pair.velocity);
-                io::PlotSpec      plot;
-                plot.title   = "Phase portrait, " + pair.title + label_suffix(run);
-                plot.x_label = pair.position + " " + unit_label(run.series.units[ip]);
-                plot.y_label = pair.velocity + " " + unit_label(run.series.units[iv]);
-                io::PlotSeries orbit;
-                orbit.title   = "phase orbit";
-                orbit.x       = run.series.values[ip];
-                orbit.y       = run.series.values[iv];
-                orbit.options = "lw 0.5 lc rgb 'black'";
-                plot.series.push_back(orbit);
-                if (have_section && run.section.points.has(pair.position) && run.section.points.has(pair.velocity))
-                  {
-                    io::PlotSeries points;
-                    points.title   = "Poincaré points (one per " + format_number(run.section.period, 4) + " s)";
-                    points.style   = "points";
-                    points.options = "pt 7 ps 0.8 lc rgb 'red'";
-                    points.x       = run.section.points.values[run.section.points.index(pair.position)];
-                    points.y       = run.section.points.values[run.section.points.index(pair.velocity)];
-                    plot.series.push_back(points);
-                  }
-                const std::string png = "phase_portrait_" + pair.position + ".png";
-                if (io::plot_png(plot, dir + png))
-                  files.push_back(png);
-              }
-          }
-        out["phase_portrait"] = pp;
-      }
-
-    // Poincaré section: every state channel at t_k, and its spread.
+      phase_portraits(run, settings, write, dir, have_section, out, files);
     if (settings.poincare)
-      {
-        Json ps            = Json::object();
-        ps["period_s"]     = run.section.period;
-        ps["first_time_s"] = run.section.first_time;
-        ps["n_points"]     = run.section.points.n_samples();
-        Json spread        = Json::object();
-        for (const auto &c : analysis::section_spread(run.section))
-          spread[c.name] = c.spread;
-        ps["spread"] = spread;
-        if (write)
-          {
-            io::write_sampled_csv(run.section.points, dir + "poincare_section.csv", true);
-            files.push_back("poincare_section.csv");
-            for (const auto &pair : phase_pairs(settings))
-              {
-                if (!run.section.points.has(pair.position))
-                  continue;
-                const auto       &p  = run.section.points;
-                const std::size_t ip = p.index(pair.position), iv = p.index(pair.velocity);
-                io::PlotSpec      plot;
-                plot.title = "Poincaré section (t = " + format_number(run.section.first_time, 4) + " s + k · " +
-                             format_number(run.section.period, 4) + " s), " + pair.title + label_suffix(run);
-                plot.x_label = pair.position + " " + unit_label(p.units[ip]);
-                plot.y_label = pair.velocity + " " + unit_label(p.units[iv]);
-                io::PlotSeries points;
-                points.title   = std::to_string(p.n_samples()) + " section points";
-                points.style   = "points";
-                points.options = "pt 7 ps 0.8 lc rgb 'red'";
-                points.x       = p.values[ip];
-                points.y       = p.values[iv];
-                plot.series.push_back(points);
-                const std::string png = "poincare_" + pair.position + ".png";
-                if (io::plot_png(plot, dir + png))
-                  files.push_back(png);
-              }
-          }
-        out["poincare"] = ps;
-      }
-
-    // Largest Lyapunov exponents of the journal-centre coordinates.
+      poincare_section(run, settings, write, dir, have_section, out, files);
     if (settings.lyapunov)
-      {
-        auto &ledger  = EffectLedger::instance();
-        Json  results = Json::array();
-        for (const auto &channel : lyapunov_channels(settings))
-          for (const auto method : settings.methods)
-            {
-              analysis::LyapunovSettings ls;
-              ls.method              = method;
-              ls.embedding.delay     = settings.delay;
-              ls.embedding.dimension = settings.dimension;
-              const auto r           = analysis::lyapunov_of_channel(run, channel, ls);
-              ledger.add_calls("lyapunov estimates", 1);
-              const auto &e            = r.estimate;
-              Json        j            = Json::object();
-              j["channel"]             = channel;
-              j["method"]              = analysis::method_name(method);
-              j["exponent_per_s"]      = e.exponent();
-              j["unit"]                = "1/s (natural log)";
-              j["exponent_per_sample"] = e.exponent_per_sample;
-              if (run.driving_period > 0.0)
-                j["exponent_per_driving_period"] = r.per_driving_period;
-              j["exponent_bits_per_s"]    = e.exponent() / std::log(2.0);
-              j["n_samples"]              = r.n_samples;
-              j["sample_interval_s"]      = r.sample_interval;
-              j["delay_samples"]          = e.embedding.embedding.delay;
-              j["embedding_dimension"]    = e.embedding.embedding.dimension;
-              j["theiler_window_samples"] = e.embedding.theiler_window;
-              j["delay_rule"] = e.embedding.delay_choice ? analysis::describe(e.embedding.delay_choice->rule) : "given";
-              j["dimension_rule"] = e.embedding.dimension_choice ?
-                                      (e.embedding.dimension_choice->below_threshold ?
-                                         "false nearest neighbours below 1%" :
-                                         "false nearest neighbours: none below 1%, smallest taken") :
-                                      "given";
-              if (e.rosenstein)
-                {
-                  j["fit_begin_s"] = e.rosenstein->fit_begin * r.sample_interval;
-                  j["fit_end_s"]   = e.rosenstein->fit_end * r.sample_interval;
-                  j["saturated"]   = e.rosenstein->saturated;
-                  j["resolved"]    = e.rosenstein->resolved;
-                  j["fit_rule"]    = e.rosenstein->fit_rule;
-                }
-              if (e.wolf)
-                j["evolution_time_s"] = e.wolf->evolution_steps * r.sample_interval;
-              if (write)
-                {
-                  const std::string stem = "lyapunov_" + channel + "_" + analysis::method_name(method);
-                  files.push_back(stem + ".csv");
-                  if (io::write_lyapunov_curve(e, channel, dir + stem))
-                    files.push_back(stem + ".png");
-                }
-              results.push_back(j);
-            }
-        out["lyapunov"] = results;
-      }
+      lyapunov_exponents(run, settings, write, dir, have_section, out, files);
     if (write)
       out["files"] = files;
     return out;

@@ -41,7 +41,7 @@ namespace wearlink::workflows
   };
 
   /**
-   * The exponent of the simulation itself (two-trajectory, io/shadow_trajectory.h),
+   * The exponent of the simulation itself (two-trajectory, workflows/shadow_trajectory.h),
    * measured in separate runs before and after wear; printed with the comparison.
    */
   struct SimulationExponents

@@ -37,7 +37,7 @@ namespace wearlink::workflows
     /**
      * Build the analyses the scene lists (Analyses/List of analyses). The iterations of
      * a wear run switch them off: they are run once before and once after wear instead
-     * (io/wear_run.h).
+     * (workflows/wear_run.h).
      */
     bool analyses = true;
     /** If set, these analyses instead of the scene's (e.g. without the shadow trajectory). */

@@ -23,7 +23,7 @@
 // 1378 1/s for d0 = 1e-6 … 1e-9 m. At 1e-11 (10 periods, τ = 5 ms): 100–145 1/s before
 // and 346–362 1/s after 50,000 rev of wear for d0 = 1e-8 … 1e-6 m, i.e. known to about
 // ±20 % before wear (README). The wear scenes' before/after comparison runs it at its
-// own tolerance (io/wear_run.cc).
+// own tolerance (workflows/wear_run.cc).
 #pragma once
 
 #include "io/scene.h"

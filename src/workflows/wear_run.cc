@@ -44,7 +44,7 @@ namespace wearlink::workflows
     }
 
     /**
-     * The two-trajectory exponent (io/shadow_trajectory.h) of the fresh and of the worn
+     * The two-trajectory exponent (workflows/shadow_trajectory.h) of the fresh and of the worn
      * mechanism: the scene read again with its overrides plus the analysis, duration and
      * tightened tolerances, and for the worn state the profiles written into @p dir
      * (bore_<J>.csv, pin_<J>.csv). Outputs in DIR/exponent_before, DIR/exponent_after.
@@ -108,7 +108,7 @@ namespace wearlink::workflows
     /**
      * The scene's analyses once with the fresh and once with the worn profiles, each run
      * from assembly at Start time to End time (outputs in DIR/dynamics_before and
-     * DIR/dynamics_after), then compared (io/dynamics_comparison.h) into DIR. The joints
+     * DIR/dynamics_after), then compared (workflows/dynamics_comparison.h) into DIR. The joints
      * are left with the worn profiles.
      */
     DynamicsComparison

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Scene-selected nonlinear-dynamics analyses (io/analyses.h) on the nine-bar press:
+// Scene-selected nonlinear-dynamics analyses (workflows/analyses.h) on the nine-bar press:
 //  - ideal joints: the mechanism has zero degrees of freedom (24 coordinates, 20
 //    revolute + 2 translational + 2 driver equations), so its state is a function of
 //    time alone, periodic with the drivers' period T = 2π/(4π rad/s) = 0.5 s. Every
@@ -319,7 +319,7 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
 
 TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
 {
-  // The exponent from the simulation itself (io/shadow_trajectory.h), two checks with
+  // The exponent from the simulation itself (workflows/shadow_trajectory.h), two checks with
   // independent expectations:
   //  - ideal nine-bar: 0 DOF, so every displacement of the shadow violates the
   //    constraints and Baumgarte's γ − 2αΦ̇ − β²Φ with α = β = 5 1/s (a critically

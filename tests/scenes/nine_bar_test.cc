@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -263,4 +264,45 @@ TEST(NineBar, AdaptiveAgreesWithFixedStepAndConverges)
             << " m/s²; friction dissipation dopri5 " << qd << ", rk4 " << qr << " J\n";
   EXPECT_LT(rel(ad, ar), 0.02);
   EXPECT_LT(rel(qd, qr), 0.06);
+}
+
+TEST(NineBar, WornSceneLoadsTheReconstructedProfiles)
+{
+  // params/nine_bar_worn.prm loads the profiles of meshes/worn/ (50,000 revolutions of
+  // params/nine_bar_wear.prm). Archard only removes material: every worn bore radius is
+  // at least the fresh one and every worn pin radius at most the fresh one (to the
+  // 17-digit CSV round trip), and the deepest wear — tens of microns — stays far inside
+  // the 0.5 mm clearance. The worn mechanism then runs like the fresh one: impacts, a
+  // Hertzian approach of microns, finite forces.
+  auto fresh = wearlink::testing::scene("params/nine_bar_clearance.prm", {"Simulation/End time=0.2"});
+  auto worn  = wearlink::testing::scene("params/nine_bar_worn.prm", {"Simulation/End time=0.2"});
+  ASSERT_EQ(worn.clearance_joints.size(), 2u);
+  for (unsigned int j = 0; j < 2; ++j)
+    {
+      const auto  &f         = fresh.clearance_joints[j]->get_description().geometry;
+      const auto  &w         = worn.clearance_joints[j]->get_description().geometry;
+      const double clearance = f.bore.mean_radius() - f.pin.mean_radius();
+      ASSERT_EQ(w.bore.n_points(), f.bore.n_points());
+      double bore_depth = 0, pin_depth = 0;
+      for (unsigned int k = 0; k < w.bore.n_points(); ++k)
+        {
+          EXPECT_GE(w.bore[k], f.bore[k] * (1 - 1e-15)) << "joint " << j << ", area " << k;
+          EXPECT_LE(w.pin[k], f.pin[k] * (1 + 1e-15)) << "joint " << j << ", area " << k;
+          bore_depth = std::max(bore_depth, w.bore[k] - f.bore[k]);
+          pin_depth  = std::max(pin_depth, f.pin[k] - w.pin[k]);
+        }
+      EXPECT_GT(bore_depth, 1e-6) << "worn, not fresh";
+      EXPECT_GT(pin_depth, 1e-6);
+      EXPECT_LT(bore_depth + pin_depth, 0.5 * clearance);
+    }
+  const Json s = wearlink::testing::run(worn);
+  for (const char *j : {"A", "B"})
+    {
+      const auto  &cj = s.at("clearance_joints").at(j);
+      const double c  = json_number(cj.at("radial_clearance_m"));
+      EXPECT_GT(json_number(cj.at("impacts")), 0) << j;
+      EXPECT_GT(json_number(cj.at("max_penetration_m")), 0) << j;
+      EXPECT_LT(json_number(cj.at("max_penetration_m")), 0.05 * c) << j;
+      EXPECT_TRUE(std::isfinite(json_number(cj.at("max_normal_force_N")))) << j;
+    }
 }

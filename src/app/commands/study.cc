@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// `wearlink study accuracy SCENE.prm`: what accuracy costs in time (io/accuracy_study.h).
+// `wearlink study accuracy SCENE.prm`: what accuracy costs in time (workflows/accuracy_study.h).
 // Every accuracy knob that applies to the scene is varied alone; the error of the
 // quantities that matter against the knob's reference and the wall time of every run
 // go into accuracy.csv, accuracy.md and accuracy_pareto.png.

@@ -12,6 +12,7 @@
 // joint: b ≈ 0.1 mm against 0.2 mm areas at 360 areas). The worn shape enters only
 // through the local radii: that is this model's limitation (Mukras et al. 2010).
 #include "base/parameters.h"
+#include "contact/hertz.h"
 #include "contact/pressure_model.h"
 
 #include <algorithm>
@@ -69,8 +70,9 @@ namespace wearlink::contact
         const double e_star    = effective_modulus(geometry.bushing, geometry.pin_material);
         const double r_star    = r1 * r2 / std::max(r1 - r2, 1e-12 * r1);
         const double line_load = load.normal_force / geometry.axial_length;
-        const double b         = std::sqrt(4 * line_load * r_star / (pi * e_star));
-        const double p0        = 2 * line_load / (pi * b);
+        const auto   hertz     = hertz_line_contact(line_load, r_star, e_star);
+        const double b         = hertz.half_width;
+        const double p0        = hertz.peak_pressure;
         spread(bore, load.bushing_angle, r1, phi, b, p0, out.bore);
         spread(pin, load.pin_angle, r2, phi, b, p0, out.pin);
       }

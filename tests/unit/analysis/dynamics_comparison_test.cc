@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The before/after comparison of io/dynamics_comparison.h on series whose answer is
+// The before/after comparison of workflows/dynamics_comparison.h on series whose answer is
 // known:
 //  - the Lorenz flow run twice as fast (the same orbit, time stamps halved) has twice
 //    the exponent per second, so after/before must come out near 2 for both methods

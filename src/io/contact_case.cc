@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/contact_case.h"
+
+#include "base/exceptions.h"
+#include "base/numbers.h"
+#include "base/parameters.h"
+#include "base/profile.h"
+#include "base/text.h"
+#include "fe/fe_settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace wearlink::io
+{
+  using numbers::pi;
+
+  namespace
+  {
+    /** Geometry and materials of the pair. */
+    void
+    declare_pair(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.enter_subsection("Geometry");
+      declare_required(
+        prm,
+        "Bore radius",
+        Double(0),
+        "Nominal bore radius R1 (used when no bore profile file is given, and for the Hertz comparison).",
+        "m");
+      declare_required(prm,
+                       "Pin radius",
+                       Double(0),
+                       "Nominal pin radius R2 (used when no pin profile file is given, and for the Hertz comparison).",
+                       "m");
+      declare_required(prm,
+                       "Bushing outer radius",
+                       Double(0),
+                       "Outer radius of the bushing ring; its outer edge is fixed.",
+                       "m");
+      declare_required(prm,
+                       "Axial length",
+                       Double(0),
+                       "Contact length along the pin axis; loads are spread over it (plane strain).",
+                       "m");
+      declare(prm,
+              "Number of profile points",
+              "360",
+              Integer(8),
+              "Discrete areas N of each profile (samples at ψ_k = 2πk/N).",
+              "none");
+      declare(
+        prm,
+        "Bore profile file",
+        "",
+        Anything(),
+        "CSV 'angle_rad, radius_m' of the worn bore in the bushing frame; empty: round bore of radius 'Bore radius'. Relative to the case file.",
+        "none");
+      declare(
+        prm,
+        "Pin profile file",
+        "",
+        Anything(),
+        "CSV 'angle_rad, radius_m' of the worn pin in the pin frame; empty: round pin of radius 'Pin radius'. Relative to the case file.",
+        "none");
+      prm.leave_subsection();
+      for (const char *body : {"Bushing material", "Pin material"})
+        {
+          prm.enter_subsection(body);
+          declare_required(prm, "Youngs modulus", Double(0), "Young's modulus E.", "Pa");
+          declare_required(prm, "Poisson ratio", Double(-1, 0.5), "Poisson's ratio ν.", "none");
+          prm.leave_subsection();
+        }
+    }
+  } // namespace
+
+  void
+  declare_contact_case(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    declare_pair(prm);
+    prm.enter_subsection("Loads");
+    declare(
+      prm,
+      "Control",
+      "force",
+      Selection("force|displacement"),
+      "force: the load magnitudes are given and the pin's displacement follows; displacement: the eccentricities are given and the contact force follows.",
+      "none");
+    declare(prm,
+            "Load magnitudes",
+            "100",
+            List(Double(0), 1),
+            "Magnitudes of the force on the pin, one load state each (force control).",
+            "N");
+    declare(
+      prm,
+      "Eccentricities",
+      "0.5e-3",
+      List(Double(0), 1),
+      "Pin-centre offsets from the bore centre along 'Load direction', one load state each (displacement control).",
+      "m");
+    declare(prm,
+            "Load direction",
+            "0, -1",
+            point_pattern(),
+            "Direction of the force on the pin (pushing it into the bore), or of the eccentricity; global frame.",
+            "none");
+    declare(prm, "Bushing angle", "0", Double(), "Angle θ of the body holding the bore.", "deg");
+    declare(prm, "Pin angle", "0", Double(), "Angle θ of the body holding the pin.", "deg");
+    prm.leave_subsection();
+    prm.enter_subsection("FE model");
+    fe::declare_fe_settings(prm);
+    declare(
+      prm,
+      "Refined arc half-angle",
+      "180",
+      Double(0, 180),
+      "Half-angle of the arc of each contact surface, centred on the load direction, that is meshed at 'Surface element size'; elsewhere the size grows with the distance from it. 180: the whole circumference.",
+      "deg");
+    declare(prm,
+            "Solvers",
+            "condensed, reference",
+            MultipleSelection("condensed|reference"),
+            "Which contact solvers to run (both: their pressures are compared).",
+            "none");
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
+    declare(prm, "Write VTU", "true", Bool(), "Write fields_<k>.vtu (displacement, stress) per load state.", "none");
+    prm.leave_subsection();
+  }
+
+
+  ContactCase
+  read_contact_case(dealii::ParameterHandler &prm, const std::string &file)
+  {
+    ContactCase     c;
+    ParameterReader reader(prm, file);
+    const auto      base = std::filesystem::path(file).parent_path();
+    c.file               = file;
+    // Geometry and materials.
+    auto &geometry = c.geometry;
+    reader.enter("Geometry");
+    const double R1           = reader.get_positive("Bore radius");
+    const double R2           = reader.get_positive("Pin radius");
+    const double outer_radius = reader.get_positive("Bushing outer radius");
+    geometry.axial_length     = reader.get_positive("Axial length");
+    const auto n_points       = static_cast<unsigned int>(reader.get_integer("Number of profile points"));
+    auto       profile        = [&](const std::string &entry, double radius, const std::string &what) {
+      const std::string f = reader.get(entry);
+      if (f.empty())
+        return Profile::round(radius, n_points);
+      const auto path = std::filesystem::path(f).is_relative() ? base / f : std::filesystem::path(f);
+      Profile    p    = Profile::read_csv(path.string(), n_points);
+      p.check(what + " profile '" + path.string() + "'");
+      return p;
+    };
+    geometry.bore = profile("Bore profile file", R1, "bore");
+    geometry.pin  = profile("Pin profile file", R2, "pin");
+    if (!(R2 < R1))
+      reader.fail("Pin radius",
+                  "the pin must be smaller than the bore ('Bore radius' = " + format_number(R1, 4) + " m)",
+                  "Set a pin radius below the bore radius (the radial clearance is their difference).");
+    if (!(outer_radius > R1))
+      reader.fail("Bushing outer radius", "it must exceed the bore radius (" + format_number(R1, 4) + " m)");
+    reader.leave();
+    for (auto [section, material] :
+         {std::pair{"Bushing material", &geometry.bushing}, std::pair{"Pin material", &geometry.pin_material}})
+      {
+        reader.enter(section);
+        material->youngs_modulus = reader.get_positive("Youngs modulus");
+        material->poisson_ratio  = reader.get_double("Poisson ratio");
+        reader.leave();
+      }
+
+    // Load states.
+    reader.enter("Loads");
+    const bool   force_control = reader.get("Control") == "force";
+    const auto   direction     = reader.get_point("Load direction");
+    const double norm          = std::hypot(direction[0], direction[1]);
+    if (!(norm > 0))
+      reader.fail("Load direction", "it must be a non-zero vector");
+    std::vector<fe::LoadCase> loads;
+    for (const auto &v : reader.get_list(force_control ? "Load magnitudes" : "Eccentricities"))
+      {
+        fe::LoadCase lc;
+        lc.control             = force_control ? fe::Control::force : fe::Control::displacement;
+        lc.bushing_angle       = reader.get_double("Bushing angle") * pi / 180;
+        lc.pin_angle           = reader.get_double("Pin angle") * pi / 180;
+        const double magnitude = std::stod(v);
+        if (!(magnitude > 0))
+          reader.fail(force_control ? "Load magnitudes" : "Eccentricities", "every value must be > 0");
+        const std::array<double, 2> value = {magnitude * direction[0] / norm, magnitude * direction[1] / norm};
+        (force_control ? lc.load : lc.eccentricity) = value;
+        loads.push_back(lc);
+      }
+    reader.leave();
+
+    reader.enter("FE model");
+    fe::FeSettings settings         = fe::read_fe_settings(reader);
+    settings.outer_radius           = outer_radius;
+    settings.refined_arc_half_angle = reader.get_double("Refined arc half-angle") * pi / 180;
+    if (settings.refined_arc_half_angle >= pi)
+      settings.refined_arc_half_angle = 4; // whole circumference
+    if (!loads.empty())
+      {
+        const double direction_angle     = std::atan2(direction[1], direction[0]);
+        settings.refined_arc_bore_centre = direction_angle - loads[0].bushing_angle;
+        settings.refined_arc_pin_centre  = direction_angle - loads[0].pin_angle;
+      }
+    const auto solvers = reader.get_list("Solvers");
+    reader.leave();
+    reader.enter("Output");
+    const bool write_vtu = reader.get_bool("Write VTU");
+    reader.leave();
+
+    c.bore_radius   = R1;
+    c.pin_radius    = R2;
+    c.force_control = force_control;
+    c.loads         = loads;
+    c.settings      = settings;
+    c.run_condensed = std::find(solvers.begin(), solvers.end(), "condensed") != solvers.end();
+    c.run_reference = std::find(solvers.begin(), solvers.end(), "reference") != solvers.end();
+    c.write_vtu     = write_vtu;
+    return c;
+  }
+} // namespace wearlink::io
