@@ -67,18 +67,18 @@ main()
   // the machine's load during the run shows how much of the two cores was ours.
   for (const char *run : {"serial", "mpi"})
     {
-      const wearlink::Json j       = wearlink::read_json_file(dir + "/" + run + "/sweep.json");
+      const wearlink::Json j       = wearlink::io::read_json_file(dir + "/" + run + "/sweep.json");
       double               busy[2] = {0.0, 0.0};
       for (std::size_t k = 0; k < j.at("members").size(); ++k)
         {
           const auto &m = j.at("members")[k];
-          busy[static_cast<int>(json_number(m.at("rank"))) % 2] += json_number(m.at("wall_time_s"));
+          busy[static_cast<int>(wearlink::json_number(m.at("rank"))) % 2] += wearlink::json_number(m.at("wall_time_s"));
         }
       std::printf("%-8s sum of member times per rank: rank 0 %.2f s, rank 1 %.2f s; command wall %.2f s\n",
                   run,
                   busy[0],
                   busy[1],
-                  json_number(j.at("wall_time_s")));
+                  wearlink::json_number(j.at("wall_time_s")));
     }
   double load[3] = {0, 0, 0};
   if (std::FILE *f = std::fopen("/proc/loadavg", "r"))
