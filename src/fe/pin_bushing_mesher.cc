@@ -147,6 +147,27 @@ namespace wearlink::fe
       return arcs;
     }
 
+    /**
+     * Sizes from the background field only; Frontal-Delaunay, Blossom recombination,
+     * and every element split into quadrilaterals; MSH 4.1 for deal.II.
+     */
+    void
+    set_meshing_options()
+    {
+      gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+      gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+      gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+      gmsh::option::setNumber("Mesh.Algorithm",
+                              6); // Frontal-Delaunay (algorithm 8 crashes in gmsh 4.8 with a background field)
+      gmsh::option::setNumber("Mesh.RecombineAll", 1);
+      gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
+      // Blossom recombination can leave a few triangles; splitting every element
+      // (triangle → 3 quads, quad → 4 quads) guarantees an all-quadrilateral mesh. The
+      // split halves all sizes, so the geometry is meshed at twice the target sizes.
+      gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
+      gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    }
+
     void
     name_group(int dim, const std::vector<int> &tags, const std::string &name)
     {
@@ -246,18 +267,7 @@ namespace wearlink::fe
                                         spec.layer_thickness + std::max((H - h) / (2 * spec.size_growth), h));
     gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
 
-    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::option::setNumber("Mesh.Algorithm",
-                            6); // Frontal-Delaunay (algorithm 8 crashes in gmsh 4.8 with a background field)
-    gmsh::option::setNumber("Mesh.RecombineAll", 1);
-    gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
-    // Blossom recombination can leave a few triangles; splitting every element
-    // (triangle → 3 quads, quad → 4 quads) guarantees an all-quadrilateral mesh. The
-    // split halves all sizes, so the geometry is meshed at twice the target sizes.
-    gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    set_meshing_options();
     try
       {
         gmsh::model::mesh::generate(2);

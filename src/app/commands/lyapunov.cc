@@ -8,22 +8,12 @@
 #include "analysis/lyapunov.h"
 
 #include "app/command_line.h"
-#include "base/atomic_file.h"
 #include "base/exceptions.h"
-#include "base/json.h"
-#include "base/text.h"
-#include "io/lyapunov_report.h"
+#include "workflows/lyapunov_series.h"
 
-#include <algorithm>
-#include <cctype>
-#include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
-#include <limits>
 #include <optional>
-#include <sstream>
+#include <string>
 
 namespace wearlink::app
 {

@@ -60,7 +60,9 @@ TEST(Json, TextWithNonAsciiAndControlCharactersRoundTrips)
       // \u escapes (with a surrogate pair) decode to UTF-8, not to one byte each.
       EXPECT_EQ(back.at("escaped").get<std::string>(), "µΔ𝜎\n\t");
       if (indent < 0) // control characters are escaped: one line stays one line
-        EXPECT_EQ(written.find('\n'), std::string::npos);
+        {
+          EXPECT_EQ(written.find('\n'), std::string::npos);
+        }
     }
 }
 

@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The seed's wear results, as far as they can be checked (REFERENCE.md §4, §6):
 //  1. Experiment (§4.3, params/nine_bar_experiment.prm): the Al pin of joint A lost
-//     6.3 mg over 50,000 revolutions at ±90 rpm. The wear coefficient is not given;
-//     REFERENCE.md §4 gives the dry Al-on-steel literature range 1e-4 … 7e-2 mm³/(N m)
-//     and derives 6e-5 … 2.5e-4 mm³/(N m) from the measurement. We predict the mass
-//     loss for k_D = 6e-5, 1e-4, 2.5e-4 and 1e-3 mm³/(N m) (the upper literature values
-//     wear the 0.2 mm clearance pin through long before 50,000 revolutions) and print
-//     them next to 6.3 mg. Asserted: Archard's proportionality survives the coupling
-//     with the dynamics — the mass loss per unit k_D stays within 25 % across the
-//     range (the worn geometry feeds back into the loads, so it is not exact), and the
-//     measured 6.3 mg lies inside the predicted range for the derived k_D interval.
+//     6.3 mg over 50,000 revolutions at ±90 rpm. The seed gives no wear coefficient.
+//     The literature range for dry sliding of aluminium alloys against steel is
+//     k_D ≈ 1e-4 … 7e-2 mm³/(N m) (REFERENCE.md §4 [lit]: mild to severe regimes);
+//     nothing in this test is taken from the 6.3 mg. Two runs at the literature's
+//     lower end k_lo = 1e-4 and at 2 k_lo give the mass loss per unit k_D, s, and
+//     check Archard's proportionality through the coupled dynamics (the worn geometry
+//     feeds back into the loads, so within 25 %, not exactly). The measured loss is
+//     consistent with the literature if the coefficient it implies, 6.3 mg / s, lies in
+//     [1e-4, 7e-2] mm³/(N m): the model must not predict more than 6.3 mg at the
+//     least-wearing literature coefficient. (Upper-range coefficients wear the 0.2 mm
+//     clearance pin through long before 50,000 revolutions, so the upper end is
+//     reached by proportionality, not simulated.)
 //  2. Simulation (§4.2.1, params/nine_bar_wear.prm): the seed reports that joint B
 //     wears more than joint A. Asserted: B's worn volume (pin + bushing) exceeds A's.
 #include "scene_support.h"
@@ -19,16 +22,21 @@
 
 #include <iomanip>
 #include <iostream>
+#include <sstream>
+#include <vector>
 
 using namespace wearlink;
 
-TEST(SeedWear, ExperimentPinMassLossOverTheWearCoefficientRange)
+TEST(SeedWear, ExperimentPinMassLossImpliesALiteratureWearCoefficient)
 {
   const double measured_mg = 6.3;
-  std::cout
-    << "\nseed experiment (§4.3): Al pin, joint A, 0.2 mm, ±90 rpm, 50,000 revolutions; measured " << measured_mg
-    << " mg\n  k_D [mm³/(N m)]   pin mass loss [mg]   per k_D [mg/(mm³/(N m))]   max depth [µm]   mean F_n [N]   sliding [m]\n";
-  std::vector<double> k_values = {6e-5, 1e-4, 2.5e-4, 1e-3}, loss;
+  const double k_lo = 1e-4, k_hi = 7e-2; // mm³/(N m), dry Al alloys on steel [lit]
+  std::cout << "\nseed experiment (§4.3): Al pin, joint A, 0.2 mm, ±90 rpm, 50,000 revolutions; measured "
+            << measured_mg
+            << " mg\n  k_D [mm³/(N m)]   pin mass loss [mg]   per k_D [mg/(mm³/(N m))]   max depth [µm]   "
+               "mean F_n [N]   sliding [m]\n";
+  const std::vector<double> k_values = {k_lo, 2 * k_lo};
+  std::vector<double>       per_k;
   for (const double k_mm : k_values)
     {
       const double       k = k_mm * 1e-9; // mm³/(N m) → m³/(N m)
@@ -42,15 +50,16 @@ TEST(SeedWear, ExperimentPinMassLossOverTheWearCoefficientRange)
       ASSERT_EQ(r.state.revolutions, 50000.0);
       const auto  &h  = r.state.joints[0].history.back();
       const double mg = h.volume_pin * scene.wear[0]->archard.pin_density * 1e6;
-      loss.push_back(mg);
+      per_k.push_back(mg / k_mm);
       std::cout << std::setw(17) << k_mm << std::setw(21) << std::setprecision(4) << mg << std::setw(27) << mg / k_mm
                 << std::setw(17) << h.max_depth_pin * 1e6 << std::setw(15) << h.mean_normal_force << std::setw(14)
                 << h.sliding_distance << '\n';
     }
-  for (std::size_t i = 1; i < k_values.size(); ++i)
-    EXPECT_NEAR(loss[i] / k_values[i], loss[0] / k_values[0], 0.25 * loss[0] / k_values[0]);
-  EXPECT_LE(loss[0], measured_mg);
-  EXPECT_GE(loss[2], measured_mg);
+  EXPECT_NEAR(per_k[1], per_k[0], 0.25 * per_k[0]) << "Archard's proportionality through the coupled dynamics";
+  const double implied = measured_mg / per_k[0];
+  std::cout << "  implied k_D = " << implied << " mm³/(N m); literature " << k_lo << " … " << k_hi << '\n';
+  EXPECT_GE(implied, k_lo) << "the model wears more at the least-wearing literature coefficient than measured";
+  EXPECT_LE(implied, k_hi);
 }
 
 TEST(SeedWear, JointBOutWearsJointA)
