@@ -450,11 +450,8 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     void
     integrator_knobs(const KnobContext &c, std::vector<Knob> &knobs)
     {
-      const auto &scene  = c.scene;
-      const bool  quick  = c.quick;
-      auto        scaled = [&](double base, bool integer) {
-        return c.scaled(base, integer);
-      };
+      const auto &scene = c.scene;
+      const bool  quick = c.quick;
       // Integrator: tolerance (dopri5) or step (rk4).
       const auto &in = scene.simulation.integrator;
       if (in.type == mbs::IntegratorType::dopri5)
@@ -476,7 +473,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         }
       else
         knobs.push_back(
-          make_knob("integrator-step", {"Integrator/Time step"}, scaled(in.time_step, false), "smallest step"));
+          make_knob("integrator-step", {"Integrator/Time step"}, c.scaled(in.time_step, false), "smallest step"));
 
       // Baumgarte factors: no "finer" value; the scene's is the reference.
       if (!quick)
@@ -536,9 +533,6 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       const bool  quick   = c.quick;
       const auto &wearing = c.wearing;
       const bool  wears   = !wearing.empty();
-      auto        scaled  = [&](double base, bool integer) {
-        return c.scaled(base, integer);
-      };
       if (wears)
         {
           const auto &ws = scene.wear_loop;
@@ -595,7 +589,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
           else
             knobs.push_back(make_knob("wear-step",
                                       {"Wear/Maximum depth increment"},
-                                      scaled(ws.max_depth_increment, false),
+                                      c.scaled(ws.max_depth_increment, false),
                                       "smallest depth increment"));
 
           if (ws.extrapolation == wear::Extrapolation::fixed)
@@ -628,17 +622,14 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     void
     fe_knobs(const KnobContext &c, std::vector<Knob> &knobs)
     {
-      const auto &scene  = c.scene;
-      const auto &fe     = c.fe;
-      auto        scaled = [&](double base, bool integer) {
-        return c.scaled(base, integer);
-      };
+      const auto &scene = c.scene;
+      const auto &fe    = c.fe;
       if (!fe.empty())
         {
           knobs.push_back(
             make_knob("fe-element-size",
                       paths(fe, "fe/Surface element size"),
-                      scaled(number_of(scene, "Joint " + fe[0] + "/Clearance/fe/Surface element size"), false),
+                      c.scaled(number_of(scene, "Joint " + fe[0] + "/Clearance/fe/Surface element size"), false),
                       "smallest elements"));
           knobs.push_back(make_knob("fe-degree", paths(fe, "fe/Element degree"), {"1", "2"}, "degree 2"));
           knobs.push_back(

@@ -244,7 +244,6 @@ namespace wearlink::workflows
                     const analysis::AnalysesSettings &settings,
                     const bool                        write,
                     const std::string                &dir,
-                    const bool                        have_section,
                     Json                             &out,
                     Json                             &files)
     {
@@ -266,7 +265,8 @@ namespace wearlink::workflows
               orbit.y       = run.series.values[iv];
               orbit.options = "lw 0.5 lc rgb 'black'";
               plot.series.push_back(orbit);
-              if (have_section && run.section.points.has(pair.position) && run.section.points.has(pair.velocity))
+              if (run.section.points.n_samples() > 0 && run.section.points.has(pair.position) &&
+                  run.section.points.has(pair.velocity))
                 {
                   io::PlotSeries points;
                   points.title   = "Poincaré points (one per " + format_number(run.section.period, 4) + " s)";
@@ -290,7 +290,6 @@ namespace wearlink::workflows
                      const analysis::AnalysesSettings &settings,
                      const bool                        write,
                      const std::string                &dir,
-                     const bool                        have_section,
                      Json                             &out,
                      Json                             &files)
     {
@@ -338,7 +337,6 @@ namespace wearlink::workflows
                        const analysis::AnalysesSettings &settings,
                        const bool                        write,
                        const std::string                &dir,
-                       const bool                        have_section,
                        Json                             &out,
                        Json                             &files)
     {
@@ -416,7 +414,6 @@ namespace wearlink::workflows
     out["transient_s"] = settings.transient;
     Json files         = Json::array();
 
-    const bool have_section = run.section.points.n_samples() > 0;
 
     // The recorded data, whenever there is some: io::read_recorded_run() reads it back.
     if (write && run.series.n_samples() > 0)
@@ -431,11 +428,11 @@ namespace wearlink::workflows
       }
 
     if (settings.phase_portrait)
-      phase_portraits(run, settings, write, dir, have_section, out, files);
+      phase_portraits(run, settings, write, dir, out, files);
     if (settings.poincare)
-      poincare_section(run, settings, write, dir, have_section, out, files);
+      poincare_section(run, settings, write, dir, out, files);
     if (settings.lyapunov)
-      lyapunov_exponents(run, settings, write, dir, have_section, out, files);
+      lyapunov_exponents(run, settings, write, dir, out, files);
     if (write)
       out["files"] = files;
     return out;
