@@ -32,8 +32,8 @@ namespace wearlink::analysis
       const auto [lo_it, hi_it] = std::minmax_element(x.begin(), x.end());
       const double lo = *lo_it, hi = *hi_it;
       if (!(hi > lo))
-        throw InputError("The series is constant (every sample is " + std::to_string(lo) +
-                         "); it has no dynamics to embed. Choose another column.");
+        throw EstimationError("The series is constant (every sample is " + std::to_string(lo) +
+                              "); it has no dynamics to embed. Choose another column.");
       std::vector<std::vector<std::uint16_t>> bins(n_shifts, std::vector<std::uint16_t>(x.size()));
       std::vector<double>                     u(x.size());
       for (std::size_t i = 0; i < x.size(); ++i)
@@ -200,9 +200,9 @@ namespace wearlink::analysis
                              const std::size_t          max_pairs)
   {
     if (series.size() < min_samples || max_delay + min_samples > series.size())
-      throw InputError("The mutual information up to a delay of " + std::to_string(max_delay) +
-                       " samples needs at least " + std::to_string(max_delay + min_samples) +
-                       " samples; the series has " + std::to_string(series.size()) + ".");
+      throw EstimationError("The mutual information up to a delay of " + std::to_string(max_delay) +
+                            " samples needs at least " + std::to_string(max_delay + min_samples) +
+                            " samples; the series has " + std::to_string(series.size()) + ".");
     MutualInformation   mi(series, std::clamp(n_bins, 2u, 1000u), std::max(1u, n_shifts), max_pairs);
     std::vector<double> info(max_delay + 1);
     for (std::size_t tau = 0; tau <= max_delay; ++tau)
@@ -219,8 +219,8 @@ namespace wearlink::analysis
   choose_delay(const std::vector<double> &series, const MutualInformationOptions &options)
   {
     if (series.size() < min_samples)
-      throw InputError("Choosing the delay needs at least " + std::to_string(min_samples) +
-                       " samples; the series has " + std::to_string(series.size()) + ".");
+      throw EstimationError("Choosing the delay needs at least " + std::to_string(min_samples) +
+                            " samples; the series has " + std::to_string(series.size()) + ".");
     constexpr double  minimum_information = 0.05;
     const std::size_t max_delay           = options.max_delay > 0 ?
                                               std::min(options.max_delay, series.size() - min_samples) :
@@ -284,11 +284,11 @@ namespace wearlink::analysis
     // Points that also have the (d+1)-th coordinate x_{i + d tau}.
     const std::size_t n = series.size() > dimension * delay ? series.size() - dimension * delay : 0;
     if (n < 2 * w + min_samples)
-      throw InputError("False nearest neighbours in dimension " + std::to_string(dimension + 1) + " with a delay of " +
-                       std::to_string(delay) + " samples need at least " +
-                       std::to_string(2 * w + min_samples + dimension * delay) + " samples; the series has " +
-                       std::to_string(series.size()) +
-                       ". Give a longer series, or a smaller delay or embedding dimension.");
+      throw EstimationError("False nearest neighbours in dimension " + std::to_string(dimension + 1) +
+                            " with a delay of " + std::to_string(delay) + " samples need at least " +
+                            std::to_string(2 * w + min_samples + dimension * delay) + " samples; the series has " +
+                            std::to_string(series.size()) +
+                            ". Give a longer series, or a smaller delay or embedding dimension.");
     const KdTree tree(series, emb.dimension, emb.delay, n);
     const double r_a = standard_deviation(series);
 
@@ -321,9 +321,9 @@ namespace wearlink::analysis
           ++n_false;
       }
     if (n_tested == 0)
-      throw InputError("False nearest neighbours in dimension " + std::to_string(dimension) +
-                       ": no query point has a distinct neighbour beyond the Theiler window (the "
-                       "series repeats one state). Give the embedding dimension explicitly.");
+      throw EstimationError("False nearest neighbours in dimension " + std::to_string(dimension) +
+                            ": no query point has a distinct neighbour beyond the Theiler window (the "
+                            "series repeats one state). Give the embedding dimension explicitly.");
     return static_cast<double>(n_false) / n_tested;
   }
 

@@ -3,6 +3,7 @@
 
 #include "analysis/kd_tree.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,7 @@ namespace wearlink::analysis
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using numbers::pi;
 
     /**
      * Points closer than this fraction of the attractor extent coincide: an exact
@@ -57,11 +58,11 @@ namespace wearlink::analysis
     {
       const std::size_t needed = emb.window() + reserved + 2 * theiler_window + min_vectors_beyond_window;
       if (n_samples < needed)
-        throw InputError("The " + method + " method with embedding dimension " + std::to_string(emb.dimension) +
-                         ", delay " + std::to_string(emb.delay) + " and Theiler window " +
-                         std::to_string(theiler_window) + " samples needs at least " + std::to_string(needed) +
-                         " samples; the series has " + std::to_string(n_samples) +
-                         ". Give a longer series, or a smaller embedding dimension or delay.");
+        throw EstimationError("The " + method + " method with embedding dimension " + std::to_string(emb.dimension) +
+                              ", delay " + std::to_string(emb.delay) + " and Theiler window " +
+                              std::to_string(theiler_window) + " samples needs at least " + std::to_string(needed) +
+                              " samples; the series has " + std::to_string(n_samples) +
+                              ". Give a longer series, or a smaller embedding dimension or delay.");
     }
 
     double
@@ -240,8 +241,8 @@ namespace wearlink::analysis
     filter.query_index = i;
     Neighbour first    = tree.nearest(y_ref.data(), filter);
     if (!first.found())
-      throw InputError("The Wolf method found no neighbour of the first point beyond the "
-                       "Theiler window; the series is too short or constant.");
+      throw EstimationError("The Wolf method found no neighbour of the first point beyond the "
+                            "Theiler window; the series is too short or constant.");
     std::size_t j = first.index;
 
     double      sum_log = 0.0, sum_angle = 0.0;
@@ -285,8 +286,8 @@ namespace wearlink::analysis
           }
       }
     if (out.n_segments == 0)
-      throw InputError("The Wolf method could not follow any neighbour pair (all separations "
-                       "were zero); the series may be constant or repeat exactly.");
+      throw EstimationError("The Wolf method could not follow any neighbour pair (all separations "
+                            "were zero); the series may be constant or repeat exactly.");
     out.exponent_per_sample    = sum_log / (out.n_segments * E);
     out.mean_replacement_angle = n_replaced > 0 ? sum_angle / n_replaced : 0.0;
     return out;
@@ -616,8 +617,8 @@ namespace wearlink::analysis
                                          NeighbourPair{i, nb.index, 0.0});
         }
       if (pairs.empty())
-        throw InputError("The Rosenstein method found no neighbour pairs beyond the Theiler "
-                         "window; the series is too short or constant.");
+        throw EstimationError("The Rosenstein method found no neighbour pairs beyond the Theiler "
+                              "window; the series is too short or constant.");
       return pairs;
     }
 

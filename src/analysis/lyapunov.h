@@ -137,7 +137,7 @@ namespace wearlink::analysis
   /**
    * Wolf et al. 1985 fixed-evolution-time estimate of the largest Lyapunov exponent of
    * @p series embedded with @p embedding, neighbours at least @p theiler_window samples
-   * apart in time. InputError if the series is too short.
+   * apart in time. EstimationError if the series is too short.
    */
   WolfResult
   wolf_exponent(const std::vector<double> &series,
@@ -223,7 +223,7 @@ namespace wearlink::analysis
   /**
    * Rosenstein et al. 1993 estimate of the largest Lyapunov exponent of @p series
    * embedded with @p embedding, nearest neighbours at least @p theiler_window samples
-   * apart in time. InputError if the series is too short.
+   * apart in time. EstimationError if the series is too short.
    */
   RosensteinResult
   rosenstein_exponent(const std::vector<double> &series,
@@ -266,8 +266,9 @@ namespace wearlink::analysis
   /**
    * The library entry point: resolve the embedding of @p series (e.g. the x coordinate
    * of a joint centre [m] sampled every dt seconds) and estimate its largest Lyapunov
-   * exponent with the selected method. InputError for NaN/inf samples, a too-short
-   * series or out-of-range settings.
+   * exponent with the selected method. InputError for NaN/inf samples or out-of-range
+   * settings; EstimationError if this series does not allow the estimate (too short
+   * for the embedding, constant, no neighbour beyond the Theiler window).
    */
   LyapunovEstimate
   estimate_largest_lyapunov_exponent(const std::vector<double> &series, const LyapunovSettings &settings);

@@ -2,6 +2,7 @@
 #include "analysis/nonlinear_dynamics.h"
 
 #include "base/exceptions.h"
+#include "base/numbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,7 @@ namespace wearlink::analysis
 {
   namespace
   {
-    constexpr double two_pi = 6.28318530717958647692;
+    using numbers::two_pi;
   }
 
   std::vector<ChannelSpread>
@@ -62,7 +63,7 @@ namespace wearlink::analysis
       {
         out.estimate = estimate_largest_lyapunov_exponent(run.series.values[c], settings);
       }
-    catch (const InputError &e)
+    catch (const Error &e) // InputError (settings) or EstimationError (the scene's run is too short)
       {
         throw InputError("Lyapunov exponent of channel '" + channel + "' (" + std::to_string(out.n_samples) +
                          " samples every " + std::to_string(run.sample_interval) + " s): " + e.message());

@@ -72,6 +72,11 @@ main(int argc, char **argv)
       std::cerr << "error: " << e.message() << '\n';
       return 2;
     }
+  catch (const wearlink::EstimationError &e)
+    {
+      std::cerr << "error: " << e.message() << '\n';
+      return 2;
+    }
   catch (const wearlink::NumericalError &e)
     {
       std::cerr << "numerical failure: " << e.message() << '\n';

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Exception types of wearlink. Two kinds of failure reach the user:
+// Exception types of wearlink. Three kinds of failure reach the user:
 //  - InputError: the scene, a file or a command line is wrong; the message says what is
 //    wrong, where (file and entry path), what is allowed and how to fix it.
 //  - NumericalError: a valid scene that the numerics could not handle (assembly Newton
 //    did not converge, step size underflow, contact solver cycling); the message carries
 //    time, joint, iteration and residual.
+//  - EstimationError: a series does not allow the estimate asked of it (too short for the
+//    embedding, constant, no neighbour beyond the Theiler window). Where the series came
+//    from the user, the caller turns it into an InputError naming the file or the scene
+//    entry; where a comparison asked, the missing value is reported with this reason.
 // Our own bugs are caught by deal.II's Assert (debug builds only).
 #pragma once
 
@@ -42,6 +46,13 @@ namespace wearlink
 
   /** The user's input (scene, file, command line) is wrong. Exit status 2. */
   class InputError : public Error
+  {
+  public:
+    using Error::Error;
+  };
+
+  /** A series that does not allow the estimate asked of it (see above). Exit status 2. */
+  class EstimationError : public Error
   {
   public:
     using Error::Error;

@@ -3,6 +3,7 @@
 
 #include "base/exceptions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -358,10 +359,64 @@ namespace wearlink
   }
 
 
-  void
-  apply_overrides(dealii::ParameterHandler &prm, const std::vector<std::string> &overrides)
+  ParameterOverrides::ParameterOverrides(std::vector<std::string> settings_as_given)
+    : list(std::move(settings_as_given))
   {
-    for (const auto &o : overrides)
+  }
+
+  ParameterOverrides &
+  ParameterOverrides::set(const std::string &path, const std::string &value)
+  {
+    list.push_back(path + "=" + value);
+    return *this;
+  }
+
+  ParameterOverrides &
+  ParameterOverrides::set(const std::string &path, const char *value)
+  {
+    return set(path, std::string(value));
+  }
+
+  ParameterOverrides &
+  ParameterOverrides::set(const std::string &path, const double value)
+  {
+    std::ostringstream v;
+    v << std::setprecision(17) << value;
+    return set(path, v.str());
+  }
+
+  ParameterOverrides &
+  ParameterOverrides::append(const ParameterOverrides &later)
+  {
+    list.insert(list.end(), later.list.begin(), later.list.end());
+    return *this;
+  }
+
+  ParameterOverrides &
+  ParameterOverrides::remove_paths_set_in(const ParameterOverrides &other)
+  {
+    list.erase(std::remove_if(list.begin(), list.end(), [&](const std::string &s) { return other.sets(path_of(s)); }),
+               list.end());
+    return *this;
+  }
+
+  bool
+  ParameterOverrides::sets(const std::string &path) const
+  {
+    const std::string p = trim(path);
+    return std::any_of(list.begin(), list.end(), [&](const std::string &s) { return path_of(s) == p; });
+  }
+
+  std::string
+  ParameterOverrides::path_of(const std::string &setting)
+  {
+    return trim(setting.substr(0, setting.find('=')));
+  }
+
+  void
+  apply_overrides(dealii::ParameterHandler &prm, const ParameterOverrides &overrides)
+  {
+    for (const auto &o : overrides.settings())
       {
         const auto eq = o.find('=');
         if (eq == std::string::npos)

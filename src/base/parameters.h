@@ -16,6 +16,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <array>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -119,10 +120,63 @@ namespace wearlink
   check_required_entries(const dealii::ParameterHandler &prm, const std::string &filename);
 
   /**
-   * Apply command-line overrides "Section/Sub/Entry=value" to @p prm. An unknown path
-   * or a value outside the entry's pattern is an InputError naming the override.
+   * Settings "Section/Sub/Entry=value" applied over a scene file, in order (a later one
+   * wins): the user's --set arguments as given, and the settings the program makes (a
+   * study's knob values, a two-trajectory run's tolerances), written through set() so
+   * that a number is formatted once, to 17 significant digits (it reads back exactly).
+   */
+  class ParameterOverrides
+  {
+  public:
+    ParameterOverrides() = default;
+    /** The user's --set arguments, "Path=value" each (checked when applied). */
+    ParameterOverrides(std::vector<std::string> settings_as_given);
+    ParameterOverrides(std::initializer_list<std::string> settings_as_given)
+      : list(settings_as_given)
+    {
+    }
+
+    ParameterOverrides &
+    set(const std::string &path, const std::string &value);
+    ParameterOverrides &
+    set(const std::string &path, const char *value);
+    /** @p value to 17 significant digits. */
+    ParameterOverrides &
+    set(const std::string &path, double value);
+    /** Append @p later (applied after, so its settings win). */
+    ParameterOverrides &
+    append(const ParameterOverrides &later);
+    /** Leave out every setting of a path that @p other also sets. */
+    ParameterOverrides &
+    remove_paths_set_in(const ParameterOverrides &other);
+
+    /** True if a setting is for @p path (compared without surrounding blanks). */
+    bool
+    sets(const std::string &path) const;
+    bool
+    empty() const
+    {
+      return list.empty();
+    }
+    /** The settings as "Path=value" text, in order. */
+    const std::vector<std::string> &
+    settings() const
+    {
+      return list;
+    }
+    /** The path of one "Path=value" setting (trimmed). */
+    static std::string
+    path_of(const std::string &setting);
+
+  private:
+    std::vector<std::string> list;
+  };
+
+  /**
+   * Apply @p overrides to @p prm in order. A setting without '=', an unknown path or a
+   * value outside the entry's pattern is an InputError naming the setting.
    */
   void
-  apply_overrides(dealii::ParameterHandler &prm, const std::vector<std::string> &overrides);
+  apply_overrides(dealii::ParameterHandler &prm, const ParameterOverrides &overrides);
 
 } // namespace wearlink

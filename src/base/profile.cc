@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "base/profile.h"
 
-#include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@ namespace wearlink
 {
   namespace
   {
-    constexpr double       two_pi     = 6.283185307179586476925286766559;
+    using numbers::two_pi;
     constexpr unsigned int min_points = 8;
 
     /** Position of @p psi in sample units: index k and fraction f in [0, 1). */
@@ -53,61 +53,24 @@ namespace wearlink
   }
 
   Profile
-  Profile::read_csv(const std::string &filename, unsigned int n_points)
+  Profile::from_polar_points(const std::vector<double> &angles,
+                             const std::vector<double> &radii,
+                             const unsigned int         n_points,
+                             const std::string         &what)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError("Cannot open the profile file '" + filename + "': it does not exist or is not readable.");
-    std::vector<double> angles, radii;
-    std::string         line;
-    unsigned int        line_no     = 0;
-    bool                header_seen = false;
-    while (std::getline(in, line))
-      {
-        ++line_no;
-        const auto hash = line.find('#');
-        if (hash != std::string::npos)
-          line.resize(hash);
-        if (line.find_first_not_of(" \t\r") == std::string::npos)
-          continue;
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream ls(line);
-        std::string        a_text, r_text;
-        ls >> a_text >> r_text;
-        char        *end_a   = nullptr;
-        char        *end_r   = nullptr;
-        const double a       = std::strtod(a_text.c_str(), &end_a);
-        const double rr      = std::strtod(r_text.c_str(), &end_r);
-        const bool   numeric = !a_text.empty() && !r_text.empty() && *end_a == '\0' && *end_r == '\0';
-        if (!numeric)
-          {
-            if (angles.empty() && radii.empty() && !header_seen)
-              {
-                header_seen = true; // one header line before the data (after comments)
-                continue;
-              }
-            throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
-                             ": expected two numbers 'angle_rad, radius_m'.");
-          }
-        if (!std::isfinite(a) || !std::isfinite(rr))
-          throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
-                           ": the angle and radius must be finite numbers (found NaN or inf).");
-        if (!(rr > 0))
-          throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
-                           ": the radius must be > 0 m.");
-        if (!angles.empty() && !(a > angles.back()))
-          throw InputError("In profile file '" + filename + "' line " + std::to_string(line_no) +
-                           ": angles must increase strictly (a profile that turns back "
-                           "on itself is self-intersecting).");
-        angles.push_back(a);
-        radii.push_back(rr);
-      }
+    if (angles.size() != radii.size())
+      throw InputError("The " + what + " has " + std::to_string(angles.size()) + " angles but " +
+                       std::to_string(radii.size()) + " radii.");
+    for (std::size_t k = 1; k < angles.size(); ++k)
+      if (!(angles[k] > angles[k - 1]))
+        throw InputError("In the " + what + ", the angles must increase strictly (point " + std::to_string(k) +
+                         " does not): a profile that turns back on itself is self-intersecting.");
     if (angles.size() < min_points)
-      throw InputError("The profile file '" + filename + "' has " + std::to_string(angles.size()) +
-                       " points; at least " + std::to_string(min_points) + " are needed.");
+      throw InputError("The " + what + " has " + std::to_string(angles.size()) + " points; at least " +
+                       std::to_string(min_points) + " are needed.");
     if (!(angles.back() - angles.front() < two_pi))
-      throw InputError("In profile file '" + filename +
-                       "', the angles span more than one turn (2π rad): the profile would "
+      throw InputError("In the " + what +
+                       ", the angles span more than one turn (2π rad): the profile would "
                        "overlap itself.");
 
     const unsigned int n = n_points == 0 ? static_cast<unsigned int>(angles.size()) : n_points;
@@ -116,13 +79,13 @@ namespace wearlink
         const double step = two_pi / n;
         for (unsigned int k = 0; k < n; ++k)
           if (std::abs(angles[k] - angles[0] - k * step) > 1e-6 * step)
-            throw InputError("The profile file '" + filename +
-                             "' is not uniformly spaced over 2π; give the number of "
+            throw InputError("The " + what +
+                             " is not uniformly spaced over 2π; give the number of "
                              "discrete areas so that it can be resampled.");
         // Already on the grid ψ_k = 2πk/N: keep the samples as they are. Otherwise
         // (grid shifted by a0) fall through to the resampling below.
         if (std::abs(angles[0]) <= 1e-12)
-          return from_samples(radii, "profile file '" + filename + "'");
+          return from_samples(radii, what);
       }
     // Periodic linear resampling onto ψ_k = 2πk/n.
     const std::size_t   m = angles.size();
@@ -139,20 +102,7 @@ namespace wearlink
         const double r1 = j < m ? radii[j] : radii[0];
         out[k]          = r0 + (r1 - r0) * (psi - a0) / (a1 - a0);
       }
-    return from_samples(out, "profile file '" + filename + "'");
-  }
-
-  void
-  Profile::write_csv(const std::string &filename, const std::string &header_comment) const
-  {
-    AtomicFile f(filename);
-    auto      &os = f.stream();
-    if (!header_comment.empty())
-      os << "# " << header_comment << '\n';
-    os << "angle_rad,radius_m\n" << std::setprecision(17);
-    for (unsigned int k = 0; k < n_points(); ++k)
-      os << angle(k) << ',' << r[k] << '\n';
-    f.commit();
+    return from_samples(out, what);
   }
 
   double

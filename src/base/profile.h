@@ -25,19 +25,17 @@ namespace wearlink
     from_samples(std::vector<double> radii, const std::string &what = "profile");
 
     /**
-     * Read a CSV file with columns angle [rad] and radius [m] (a header line is
-     * allowed; '#' starts a comment). Angles must increase strictly within one turn
-     * [a0, a0 + 2π); the profile is resampled linearly onto @p n_points uniform angles
-     * (n_points = 0 keeps the file's count, which then must be uniformly spaced).
-     * Errors (missing file, NaN, fewer than 8 points, non-monotonic angles, radius ≤ 0)
-     * are InputErrors naming the file and line.
+     * A profile from polar points (angle [rad], radius [m]) whose angles increase
+     * strictly within one turn [a0, a0 + 2π): resampled linearly and periodically onto
+     * @p n_points uniform angles (n_points = 0 keeps the count, which then must be
+     * uniformly spaced). InputError (naming @p what) for fewer than 8 points, more than
+     * one turn, or a non-uniform spacing with n_points = 0. Files: io/profile_file.h.
      */
     static Profile
-    read_csv(const std::string &filename, unsigned int n_points = 0);
-
-    /** Write "angle_rad,radius_m" rows (atomically). */
-    void
-    write_csv(const std::string &filename, const std::string &header_comment = "") const;
+    from_polar_points(const std::vector<double> &angles,
+                      const std::vector<double> &radii,
+                      unsigned int               n_points,
+                      const std::string         &what);
 
     unsigned int
     n_points() const

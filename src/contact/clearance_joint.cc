@@ -30,6 +30,7 @@ namespace wearlink::contact
                                                              description.geometry.pin_material,
                                                              description.effective_radius))
   {
+    normal_law->update_geometry(description.geometry);
   }
 
   void
@@ -38,6 +39,7 @@ namespace wearlink::contact
     description.geometry.bore = bore;
     description.geometry.pin  = pin;
     gap                       = Gap(bore, pin);
+    normal_law->update_geometry(description.geometry);
   }
 
   void
@@ -48,6 +50,8 @@ namespace wearlink::contact
     const auto p_bore   = s.point(bb, description.bushing_point);
     const auto p_pin    = s.point(pb, description.pin_point);
     const bool per_area = description.clearance_form == ClearanceForm::per_area && !gap.round();
+    c.bushing_angle     = s.angle(bb);
+    c.pin_angle         = s.angle(pb);
     c.gap               = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
                                      gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
     c.stiffness         = per_area ? wearlink::contact::contact_stiffness(c.gap.bore_radius,
@@ -71,12 +75,8 @@ namespace wearlink::contact
   void
   ClearanceJoint::forces(const Contact &c, double &fn, double &fel, double &ft) const
   {
-    NormalContactInput in;
-    in.penetration      = c.gap.penetration;
-    in.penetration_rate = c.rate;
-    in.impact_velocity  = in_contact ? captured_impact_velocity : c.rate;
-    in.stiffness        = c.stiffness;
-    NormalContactOutput out;
+    const NormalContactInput in = normal_input(c);
+    NormalContactOutput      out;
     normal_law->evaluate(in, out);
     fn  = out.force;
     fel = out.elastic_force;
@@ -107,8 +107,24 @@ namespace wearlink::contact
     contact_kinematics(s, c);
     if (!(c.gap.penetration > 0))
       return 0;
-    const double n = normal_law->exponent();
-    return c.stiffness * std::pow(c.gap.penetration, n + 1) / (n + 1);
+    return normal_law->potential(normal_input(c));
+  }
+
+  NormalContactInput
+  ClearanceJoint::normal_input(const Contact &c) const
+  {
+    NormalContactInput in;
+    in.penetration      = c.gap.penetration;
+    in.penetration_rate = c.rate;
+    in.impact_velocity  = in_contact ? captured_impact_velocity : c.rate;
+    in.stiffness        = c.stiffness;
+    if (normal_law->uses_direction())
+      {
+        const double phi = std::atan2(c.gap.normal[1], c.gap.normal[0]);
+        in.bore_angle    = phi - c.bushing_angle;
+        in.pin_angle     = phi - c.pin_angle;
+      }
+    return in;
   }
 
   double

@@ -49,7 +49,8 @@ namespace wearlink::contact
   struct ClearanceJointDescription
   {
     std::string     name;
-    int             bushing_body = mbs::ground;
+    std::string     normal_force_law = "lankarani-nikravesh"; ///< the law's registry name (for reports)
+    int             bushing_body     = mbs::ground;
     mbs::Vec2       bushing_point{0, 0}; ///< bore centre in the bushing body's frame [m]
     int             pin_body = mbs::ground;
     mbs::Vec2       pin_point{0, 0}; ///< pin centre in the pin body's frame [m]
@@ -142,6 +143,12 @@ namespace wearlink::contact
       description.clearance_form = form;
     }
 
+    const NormalForceLaw &
+    normal_force_law() const
+    {
+      return *normal_law;
+    }
+
     long
     n_force_evaluations() const
     {
@@ -172,8 +179,11 @@ namespace wearlink::contact
       GapResult gap;
       mbs::Vec2 q_bore, q_pin, t;
       double    rate = 0, slide = 0;
-      double    stiffness = 0; ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
+      double    stiffness     = 0;                ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
+      double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
     };
+    NormalContactInput
+    normal_input(const Contact &c) const;
     void
     contact_kinematics(const mbs::StateView &s, Contact &c) const;
     void

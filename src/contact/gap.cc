@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "contact/gap.h"
 
+#include "base/numbers.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,7 +11,7 @@ namespace wearlink::contact
 {
   namespace
   {
-    constexpr double two_pi = 6.283185307179586476925286766559;
+    using numbers::two_pi;
   }
 
   Gap::Gap(const Profile &bore_profile, const Profile &pin_profile)

@@ -3,6 +3,9 @@
 //   hertz               F = K δⁿ
 //   lankarani-nikravesh F = K δⁿ (1 + 3(1 − c_e²) δ̇ / (4 δ̇⁻))
 //   flores              F = K δⁿ (1 + 8(1 − c_e) δ̇ / (5 c_e δ̇⁻))
+//   fe                  F = F_FE(δ, ψ_b, ψ_p) (1 + 3(1 − c_e²) δ̇ / (4 δ̇⁻)): the elastic
+//                       force tabulated from the FE model of the joint's current profiles
+//                       (fe/fe_normal_force_law.h) with the L-N hysteresis on top
 // δ penetration [m], δ̇ its rate [m/s], δ̇⁻ the penetration rate at contact onset, K the
 // stiffness [N/mⁿ] computed by the joint from geometry and materials (seed eq. 10).
 //
@@ -21,7 +24,9 @@
 // exceed the elastic one.
 #pragma once
 
+#include "base/json.h"
 #include "base/registry.h"
+#include "contact/pressure_model.h"
 
 namespace wearlink::contact
 {
@@ -31,6 +36,8 @@ namespace wearlink::contact
     double penetration_rate = 0; ///< δ̇ [m/s]
     double impact_velocity  = 0; ///< δ̇⁻ captured at onset (unguarded) [m/s]
     double stiffness        = 0; ///< K [N/mⁿ]
+    /** Contact direction in the bushing's and in the pin's frame [rad] (laws that use it). */
+    double bore_angle = 0, pin_angle = 0;
   };
 
   struct NormalContactOutput
@@ -46,9 +53,32 @@ namespace wearlink::contact
     virtual ~NormalForceLaw() = default;
     virtual void
     evaluate(const NormalContactInput &in, NormalContactOutput &out) const = 0;
-    /** The exponent n of K δⁿ. */
+    /** The exponent n of K δⁿ (tabulated laws: the nominal one, for reports). */
     virtual double
     exponent() const = 0;
+    /** ∫₀^δ F_elastic ds [J] (default: K δⁿ⁺¹/(n + 1)). */
+    virtual double
+    potential(const NormalContactInput &in) const;
+    /**
+     * The joint's geometry changed (at construction and after every profile update):
+     * laws built from the geometry rebuild here. Default: nothing to do.
+     */
+    virtual void
+    update_geometry(const JointGeometry &)
+    {
+    }
+    /** True if evaluate() needs NormalContactInput's contact-direction angles. */
+    virtual bool
+    uses_direction() const
+    {
+      return false;
+    }
+    /** What the run summary should say about the law (e.g. a table's size); default none. */
+    virtual Json
+    report() const
+    {
+      return Json::object();
+    }
   };
 
   Registry<NormalForceLaw> &

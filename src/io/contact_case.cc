@@ -7,6 +7,7 @@
 #include "base/profile.h"
 #include "base/text.h"
 #include "fe/fe_settings.h"
+#include "io/profile_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -153,7 +154,7 @@ namespace wearlink::io
       if (f.empty())
         return Profile::round(radius, n_points);
       const auto path = std::filesystem::path(f).is_relative() ? base / f : std::filesystem::path(f);
-      Profile    p    = Profile::read_csv(path.string(), n_points);
+      Profile    p    = io::read_profile_csv(path.string(), n_points);
       p.check(what + " profile '" + path.string() + "'");
       return p;
     };

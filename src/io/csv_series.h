@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// One numeric column of a CSV file (header row of names, '#' comment lines, optional
-// quotes), with the time column `t` or `time_s` if there is one: what `wearlink
+// One numeric column of a CSV file (read by io/csv.h; a header row of names is
+// required), with the time column `t` or `time_s` if there is one: what `wearlink
 // lyapunov` reads. Every problem is an InputError naming the file, the line and the
 // column; a field that is not a finite number is refused, never skipped.
 #pragma once

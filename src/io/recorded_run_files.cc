@@ -3,9 +3,8 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "io/csv.h"
 #include "io/json_file.h"
-
-#include <deal.II/base/utilities.h>
 
 #include <fstream>
 #include <iomanip>
@@ -55,34 +54,17 @@ namespace wearlink::io
     analysis::SampledChannels
     read_sampled_csv(const std::string &path, const std::size_t skip)
     {
-      std::ifstream in(path);
-      if (!in)
-        throw InputError("Cannot read the recorded run file '" + path + "'.");
-      analysis::SampledChannels s;
-      std::string               line;
-      std::getline(in, line);
-      const auto header = dealii::Utilities::split_string_list(line, ',');
-      if (header.size() < skip + 1 || header[skip] != "time_s")
+      const CsvTable table = CsvTable::read(path, "recorded run file");
+      if (table.columns().size() < skip + 1 || table.columns()[skip] != "time_s")
         throw InputError("'" + path + "' is not a recorded series of wearlink (no time_s column).");
-      for (std::size_t c = skip + 1; c < header.size(); ++c)
+      table.require_rectangular();
+      analysis::SampledChannels s;
+      s.time = table.numbers(skip);
+      for (std::size_t c = skip + 1; c < table.columns().size(); ++c)
         {
-          s.names.push_back(header[c]);
-          s.units.push_back(unit_of(header[c]));
-        }
-      s.values.assign(s.names.size(), {});
-      std::size_t line_no = 1;
-      while (std::getline(in, line))
-        {
-          ++line_no;
-          if (line.empty())
-            continue;
-          const auto fields = dealii::Utilities::split_string_list(line, ',');
-          if (fields.size() != header.size())
-            throw InputError("'" + path + "', line " + std::to_string(line_no) + ": " + std::to_string(fields.size()) +
-                             " fields, the header has " + std::to_string(header.size()) + ".");
-          s.time.push_back(std::stod(fields[skip]));
-          for (std::size_t c = 0; c < s.names.size(); ++c)
-            s.values[c].push_back(std::stod(fields[skip + 1 + c]));
+          s.names.push_back(table.columns()[c]);
+          s.units.push_back(unit_of(table.columns()[c]));
+          s.values.push_back(table.numbers(c));
         }
       return s;
     }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "analysis/analyses_settings.h"
+#include "base/parameters.h"
 #include "contact/clearance_joint.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
@@ -28,8 +29,8 @@ namespace wearlink::io
   {
     std::string file; ///< the scene file as given
     /** The --set overrides it was read with (to read the same scene again). */
-    std::vector<std::string> overrides;
-    std::string              title;
+    ParameterOverrides overrides;
+    std::string        title;
 
     std::unique_ptr<mbs::Mechanism> mechanism;
     /** The clearance joints (owned by the mechanism as force elements). */
@@ -63,7 +64,7 @@ namespace wearlink::io
    * file, the entry and the allowed values.
    */
   Scene
-  read_scene(const std::string &file, const std::vector<std::string> &overrides = {});
+  read_scene(const std::string &file, const ParameterOverrides &overrides = {});
 
   /**
    * Print every entry a scene can have, with documentation, units and defaults. With a

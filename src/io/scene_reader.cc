@@ -8,6 +8,7 @@
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
 #include "io/analyses_parameters.h"
+#include "io/profile_file.h"
 #include "io/scene.h"
 #include "mbs/assembly.h"
 
@@ -312,10 +313,10 @@ namespace wearlink::io
     // Pre-scan: the names that decide which subsections exist.
 
     void
-    pre_scan(const std::string              &file,
-             const std::vector<std::string> &overrides,
-             std::vector<std::string>       &bodies,
-             std::vector<std::string>       &joints)
+    pre_scan(const std::string        &file,
+             const ParameterOverrides &overrides,
+             std::vector<std::string> &bodies,
+             std::vector<std::string> &joints)
     {
       ParameterHandler prm;
       prm.enter_subsection("Mechanism");
@@ -323,10 +324,10 @@ namespace wearlink::io
       prm.declare_entry("Joints", "", P::Anything());
       prm.leave_subsection();
       read_prm_file(prm, file, true);
-      std::vector<std::string> mech;
-      for (const auto &o : overrides)
+      ParameterOverrides mech;
+      for (const auto &o : overrides.settings())
         if (o.rfind("Mechanism/Bodies", 0) == 0 || o.rfind("Mechanism/Joints", 0) == 0)
-          mech.push_back(o);
+          mech.append({{o}});
       apply_overrides(prm, mech);
       ParameterReader r(prm, file);
       r.enter("Mechanism");
@@ -440,7 +441,7 @@ namespace wearlink::io
         const std::string path = resolve_relative(r.file(), f);
         if (!std::filesystem::exists(path))
           r.fail(entry, "the file '" + path + "' does not exist");
-        return Profile::read_csv(path, n_areas);
+        return io::read_profile_csv(path, n_areas);
       };
       d.geometry.bore = profile("Bore profile file", bore);
       d.geometry.pin  = profile("Pin profile file", pin_radius);
@@ -461,7 +462,8 @@ namespace wearlink::io
       d.effective_radius = r.get("Effective radius") == "internal" ? contact::EffectiveRadius::internal :
                                                                      contact::EffectiveRadius::seed_printed;
 
-      auto normal = contact::normal_force_laws().create(r.get("Normal force law"), r, "Normal force law");
+      d.normal_force_law = r.get("Normal force law");
+      auto normal        = contact::normal_force_laws().create(d.normal_force_law, r, "Normal force law");
       std::unique_ptr<contact::FrictionLaw> friction;
       if (r.get("Friction law") != "none")
         friction = contact::friction_laws().create(r.get("Friction law"), r, "Friction law");
@@ -617,7 +619,7 @@ namespace wearlink::io
   } // namespace
 
   Scene
-  read_scene(const std::string &file, const std::vector<std::string> &overrides)
+  read_scene(const std::string &file, const ParameterOverrides &overrides)
   {
     std::vector<std::string> bodies, joints;
     pre_scan(file, overrides, bodies, joints);

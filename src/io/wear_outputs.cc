@@ -3,10 +3,14 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
+#include "io/csv.h"
 #include "io/plot.h"
+#include "io/profile_file.h"
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -15,29 +19,21 @@ namespace wearlink::io
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using numbers::pi;
 
-    /** Read a response CSV written by ResponseRecorder::write_csv (for the plot). */
+    /** Read a response CSV written by ResponseRecorder::write_csv (for the plot); false if absent. */
     bool
     read_response(const std::string &path, std::vector<double> &t, std::vector<double> &ax, std::vector<double> &ay)
     {
-      std::ifstream in(path);
-      if (!in)
+      if (!std::filesystem::exists(path))
         return false;
-      std::string line;
-      std::getline(in, line);
-      while (std::getline(in, line))
-        {
-          std::replace(line.begin(), line.end(), ',', ' ');
-          std::istringstream ls(line);
-          double             a, b, c, d, e;
-          if (ls >> a >> b >> c >> d >> e)
-            {
-              t.push_back(a);
-              ax.push_back(d);
-              ay.push_back(e);
-            }
-        }
+      const CsvTable table = CsvTable::read(path, "response file");
+      table.require_rectangular();
+      if (table.columns().size() != 5)
+        throw InputError("'" + path + "' is not a response file of wearlink (time, x, y, a_x, a_y columns).");
+      t  = table.numbers(0);
+      ax = table.numbers(3);
+      ay = table.numbers(4);
       return true;
     }
 
@@ -288,8 +284,8 @@ namespace wearlink::io
       write_profiles_msh(dir + "/profiles_" + j.name + ".msh", j.bore, j.pin);
       // The worn profiles in the scene's profile-file format, so that a scene can
       // start from them ('Bore profile file', 'Pin profile file').
-      j.bore.write_csv(dir + "/bore_" + j.name + ".csv", "worn bore of joint " + j.name + ", bushing frame");
-      j.pin.write_csv(dir + "/pin_" + j.name + ".csv", "worn pin of joint " + j.name + ", pin frame");
+      write_profile_csv(j.bore, dir + "/bore_" + j.name + ".csv", "worn bore of joint " + j.name + ", bushing frame");
+      write_profile_csv(j.pin, dir + "/pin_" + j.name + ".csv", "worn pin of joint " + j.name + ", pin frame");
       // Each surface at its own magnification (stated in its title), unless fixed.
       auto magnification = [&](double depth) {
         const double m = scene.wear_loop.magnification;

@@ -2,6 +2,7 @@
 #include "wear/archard.h"
 
 #include "base/effect_ledger.h"
+#include "base/numbers.h"
 
 #include <cmath>
 
@@ -9,7 +10,7 @@ namespace wearlink::wear
 {
   namespace
   {
-    constexpr double two_pi = 6.283185307179586476925286766559;
+    using numbers::two_pi;
   }
 
   ArchardAccumulator::ArchardAccumulator(const contact::JointGeometry &g,

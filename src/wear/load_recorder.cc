@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "wear/load_recorder.h"
 
+#include "base/numbers.h"
+
 #include <cmath>
 
 namespace wearlink::wear
 {
   namespace
   {
-    constexpr double two_pi = 6.283185307179586476925286766559;
+    using numbers::two_pi;
 
     mbs::StateView
     view(const Eigen::VectorXd &y, unsigned int n)

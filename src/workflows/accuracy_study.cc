@@ -141,15 +141,15 @@ namespace wearlink::workflows
       return p;
     }
 
-    /** "Entry=v" overrides of value @p v of knob @p k. */
-    std::vector<std::string>
-    settings_of(const Knob &k, const std::vector<std::string> &v)
+    /** @p base, then the settings of value @p v of knob @p k. */
+    ParameterOverrides
+    with_knob_value(const ParameterOverrides &base, const Knob &k, const std::vector<std::string> &v)
     {
-      std::vector<std::string> s;
+      ParameterOverrides o = base;
       for (std::size_t p = 0; p < k.targets.size(); ++p)
         for (const auto &t : k.targets[p])
-          s.push_back(t + "=" + v[p]);
-      return s;
+          o.set(t, v[p]);
+      return o;
     }
 
     // ------------------------------------------------------------------------------
@@ -190,7 +190,7 @@ namespace wearlink::workflows
     };
 
     Measurement
-    measure(const std::string &file, const std::vector<std::string> &overrides)
+    measure(const std::string &file, const ParameterOverrides &overrides)
     {
       Measurement m;
       const auto  t0 = std::chrono::steady_clock::now();
@@ -669,45 +669,28 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
      * the user sets anyway) in front of the user's overrides (which win). The scene as
      * the user gave it is read first (an InputError there is the user's).
      */
-    std::vector<std::string>
+    ParameterOverrides
     base_overrides(const std::string &scene_file, const StudyRequest &request)
     {
-      // The scene as the user gave it (an InputError here is the user's), then --quick's
-      // shortening in front of the user's overrides (which win).
-      std::vector<std::string> base;
+      const ParameterOverrides user(request.overrides);
+      ParameterOverrides       quick;
       {
-        io::Scene scene = io::read_scene(scene_file, request.overrides);
-        if (request.quick)
-          {
-            if (has_wear(scene))
-              base = {"Wear/Cycles per iteration=1", "Wear/Number of iterations=2"};
-            else
-              base = {"Simulation/End time=" +
-                      format_number(scene.start_time + std::min(1.0, scene.end_time - scene.start_time))};
-          }
+        io::Scene scene = io::read_scene(scene_file, user);
+        if (request.quick && has_wear(scene))
+          quick.set("Wear/Cycles per iteration", "1").set("Wear/Number of iterations", "2");
+        else if (request.quick)
+          quick.set("Simulation/End time",
+                    format_number(scene.start_time + std::min(1.0, scene.end_time - scene.start_time)));
       }
-      // A --quick shortening of an entry the user sets anyway is left out.
-      base.erase(std::remove_if(base.begin(),
-                                base.end(),
-                                [&](const std::string &q) {
-                                  const std::string entry = q.substr(0, q.find('='));
-                                  for (const auto &o : request.overrides)
-                                    if (o.substr(0, o.find('=')) == entry)
-                                      return true;
-                                  return false;
-                                }),
-                 base.end());
-      base.insert(base.end(), request.overrides.begin(), request.overrides.end());
-
-      return base;
+      return quick.remove_paths_set_in(user).append(user);
     }
 
     /** The knobs studied (selection and replacement values), all checked before the first run. */
     std::vector<Knob>
-    selected_knobs(std::vector<Knob>               all,
-                   const std::string              &scene_file,
-                   const StudyRequest             &request,
-                   const std::vector<std::string> &base)
+    selected_knobs(std::vector<Knob>         all,
+                   const std::string        &scene_file,
+                   const StudyRequest       &request,
+                   const ParameterOverrides &base)
     {
       // Selection and replacement values, all checked before the first run.
       std::vector<Knob>        knobs;
@@ -752,10 +735,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                                  ").");
               it->values.push_back(parts);
               // A value the user typed must make a valid scene.
-              auto o = base;
-              for (const auto &s : settings_of(*it, parts))
-                o.push_back(s);
-              io::read_scene(scene_file, o);
+              io::read_scene(scene_file, with_knob_value(base, *it, parts));
             }
           if (it->values.size() < 2)
             throw InputError("The accuracy knob '" + name + "' needs at least 2 values (the last is the reference).");
@@ -814,11 +794,11 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     AccuracyStudy study;
     study.scene_file = scene_file;
 
-    const std::vector<std::string> base = base_overrides(scene_file, request);
-    study.base_overrides                = base;
-    io::Scene scene                     = io::read_scene(scene_file, base);
-    study.wears                         = has_wear(scene);
-    std::vector<Knob> all               = knobs_for(scene, request.quick);
+    const ParameterOverrides base = base_overrides(scene_file, request);
+    study.base_overrides          = base.settings();
+    io::Scene scene               = io::read_scene(scene_file, base);
+    study.wears                   = has_wear(scene);
+    std::vector<Knob> all         = knobs_for(scene, request.quick);
 
     const std::vector<Knob> knobs = selected_knobs(all, scene_file, request, base);
 
@@ -833,10 +813,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         std::vector<StudyRow>    rows;
         for (std::size_t i = 0; i < k.values.size(); ++i)
           {
-            auto o = base;
-            for (const auto &s : settings_of(k, k.values[i]))
-              o.push_back(s);
-            ms.push_back(measure(scene_file, o));
+            ms.push_back(measure(scene_file, with_knob_value(base, k, k.values[i])));
             StudyRow r;
             r.knob         = k.name;
             r.value        = join(k.values[i], "; ");

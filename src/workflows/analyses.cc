@@ -6,6 +6,7 @@
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "base/parameters.h"
 #include "base/text.h"
 #include "io/analyses_parameters.h"
@@ -28,7 +29,7 @@ namespace wearlink::workflows
   {
     namespace P = dealii::Patterns;
 
-    constexpr double two_pi = 6.28318530717958647692;
+    using numbers::two_pi;
 
     const char *const analysis_names = "phase-portrait|poincare|lyapunov";
 

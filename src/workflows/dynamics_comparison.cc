@@ -69,9 +69,9 @@ namespace wearlink::workflows
               out.note     = "unresolved: separation saturates within 2 delays";
             }
         }
-      catch (const InputError &e)
+      catch (const EstimationError &e)
         {
-          out.note = e.message();
+          out.note = e.message(); // this series at this embedding gives no estimate: a missing value, not an error
         }
       return out;
     }

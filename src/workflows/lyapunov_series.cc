@@ -156,7 +156,7 @@ namespace wearlink::workflows
       {
         est = estimate_largest_lyapunov_exponent(series.values, settings);
       }
-    catch (const InputError &e)
+    catch (const Error &e) // InputError (settings) or EstimationError (this series): the user's file
       {
         throw InputError("Column '" + column + "' of '" + file + "': " + e.message());
       }

@@ -22,6 +22,16 @@ namespace wearlink::workflows
   {
     constexpr double inf = std::numeric_limits<double>::infinity();
 
+    /** The pressure model of joint @p joint ("none" if the joint does not wear). */
+    std::string
+    pressure_model_of(const io::Scene &scene, const std::string &joint)
+    {
+      for (const auto &w : scene.wear)
+        if (w->joint == joint)
+          return w->pressure_model;
+      return "none";
+    }
+
     struct BodyExtremes
     {
       double min_x = inf, max_x = -inf, min_y = inf, max_y = -inf;
@@ -203,7 +213,12 @@ namespace wearlink::workflows
             o["fraction_in_contact"]  = x.contact_time / std::max(1e-300, sim.time() - t_start);
             o["impacts"]              = cj->n_impacts() - x.impacts_at_start;
             o["force_evaluations"]    = cj->n_force_evaluations() - x.evaluations_at_start;
-            j[cj->name()]             = o;
+            o["normal_force_law"]     = cj->get_description().normal_force_law;
+            o["pressure_model"]       = pressure_model_of(scene, cj->name());
+            const Json law            = cj->normal_force_law().report(); // outlives the loop below
+            for (const auto &[key, value] : law.items())
+              o[key] = value;
+            j[cj->name()] = o;
           }
         s["clearance_joints"] = j;
         return s;

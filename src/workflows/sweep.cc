@@ -121,21 +121,21 @@ namespace wearlink::workflows
      * its own analyses off, a Poincaré recorder on @p channel.
      */
     MemberResult
-    run_member(const std::string              &file,
-               const std::vector<std::string> &base_overrides,
-               const std::string              &parameter,
-               const std::string              &channel,
-               const std::size_t               index,
-               const double                    value,
-               const int                       rank)
+    run_member(const std::string        &file,
+               const ParameterOverrides &base_overrides,
+               const std::string        &parameter,
+               const std::string        &channel,
+               const std::size_t         index,
+               const double              value,
+               const int                 rank)
     {
       MemberResult m;
-      m.index              = index;
-      m.value              = value;
-      m.rank               = rank;
-      const auto start     = std::chrono::steady_clock::now();
-      auto       overrides = base_overrides;
-      overrides.push_back(parameter + "=" + format_number(value));
+      m.index                      = index;
+      m.value                      = value;
+      m.rank                       = rank;
+      const auto         start     = std::chrono::steady_clock::now();
+      ParameterOverrides overrides = base_overrides;
+      overrides.set(parameter, format_number(value));
       EffectLedger::instance().reset();
       std::unique_ptr<io::Scene> scene;
       try

@@ -20,6 +20,8 @@
 // The two CSV files hold no timings or ranks, so serial and MPI runs give equal files.
 #pragma once
 
+#include "base/parameters.h"
+
 #include <string>
 #include <vector>
 
@@ -27,13 +29,13 @@ namespace wearlink::workflows
 {
   struct SweepRequest
   {
-    std::string              file;      ///< the scene
-    std::string              parameter; ///< "Section/Entry"
-    std::vector<double>      values;    ///< one member each
-    std::string              channel;   ///< empty: the first clearance joint's e_x
-    std::vector<std::string> overrides; ///< --set, applied to every member
-    std::string              output_directory;
-    bool                     quiet = false; ///< no line per member
+    std::string         file;      ///< the scene
+    std::string         parameter; ///< "Section/Entry"
+    std::vector<double> values;    ///< one member each
+    std::string         channel;   ///< empty: the first clearance joint's e_x
+    ParameterOverrides  overrides; ///< --set, applied to every member
+    std::string         output_directory;
+    bool                quiet = false; ///< no line per member
   };
 
   /**

@@ -67,27 +67,18 @@ namespace wearlink::workflows
       const std::string abs_dir = std::filesystem::absolute(dir).string();
       for (int k = 0; k < 2; ++k)
         {
-          std::vector<std::string> o = scene.overrides;
-          std::ostringstream       v;
-          v << std::setprecision(17);
-          auto set = [&](const std::string &entry, const double value) {
-            v.str("");
-            v << value;
-            o.push_back(entry + "=" + v.str());
-          };
-          o.push_back("Analyses/List of analyses=lyapunov");
-          o.push_back("Analyses/Lyapunov/Methods=two-trajectory");
-          o.push_back("Output/Time series=false");
-          set("Simulation/End time", scene.start_time + a.transient + out.duration);
-          set("Integrator/Relative tolerance", a.two_trajectory_tolerance);
-          set("Integrator/Position tolerance", is.absolute_tolerance[0] * scale);
-          set("Integrator/Velocity tolerance", is.absolute_tolerance[1] * scale);
+          ParameterOverrides o = scene.overrides;
+          o.set("Analyses/List of analyses", "lyapunov")
+            .set("Analyses/Lyapunov/Methods", "two-trajectory")
+            .set("Output/Time series", "false")
+            .set("Simulation/End time", scene.start_time + a.transient + out.duration)
+            .set("Integrator/Relative tolerance", a.two_trajectory_tolerance)
+            .set("Integrator/Position tolerance", is.absolute_tolerance[0] * scale)
+            .set("Integrator/Velocity tolerance", is.absolute_tolerance[1] * scale);
           if (k == 1)
             for (const auto &j : st.joints)
-              {
-                o.push_back("Joint " + j.name + "/Clearance/Bore profile file=" + abs_dir + "/bore_" + j.name + ".csv");
-                o.push_back("Joint " + j.name + "/Clearance/Pin profile file=" + abs_dir + "/pin_" + j.name + ".csv");
-              }
+              o.set("Joint " + j.name + "/Clearance/Bore profile file", abs_dir + "/bore_" + j.name + ".csv")
+                .set("Joint " + j.name + "/Clearance/Pin profile file", abs_dir + "/pin_" + j.name + ".csv");
           if (progress)
             std::cerr << "[wearlink] two-trajectory exponent " << (k == 0 ? "before" : "after") << " wear, "
                       << a.two_trajectory_cycles << " periods at relative tolerance " << a.two_trajectory_tolerance

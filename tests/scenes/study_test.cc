@@ -15,6 +15,7 @@
 //    its reference.
 //  - Input errors (unknown knob, a knob the scene does not use, a malformed study file)
 //    exit with status 2 before any run and write nothing.
+#include "io/csv.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -34,40 +35,18 @@ namespace
 {
   using Row = std::map<std::string, std::string>;
 
-  /** accuracy.csv as rows of column → text (double-quoted fields may hold commas). */
+  /** accuracy.csv as rows of column → text (read by io/csv.h; quoted fields may hold commas). */
   std::vector<Row>
   read_csv(const std::string &path)
   {
-    std::ifstream                         in(path);
-    std::vector<std::vector<std::string>> table;
-    for (std::string line; std::getline(in, line);)
-      {
-        std::vector<std::string> fields(1);
-        bool                     quoted = false;
-        for (std::size_t i = 0; i < line.size(); ++i)
-          {
-            const char c = line[i];
-            if (c == '"')
-              {
-                if (quoted && i + 1 < line.size() && line[i + 1] == '"')
-                  fields.back() += line[++i];
-                else
-                  quoted = !quoted;
-              }
-            else if (c == ',' && !quoted)
-              fields.emplace_back();
-            else
-              fields.back() += c;
-          }
-        table.push_back(fields);
-      }
+    const io::CsvTable table = io::CsvTable::read(path, "accuracy table");
+    EXPECT_NO_THROW(table.require_rectangular()) << path;
     std::vector<Row> rows;
-    for (std::size_t r = 1; r < table.size(); ++r)
+    for (std::size_t r = 0; r < table.n_rows(); ++r)
       {
-        EXPECT_EQ(table[r].size(), table[0].size()) << "row " << r << " of " << path;
         Row row;
-        for (std::size_t c = 0; c < table[0].size() && c < table[r].size(); ++c)
-          row[table[0][c]] = table[r][c];
+        for (std::size_t c = 0; c < table.columns().size(); ++c)
+          row[table.columns()[c]] = table.field(r, c);
         rows.push_back(row);
       }
     return rows;

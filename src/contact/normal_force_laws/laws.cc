@@ -109,6 +109,13 @@ namespace wearlink::contact
     };
   } // namespace
 
+  double
+  NormalForceLaw::potential(const NormalContactInput &in) const
+  {
+    const double n = exponent();
+    return in.stiffness * std::pow(in.penetration, n + 1) / (n + 1);
+  }
+
   Registry<NormalForceLaw> &
   normal_force_laws()
   {

@@ -11,6 +11,7 @@
 // so Σ p̄_k L R Δψ = F_n exactly even when the strip is narrower than one area (a fresh
 // joint: b ≈ 0.1 mm against 0.2 mm areas at 360 areas). The worn shape enters only
 // through the local radii: that is this model's limitation (Mukras et al. 2010).
+#include "base/numbers.h"
 #include "base/parameters.h"
 #include "contact/hertz.h"
 #include "contact/pressure_model.h"
@@ -22,7 +23,7 @@ namespace wearlink::contact
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using numbers::pi;
 
     /** ∫_{-b}^{x} p0 √(1 − s²/b²) ds / (p0 b), clamped to the strip. */
     double

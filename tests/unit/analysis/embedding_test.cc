@@ -131,7 +131,9 @@ TEST(FalseNearestNeighbours, SineNeedsTwoDimensions)
 
 TEST(Embedding, RejectsConstantAndShortSeries)
 {
-  EXPECT_THROW(choose_delay(std::vector<double>(1000, 3.0)), wearlink::InputError);
-  EXPECT_THROW(choose_delay(std::vector<double>(5, 1.0)), wearlink::InputError);
-  EXPECT_THROW(choose_dimension(ref::sine(40, 1.0, 10.0), 10), wearlink::InputError);
+  // What the series cannot give is an EstimationError; a delay of 0 is a bad setting.
+  EXPECT_THROW(choose_delay(std::vector<double>(1000, 3.0)), wearlink::EstimationError);
+  EXPECT_THROW(choose_delay(std::vector<double>(5, 1.0)), wearlink::EstimationError);
+  EXPECT_THROW(choose_dimension(ref::sine(40, 1.0, 10.0), 10), wearlink::EstimationError);
+  EXPECT_THROW(choose_dimension(ref::sine(400, 1.0, 10.0), 0), wearlink::InputError);
 }

@@ -96,3 +96,20 @@ TEST(Parameters, OverridesAreChecked)
   EXPECT_THROW(apply_overrides(prm, {"Nope/Radial clearance=1"}), InputError);
   EXPECT_THROW(apply_overrides(prm, {"Joint/Radial clearance"}), InputError);
 }
+
+// Settings made by the program go through one typed builder: numbers to 17 significant
+// digits (they read back exactly), later settings win, and a path the user sets removes
+// the program's own setting of it.
+TEST(Parameters, OverridesBuilderFormatsNumbersOnceAndLetsTheUserWin)
+{
+  wearlink::ParameterOverrides o;
+  o.set("Simulation/End time", 0.1 + 0.2).set("Output/Time series", "false");
+  EXPECT_EQ(o.settings().front(), "Simulation/End time=0.30000000000000004");
+  EXPECT_EQ(std::stod(o.settings().front().substr(o.settings().front().find('=') + 1)), 0.1 + 0.2);
+  EXPECT_TRUE(o.sets(" Simulation/End time "));
+  const wearlink::ParameterOverrides user{"Simulation/End time = 2"};
+  o.remove_paths_set_in(user).append(user);
+  ASSERT_EQ(o.settings().size(), 2u);
+  EXPECT_EQ(o.settings().back(), "Simulation/End time = 2");
+  EXPECT_EQ(wearlink::ParameterOverrides::path_of(o.settings().back()), "Simulation/End time");
+}

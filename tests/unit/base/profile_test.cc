@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Discrete profiles R*(ψ): periodic linear interpolation, enclosed area, CSV input with
-// the error paths the FE and wear layers rely on.
+// Discrete profiles R*(ψ): periodic linear interpolation, enclosed area, resampling of
+// polar points with the error paths the FE and wear layers rely on (files: unit/io).
 #include "base/exceptions.h"
 #include "base/profile.h"
-#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
+#include <vector>
 
 using wearlink::InputError;
 using wearlink::Profile;
@@ -17,14 +16,6 @@ namespace
 {
   constexpr double pi = 3.14159265358979323846;
 
-  std::string
-  write(const std::string &name, const std::string &text)
-  {
-    const std::string dir  = wearlink::testing::fresh_directory("profile_" + name);
-    const std::string file = dir + "/" + name + ".csv";
-    std::ofstream(file) << text;
-    return file;
-  }
 } // namespace
 
 TEST(Profile, RoundProfileHasPolygonArea)
@@ -50,50 +41,35 @@ TEST(Profile, InterpolatesLinearlyAndPeriodically)
   EXPECT_NEAR(p.slope(0.5 * h), 1.0 / h, 1e-12);
 }
 
-TEST(Profile, ReadsAndResamplesCsv)
+TEST(Profile, ResamplesPolarPoints)
 {
   // 16 points of R = 1 + 0.1 cos ψ; resampled onto 32 points the values at the old
   // nodes are unchanged and the new mid-points are linear averages.
-  std::string text = "angle_rad,radius_m\n";
+  std::vector<double> a, r;
   for (int k = 0; k < 16; ++k)
-    text += std::to_string(2 * pi * k / 16) + "," + std::to_string(1 + 0.1 * std::cos(2 * pi * k / 16)) + "\n";
-  const Profile p = Profile::read_csv(write("cos", text), 32);
+    {
+      a.push_back(2 * pi * k / 16);
+      r.push_back(1 + 0.1 * std::cos(2 * pi * k / 16));
+    }
+  const Profile p = Profile::from_polar_points(a, r, 32, "test profile");
   ASSERT_EQ(p.n_points(), 32u);
-  EXPECT_NEAR(p[2], 1 + 0.1 * std::cos(2 * pi * 1 / 16), 1e-6);
-  EXPECT_NEAR(p[1], 0.5 * (p[0] + p[2]), 1e-6);
+  EXPECT_DOUBLE_EQ(p[2], r[1]);
+  EXPECT_NEAR(p[1], 0.5 * (p[0] + p[2]), 1e-15);
+  // Shifted by a quarter step and kept at 16 points: a non-uniform grid is refused.
+  a[5] += 0.01;
+  EXPECT_THROW(Profile::from_polar_points(a, r, 0, "test profile"), InputError);
 }
 
-TEST(Profile, RejectsBadFiles)
+TEST(Profile, RejectsBadPoints)
 {
-  EXPECT_THROW(Profile::read_csv("/nonexistent/profile.csv"), InputError);
-  std::string few = "";
-  for (int k = 0; k < 5; ++k)
-    few += std::to_string(k * 0.5) + ",1\n";
-  EXPECT_THROW(Profile::read_csv(write("few", few)), InputError);
-  std::string nan = "";
-  for (int k = 0; k < 10; ++k)
-    nan += std::to_string(k * 0.5) + (k == 3 ? ",nan\n" : ",1\n");
-  EXPECT_THROW(Profile::read_csv(write("nan", nan), 16), InputError);
-  std::string back = "";
-  for (int k = 0; k < 10; ++k)
-    back += std::to_string(k == 4 ? 0.1 : k * 0.5) + ",1\n";
-  EXPECT_THROW(Profile::read_csv(write("back", back), 16), InputError);
+  std::vector<double> a{0, 0.5, 1.0, 1.5, 2.0}, r(5, 1.0);
+  EXPECT_THROW(Profile::from_polar_points(a, r, 16, "few"), InputError); // fewer than 8
+  a = {0, 0.5, 1.0, 1.5, 0.1, 2.5, 3.0, 3.5, 4.0, 4.5};
+  r.assign(10, 1.0);
+  EXPECT_THROW(Profile::from_polar_points(a, r, 16, "back"), InputError); // turns back
+  a = {0, 1, 2, 3, 4, 5, 6, 7};
+  r.assign(8, 1.0);
+  EXPECT_THROW(Profile::from_polar_points(a, r, 16, "two turns"), InputError); // > 2π
   EXPECT_THROW(Profile::round(-1, 16), InputError);
   EXPECT_THROW(Profile::round(1, 4), InputError);
-}
-
-// A profile written by write_csv (comment line, then the header) reads back exactly:
-// the worn profiles of a wear run can start another scene.
-TEST(Profile, WrittenProfileReadsBack)
-{
-  std::vector<double> r(36);
-  for (unsigned k = 0; k < r.size(); ++k)
-    r[k] = 0.012 + 1e-6 * std::sin(0.3 * k);
-  const auto        p   = wearlink::Profile::from_samples(r);
-  const std::string dir = wearlink::testing::fresh_directory("profile_round_trip");
-  p.write_csv(dir + "/p.csv", "a worn bore");
-  const auto q = wearlink::Profile::read_csv(dir + "/p.csv");
-  ASSERT_EQ(q.n_points(), p.n_points());
-  for (unsigned k = 0; k < r.size(); ++k)
-    EXPECT_EQ(q[k], p[k]);
 }

@@ -33,7 +33,10 @@ namespace
     prm.enter_subsection(name);
     for (const auto &[entry, value] :
          std::vector<std::pair<std::string, std::string>>{{"Restitution coefficient", std::to_string(restitution)},
-                                                          {"Friction coefficient", "0.2"}})
+                                                          {"Friction coefficient", "0.2"},
+                                                          // laws built from an FE model: a coarse one, no disk cache
+                                                          {"Surface element size", "2e-4"},
+                                                          {"Table cache", "false"}})
       try
         {
           prm.set(entry, value);
@@ -56,7 +59,15 @@ namespace
 
 TEST_P(NormalLawContract, ZeroNonNegativeContinuousMonotoneAndConservative)
 {
-  const auto   law  = make(normal_force_laws(), GetParam());
+  const auto law = make(normal_force_laws(), GetParam());
+  // A round steel pair (R1 = 12 mm, c = 0.5 mm, L = 10 mm) for laws built from the geometry.
+  JointGeometry g;
+  g.bore         = Profile::round(0.012, 360);
+  g.pin          = Profile::round(0.0115, 360);
+  g.axial_length = 0.01;
+  g.bushing      = {207e9, 0.3};
+  g.pin_material = {207e9, 0.3};
+  law->update_geometry(g);
   const double K    = 7.97e10; // nine-bar joint, N/m^1.5
   auto         eval = [&](double d, double rate, double impact) {
     NormalContactInput in;
@@ -66,6 +77,7 @@ TEST_P(NormalLawContract, ZeroNonNegativeContinuousMonotoneAndConservative)
     in.stiffness        = K;
     NormalContactOutput out;
     law->evaluate(in, out);
+    out.potential = law->potential(in);
     return out;
   };
   EXPECT_EQ(eval(0, 0.1, 0.1).force, 0.0);

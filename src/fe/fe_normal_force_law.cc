@@ -1,0 +1,374 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "fe/fe_normal_force_law.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/numbers.h"
+#include "base/timings.h"
+#include "contact/gap.h"
+#include "fe/pin_bushing_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <unistd.h>
+
+namespace wearlink::fe
+{
+  namespace
+  {
+    using numbers::pi;
+    using numbers::two_pi;
+    namespace fs = std::filesystem;
+
+    constexpr const char *cache_format  = "wearlink-fe-force-approach-table";
+    constexpr int         cache_version = 1;
+    /**
+     * Half-angle of the refined arc of a round pair's mesh, centred on the one tabulated
+     * direction [rad]: 0.6π (108°) holds contact arcs up to the 90° validity limit of
+     * the model with a margin for the stresses beyond the arc's ends.
+     */
+    constexpr double round_refined_half_angle = 0.6 * pi;
+
+    /** Everything the table depends on, as text (the cache key). */
+    std::string
+    geometry_key(const contact::JointGeometry &g, const FeForceLawSettings &s)
+    {
+      std::ostringstream k;
+      k << std::setprecision(17) << "bore";
+      for (const double r : g.bore.samples())
+        k << ' ' << r;
+      k << "\npin";
+      for (const double r : g.pin.samples())
+        k << ' ' << r;
+      const FeSettings &f = s.fe;
+      k << "\nL " << g.axial_length << "\nE " << g.bushing.youngs_modulus << ' ' << g.bushing.poisson_ratio << ' '
+        << g.pin_material.youngs_modulus << ' ' << g.pin_material.poisson_ratio << "\nfe " << f.surface_element_size
+        << ' ' << f.max_element_size << ' ' << f.size_growth << ' ' << f.refined_layer_thickness << ' '
+        << f.core_radius_fraction << ' ' << f.outer_radius << ' ' << f.outer_radius_ratio << ' ' << f.degree << ' '
+        << f.refinements << "\ntable " << s.min_force << ' ' << s.max_force << ' ' << s.n_levels << ' '
+        << s.n_bore_directions << ' ' << s.n_pin_directions << '\n';
+      return k.str();
+    }
+
+    std::string
+    cache_directory()
+    {
+      if (const char *d = std::getenv("WEARLINK_CACHE_DIR"); d != nullptr && *d != '\0')
+        return d;
+      if (const char *d = std::getenv("XDG_CACHE_HOME"); d != nullptr && *d != '\0')
+        return std::string(d) + "/wearlink";
+      if (const char *h = std::getenv("HOME"); h != nullptr && *h != '\0')
+        return std::string(h) + "/.cache/wearlink";
+      return (fs::temp_directory_path() / "wearlink-cache").string();
+    }
+
+    std::string
+    cache_file(const std::string &key)
+    {
+      std::ostringstream name;
+      name << "fe_force_table_" << std::hex << std::hash<std::string>()(key) << '_' << std::dec << key.size()
+           << ".json";
+      return cache_directory() + "/" + name.str();
+    }
+
+    /** The cached table for @p key, or an empty one (missing, damaged, other key). */
+    contact::ForceApproachTable
+    read_cached(const std::string &file, const std::string &key, TableBuild &build)
+    {
+      std::ifstream in(file);
+      if (!in)
+        return {};
+      const Json j = Json::parse(in, nullptr, false);
+      try
+        {
+          if (j.is_discarded() || j.value("format", "") != cache_format || j.value("version", 0) != cache_version ||
+              j.value("key", "") != key)
+            return {};
+          build.n_solves       = j.at("solves").get<unsigned int>();
+          build.max_half_angle = j.at("max_half_angle_rad").get<double>();
+          return contact::ForceApproachTable(j.at("forces_N").get<std::vector<double>>(),
+                                             j.at("bore_directions").get<unsigned int>(),
+                                             j.at("pin_directions").get<unsigned int>(),
+                                             j.at("approach_m").get<std::vector<double>>());
+        }
+      catch (const std::exception &) // a damaged entry: rebuild (the file is overwritten)
+        {
+          return {};
+        }
+    }
+
+    void
+    write_cached(const std::string                 &file,
+                 const std::string                 &key,
+                 const contact::ForceApproachTable &t,
+                 const TableBuild                  &b)
+    {
+      Json j;
+      j["format"]             = cache_format;
+      j["version"]            = cache_version;
+      j["key"]                = key;
+      j["forces_N"]           = t.forces();
+      j["bore_directions"]    = t.n_bore_directions();
+      j["pin_directions"]     = t.n_pin_directions();
+      j["approach_m"]         = t.approaches();
+      j["solves"]             = b.n_solves;
+      j["max_half_angle_rad"] = b.max_half_angle;
+      try
+        {
+          make_output_directory(fs::path(file).parent_path().string());
+          write_file_atomically(file, j.dump());
+        }
+      catch (const std::exception &e) // a cache that cannot be written only costs time
+        {
+          std::cerr << "[wearlink] warning: cannot write the FE force-table cache '" << file << "': " << e.what()
+                    << '\n';
+        }
+    }
+
+    /** A temporary directory for the table's mesh, removed with this object. */
+    struct ScratchDirectory
+    {
+      std::string path;
+      ScratchDirectory()
+        : path((fs::temp_directory_path() / ("wearlink-fe-table-" + std::to_string(::getpid()) + "-" +
+                                             std::to_string(reinterpret_cast<std::uintptr_t>(this))))
+                 .string())
+      {
+        fs::create_directories(path);
+      }
+      ~ScratchDirectory()
+      {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+      }
+    };
+
+    /** The FE approaches of every direction and level (the expensive part). */
+    std::vector<double>
+    solve_table(const contact::JointGeometry &g,
+                const FeForceLawSettings     &s,
+                const std::vector<double>    &forces,
+                const unsigned int            n_b,
+                const unsigned int            n_p,
+                TableBuild                   &build)
+    {
+      FeSettings fe = s.fe;
+      if (n_b == 1 && n_p == 1)
+        {
+          fe.refined_arc_half_angle  = round_refined_half_angle;
+          fe.refined_arc_bore_centre = 0;
+          fe.refined_arc_pin_centre  = 0;
+        }
+      const ScratchDirectory scratch;
+      PinBushingModel        model(g, fe, scratch.path + "/pin_bushing.msh");
+      const contact::Gap     gap(g.bore, g.pin);
+      std::vector<double>    approach;
+      approach.reserve(std::size_t(n_b) * n_p * forces.size());
+      for (unsigned int i = 0; i < n_b; ++i)
+        for (unsigned int j = 0; j < n_p; ++j)
+          {
+            const double psi_b = two_pi * i / n_b, psi_p = two_pi * j / n_p;
+            LoadCase     lc;
+            lc.control       = Control::force;
+            lc.bushing_angle = 0;
+            lc.pin_angle     = psi_b - psi_p; // the contact direction psi_b meets the pin at psi_p
+            for (const double F : forces)
+              {
+                lc.load               = {F * std::cos(psi_b), F * std::sin(psi_b)};
+                const ContactResult r = model.solve(lc, SolverKind::condensed);
+                const auto          e = r.pin_displacement;
+                const double        d = gap.evaluate(mbs::Vec2(e[0], e[1]), 0.0, lc.pin_angle).penetration;
+                if (!approach.empty() && approach.size() % forces.size() != 0 && !(d > approach.back()))
+                  throw NumericalError(
+                    "The FE force–approach table is not monotone: in the direction " + std::to_string(psi_b) +
+                    " rad (bushing frame), " + std::to_string(psi_p) + " rad (pin frame) the approach at " +
+                    std::to_string(F) + " N is " + std::to_string(d) + " m, not larger than at the level below (" +
+                    std::to_string(approach.back()) + " m). Refine the contact surfaces ('Surface element size').");
+                approach.push_back(d);
+                build.max_half_angle = std::max(build.max_half_angle, r.half_angle);
+                ++build.n_solves;
+              }
+          }
+      return approach;
+    }
+  } // namespace
+
+  void
+  declare_fe_force_law(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    declare_fe_settings(prm);
+    declare_required(prm,
+                     "Restitution coefficient",
+                     Double(0.0, 1.0),
+                     "Coefficient of restitution c_e of the Lankarani–Nikravesh hysteresis damping "
+                     "on top of the FE elastic force (seed: 0.9).",
+                     "none");
+    declare(prm,
+            "Minimum impact velocity",
+            "1e-4",
+            Double(1e-12),
+            "Guard of the hysteresis term, as for the lankarani-nikravesh law: it uses "
+            "max(δ̇⁻, this value, |δ̇|) in place of the impact velocity δ̇⁻.",
+            "m/s");
+    declare(prm,
+            "Table minimum force",
+            "10",
+            Double(0),
+            "Smallest load level of the FE force–approach table. Below its approach the "
+            "force follows the power law that continues the table's end slope down to zero.",
+            "N");
+    declare(prm,
+            "Table maximum force",
+            "1e5",
+            Double(0),
+            "Largest load level of the table. Beyond its approach the force follows the power "
+            "law of the table's end slope; every such evaluation is counted in summary.json "
+            "(extrapolations_above_table).",
+            "N");
+    declare(prm,
+            "Table load levels",
+            "16",
+            Integer(2, 200),
+            "Number of load levels, spaced logarithmically between the minimum and maximum force.",
+            "none");
+    declare(prm,
+            "Table bore directions",
+            "8",
+            Integer(1, 360),
+            "Contact directions in the bushing frame (uniform over 2π) tabulated for worn, "
+            "non-circular profiles; round profiles need one direction.",
+            "none");
+    declare(prm,
+            "Table pin directions",
+            "8",
+            Integer(1, 360),
+            "Contact directions in the pin frame tabulated for worn profiles (every pair of "
+            "bore and pin directions is one FE load sequence).",
+            "none");
+    declare(prm,
+            "Table cache",
+            "true",
+            Bool(),
+            "Keep tables on disk by geometry ($WEARLINK_CACHE_DIR, else $XDG_CACHE_HOME/wearlink, "
+            "else ~/.cache/wearlink), so that a second run of the same joints does not rebuild them.",
+            "none");
+  }
+
+  FeForceLawSettings
+  read_fe_force_law(ParameterReader &reader)
+  {
+    FeForceLawSettings s;
+    s.fe                  = read_fe_settings(reader);
+    s.restitution         = reader.get_double("Restitution coefficient");
+    s.min_impact_velocity = reader.get_positive("Minimum impact velocity");
+    s.min_force           = reader.get_positive("Table minimum force");
+    s.max_force           = reader.get_positive("Table maximum force");
+    s.n_levels            = static_cast<unsigned int>(reader.get_integer("Table load levels"));
+    s.n_bore_directions   = static_cast<unsigned int>(reader.get_integer("Table bore directions"));
+    s.n_pin_directions    = static_cast<unsigned int>(reader.get_integer("Table pin directions"));
+    s.cache               = reader.get_bool("Table cache");
+    if (!(s.max_force > s.min_force))
+      reader.fail("Table maximum force",
+                  "it must be larger than 'Table minimum force' (" + std::to_string(s.min_force) + " N)");
+    return s;
+  }
+
+  contact::ForceApproachTable
+  build_force_approach_table(const contact::JointGeometry &g, const FeForceLawSettings &s, TableBuild &build)
+  {
+    const Stopwatch clock;
+    build                     = TableBuild();
+    const bool          round = g.bore.is_round() && g.pin.is_round();
+    const unsigned int  n_b   = round ? 1 : s.n_bore_directions;
+    const unsigned int  n_p   = round ? 1 : s.n_pin_directions;
+    std::vector<double> forces(s.n_levels);
+    for (unsigned int k = 0; k < s.n_levels; ++k)
+      forces[k] = s.min_force * std::pow(s.max_force / s.min_force, double(k) / (s.n_levels - 1));
+    const std::string key = geometry_key(g, s);
+    if (s.cache)
+      {
+        build.cache_file                   = cache_file(key);
+        contact::ForceApproachTable cached = read_cached(build.cache_file, key, build);
+        if (!cached.empty())
+          {
+            build.from_cache = true;
+            build.seconds    = clock.seconds();
+            return cached;
+          }
+      }
+    contact::ForceApproachTable table(forces, n_b, n_p, solve_table(g, s, forces, n_b, n_p, build));
+    if (s.cache)
+      write_cached(build.cache_file, key, table, build);
+    build.seconds = clock.seconds();
+    return table;
+  }
+
+  FeNormalForceLaw::FeNormalForceLaw(FeForceLawSettings s)
+    : settings(std::move(s))
+    , damping_factor(3 * (1 - settings.restitution * settings.restitution) / 4)
+  {
+  }
+
+  void
+  FeNormalForceLaw::update_geometry(const contact::JointGeometry &geometry)
+  {
+    force_table = build_force_approach_table(geometry, settings, last_build);
+    total_build_seconds += last_build.seconds;
+    ++n_builds;
+    n_cached += last_build.from_cache ? 1 : 0;
+  }
+
+  void
+  FeNormalForceLaw::evaluate(const contact::NormalContactInput &in, contact::NormalContactOutput &out) const
+  {
+    out = contact::NormalContactOutput();
+    if (!(in.penetration > 0))
+      return;
+    AssertThrow(!force_table.empty(),
+                dealii::ExcMessage("The fe normal force law was evaluated before its table was built."));
+    const auto v = force_table.evaluate(in.penetration, in.bore_angle, in.pin_angle);
+    ++evaluations;
+    if (v.region == contact::ForceApproachTable::Region::above)
+      ++above;
+    else if (v.region == contact::ForceApproachTable::Region::below)
+      ++below;
+    out.elastic_force = v.force;
+    // The L-N hysteresis with the guarded reference velocity (normal_force_law.h).
+    const double v_impact = std::max({in.impact_velocity, settings.min_impact_velocity, std::abs(in.penetration_rate)});
+    out.force             = std::max(0.0, v.force * (1 + damping_factor * in.penetration_rate / v_impact));
+  }
+
+  double
+  FeNormalForceLaw::potential(const contact::NormalContactInput &in) const
+  {
+    return force_table.empty() ? 0.0 : force_table.potential(in.penetration, in.bore_angle, in.pin_angle);
+  }
+
+  Json
+  FeNormalForceLaw::report() const
+  {
+    Json j;
+    j["table_load_levels"]          = force_table.n_levels();
+    j["table_bore_directions"]      = force_table.n_bore_directions();
+    j["table_pin_directions"]       = force_table.n_pin_directions();
+    j["table_force_range_N"]        = {settings.min_force, settings.max_force};
+    j["table_fe_solves"]            = last_build.n_solves;
+    j["table_build_time_s"]         = last_build.seconds;
+    j["table_from_cache"]           = last_build.from_cache;
+    j["table_builds"]               = n_builds;
+    j["table_builds_from_cache"]    = n_cached;
+    j["table_build_time_total_s"]   = total_build_seconds;
+    j["table_max_half_angle_deg"]   = last_build.max_half_angle * 180 / pi;
+    j["table_within_validity"]      = last_build.max_half_angle < pi / 2;
+    j["evaluations"]                = evaluations.load();
+    j["extrapolations_above_table"] = above.load();
+    j["extrapolations_below_table"] = below.load();
+    return j;
+  }
+} // namespace wearlink::fe

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The `fe` normal force law of a clearance joint: the elastic force against the
+// approach δ taken from the 2D contact FE model of the joint's current (worn) profiles,
+// with the Lankarani–Nikravesh hysteresis damping on top (the same factor, restitution
+// and impact-velocity guard as the `lankarani-nikravesh` law).
+//
+// Definition of the approach. The bushing ring is held on its outer edge; the pin is
+// loaded through its rigid core (it translates, it does not rotate) by a force F in the
+// direction n = (cos φ, sin φ) from the bore centre; the FE model finds the equilibrium
+// pin centre e_FE (force control, frictionless). The approach is the overlap of the
+// *rigid* profiles at that pin position, δ = −min_φ g(φ; e_FE) — exactly the δ the joint
+// computes from the gap of the rigid profiles (contact/gap.h). So the table answers
+// the question the dynamics ask: at this rigid overlap, which force do the elastic
+// bodies carry? For round profiles δ = |e_FE| − c.
+//
+// The table (contact/force_approach_table.h): 'Table load levels' forces spaced
+// logarithmically from 'Table minimum force' to 'Table maximum force' [N]; round
+// profiles need one direction (and a mesh refined only around it), worn ones
+// 'Table bore directions' × 'Table pin directions' (the contact direction in the
+// bushing frame, and in the pin frame, which the joint's relative rotation decouples).
+// It is rebuilt in update_geometry() (construction and every profile update) and
+// cached on disk by geometry (the profiles' samples, materials, axial length, FE and
+// table settings): $WEARLINK_CACHE_DIR, else $XDG_CACHE_HOME/wearlink, else
+// ~/.cache/wearlink; a cached table that does not read back cleanly is rebuilt.
+#pragma once
+
+#include "contact/force_approach_table.h"
+#include "contact/normal_force_law.h"
+#include "fe/fe_settings.h"
+
+#include <atomic>
+#include <string>
+
+namespace wearlink::fe
+{
+  struct FeForceLawSettings
+  {
+    FeSettings   fe;
+    double       restitution         = 0.9;  ///< c_e [-]
+    double       min_impact_velocity = 1e-4; ///< the L-N guard [m/s]
+    double       min_force           = 10;   ///< F_0 [N]
+    double       max_force           = 1e5;  ///< F_{K−1} [N]
+    unsigned int n_levels            = 16;
+    unsigned int n_bore_directions   = 8; ///< worn profiles only
+    unsigned int n_pin_directions    = 8; ///< worn profiles only
+    bool         cache               = true;
+  };
+
+  /** Declare the law's entries (the FE numerics and the table) in the current subsection. */
+  void
+  declare_fe_force_law(dealii::ParameterHandler &prm);
+
+  FeForceLawSettings
+  read_fe_force_law(ParameterReader &reader);
+
+  /** How one table was obtained. */
+  struct TableBuild
+  {
+    double       seconds        = 0; ///< wall time of building (or reading) it [s]
+    bool         from_cache     = false;
+    unsigned int n_solves       = 0;
+    double       max_half_angle = 0; ///< largest FE contact half-angle over the table [rad]
+    std::string  cache_file;
+  };
+
+  /**
+   * Tabulate the elastic force against the approach for @p geometry (see the file
+   * comment). NumericalError if the FE approach does not increase with the load.
+   */
+  contact::ForceApproachTable
+  build_force_approach_table(const contact::JointGeometry &geometry,
+                             const FeForceLawSettings     &settings,
+                             TableBuild                   &build);
+
+  class FeNormalForceLaw : public contact::NormalForceLaw
+  {
+  public:
+    explicit FeNormalForceLaw(FeForceLawSettings settings);
+
+    void
+    evaluate(const contact::NormalContactInput &in, contact::NormalContactOutput &out) const override;
+    double
+    exponent() const override
+    {
+      return 1.5;
+    }
+    double
+    potential(const contact::NormalContactInput &in) const override;
+    void
+    update_geometry(const contact::JointGeometry &geometry) override;
+    bool
+    uses_direction() const override
+    {
+      return true;
+    }
+    /** Table size, build time (total and last), cache use, extrapolation counts. */
+    Json
+    report() const override;
+
+    const contact::ForceApproachTable &
+    table() const
+    {
+      return force_table;
+    }
+    long
+    n_extrapolations_above() const
+    {
+      return above;
+    }
+    long
+    n_extrapolations_below() const
+    {
+      return below;
+    }
+
+  private:
+    const FeForceLawSettings    settings;
+    const double                damping_factor;
+    contact::ForceApproachTable force_table;
+    TableBuild                  last_build;
+    double                      total_build_seconds = 0;
+    unsigned int                n_builds = 0, n_cached = 0;
+    mutable std::atomic<long>   above{0}, below{0}, evaluations{0};
+  };
+} // namespace wearlink::fe

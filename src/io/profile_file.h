@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Surface profiles as files: two columns, angle [rad] and radius [m] (a header row and
+// '#' comments allowed; read by io/csv.h), the form a wear run writes its worn profiles in
+// and a scene's 'Bore profile file' / 'Pin profile file' reads.
+#pragma once
+
+#include "base/profile.h"
+
+#include <string>
+
+namespace wearlink::io
+{
+  /**
+   * Read @p file and resample it onto @p n_points uniform angles (Profile::from_polar_points;
+   * n_points = 0 keeps the file's count, which then must be uniformly spaced). InputError
+   * naming the file and line for a missing file, a field that is not a finite number, a
+   * radius ≤ 0, angles that do not increase strictly, fewer than 8 points.
+   */
+  Profile
+  read_profile_csv(const std::string &file, unsigned int n_points = 0);
+
+  /** Write @p profile as "angle_rad,radius_m" rows (17 digits, atomically), after a '#' comment. */
+  void
+  write_profile_csv(const Profile &profile, const std::string &file, const std::string &header_comment = "");
+} // namespace wearlink::io
