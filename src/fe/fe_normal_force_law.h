@@ -57,6 +57,9 @@ namespace wearlink::fe
   struct TableBuild
   {
     double       seconds        = 0; ///< wall time of building (or reading) it [s]
+    double       mesh_seconds   = 0; ///< of which gmsh [s]
+    double       setup_seconds  = 0; ///< assembly and factorization [s]
+    double       solve_seconds  = 0; ///< the FE load states, compliance columns included [s]
     bool         from_cache     = false;
     unsigned int n_solves       = 0;
     double       max_half_angle = 0; ///< largest FE contact half-angle over the table [rad]
