@@ -9,6 +9,7 @@ namespace wearlink::app
   extern const Command contact_command;
   extern const Command sweep_command;
   extern const Command compare_pressure_command;
+  extern const Command compare_contact_command;
   extern const Command study_command;
   extern const Command compare_dynamics_command;
 
@@ -21,6 +22,7 @@ namespace wearlink::app
       contact_command,
       sweep_command,
       compare_pressure_command,
+      compare_contact_command,
       study_command,
       compare_dynamics_command,
     };

@@ -28,6 +28,9 @@
 #include "base/registry.h"
 #include "contact/pressure_model.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace wearlink::contact
 {
   struct NormalContactInput
@@ -80,6 +83,18 @@ namespace wearlink::contact
       return Json::object();
     }
   };
+
+  /**
+   * The Lankarani–Nikravesh total force from the elastic force @p elastic: the hysteresis
+   * factor 3(1 − c_e²)/4 = @p factor with the guarded reference velocity
+   * max(δ̇⁻, v_min, |δ̇|) (see above), never tensile. Shared by every law with L-N damping.
+   */
+  inline double
+  lankarani_nikravesh_force(const double elastic, const NormalContactInput &in, const double factor, const double v_min)
+  {
+    const double v_impact = std::max({in.impact_velocity, v_min, std::abs(in.penetration_rate)});
+    return std::max(0.0, elastic * (1 + factor * in.penetration_rate / v_impact));
+  }
 
   Registry<NormalForceLaw> &
   normal_force_laws();

@@ -10,6 +10,7 @@
 #include "fe/pin_bushing_model.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -162,20 +163,12 @@ namespace wearlink::fe
 
     /** The FE approaches of every direction and level (the expensive part). */
     std::vector<double>
-    solve_table(const contact::JointGeometry &g,
-                const FeForceLawSettings     &s,
-                const std::vector<double>    &forces,
-                const unsigned int            n_b,
-                const unsigned int            n_p,
-                TableBuild                   &build)
+    solve_table(const contact::JointGeometry             &g,
+                const FeSettings                         &fe,
+                const std::vector<double>                &forces,
+                const std::vector<std::array<double, 2>> &directions,
+                TableBuild                               &build)
     {
-      FeSettings fe = s.fe;
-      if (n_b == 1 && n_p == 1)
-        {
-          fe.refined_arc_half_angle  = round_refined_half_angle(g, forces.back());
-          fe.refined_arc_bore_centre = 0;
-          fe.refined_arc_pin_centre  = 0;
-        }
       const ScratchDirectory scratch;
       PinBushingModel        model(g, fe, scratch.path + "/pin_bushing.msh");
       model.prepare_condensed();
@@ -184,34 +177,44 @@ namespace wearlink::fe
       const Stopwatch     solving;
       const contact::Gap  gap(g.bore, g.pin);
       std::vector<double> approach;
-      approach.reserve(std::size_t(n_b) * n_p * forces.size());
-      for (unsigned int i = 0; i < n_b; ++i)
-        for (unsigned int j = 0; j < n_p; ++j)
-          {
-            const double psi_b = two_pi * i / n_b, psi_p = two_pi * j / n_p;
-            LoadCase     lc;
-            lc.control       = Control::force;
-            lc.bushing_angle = 0;
-            lc.pin_angle     = psi_b - psi_p; // the contact direction psi_b meets the pin at psi_p
-            for (const double F : forces)
-              {
-                lc.load               = {F * std::cos(psi_b), F * std::sin(psi_b)};
-                const ContactResult r = model.solve(lc, SolverKind::condensed);
-                const auto          e = r.pin_displacement;
-                const double        d = gap.evaluate(mbs::Vec2(e[0], e[1]), 0.0, lc.pin_angle).penetration;
-                if (!approach.empty() && approach.size() % forces.size() != 0 && !(d > approach.back()))
-                  throw NumericalError(
-                    "The FE force–approach table is not monotone: in the direction " + std::to_string(psi_b) +
-                    " rad (bushing frame), " + std::to_string(psi_p) + " rad (pin frame) the approach at " +
-                    std::to_string(F) + " N is " + std::to_string(d) + " m, not larger than at the level below (" +
-                    std::to_string(approach.back()) + " m). Refine the contact surfaces ('Surface element size').");
-                approach.push_back(d);
-                build.max_half_angle = std::max(build.max_half_angle, r.half_angle);
-                ++build.n_solves;
-              }
-          }
+      approach.reserve(directions.size() * forces.size());
+      for (const auto &[psi_b, psi_p] : directions)
+        {
+          LoadCase lc;
+          lc.control       = Control::force;
+          lc.bushing_angle = 0;
+          lc.pin_angle     = psi_b - psi_p; // the contact direction psi_b meets the pin at psi_p
+          for (const double F : forces)
+            {
+              lc.load               = {F * std::cos(psi_b), F * std::sin(psi_b)};
+              const ContactResult r = model.solve(lc, SolverKind::condensed);
+              const auto          e = r.pin_displacement;
+              const double        d = gap.evaluate(mbs::Vec2(e[0], e[1]), 0.0, lc.pin_angle).penetration;
+              approach.push_back(d);
+              build.max_half_angle = std::max(build.max_half_angle, r.half_angle);
+              ++build.n_solves;
+            }
+        }
       build.solve_seconds = solving.seconds();
       return approach;
+    }
+
+    /** NumericalError unless the approach increases with the load in every direction. */
+    void
+    require_monotone(const std::vector<double>                &approach,
+                     const std::vector<double>                &forces,
+                     const std::vector<std::array<double, 2>> &directions)
+    {
+      const std::size_t K = forces.size();
+      for (std::size_t r = 1; r < approach.size(); ++r)
+        if (r % K != 0 && !(approach[r] > approach[r - 1]))
+          throw NumericalError(
+            "The FE force–approach table is not monotone: in the direction " + std::to_string(directions[r / K][0]) +
+            " rad (bushing frame), " + std::to_string(directions[r / K][1]) + " rad (pin frame) the approach at " +
+            std::to_string(forces[r % K]) + " N is " + std::to_string(approach[r]) +
+            " m, not larger than at the level below (" + std::to_string(approach[r - 1]) +
+            " m). On worn, conforming profiles the pin can slide sideways in the worn pocket as the load grows; "
+            "refine the contact surfaces ('Surface element size') or tabulate fewer load levels.");
     }
   } // namespace
 
@@ -319,11 +322,43 @@ namespace wearlink::fe
             return cached;
           }
       }
-    contact::ForceApproachTable table(forces, n_b, n_p, solve_table(g, s, forces, n_b, n_p, build));
+    FeSettings                         fe = s.fe;
+    std::vector<std::array<double, 2>> directions;
+    for (unsigned int i = 0; i < n_b; ++i)
+      for (unsigned int j = 0; j < n_p; ++j)
+        directions.push_back({two_pi * i / n_b, two_pi * j / n_p});
+    if (round) // one direction: refine the mesh about it only
+      {
+        fe.refined_arc_half_angle  = round_refined_half_angle(g, forces.back());
+        fe.refined_arc_bore_centre = 0;
+        fe.refined_arc_pin_centre  = 0;
+      }
+    const std::vector<double> approach = solve_table(g, fe, forces, directions, build);
+    require_monotone(approach, forces, directions);
+    contact::ForceApproachTable table(forces, n_b, n_p, approach);
     if (s.cache)
       write_cached(build.cache_file, key, table, build);
     build.seconds = clock.seconds();
     return table;
+  }
+
+  std::vector<double>
+  fe_approach_curve(const contact::JointGeometry &g,
+                    const FeForceLawSettings     &s,
+                    const std::vector<double>    &forces,
+                    const double                  bore_angle,
+                    const double                  pin_angle,
+                    TableBuild                   &build)
+  {
+    const Stopwatch clock;
+    build                      = TableBuild();
+    FeSettings fe              = s.fe;
+    fe.refined_arc_half_angle  = round_refined_half_angle(g, forces.back());
+    fe.refined_arc_bore_centre = bore_angle;
+    fe.refined_arc_pin_centre  = pin_angle;
+    auto curve                 = solve_table(g, fe, forces, {{bore_angle, pin_angle}}, build);
+    build.seconds              = clock.seconds();
+    return curve;
   }
 
   FeNormalForceLaw::FeNormalForceLaw(FeForceLawSettings s)
@@ -356,9 +391,7 @@ namespace wearlink::fe
     else if (v.region == contact::ForceApproachTable::Region::below)
       ++below;
     out.elastic_force = v.force;
-    // The L-N hysteresis with the guarded reference velocity (normal_force_law.h).
-    const double v_impact = std::max({in.impact_velocity, settings.min_impact_velocity, std::abs(in.penetration_rate)});
-    out.force             = std::max(0.0, v.force * (1 + damping_factor * in.penetration_rate / v_impact));
+    out.force         = contact::lankarani_nikravesh_force(v.force, in, damping_factor, settings.min_impact_velocity);
   }
 
   double

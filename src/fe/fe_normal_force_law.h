@@ -75,6 +75,21 @@ namespace wearlink::fe
                              const FeForceLawSettings     &settings,
                              TableBuild                   &build);
 
+  /**
+   * The FE approach at each of @p forces (increasing) in one contact direction
+   * (@p bore_angle in the bushing frame, @p pin_angle in the pin frame) on a mesh refined
+   * about it: one curve of a table, for comparisons (`wearlink compare-contact`). Not
+   * checked for monotonicity (on a worn pocket the pin may slide sideways as the load
+   * grows, and the rigid overlap need not increase): the caller decides.
+   */
+  std::vector<double>
+  fe_approach_curve(const contact::JointGeometry &geometry,
+                    const FeForceLawSettings     &settings,
+                    const std::vector<double>    &forces,
+                    double                        bore_angle,
+                    double                        pin_angle,
+                    TableBuild                   &build);
+
   class FeNormalForceLaw : public contact::NormalForceLaw
   {
   public:
@@ -114,6 +129,14 @@ namespace wearlink::fe
     n_extrapolations_below() const
     {
       return below;
+    }
+
+  private:
+  public:
+    const FeForceLawSettings &
+    law_settings() const
+    {
+      return settings;
     }
 
   private:

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The three normal force laws; see normal_force_law.h for the equations.
 #include "base/parameters.h"
+#include "contact/cylindrical_contact.h"
 #include "contact/normal_force_law.h"
 
 #include <algorithm>
@@ -22,10 +23,10 @@ namespace wearlink::contact
               "none");
     }
 
+    /** Restitution and the impact-velocity guard of the L-N hysteresis. */
     void
-    declare_dissipative(dealii::ParameterHandler &prm)
+    declare_damping(dealii::ParameterHandler &prm)
     {
-      declare_exponent(prm);
       declare_required(prm,
                        "Restitution coefficient",
                        dealii::Patterns::Double(0.0, 1.0),
@@ -42,6 +43,13 @@ namespace wearlink::contact
               "a contact is loaded faster than it began. Genuine impacts (|δ̇| ≤ δ̇⁻) are "
               "unaffected.",
               "m/s");
+    }
+
+    void
+    declare_dissipative(dealii::ParameterHandler &prm)
+    {
+      declare_exponent(prm);
+      declare_damping(prm);
     }
 
     /** Elastic part shared by all three laws. */
@@ -93,10 +101,7 @@ namespace wearlink::contact
       evaluate(const NormalContactInput &in, NormalContactOutput &out) const override
       {
         elastic(in, n, out);
-        // Reference velocity of the hysteresis term: the captured impact velocity,
-        // but never below the guard nor below the current |δ̇| (see the header).
-        const double v_impact = std::max({in.impact_velocity, min_impact_velocity, std::abs(in.penetration_rate)});
-        out.force             = std::max(0.0, out.elastic_force * (1 + factor * in.penetration_rate / v_impact));
+        out.force = lankarani_nikravesh_force(out.elastic_force, in, factor, min_impact_velocity);
       }
       double
       exponent() const override
@@ -106,6 +111,63 @@ namespace wearlink::contact
 
     private:
       const double n, restitution, min_impact_velocity, factor;
+    };
+
+    /**
+     * A cylindrical closed form (contact/cylindrical_contact.h) with the L-N hysteresis:
+     * tabulated from the joint's nominal radii, length and materials at every geometry
+     * update (40 levels from 1 N to the law's valid maximum).
+     */
+    class Cylindrical : public NormalForceLaw
+    {
+    public:
+      Cylindrical(ParameterReader &r, const CylindricalLaw law)
+        : law(law)
+        , min_impact_velocity(r.get_positive("Minimum impact velocity"))
+        , factor(3 * (1 - std::pow(r.get_double("Restitution coefficient"), 2)) / 4)
+      {
+      }
+      void
+      update_geometry(const JointGeometry &g) override
+      {
+        table = tabulate_cylindrical_law(law, CylinderPair::of(g), 1.0, 40);
+      }
+      void
+      evaluate(const NormalContactInput &in, NormalContactOutput &out) const override
+      {
+        out = NormalContactOutput();
+        if (!(in.penetration > 0))
+          return;
+        const auto v = table.evaluate(in.penetration, 0, 0);
+        above += v.region == ForceApproachTable::Region::above ? 1 : 0;
+        out.elastic_force = v.force;
+        out.force         = lankarani_nikravesh_force(v.force, in, factor, min_impact_velocity);
+      }
+      double
+      potential(const NormalContactInput &in) const override
+      {
+        return table.potential(in.penetration, 0, 0);
+      }
+      double
+      exponent() const override
+      {
+        return 1.0;
+      }
+      Json
+      report() const override
+      {
+        Json j;
+        j["table_load_levels"]          = table.n_levels();
+        j["table_force_range_N"]        = {table.forces().front(), table.forces().back()};
+        j["extrapolations_above_table"] = above;
+        return j;
+      }
+
+    private:
+      const CylindricalLaw law;
+      const double         min_impact_velocity, factor;
+      ForceApproachTable   table;
+      mutable long         above = 0;
     };
   } // namespace
 
@@ -134,6 +196,16 @@ namespace wearlink::contact
           "F = K δⁿ (1 + 3(1 − c_e²) δ̇/(4 δ̇⁻)) (seed eqs 9–11).",
           declare_dissipative,
           [](ParameterReader &p) { return std::make_unique<HysteresisDamping>(p, false); });
+    r.add("johnson",
+          "F from Johnson's internal line contact δ = P/(π E*)[ln(4π E* ΔR/P) − 1], P = F/L (axial length "
+          "included; contact/cylindrical_contact.h), with the L-N hysteresis.",
+          declare_damping,
+          [](ParameterReader &p) { return std::make_unique<Cylindrical>(p, CylindricalLaw::johnson); });
+    r.add("esdu-78035",
+          "F from ESDU-78035's internal line contact δ = P/(π E*)[ln(4π E* ΔR/P) + 1], P = F/L, with the L-N "
+          "hysteresis.",
+          declare_damping,
+          [](ParameterReader &p) { return std::make_unique<Cylindrical>(p, CylindricalLaw::esdu_78035); });
     r.add("flores",
           "F = K δⁿ (1 + 8(1 − c_e) δ̇/(5 c_e δ̇⁻)) (Flores et al. 2011).",
           declare_dissipative,

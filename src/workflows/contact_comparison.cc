@@ -1,0 +1,424 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "workflows/contact_comparison.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/numbers.h"
+#include "base/text.h"
+#include "base/timings.h"
+#include "contact/cylindrical_contact.h"
+#include "fe/fe_normal_force_law.h"
+#include "io/analyses_parameters.h"
+#include "io/plot.h"
+#include "io/profile_file.h"
+#include "io/scene.h"
+#include "workflows/run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace wearlink::workflows
+{
+  namespace
+  {
+    constexpr double nan             = std::numeric_limits<double>::quiet_NaN();
+    constexpr int    n_grid          = 48; ///< points of the approach grid
+    const char      *dynamics_laws[] = {"lankarani-nikravesh", "johnson", "esdu-78035", "fe"};
+
+    /** What the comparison needs of one clearance joint of the scene. */
+    struct JointData
+    {
+      std::string                 name, law;
+      contact::JointGeometry      geometry;
+      double                      stiffness         = 0; ///< K of the sphere law [N/m^1.5]
+      double                      restitution       = 1; ///< of the scene's law (1 if it has none)
+      double                      winkler_thickness = 0; ///< 0: not given
+      fe::FeForceLawSettings      fe;
+      contact::ForceApproachTable fe_fresh, fe_worn;
+      std::size_t                 worn_levels_dropped = 0; ///< load levels whose worn approach did not increase
+      contact::JointGeometry      worn;
+      bool                        has_worn = false;
+    };
+
+    bool
+    has_restitution(const std::string &law)
+    {
+      return law != "hertz";
+    }
+
+    JointData
+    read_joint(const io::Scene &scene, const contact::ClearanceJoint &cj)
+    {
+      JointData d;
+      d.name      = cj.name();
+      d.geometry  = cj.get_description().geometry;
+      d.stiffness = cj.stiffness();
+      ParameterReader r(*scene.parameters, scene.file);
+      r.enter("Joint " + d.name);
+      r.enter("Clearance");
+      d.law = r.get("Normal force law");
+      if (has_restitution(d.law))
+        {
+          r.enter(d.law);
+          d.restitution = r.get_double("Restitution coefficient");
+          r.leave();
+        }
+      r.enter("fe");
+      d.fe = fe::read_fe_force_law(r);
+      r.leave();
+      r.enter("winkler");
+      d.winkler_thickness = r.get_double("Layer thickness"); // 0 (the placeholder) if not given
+      r.leave();
+      r.leave();
+      r.leave(); // the handler is shared: leave it where it was
+      return d;
+    }
+
+    /** The direction of the deepest wear of @p worn against @p fresh [rad, body frame]. */
+    double
+    deepest(const Profile &fresh, const Profile &worn, const double sign)
+    {
+      unsigned int best = 0;
+      for (unsigned int k = 0; k < worn.n_points(); ++k)
+        if (sign * (worn[k] - fresh.radius(worn.angle(k))) > sign * (worn[best] - fresh.radius(worn.angle(best))))
+          best = k;
+      return worn.angle(best);
+    }
+
+    /** The FE curves of joint @p d (fresh, and worn if given) as one-direction tables. */
+    void
+    fe_curves(JointData &d, const std::string &worn_directory, const bool progress)
+    {
+      std::vector<double> forces(d.fe.n_levels);
+      for (unsigned int k = 0; k < d.fe.n_levels; ++k)
+        forces[k] = d.fe.min_force * std::pow(d.fe.max_force / d.fe.min_force, double(k) / (d.fe.n_levels - 1));
+      fe::TableBuild b;
+      d.fe_fresh = contact::ForceApproachTable(forces, 1, 1, fe::fe_approach_curve(d.geometry, d.fe, forces, 0, 0, b));
+      if (progress)
+        std::cerr << "[wearlink] joint " << d.name << ": FE force–approach curve (fresh) in " << b.seconds << " s\n";
+      if (worn_directory.empty())
+        return;
+      const unsigned int n            = d.geometry.bore.n_points();
+      d.worn                          = d.geometry;
+      d.worn.bore                     = io::read_profile_csv(worn_directory + "/bore_" + d.name + ".csv", n);
+      d.worn.pin                      = io::read_profile_csv(worn_directory + "/pin_" + d.name + ".csv", n);
+      d.has_worn                      = true;
+      const double              psi_b = deepest(d.geometry.bore, d.worn.bore, 1.0);
+      const double              psi_p = deepest(d.geometry.pin, d.worn.pin, -1.0);
+      const std::vector<double> raw   = fe::fe_approach_curve(d.worn, d.fe, forces, psi_b, psi_p, b);
+      std::vector<double>       kept_forces, kept;
+      for (std::size_t k = 0; k < raw.size(); ++k)
+        if (kept.empty() || raw[k] > kept.back())
+          {
+            kept_forces.push_back(forces[k]);
+            kept.push_back(raw[k]);
+          }
+      d.worn_levels_dropped = raw.size() - kept.size();
+      if (kept.size() < 2)
+        throw NumericalError("The FE approach of joint " + d.name +
+                             "'s worn profiles does not increase with the load in the direction of the deepest wear.");
+      d.fe_worn = contact::ForceApproachTable(kept_forces, 1, 1, kept);
+      if (progress)
+        std::cerr << "[wearlink] joint " << d.name << ": FE curve (worn, bore " << psi_b * 180 / numbers::pi
+                  << "°, pin " << psi_p * 180 / numbers::pi << "°) in " << b.seconds << " s; " << d.worn_levels_dropped
+                  << " of " << raw.size() << " load levels left out where the approach did not increase\n";
+    }
+
+    /** The FE approach at which table @p t carries @p force (bisection in ln δ). */
+    double
+    approach_at(const contact::ForceApproachTable &t, const double force)
+    {
+      double lo = std::log(1e-12), hi = std::log(1e-1);
+      for (int i = 0; i < 200; ++i)
+        {
+          const double mid                                          = 0.5 * (lo + hi);
+          (t.evaluate(std::exp(mid), 0, 0).force < force ? lo : hi) = mid;
+        }
+      return std::exp(0.5 * (lo + hi));
+    }
+
+    /** F of law @p law of joint @p d at approach @p delta (NaN outside its validity). */
+    double
+    law_force(const JointData &d, const std::string &law, const double delta, const bool worn)
+    {
+      const auto pair = contact::CylinderPair::of(d.geometry);
+      if (law == "lankarani-nikravesh")
+        return d.stiffness * std::pow(delta, 1.5);
+      if (law == "johnson")
+        return contact::cylindrical_force(contact::CylindricalLaw::johnson, pair, delta);
+      if (law == "esdu-78035")
+        return contact::cylindrical_force(contact::CylindricalLaw::esdu_78035, pair, delta);
+      if (law == "winkler")
+        return d.winkler_thickness > 0 ? contact::winkler_round_force(d.geometry, d.winkler_thickness, delta) : nan;
+      const auto &t = worn ? d.fe_worn : d.fe_fresh;
+      if (delta < t.approaches().front() || delta > t.approaches().back())
+        return nan; // the FE curve is shown where it was computed
+      return t.evaluate(delta, 0, 0).force;
+    }
+
+    std::vector<std::string>
+    curve_laws(const JointData &d)
+    {
+      std::vector<std::string> laws{"lankarani-nikravesh", "johnson", "esdu-78035"};
+      if (d.winkler_thickness > 0)
+        laws.push_back("winkler");
+      laws.push_back("fe");
+      return laws;
+    }
+
+    void
+    add_curves(ContactComparison &c, const std::vector<JointData> &joints)
+    {
+      double lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (const auto &d : joints)
+        {
+          lo = std::min(lo, d.fe_fresh.approaches().front());
+          hi = std::max(hi, d.fe_fresh.approaches().back());
+        }
+      for (int i = 0; i < n_grid; ++i)
+        c.approach.push_back(lo * std::pow(hi / lo, double(i) / (n_grid - 1)));
+      for (const auto &d : joints)
+        for (const bool worn : {false, true})
+          {
+            if (worn && !d.has_worn)
+              continue;
+            for (const auto &law : worn ? std::vector<std::string>{"fe"} : curve_laws(d))
+              {
+                ForceCurve fc{d.name, law, worn ? "worn" : "fresh", {}};
+                for (const double x : c.approach)
+                  fc.force.push_back(law_force(d, law, x, worn));
+                c.curves.push_back(fc);
+                LawDeviation dev{d.name, law, fc.state, {}};
+                for (const double F : c.reference_loads)
+                  dev.ratio.push_back(law_force(d, law, approach_at(d.fe_fresh, F), worn) /
+                                      F); // worn: against fresh FE
+                c.deviations.push_back(dev);
+              }
+          }
+    }
+  } // namespace
+
+  namespace
+  {
+    /** The scene with every clearance joint on @p law, for @p cycles driving periods. */
+    EffectRow
+    effect_of(const ContactComparisonRequest &request,
+              const std::vector<JointData>   &joints,
+              const std::string              &law,
+              const double                    end_time)
+    {
+      ParameterOverrides o = request.overrides;
+      for (const auto &d : joints)
+        o.set("Joint " + d.name + "/Clearance/Normal force law", law)
+          .set("Joint " + d.name + "/Clearance/" + law + "/Restitution coefficient", d.restitution);
+      o.set("Simulation/End time", end_time).set("Output/Time series", "false").set("Analyses/List of analyses", "");
+      const Stopwatch clock;
+      io::Scene       scene = io::read_scene(request.scene_file, o);
+      const Json      s     = run_scene(scene, RunOptions());
+      EffectRow       row;
+      row.law       = law;
+      row.wall_time = clock.seconds();
+      row.steps     = s.value("steps", 0L);
+      for (const auto &d : joints)
+        {
+          const Json &j = s.at("clearance_joints").at(d.name);
+          row.contact_fraction.push_back(json_number(j.at("fraction_in_contact")));
+          row.peak_force.push_back(json_number(j.at("max_normal_force_N")));
+          row.impacts.push_back(j.at("impacts").get<long>());
+          if (j.contains("table_build_time_s"))
+            row.table_setup_time += json_number(j.at("table_build_time_s"));
+        }
+      for (const auto &[name, b] : s.at("bodies").items())
+        row.peak_acceleration =
+          std::max({row.peak_acceleration, json_number(b.at("max_abs_ax_m_s2")), json_number(b.at("max_abs_ay_m_s2"))});
+      return row;
+    }
+  } // namespace
+
+  ContactComparison
+  compare_contact(const ContactComparisonRequest &request)
+  {
+    if (!(request.cycles > 0))
+      throw InputError("The number of cycles of the effect runs must be > 0 (given: " + format_number(request.cycles) +
+                       ").");
+    io::Scene scene = io::read_scene(request.scene_file, request.overrides);
+    if (scene.clearance_joints.empty())
+      throw InputError("The scene '" + request.scene_file +
+                       "' has no clearance joint ('Model = clearance'): there is no contact law to compare.");
+    std::vector<JointData> joints;
+    for (const auto *cj : scene.clearance_joints)
+      joints.push_back(read_joint(scene, *cj));
+    ContactComparison c;
+    for (auto &d : joints)
+      {
+        c.joints.push_back(d.name);
+        fe_curves(d, request.worn_directory, request.progress);
+      }
+    add_curves(c, joints);
+    if (!request.effects)
+      return c;
+    c.cycles              = request.cycles;
+    const double end_time = scene.start_time + request.cycles * io::driving_period(scene);
+    for (const char *law : dynamics_laws)
+      {
+        if (request.progress)
+          std::cerr << "[wearlink] effect run: " << law << ", " << request.cycles << " cycles\n";
+        c.effects.push_back(effect_of(request, joints, law, end_time));
+      }
+    return c;
+  }
+} // namespace wearlink::workflows
+
+namespace wearlink::workflows
+{
+  namespace
+  {
+    std::string
+    number(const double x, const int digits = 4)
+    {
+      if (!std::isfinite(x))
+        return "n/a";
+      std::ostringstream os;
+      os << std::setprecision(digits) << x;
+      return os.str();
+    }
+  } // namespace
+
+  std::string
+  ContactComparison::table() const
+  {
+    std::ostringstream os;
+    os << "Force of each law at the approach where the FE model of the fresh joint carries the reference load, "
+          "relative to that load (1 = FE; the worn row: the FE model of the worn profiles):\n";
+    os << std::left << std::setw(8) << "joint" << std::setw(22) << "law" << std::setw(8) << "state";
+    for (const double F : reference_loads)
+      os << std::right << std::setw(10) << (format_number(F) + " N");
+    os << '\n';
+    for (const auto &d : deviations)
+      {
+        os << std::left << std::setw(8) << d.joint << std::setw(22) << d.law << std::setw(8) << d.state;
+        for (const double r : d.ratio)
+          os << std::right << std::setw(10) << number(r, 3);
+        os << '\n';
+      }
+    if (effects.empty())
+      return os.str();
+    os << "\nEffect of the law on the dynamics (" << number(cycles) << " driving cycles):\n";
+    os << std::left << std::setw(22) << "law";
+    for (const auto &j : joints)
+      os << std::right << std::setw(12) << (j + " contact") << std::setw(12) << (j + " F_max N") << std::setw(11)
+         << (j + " impacts");
+    os << std::setw(14) << "a_max m/s²" << std::setw(10) << "steps" << std::setw(10) << "wall s" << std::setw(12)
+       << "(tables s)" << '\n';
+    for (const auto &e : effects)
+      {
+        os << std::left << std::setw(22) << e.law << std::right;
+        for (std::size_t k = 0; k < joints.size(); ++k)
+          os << std::setw(12) << number(e.contact_fraction[k], 3) << std::setw(12) << number(e.peak_force[k], 5)
+             << std::setw(11) << e.impacts[k];
+        os << std::setw(14) << number(e.peak_acceleration, 5) << std::setw(10) << e.steps << std::setw(10)
+           << number(e.wall_time, 3) << std::setw(12) << number(e.table_setup_time, 3) << '\n';
+      }
+    return os.str();
+  }
+
+  namespace
+  {
+    void
+    write_curves(const std::string &dir, const ContactComparison &c)
+    {
+      std::ostringstream csv;
+      csv << std::setprecision(10) << "approach_m";
+      for (const auto &fc : c.curves)
+        csv << ",force_N_" << fc.law << '_' << fc.state << '_' << fc.joint;
+      csv << '\n';
+      for (std::size_t i = 0; i < c.approach.size(); ++i)
+        {
+          csv << c.approach[i];
+          for (const auto &fc : c.curves)
+            csv << ',' << fc.force[i];
+          csv << '\n';
+        }
+      write_file_atomically(dir + "/force_approach.csv", csv.str());
+      std::vector<io::PlotSpec> panels;
+      for (const auto &joint : c.joints)
+        {
+          io::PlotSpec spec;
+          spec.title   = "joint " + joint;
+          spec.x_label = "approach δ [m] (rigid-profile overlap at the FE pin position)";
+          spec.y_label = "normal force F [N]";
+          spec.log_x = spec.log_y = true;
+          spec.extra = "set key inside left top box opaque; set format x '10^{%L}'; set format y '10^{%L}'";
+          for (const auto &fc : c.curves)
+            {
+              if (fc.joint != joint)
+                continue;
+              io::PlotSeries s;
+              s.title = fc.law + " (" + fc.state + ")";
+              for (std::size_t i = 0; i < c.approach.size(); ++i)
+                if (std::isfinite(fc.force[i]) && fc.force[i] > 0)
+                  {
+                    s.x.push_back(c.approach[i]);
+                    s.y.push_back(fc.force[i]);
+                  }
+              s.style   = fc.law == "fe" ? "linespoints" : "lines";
+              s.options = fc.law == "fe" ? "lw 3 pt 7 ps 0.6" : "lw 2";
+              spec.series.push_back(s);
+            }
+          panels.push_back(spec);
+        }
+      io::plot_panels_png(panels,
+                          static_cast<unsigned int>(panels.size()),
+                          "Force against approach: simplified contact laws and the FE model",
+                          dir + "/force_approach.png",
+                          800 * static_cast<int>(panels.size()),
+                          700);
+    }
+
+    void
+    write_tables(const std::string &dir, const ContactComparison &c)
+    {
+      std::ostringstream dev;
+      dev << std::setprecision(8) << "joint,law,state";
+      for (const double F : c.reference_loads)
+        dev << ",ratio_at_" << F << "_N";
+      dev << '\n';
+      for (const auto &d : c.deviations)
+        {
+          dev << d.joint << ',' << d.law << ',' << d.state;
+          for (const double r : d.ratio)
+            dev << ',' << r;
+          dev << '\n';
+        }
+      write_file_atomically(dir + "/deviations.csv", dev.str());
+      std::ostringstream eff;
+      eff << std::setprecision(8) << "law,cycles";
+      for (const auto &j : c.joints)
+        eff << ",contact_fraction_" << j << ",peak_force_N_" << j << ",impacts_" << j;
+      eff << ",peak_acceleration_m_s2,steps,wall_time_s,table_setup_time_s\n";
+      for (const auto &e : c.effects)
+        {
+          eff << e.law << ',' << c.cycles;
+          for (std::size_t k = 0; k < c.joints.size(); ++k)
+            eff << ',' << e.contact_fraction[k] << ',' << e.peak_force[k] << ',' << e.impacts[k];
+          eff << ',' << e.peak_acceleration << ',' << e.steps << ',' << e.wall_time << ',' << e.table_setup_time
+              << '\n';
+        }
+      write_file_atomically(dir + "/effects.csv", eff.str());
+    }
+  } // namespace
+
+  void
+  write_contact_comparison(const std::string &dir, const ContactComparison &c)
+  {
+    make_output_directory(dir);
+    write_curves(dir, c);
+    write_tables(dir, c);
+    write_file_atomically(dir + "/compare_contact.txt", c.table());
+  }
+} // namespace wearlink::workflows
