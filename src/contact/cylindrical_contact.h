@@ -58,8 +58,8 @@ namespace wearlink::contact
   /**
    * @p law as a one-direction table over @p n_levels forces from @p min_force to the
    * valid maximum: what the normal force laws `johnson` and `esdu-78035` evaluate
-   * (monotone C¹ interpolation; the table reproduces the closed form to < 0.1 % at 40
-   * levels over eight decades, see tests/unit/contact).
+   * (monotone C¹ interpolation; the table reproduces the closed form to < 0.1 % at 60
+   * levels from 1 N to the valid maximum, see tests/unit/contact).
    */
   ForceApproachTable
   tabulate_cylindrical_law(CylindricalLaw law, const CylinderPair &pair, double min_force, unsigned int n_levels);

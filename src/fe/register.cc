@@ -21,7 +21,9 @@ namespace wearlink::fe
     contact::normal_force_laws().add(
       "fe",
       "F = F_FE(δ, direction) (1 + 3(1 − c_e²) δ̇/(4 δ̇⁻)): the elastic force tabulated from the 2D contact FE "
-      "model of the joint's current profiles, with the Lankarani–Nikravesh hysteresis (fe/fe_normal_force_law.h).",
+      "model of the joint's current profiles, with the Lankarani–Nikravesh hysteresis. The approach δ is the "
+      "overlap of the rigid profiles at the pin position of the FE equilibrium (bushing held on its outer edge, pin "
+      "loaded through its rigid core, no rotation): the δ the joint computes from its gap (fe/fe_normal_force_law.h).",
       declare_fe_force_law,
       [](ParameterReader &reader) -> std::unique_ptr<contact::NormalForceLaw> {
         return std::make_unique<FeNormalForceLaw>(read_fe_force_law(reader));

@@ -116,7 +116,7 @@ namespace wearlink::contact
     /**
      * A cylindrical closed form (contact/cylindrical_contact.h) with the L-N hysteresis:
      * tabulated from the joint's nominal radii, length and materials at every geometry
-     * update (40 levels from 1 N to the law's valid maximum).
+     * update (60 levels from 1 N to the law's valid maximum).
      */
     class Cylindrical : public NormalForceLaw
     {
@@ -130,7 +130,7 @@ namespace wearlink::contact
       void
       update_geometry(const JointGeometry &g) override
       {
-        table = tabulate_cylindrical_law(law, CylinderPair::of(g), 1.0, 40);
+        table = tabulate_cylindrical_law(law, CylinderPair::of(g), 1.0, 60);
       }
       void
       evaluate(const NormalContactInput &in, NormalContactOutput &out) const override

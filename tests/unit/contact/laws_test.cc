@@ -13,6 +13,7 @@
 #include "base/parameters.h"
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
+#include "steel_pair.h"
 
 #include <gtest/gtest.h>
 
@@ -60,15 +61,8 @@ namespace
 TEST_P(NormalLawContract, ZeroNonNegativeContinuousMonotoneAndConservative)
 {
   const auto law = make(normal_force_laws(), GetParam());
-  // A round steel pair (R1 = 12 mm, c = 0.5 mm, L = 10 mm) for laws built from the geometry.
-  JointGeometry g;
-  g.bore         = Profile::round(0.012, 360);
-  g.pin          = Profile::round(0.0115, 360);
-  g.axial_length = 0.01;
-  g.bushing      = {207e9, 0.3};
-  g.pin_material = {207e9, 0.3};
-  law->update_geometry(g);
-  const double K    = 7.97e10; // nine-bar joint, N/m^1.5
+  law->update_geometry(contact::testing::steel_pair()); // for laws built from the geometry
+  const double K    = 7.97e10;                          // nine-bar joint, N/m^1.5
   auto         eval = [&](double d, double rate, double impact) {
     NormalContactInput in;
     in.penetration      = d;
