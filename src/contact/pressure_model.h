@@ -106,6 +106,22 @@ namespace wearlink::contact
       return {};
     }
 
+    /**
+     * Write the model's fields for @p load next to @p stem: stem.vtu (displacement,
+     * stresses, von Mises) and stem_pressure.csv (contact pressure per node, both body
+     * frames). Only models that solve the bodies have fields; default: none (false).
+     */
+    virtual bool
+    write_fields(const ContactLoad &, const std::string &)
+    {
+      return false;
+    }
+    /** The gmsh file of the current mesh ("" for models without one). */
+    virtual std::string
+    mesh_file() const
+    {
+      return "";
+    }
     /** True for models that mesh and solve the actual geometry (gmsh + deal.II). */
     virtual bool
     requires_fe_geometry() const

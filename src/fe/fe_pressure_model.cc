@@ -6,6 +6,8 @@
 #include "fe/pin_bushing_model.h"
 
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 #include <unistd.h>
 
 namespace wearlink::fe
@@ -76,6 +78,42 @@ namespace wearlink::fe
     return t;
   }
 
+  namespace
+  {
+    /** The FE load case of a multibody load: the pin pushed by −(bushing's force on it). */
+    LoadCase
+    load_case(const contact::ContactLoad &load)
+    {
+      LoadCase lc;
+      lc.control       = Control::force;
+      lc.bushing_angle = load.bushing_angle;
+      lc.pin_angle     = load.pin_angle;
+      lc.load          = {-load.force[0], -load.force[1]};
+      return lc;
+    }
+  } // namespace
+
+  bool
+  FePressureModel::write_fields(const contact::ContactLoad &load, const std::string &stem)
+  {
+    if (model == nullptr || (load.force[0] == 0 && load.force[1] == 0))
+      return false;
+    const ContactResult r = model->solve(load_case(load), SolverKind::condensed, stem + ".vtu");
+    std::ostringstream  csv;
+    csv << std::setprecision(12) << "pin_angle_rad,bore_angle_rad,pressure_Pa,force_N\n";
+    for (std::size_t i = 0; i < r.pressure.size(); ++i)
+      csv << r.pin_angle[i] << ',' << r.bore_angle[i] << ',' << r.pressure[i] << ',' << r.force[i] << '\n';
+    write_file_atomically(stem + "_pressure.csv", csv.str());
+    return true;
+  }
+
+  std::string
+  FePressureModel::mesh_file() const
+  {
+    return mesh_counter == 0 ? std::string() :
+                               mesh_directory + "/pin_bushing_" + std::to_string(mesh_counter - 1) + ".msh";
+  }
+
   void
   FePressureModel::evaluate(const contact::ContactLoad &load, contact::SurfacePressure &out)
   {
@@ -84,12 +122,7 @@ namespace wearlink::fe
     out.bore.assign(geometry.bore.n_points(), 0.0);
     if (load.force[0] == 0 && load.force[1] == 0)
       return;
-    LoadCase lc;
-    lc.control            = Control::force;
-    lc.bushing_angle      = load.bushing_angle;
-    lc.pin_angle          = load.pin_angle;
-    lc.load               = {-load.force[0], -load.force[1]};
-    const ContactResult r = model->solve(lc, SolverKind::condensed);
+    const ContactResult r = model->solve(load_case(load), SolverKind::condensed);
     out                   = model->surface_pressure(r);
   }
 } // namespace wearlink::fe

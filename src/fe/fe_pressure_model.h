@@ -40,6 +40,12 @@ namespace wearlink::fe
     PhaseTimings
     timings() const override;
 
+    bool
+    write_fields(const contact::ContactLoad &load, const std::string &stem) override;
+
+    std::string
+    mesh_file() const override;
+
     /** Number of meshes built so far (one per update_geometry()). */
     unsigned int
     n_meshes() const

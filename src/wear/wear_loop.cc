@@ -123,8 +123,12 @@ namespace wearlink::wear
   WearLoop::archard_increments(const LoadRecorder &loads, const double t_start)
   {
     std::vector<std::unique_ptr<ArchardAccumulator>> increments;
+    peaks.assign(wearing.size(), contact::ContactLoad());
     for (unsigned int i = 0; i < wearing.size(); ++i)
       {
+        for (const auto &s : loads.samples(i))
+          if (s.load.normal_force > peaks[i].normal_force)
+            peaks[i] = s.load;
         const auto &w = *wearing[i].wear;
         increments.push_back(std::make_unique<ArchardAccumulator>(geometry(i, st.joints[i].bore, st.joints[i].pin),
                                                                   w.archard.bushing_coefficient,

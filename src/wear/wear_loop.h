@@ -108,6 +108,12 @@ namespace wearlink::wear
       return st;
     }
 
+    /** Per wearing joint, the load sample of the largest normal force of the last iteration. */
+    const std::vector<contact::ContactLoad> &
+    peak_loads() const
+    {
+      return peaks;
+    }
     /** The extrapolation factor of the last iteration [-]. */
     double
     last_factor() const
@@ -165,5 +171,6 @@ namespace wearlink::wear
     WearState                              st;
     std::string                            checkpoint_path;
     PhaseTimings                           own_timings;
+    std::vector<contact::ContactLoad>      peaks; ///< see peak_loads()
   };
 } // namespace wearlink::wear

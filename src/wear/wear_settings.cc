@@ -184,6 +184,15 @@ namespace wearlink::wear
               "body of Mechanism/Bodies.",
               "none");
       declare(prm,
+              "FE output",
+              "true",
+              P::Bool(),
+              "For joints on the fe pressure model: write into the run's folder fe/ the gmsh "
+              "mesh in use after iteration k whenever it changed (mesh_<J>_<k>.msh) and, at the peak-load state of the "
+              "first and of the last iteration, the FE fields (fields_<J>_iteration<k>.vtu: "
+              "displacement, stresses, von Mises; _pressure.csv: contact pressure per node).",
+              "none");
+      declare(prm,
               "Profile magnification",
               "0",
               P::Double(0),
@@ -283,6 +292,7 @@ namespace wearlink::wear
     s.response_cycles   = r.get_double("Response cycles");
     s.response_body     = r.get("Response body");
     s.magnification     = r.get_double("Profile magnification");
+    s.fe_output         = r.get_bool("FE output");
     r.leave();
     return s;
   }

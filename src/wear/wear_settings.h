@@ -70,6 +70,7 @@ namespace wearlink::wear
     double                 response_cycles      = 1; ///< before/after response [cycles]
     std::string            response_body;            ///< body whose response is plotted
     double                 magnification = 0;        ///< profile plots; 0: automatic
+    bool                   fe_output     = true;     ///< meshes and fields of fe joints into DIR/fe
   };
 
   /** Declare the per-joint wear entries (inside "Joint <name>/Clearance"). */

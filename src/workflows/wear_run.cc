@@ -347,6 +347,43 @@ namespace wearlink::workflows
     return io::driving_period(scene);
   }
 
+  namespace
+  {
+    /**
+     * The FE files of an iteration (Wear/FE output): the mesh of every joint on the fe
+     * pressure model when it changed since @p copied (its last copied mesh, per joint),
+     * and on the first and the last iteration the fields at the iteration's peak load.
+     */
+    void
+    write_fe_files(const std::vector<wear::WearingJoint> &wearing,
+                   const wear::WearLoop                  &loop,
+                   const std::string                     &dir,
+                   std::vector<std::string>              &copied)
+    {
+      const unsigned int k     = loop.state().iterations_done;
+      const bool         first = k == 1, last = loop.finished();
+      copied.resize(wearing.size());
+      for (std::size_t i = 0; i < wearing.size(); ++i)
+        {
+          auto             &model = *wearing[i].wear->model;
+          const std::string mesh  = model.mesh_file();
+          if (mesh.empty())
+            continue;
+          const std::string name = wearing[i].joint->name();
+          make_output_directory(dir + "/fe");
+          if (mesh != copied[i])
+            {
+              std::filesystem::copy_file(mesh,
+                                         dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh",
+                                         std::filesystem::copy_options::overwrite_existing);
+              copied[i] = mesh;
+            }
+          if (first || last)
+            model.write_fields(loop.peak_loads()[i], dir + "/fe/fields_" + name + "_iteration" + std::to_string(k));
+        }
+    }
+  } // namespace
+
   WearRunResult
   run_wear(io::Scene &scene, const WearRunOptions &options)
   {
@@ -358,8 +395,10 @@ namespace wearlink::workflows
     if (options.resume && !write)
       throw InputError("--resume needs the output directory of the run to continue.");
 
-    const double   period = cycle_period(scene);
-    wear::WearLoop loop(scene.wear_loop, wearing_joints(scene), scene.clearance_joints, period, dynamics_of(scene));
+    const double                          period  = cycle_period(scene);
+    const std::vector<wear::WearingJoint> wearing = wearing_joints(scene);
+    std::vector<std::string>              fe_meshes_copied;
+    wear::WearLoop loop(scene.wear_loop, wearing, scene.clearance_joints, period, dynamics_of(scene));
     start_or_resume(loop, scene, options, checkpoint);
     if (write)
       loop.set_checkpoint(checkpoint);
@@ -389,6 +428,8 @@ namespace wearlink::workflows
           before.write_csv(dir + "/response_before.csv");
         if (write)
           io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
+        if (write && scene.wear_loop.fe_output)
+          write_fe_files(wearing, loop, dir, fe_meshes_copied);
         if (options.progress)
           print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds());
       }

@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -248,4 +249,43 @@ TEST(Wear, PressureModelComparisonSameLoadsSimilarVolumes)
       EXPECT_GT(h.difference_pin, 0) << h.joint;
       EXPECT_EQ(w.difference_pin, 0) << "the last model is the reference";
     }
+}
+
+// FE files of a wear run with the fe pressure model (Wear/FE output, default on): the
+// mesh in use after every iteration in which it changed (Remesh interval 2 over three
+// iterations: the first mesh and the re-mesh after iteration 2), and the fields at the
+// peak load of the first and the last iteration; nothing for the hertz-strip joint B.
+// Off: no fe/ folder.
+TEST(Wear, FeWearRunWritesMeshesAndFields)
+{
+  const auto                base = with(short_run,
+                         {"Wear/Number of iterations=3",
+                                         "Wear/Remesh interval=2",
+                                         "Wear/Pressure evaluation=samples per cycle",
+                                         "Wear/Load samples per cycle=25",
+                                         "Joint A/Clearance/Pressure model=fe",
+                                         "Joint A/Clearance/fe/Surface element size=2e-4"});
+  workflows::WearRunOptions o;
+  o.progress         = false;
+  o.final_outputs    = false;
+  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files");
+  auto       scene   = wearlink::testing::scene("params/nine_bar_wear.prm", base);
+  const auto r       = workflows::run_wear(scene, o);
+  ASSERT_EQ(r.state.iterations_done, 3u);
+  const std::string fe = o.output_directory + "/fe/";
+  for (const char *f : {"mesh_A_1.msh",
+                        "mesh_A_2.msh",
+                        "fields_A_iteration1.vtu",
+                        "fields_A_iteration1_pressure.csv",
+                        "fields_A_iteration3.vtu",
+                        "fields_A_iteration3_pressure.csv"})
+    EXPECT_TRUE(std::filesystem::exists(fe + f)) << f;
+  EXPECT_FALSE(std::filesystem::exists(fe + "mesh_A_3.msh")) << "no re-mesh after iteration 3";
+  EXPECT_FALSE(std::filesystem::exists(fe + "fields_A_iteration2.vtu"));
+  EXPECT_FALSE(std::filesystem::exists(fe + "mesh_B_1.msh")) << "joint B is on hertz-strip";
+
+  auto off           = wearlink::testing::scene("params/nine_bar_wear.prm", with(base, {"Wear/FE output=false"}));
+  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files_off");
+  workflows::run_wear(off, o);
+  EXPECT_FALSE(std::filesystem::exists(o.output_directory + "/fe"));
 }
