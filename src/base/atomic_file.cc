@@ -3,6 +3,7 @@
 
 #include "base/exceptions.h"
 
+#include <atomic>
 #include <filesystem>
 #include <system_error>
 #include <unistd.h>
@@ -82,4 +83,20 @@ namespace wearlink
       throw InputError("Cannot create the output directory '" + dir + "': " + ec.message() +
                        ". Choose another --output directory.");
   }
+  TemporaryDirectory::TemporaryDirectory(const std::string &what)
+  {
+    static std::atomic<unsigned long> counter{0};
+    namespace fs = std::filesystem;
+    directory    = (fs::temp_directory_path() /
+                 ("wearlink-" + what + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++)))
+                  .string();
+    make_output_directory(directory);
+  }
+
+  TemporaryDirectory::~TemporaryDirectory()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(directory, ignored);
+  }
+
 } // namespace wearlink

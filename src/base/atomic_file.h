@@ -58,6 +58,30 @@ namespace wearlink
   std::string
   temporary_name_for(const std::string &path);
 
+  /**
+   * A new directory under the system's temporary directory, named
+   * "wearlink-<what>-<pid>-<n>" (n counts within the process), removed with everything in
+   * it when the object goes: scratch space for meshes and plot scripts.
+   */
+  class TemporaryDirectory
+  {
+  public:
+    explicit TemporaryDirectory(const std::string &what);
+    ~TemporaryDirectory();
+    TemporaryDirectory(const TemporaryDirectory &) = delete;
+    TemporaryDirectory &
+    operator=(const TemporaryDirectory &) = delete;
+
+    const std::string &
+    path() const
+    {
+      return directory;
+    }
+
+  private:
+    std::string directory;
+  };
+
   /** Create @p dir (and parents); an InputError if that is impossible. */
   void
   make_output_directory(const std::string &dir);

@@ -67,11 +67,7 @@ namespace wearlink::contact
   {
     if (!(approach > 0))
       return 0;
-    const auto foundation = [](const Material &m) {
-      const double nu = m.poisson_ratio;
-      return m.youngs_modulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-    };
-    const double Ec = 1.0 / (1.0 / foundation(g.bushing) + 1.0 / foundation(g.pin_material));
+    const double Ec = series_foundation_modulus(g.bushing, g.pin_material);
     const double R1 = g.bore.mean_radius(), c = R1 - g.pin.mean_radius(), e = c + approach;
     const double phi0 = std::acos(c / e);
     return Ec * g.axial_length * R1 / thickness *

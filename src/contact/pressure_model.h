@@ -43,6 +43,20 @@ namespace wearlink::contact
     return 1.0 / (a.compliance() + b.compliance());
   }
 
+  /**
+   * Modulus of a Winkler layer of the two surfaces in series, 1/(1/E_f,a + 1/E_f,b) [Pa],
+   * with E_f = E(1 − ν)/((1 + ν)(1 − 2ν)) the constrained modulus of each layer.
+   */
+  inline double
+  series_foundation_modulus(const Material &a, const Material &b)
+  {
+    const auto layer = [](const Material &m) {
+      const double nu = m.poisson_ratio;
+      return m.youngs_modulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+    };
+    return 1.0 / (1.0 / layer(a) + 1.0 / layer(b));
+  }
+
   /** Geometry and materials of one shaft–bushing pair. */
   struct JointGeometry
   {

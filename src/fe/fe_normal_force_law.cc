@@ -17,7 +17,6 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
-#include <unistd.h>
 
 namespace wearlink::fe
 {
@@ -143,23 +142,6 @@ namespace wearlink::fe
         }
     }
 
-    /** A temporary directory for the table's mesh, removed with this object. */
-    struct ScratchDirectory
-    {
-      std::string path;
-      ScratchDirectory()
-        : path((fs::temp_directory_path() / ("wearlink-fe-table-" + std::to_string(::getpid()) + "-" +
-                                             std::to_string(reinterpret_cast<std::uintptr_t>(this))))
-                 .string())
-      {
-        fs::create_directories(path);
-      }
-      ~ScratchDirectory()
-      {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-      }
-    };
 
     /** The FE approaches of every direction and level (the expensive part). */
     std::vector<double>
@@ -169,8 +151,8 @@ namespace wearlink::fe
                 const std::vector<std::array<double, 2>> &directions,
                 TableBuild                               &build)
     {
-      const ScratchDirectory scratch;
-      PinBushingModel        model(g, fe, scratch.path + "/pin_bushing.msh");
+      const TemporaryDirectory scratch("fe-table");
+      PinBushingModel          model(g, fe, scratch.path() + "/pin_bushing.msh");
       model.prepare_condensed();
       build.mesh_seconds  = model.statistics().mesh_time;
       build.setup_seconds = model.statistics().assembly_time + model.statistics().factorization_time;
@@ -299,18 +281,25 @@ namespace wearlink::fe
     return s;
   }
 
+  std::vector<double>
+  table_load_levels(const FeForceLawSettings &s)
+  {
+    std::vector<double> forces(s.n_levels);
+    for (unsigned int k = 0; k < s.n_levels; ++k)
+      forces[k] = s.min_force * std::pow(s.max_force / s.min_force, double(k) / (s.n_levels - 1));
+    return forces;
+  }
+
   contact::ForceApproachTable
   build_force_approach_table(const contact::JointGeometry &g, const FeForceLawSettings &s, TableBuild &build)
   {
     const Stopwatch clock;
-    build                     = TableBuild();
-    const bool          round = g.bore.is_round() && g.pin.is_round();
-    const unsigned int  n_b   = round ? 1 : s.n_bore_directions;
-    const unsigned int  n_p   = round ? 1 : s.n_pin_directions;
-    std::vector<double> forces(s.n_levels);
-    for (unsigned int k = 0; k < s.n_levels; ++k)
-      forces[k] = s.min_force * std::pow(s.max_force / s.min_force, double(k) / (s.n_levels - 1));
-    const std::string key = geometry_key(g, s);
+    build                            = TableBuild();
+    const bool                round  = g.bore.is_round() && g.pin.is_round();
+    const unsigned int        n_b    = round ? 1 : s.n_bore_directions;
+    const unsigned int        n_p    = round ? 1 : s.n_pin_directions;
+    const std::vector<double> forces = table_load_levels(s);
+    const std::string         key    = geometry_key(g, s);
     if (s.cache)
       {
         build.cache_file                   = cache_file(key);
@@ -362,66 +351,36 @@ namespace wearlink::fe
   }
 
   FeNormalForceLaw::FeNormalForceLaw(FeForceLawSettings s)
-    : settings(std::move(s))
-    , damping_factor(3 * (1 - settings.restitution * settings.restitution) / 4)
+    : TabulatedNormalForceLaw(s.restitution, s.min_impact_velocity)
+    , settings(std::move(s))
   {
   }
 
-  void
-  FeNormalForceLaw::update_geometry(const contact::JointGeometry &geometry)
+  contact::ForceApproachTable
+  FeNormalForceLaw::build_table(const contact::JointGeometry &geometry)
   {
-    force_table = build_force_approach_table(geometry, settings, last_build);
+    contact::ForceApproachTable table = build_force_approach_table(geometry, settings, last_build);
     total_build_seconds += last_build.seconds;
     ++n_builds;
     n_cached += last_build.from_cache ? 1 : 0;
-  }
-
-  void
-  FeNormalForceLaw::evaluate(const contact::NormalContactInput &in, contact::NormalContactOutput &out) const
-  {
-    out = contact::NormalContactOutput();
-    if (!(in.penetration > 0))
-      return;
-    AssertThrow(!force_table.empty(),
-                dealii::ExcMessage("The fe normal force law was evaluated before its table was built."));
-    const auto v = force_table.evaluate(in.penetration, in.bore_angle, in.pin_angle);
-    ++evaluations;
-    if (v.region == contact::ForceApproachTable::Region::above)
-      ++above;
-    else if (v.region == contact::ForceApproachTable::Region::below)
-      ++below;
-    out.elastic_force = v.force;
-    out.force         = contact::lankarani_nikravesh_force(v.force, in, damping_factor, settings.min_impact_velocity);
-  }
-
-  double
-  FeNormalForceLaw::potential(const contact::NormalContactInput &in) const
-  {
-    return force_table.empty() ? 0.0 : force_table.potential(in.penetration, in.bore_angle, in.pin_angle);
+    return table;
   }
 
   Json
   FeNormalForceLaw::report() const
   {
-    Json j;
-    j["table_load_levels"]          = force_table.n_levels();
-    j["table_bore_directions"]      = force_table.n_bore_directions();
-    j["table_pin_directions"]       = force_table.n_pin_directions();
-    j["table_force_range_N"]        = {settings.min_force, settings.max_force};
-    j["table_fe_solves"]            = last_build.n_solves;
-    j["table_build_time_s"]         = last_build.seconds;
-    j["table_build_mesh_time_s"]    = last_build.mesh_seconds;
-    j["table_build_setup_time_s"]   = last_build.setup_seconds;
-    j["table_build_solve_time_s"]   = last_build.solve_seconds;
-    j["table_from_cache"]           = last_build.from_cache;
-    j["table_builds"]               = n_builds;
-    j["table_builds_from_cache"]    = n_cached;
-    j["table_build_time_total_s"]   = total_build_seconds;
-    j["table_max_half_angle_deg"]   = last_build.max_half_angle * 180 / pi;
-    j["table_within_validity"]      = last_build.max_half_angle < pi / 2;
-    j["evaluations"]                = evaluations.load();
-    j["extrapolations_above_table"] = above.load();
-    j["extrapolations_below_table"] = below.load();
+    Json j                        = TabulatedNormalForceLaw::report();
+    j["table_fe_solves"]          = last_build.n_solves;
+    j["table_build_time_s"]       = last_build.seconds;
+    j["table_build_mesh_time_s"]  = last_build.mesh_seconds;
+    j["table_build_setup_time_s"] = last_build.setup_seconds;
+    j["table_build_solve_time_s"] = last_build.solve_seconds;
+    j["table_from_cache"]         = last_build.from_cache;
+    j["table_builds"]             = n_builds;
+    j["table_builds_from_cache"]  = n_cached;
+    j["table_build_time_total_s"] = total_build_seconds;
+    j["table_max_half_angle_deg"] = last_build.max_half_angle * 180 / pi;
+    j["table_within_validity"]    = last_build.max_half_angle < pi / 2;
     return j;
   }
 } // namespace wearlink::fe

@@ -25,10 +25,9 @@
 #pragma once
 
 #include "contact/force_approach_table.h"
-#include "contact/normal_force_law.h"
+#include "contact/tabulated_normal_force_law.h"
 #include "fe/fe_settings.h"
 
-#include <atomic>
 #include <string>
 
 namespace wearlink::fe
@@ -66,6 +65,10 @@ namespace wearlink::fe
     std::string  cache_file;
   };
 
+  /** The table's load levels: n_levels forces spaced logarithmically from min_force to max_force [N]. */
+  std::vector<double>
+  table_load_levels(const FeForceLawSettings &settings);
+
   /**
    * Tabulate the elastic force against the approach for @p geometry (see the file
    * comment). NumericalError if the FE approach does not increase with the load.
@@ -90,62 +93,23 @@ namespace wearlink::fe
                     double                        pin_angle,
                     TableBuild                   &build);
 
-  class FeNormalForceLaw : public contact::NormalForceLaw
+  class FeNormalForceLaw : public contact::TabulatedNormalForceLaw
   {
   public:
     explicit FeNormalForceLaw(FeForceLawSettings settings);
 
-    void
-    evaluate(const contact::NormalContactInput &in, contact::NormalContactOutput &out) const override;
-    double
-    exponent() const override
-    {
-      return 1.5;
-    }
-    double
-    potential(const contact::NormalContactInput &in) const override;
-    void
-    update_geometry(const contact::JointGeometry &geometry) override;
-    bool
-    uses_direction() const override
-    {
-      return true;
-    }
-    /** Table size, build time (total and last), cache use, extrapolation counts. */
+    /** The table's (TabulatedNormalForceLaw::report) and its builds: times, cache use, validity. */
     Json
     report() const override;
 
-    const contact::ForceApproachTable &
-    table() const
-    {
-      return force_table;
-    }
-    long
-    n_extrapolations_above() const
-    {
-      return above;
-    }
-    long
-    n_extrapolations_below() const
-    {
-      return below;
-    }
+  protected:
+    contact::ForceApproachTable
+    build_table(const contact::JointGeometry &geometry) override;
 
   private:
-  public:
-    const FeForceLawSettings &
-    law_settings() const
-    {
-      return settings;
-    }
-
-  private:
-    const FeForceLawSettings    settings;
-    const double                damping_factor;
-    contact::ForceApproachTable force_table;
-    TableBuild                  last_build;
-    double                      total_build_seconds = 0;
-    unsigned int                n_builds = 0, n_cached = 0;
-    mutable std::atomic<long>   above{0}, below{0}, evaluations{0};
+    const FeForceLawSettings settings;
+    TableBuild               last_build;
+    double                   total_build_seconds = 0;
+    unsigned int             n_builds = 0, n_cached = 0;
   };
 } // namespace wearlink::fe

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
-#include <unistd.h>
 
 namespace wearlink::fe
 {
@@ -22,12 +21,7 @@ namespace wearlink::fe
   // writes the worn geometry's .msh into the run's output directory itself).
   FePressureModel::~FePressureModel()
   {
-    model.reset();
-    if (owns_mesh_directory)
-      {
-        std::error_code ignored;
-        std::filesystem::remove_all(mesh_directory, ignored);
-      }
+    model.reset(); // before its temporary mesh directory goes
   }
 
   // A new mesh per geometry: worn profiles change the domain, so the mesh, the
@@ -37,14 +31,16 @@ namespace wearlink::fe
   {
     if (mesh_directory.empty())
       {
-        namespace fs        = std::filesystem;
-        mesh_directory      = settings.mesh_directory.empty() ?
-                                (fs::temp_directory_path() / ("wearlink-fe-" + std::to_string(::getpid()) + "-" +
-                                                         std::to_string(reinterpret_cast<std::uintptr_t>(this))))
-                             .string() :
-                                settings.mesh_directory;
-        owns_mesh_directory = settings.mesh_directory.empty();
-        make_output_directory(mesh_directory);
+        if (settings.mesh_directory.empty())
+          {
+            temporary_meshes = std::make_unique<TemporaryDirectory>("fe");
+            mesh_directory   = temporary_meshes->path();
+          }
+        else
+          {
+            mesh_directory = settings.mesh_directory;
+            make_output_directory(mesh_directory);
+          }
       }
     if (model)
       {

@@ -10,6 +10,7 @@
 // equilibrium position itself. No deal.II type leaks out (pimpl in PinBushingModel).
 #pragma once
 
+#include "base/atomic_file.h"
 #include "contact/pressure_model.h"
 #include "fe/fe_settings.h"
 
@@ -54,12 +55,12 @@ namespace wearlink::fe
     }
 
   private:
-    const FeSettings                 settings;
-    std::string                      mesh_directory;
-    unsigned int                     mesh_counter        = 0;
-    bool                             owns_mesh_directory = false; ///< a temporary directory, removed with the model
-    contact::JointGeometry           geometry;
-    std::unique_ptr<PinBushingModel> model;
+    const FeSettings                    settings;
+    std::string                         mesh_directory;
+    unsigned int                        mesh_counter = 0;
+    std::unique_ptr<TemporaryDirectory> temporary_meshes; ///< when 'Mesh directory' is empty: removed with the model
+    contact::JointGeometry              geometry;
+    std::unique_ptr<PinBushingModel>    model;
     /** Set-up times of the models already replaced [s]. */
     double past_mesh_time = 0, past_setup_time = 0, past_compliance_time = 0;
   };

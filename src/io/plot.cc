@@ -104,11 +104,10 @@ namespace wearlink::io
                     << " (apt-get install gnuplot-nox)\n";
           return false;
         }
-      const fs::path dir = fs::temp_directory_path() / ("wearlink-plot-" + std::to_string(::getpid()) + "-" +
-                                                        std::to_string(std::hash<std::string>()(png_path)));
-      fs::create_directories(dir);
-      const std::string  tmp_png = temporary_name_for(png_path);
-      std::ostringstream script;
+      const TemporaryDirectory scratch("plot");
+      const fs::path           dir     = scratch.path();
+      const std::string        tmp_png = temporary_name_for(png_path);
+      std::ostringstream       script;
       script << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,11'\n"
              << "set output " << quote(tmp_png) << "\n"
              << body(dir) << "unset output\n";
@@ -127,12 +126,10 @@ namespace wearlink::io
           std::stringstream ls;
           ls << log.rdbuf();
           fs::remove(tmp_png, ec);
-          fs::remove_all(dir, ec);
           std::cerr << "warning: gnuplot failed for " << png_path << ": " << ls.str() << "\n";
           return false;
         }
       commit_external_file(tmp_png, png_path);
-      fs::remove_all(dir, ec);
       return true;
     }
   } // namespace

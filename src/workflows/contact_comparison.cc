@@ -35,12 +35,12 @@ namespace wearlink::workflows
     {
       std::string                 name, law;
       contact::JointGeometry      geometry;
+      contact::CylinderPair       pair;                  ///< for the closed forms
       double                      stiffness         = 0; ///< K of the sphere law [N/m^1.5]
       double                      restitution       = 1; ///< of the scene's law (1 if it has none)
       double                      winkler_thickness = 0; ///< 0: not given
       fe::FeForceLawSettings      fe;
       contact::ForceApproachTable fe_fresh, fe_worn;
-      std::size_t                 worn_levels_dropped = 0; ///< load levels whose worn approach did not increase
       contact::JointGeometry      worn;
       bool                        has_worn = false;
     };
@@ -57,6 +57,7 @@ namespace wearlink::workflows
       JointData d;
       d.name      = cj.name();
       d.geometry  = cj.get_description().geometry;
+      d.pair      = contact::CylinderPair::of(d.geometry);
       d.stiffness = cj.stiffness();
       ParameterReader r(*scene.parameters, scene.file);
       r.enter("Joint " + d.name);
@@ -90,27 +91,21 @@ namespace wearlink::workflows
       return worn.angle(best);
     }
 
-    /** The FE curves of joint @p d (fresh, and worn if given) as one-direction tables. */
-    void
-    fe_curves(JointData &d, const std::string &worn_directory, const bool progress)
+    /**
+     * The FE curve of @p geometry in one direction as a one-direction table, the load
+     * levels where the approach does not increase left out (on a worn pocket the pin can
+     * slide sideways as the load grows); their number goes to @p dropped.
+     */
+    contact::ForceApproachTable
+    fe_curve(const contact::JointGeometry &geometry,
+             const fe::FeForceLawSettings &settings,
+             const double                  psi_b,
+             const double                  psi_p,
+             fe::TableBuild               &build,
+             std::size_t                  &dropped)
     {
-      std::vector<double> forces(d.fe.n_levels);
-      for (unsigned int k = 0; k < d.fe.n_levels; ++k)
-        forces[k] = d.fe.min_force * std::pow(d.fe.max_force / d.fe.min_force, double(k) / (d.fe.n_levels - 1));
-      fe::TableBuild b;
-      d.fe_fresh = contact::ForceApproachTable(forces, 1, 1, fe::fe_approach_curve(d.geometry, d.fe, forces, 0, 0, b));
-      if (progress)
-        std::cerr << "[wearlink] joint " << d.name << ": FE force–approach curve (fresh) in " << b.seconds << " s\n";
-      if (worn_directory.empty())
-        return;
-      const unsigned int n            = d.geometry.bore.n_points();
-      d.worn                          = d.geometry;
-      d.worn.bore                     = io::read_profile_csv(worn_directory + "/bore_" + d.name + ".csv", n);
-      d.worn.pin                      = io::read_profile_csv(worn_directory + "/pin_" + d.name + ".csv", n);
-      d.has_worn                      = true;
-      const double              psi_b = deepest(d.geometry.bore, d.worn.bore, 1.0);
-      const double              psi_p = deepest(d.geometry.pin, d.worn.pin, -1.0);
-      const std::vector<double> raw   = fe::fe_approach_curve(d.worn, d.fe, forces, psi_b, psi_p, b);
+      const std::vector<double> forces = fe::table_load_levels(settings);
+      const std::vector<double> raw    = fe::fe_approach_curve(geometry, settings, forces, psi_b, psi_p, build);
       std::vector<double>       kept_forces, kept;
       for (std::size_t k = 0; k < raw.size(); ++k)
         if (kept.empty() || raw[k] > kept.back())
@@ -118,15 +113,44 @@ namespace wearlink::workflows
             kept_forces.push_back(forces[k]);
             kept.push_back(raw[k]);
           }
-      d.worn_levels_dropped = raw.size() - kept.size();
+      dropped = raw.size() - kept.size();
       if (kept.size() < 2)
-        throw NumericalError("The FE approach of joint " + d.name +
-                             "'s worn profiles does not increase with the load in the direction of the deepest wear.");
-      d.fe_worn = contact::ForceApproachTable(kept_forces, 1, 1, kept);
+        throw NumericalError("The FE approach does not increase with the load in the direction " +
+                             format_number(psi_b) + " rad (bushing frame), " + format_number(psi_p) +
+                             " rad (pin frame).");
+      return contact::ForceApproachTable(kept_forces, 1, 1, kept);
+    }
+
+    /**
+     * The FE curves of joint @p d: fresh (round pairs: the fe law's own one-direction
+     * table, cached like it, so an equal joint and the fe effect run reuse it), and worn,
+     * in the direction of the deepest wear, if @p worn_directory is given.
+     */
+    void
+    fe_curves(JointData &d, const std::string &worn_directory, const bool progress)
+    {
+      fe::TableBuild b;
+      std::size_t    dropped = 0;
+      const bool     round   = d.geometry.bore.is_round() && d.geometry.pin.is_round();
+      d.fe_fresh =
+        round ? fe::build_force_approach_table(d.geometry, d.fe, b) : fe_curve(d.geometry, d.fe, 0, 0, b, dropped);
+      if (progress)
+        std::cerr << "[wearlink] joint " << d.name << ": FE force–approach curve (fresh) in " << b.seconds << " s"
+                  << (b.from_cache ? " (cached)" : "") << '\n';
+      if (worn_directory.empty())
+        return;
+      const unsigned int n = d.geometry.bore.n_points();
+      d.worn               = d.geometry;
+      d.worn.bore          = io::read_profile_csv(worn_directory + "/bore_" + d.name + ".csv", n);
+      d.worn.pin           = io::read_profile_csv(worn_directory + "/pin_" + d.name + ".csv", n);
+      d.has_worn           = true;
+      const double psi_b   = deepest(d.geometry.bore, d.worn.bore, 1.0);
+      const double psi_p   = deepest(d.geometry.pin, d.worn.pin, -1.0);
+      d.fe_worn            = fe_curve(d.worn, d.fe, psi_b, psi_p, b, dropped);
       if (progress)
         std::cerr << "[wearlink] joint " << d.name << ": FE curve (worn, bore " << psi_b * 180 / numbers::pi
-                  << "°, pin " << psi_p * 180 / numbers::pi << "°) in " << b.seconds << " s; " << d.worn_levels_dropped
-                  << " of " << raw.size() << " load levels left out where the approach did not increase\n";
+                  << "°, pin " << psi_p * 180 / numbers::pi << "°) in " << b.seconds << " s; " << dropped << " of "
+                  << d.fe.n_levels << " load levels left out where the approach did not increase\n";
     }
 
     /** The FE approach at which table @p t carries @p force (bisection in ln δ). */
@@ -146,13 +170,12 @@ namespace wearlink::workflows
     double
     law_force(const JointData &d, const std::string &law, const double delta, const bool worn)
     {
-      const auto pair = contact::CylinderPair::of(d.geometry);
       if (law == "lankarani-nikravesh")
         return d.stiffness * std::pow(delta, 1.5);
       if (law == "johnson")
-        return contact::cylindrical_force(contact::CylindricalLaw::johnson, pair, delta);
+        return contact::cylindrical_force(contact::CylindricalLaw::johnson, d.pair, delta);
       if (law == "esdu-78035")
-        return contact::cylindrical_force(contact::CylindricalLaw::esdu_78035, pair, delta);
+        return contact::cylindrical_force(contact::CylindricalLaw::esdu_78035, d.pair, delta);
       if (law == "winkler")
         return d.winkler_thickness > 0 ? contact::winkler_round_force(d.geometry, d.winkler_thickness, delta) : nan;
       const auto &t = worn ? d.fe_worn : d.fe_fresh;

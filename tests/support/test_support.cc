@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "support/test_support.h"
 
+#include "base/exceptions.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -97,5 +99,18 @@ namespace wearlink::testing
       if (e.is_regular_file())
         out.push_back(e.path().string());
     return out;
+  }
+  std::string
+  input_error_message(const std::function<void()> &f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const InputError &e)
+      {
+        return e.message();
+      }
+    return "(no InputError)";
   }
 } // namespace wearlink::testing

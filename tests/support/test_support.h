@@ -4,6 +4,7 @@
 
 #include "base/json.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ namespace wearlink::testing
    */
   ProgramResult
   run_wearlink_mpi(unsigned int n_ranks, const std::vector<std::string> &args);
+
+  /** The message of the InputError that @p f throws, or "(no InputError)". */
+  std::string
+  input_error_message(const std::function<void()> &f);
 
   /** Files (recursively) in @p dir. */
   std::vector<std::string>

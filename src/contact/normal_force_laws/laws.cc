@@ -3,6 +3,7 @@
 #include "base/parameters.h"
 #include "contact/cylindrical_contact.h"
 #include "contact/normal_force_law.h"
+#include "contact/tabulated_normal_force_law.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,56 +119,24 @@ namespace wearlink::contact
      * tabulated from the joint's nominal radii, length and materials at every geometry
      * update (60 levels from 1 N to the law's valid maximum).
      */
-    class Cylindrical : public NormalForceLaw
+    class Cylindrical : public TabulatedNormalForceLaw
     {
     public:
       Cylindrical(ParameterReader &r, const CylindricalLaw law)
-        : law(law)
-        , min_impact_velocity(r.get_positive("Minimum impact velocity"))
-        , factor(3 * (1 - std::pow(r.get_double("Restitution coefficient"), 2)) / 4)
+        : TabulatedNormalForceLaw(r.get_double("Restitution coefficient"), r.get_positive("Minimum impact velocity"))
+        , law(law)
       {
       }
-      void
-      update_geometry(const JointGeometry &g) override
+
+    protected:
+      ForceApproachTable
+      build_table(const JointGeometry &g) override
       {
-        table = tabulate_cylindrical_law(law, CylinderPair::of(g), 1.0, 60);
-      }
-      void
-      evaluate(const NormalContactInput &in, NormalContactOutput &out) const override
-      {
-        out = NormalContactOutput();
-        if (!(in.penetration > 0))
-          return;
-        const auto v = table.evaluate(in.penetration, 0, 0);
-        above += v.region == ForceApproachTable::Region::above ? 1 : 0;
-        out.elastic_force = v.force;
-        out.force         = lankarani_nikravesh_force(v.force, in, factor, min_impact_velocity);
-      }
-      double
-      potential(const NormalContactInput &in) const override
-      {
-        return table.potential(in.penetration, 0, 0);
-      }
-      double
-      exponent() const override
-      {
-        return 1.0;
-      }
-      Json
-      report() const override
-      {
-        Json j;
-        j["table_load_levels"]          = table.n_levels();
-        j["table_force_range_N"]        = {table.forces().front(), table.forces().back()};
-        j["extrapolations_above_table"] = above;
-        return j;
+        return tabulate_cylindrical_law(law, CylinderPair::of(g), 1.0, 60);
       }
 
     private:
       const CylindricalLaw law;
-      const double         min_impact_velocity, factor;
-      ForceApproachTable   table;
-      mutable long         above = 0;
     };
   } // namespace
 

@@ -32,12 +32,6 @@ namespace wearlink::contact
     constexpr unsigned int sub         = 8;    ///< sub-samples per discrete area
     constexpr double       floor_force = 1e-5; ///< [N], see evaluate()
 
-    double
-    foundation_modulus(const Material &m)
-    {
-      const double nu = m.poisson_ratio;
-      return m.youngs_modulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-    }
 
     class Winkler : public PressureModel
     {
@@ -53,7 +47,7 @@ namespace wearlink::contact
       {
         geometry = g;
         // Layer moduli in series: d = p h/E_f,bore + p h/E_f,pin.
-        modulus   = 1.0 / (1.0 / foundation_modulus(g.bushing) + 1.0 / foundation_modulus(g.pin_material));
+        modulus   = series_foundation_modulus(g.bushing, g.pin_material);
         stiffness = modulus / thickness;
       }
 

@@ -25,19 +25,6 @@ namespace
     prm.leave_subsection();
   }
 
-  std::string
-  message_of(const std::function<void()> &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        return e.message();
-      }
-    return "";
-  }
 } // namespace
 
 TEST(Parameters, IncludeIsRelativeToIncludingFile)
@@ -64,23 +51,25 @@ TEST(Parameters, ErrorsNameFileEntryAndRange)
 
   dealii::ParameterHandler prm;
   declare(prm);
-  const auto typo = message_of([&] { read_prm_file(prm, dir + "/typo.prm"); });
+  const auto typo = wearlink::testing::input_error_message([&] { read_prm_file(prm, dir + "/typo.prm"); });
   EXPECT_NE(typo.find("typo.prm"), std::string::npos) << typo;
   EXPECT_NE(typo.find("Radial clearence"), std::string::npos) << typo;
 
   dealii::ParameterHandler prm2;
   declare(prm2);
-  const auto neg = message_of([&] { read_prm_file(prm2, dir + "/negative.prm"); });
+  const auto neg = wearlink::testing::input_error_message([&] { read_prm_file(prm2, dir + "/negative.prm"); });
   EXPECT_NE(neg.find("negative.prm"), std::string::npos) << neg;
   EXPECT_NE(neg.find("Radial clearance"), std::string::npos) << neg;
 
   dealii::ParameterHandler prm3;
   declare(prm3);
   read_prm_file(prm3, dir + "/missing.prm");
-  const auto missing = message_of([&] { check_required_entries(prm3, dir + "/missing.prm"); });
+  const auto missing =
+    wearlink::testing::input_error_message([&] { check_required_entries(prm3, dir + "/missing.prm"); });
   EXPECT_NE(missing.find("Joint/Youngs modulus"), std::string::npos) << missing;
 
-  EXPECT_NE(message_of([&] { read_prm_file(prm3, dir + "/nope.prm"); }).find("nope.prm"), std::string::npos);
+  EXPECT_NE(wearlink::testing::input_error_message([&] { read_prm_file(prm3, dir + "/nope.prm"); }).find("nope.prm"),
+            std::string::npos);
 }
 
 TEST(Parameters, OverridesAreChecked)

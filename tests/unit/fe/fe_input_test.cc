@@ -20,19 +20,6 @@ using namespace wearlink::fe::testing;
 
 namespace
 {
-  std::string
-  input_error_of(const std::function<void()> &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        return e.message();
-      }
-    return "(no InputError)";
-  }
 
   bool
   contains(const std::string &text, const std::string &part)
@@ -47,8 +34,8 @@ TEST(FeInput, PinNotInsideBoreIsRejectedBeforeMeshing)
   auto g              = steel_pair();
   g.pin               = Profile::round(0.0121, 360);
   const long sessions = EffectLedger::instance().resources("gmsh sessions");
-  const auto msg =
-    input_error_of([&] { PinBushingModel m(g, settings_about_minus_y(1e-4, 180), mesh_file("bad_pin")); });
+  const auto msg      = wearlink::testing::input_error_message(
+    [&] { PinBushingModel m(g, settings_about_minus_y(1e-4, 180), mesh_file("bad_pin")); });
   EXPECT_TRUE(contains(msg, "not inside the bore")) << msg;
   EXPECT_EQ(EffectLedger::instance().resources("gmsh sessions"), sessions);
 }
@@ -59,7 +46,7 @@ TEST(FeInput, NegativeOrNonFiniteSizesAreRejected)
   const auto g           = steel_pair();
   auto       s           = settings_about_minus_y(1e-4, 180);
   s.surface_element_size = -1e-5;
-  auto msg               = input_error_of([&] { PinBushingModel m(g, s, mesh_file("bad_size")); });
+  auto msg = wearlink::testing::input_error_message([&] { PinBushingModel m(g, s, mesh_file("bad_size")); });
   EXPECT_TRUE(contains(msg, "Surface element size")) << msg;
 
   MeshSpecification spec;
@@ -68,28 +55,30 @@ TEST(FeInput, NegativeOrNonFiniteSizesAreRejected)
   spec.surface_element_size = 1e-4;
   spec.max_element_size     = 1e-3;
   spec.size_growth          = 0.3;
-  msg                       = input_error_of([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
+  msg = wearlink::testing::input_error_message([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
   EXPECT_TRUE(contains(msg, "outer radius")) << msg;
 
   spec.outer_radius         = 0.024;
   spec.surface_element_size = std::numeric_limits<double>::quiet_NaN();
-  msg                       = input_error_of([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
+  msg = wearlink::testing::input_error_message([&] { check_pin_bushing_geometry(g.bore, g.pin, spec); });
   EXPECT_TRUE(contains(msg, "finite and > 0")) << msg;
 
   auto g2         = steel_pair();
   g2.axial_length = -0.01;
-  msg = input_error_of([&] { PinBushingModel m(g2, settings_about_minus_y(1e-4, 180), mesh_file("bad_length")); });
+  msg             = wearlink::testing::input_error_message(
+    [&] { PinBushingModel m(g2, settings_about_minus_y(1e-4, 180), mesh_file("bad_length")); });
   EXPECT_TRUE(contains(msg, "axial length")) << msg;
 }
 
 
 TEST(FeInput, ProfilesNeedEightFinitePositivePoints)
 {
-  auto msg = input_error_of([] { Profile::from_samples(std::vector<double>(7, 0.012), "bore"); });
+  auto msg =
+    wearlink::testing::input_error_message([] { Profile::from_samples(std::vector<double>(7, 0.012), "bore"); });
   EXPECT_TRUE(contains(msg, "at least 8")) << msg;
   std::vector<double> r(16, 0.012);
   r[3] = std::numeric_limits<double>::quiet_NaN();
-  msg  = input_error_of([&] { Profile::from_samples(r, "bore"); });
+  msg  = wearlink::testing::input_error_message([&] { Profile::from_samples(r, "bore"); });
   EXPECT_TRUE(contains(msg, "finite")) << msg;
 }
 

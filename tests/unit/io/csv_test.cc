@@ -28,21 +28,6 @@ namespace
     return file;
   }
 
-  /** The message of the InputError that @p f throws ("" if none). */
-  template <typename F>
-  std::string
-  error_of(F &&f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        return e.message();
-      }
-    return "";
-  }
 } // namespace
 
 TEST(Csv, HeaderCommentsQuotesAndBlankLines)
@@ -67,12 +52,14 @@ TEST(Csv, ErrorsNameFileLineAndColumn)
 {
   const std::string file = write("bad", "t,x\n0,1\n1,nan\n2\n");
   const CsvTable    t    = CsvTable::read(file, "test file");
-  const std::string nan  = error_of([&] { t.numbers(1, "Repair it."); });
+  const std::string nan  = wearlink::testing::input_error_message([&] { t.numbers(1, "Repair it."); });
   EXPECT_NE(nan.find(file), std::string::npos) << nan;
   EXPECT_NE(nan.find("line 3, column 'x' is 'nan', not a finite number. Repair it."), std::string::npos) << nan;
-  EXPECT_NE(error_of([&] { t.require_rectangular(); }).find("line 4 has 1 fields; the header has 2"),
+  EXPECT_NE(wearlink::testing::input_error_message([&] {
+              t.require_rectangular();
+            }).find("line 4 has 1 fields; the header has 2"),
             std::string::npos);
-  EXPECT_NE(error_of([] {
+  EXPECT_NE(wearlink::testing::input_error_message([] {
               CsvTable::read("/nonexistent/x.csv", "series file");
             }).find("Cannot open the series file '/nonexistent/x.csv'"),
             std::string::npos);
@@ -103,16 +90,23 @@ TEST(ProfileFile, RejectsBadFiles)
   for (int k = 0; k < 10; ++k)
     nan += std::to_string(k * 0.5) + (k == 3 ? ",nan\n" : ",1\n");
   const std::string nan_file = write("nan", nan);
-  EXPECT_NE(error_of([&] { read_profile_csv(nan_file, 16); }).find("line 4, column 2 is 'nan'"), std::string::npos);
+  EXPECT_NE(wearlink::testing::input_error_message([&] {
+              read_profile_csv(nan_file, 16);
+            }).find("line 4, column 2 is 'nan'"),
+            std::string::npos);
   std::string back = "";
   for (int k = 0; k < 10; ++k)
     back += std::to_string(k == 4 ? 0.1 : k * 0.5) + ",1\n";
-  EXPECT_NE(error_of([&] { read_profile_csv(write("back", back), 16); }).find("line 5: angles must increase"),
+  EXPECT_NE(wearlink::testing::input_error_message([&] {
+              read_profile_csv(write("back", back), 16);
+            }).find("line 5: angles must increase"),
             std::string::npos);
   std::string negative = "";
   for (int k = 0; k < 10; ++k)
     negative += std::to_string(k * 0.5) + (k == 2 ? ",-1\n" : ",1\n");
-  EXPECT_NE(error_of([&] { read_profile_csv(write("negative", negative), 16); }).find("line 3: the radius must be > 0"),
+  EXPECT_NE(wearlink::testing::input_error_message([&] {
+              read_profile_csv(write("negative", negative), 16);
+            }).find("line 3: the radius must be > 0"),
             std::string::npos);
 }
 
