@@ -136,6 +136,22 @@ namespace wearlink::contact
     {
       return "";
     }
+    /**
+     * The geometry of the mesh in use, for models that keep a mesh across small profile
+     * updates (the fe model, 'Remesh depth'); nullptr for the others. A checkpoint
+     * stores it so that a resumed run meshes the same geometry.
+     */
+    virtual const JointGeometry *
+    meshed_geometry() const
+    {
+      return nullptr;
+    }
+    /** Resume: as if the model had seen @p meshed and then @p current. Default: update_geometry(current). */
+    virtual void
+    restore_geometry(const JointGeometry & /*meshed*/, const JointGeometry &current)
+    {
+      update_geometry(current);
+    }
     /** True for models that mesh and solve the actual geometry (gmsh + deal.II). */
     virtual bool
     requires_fe_geometry() const

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -205,10 +206,11 @@ namespace wearlink::fe
   // r = R1*(ψ) where |x + t n| = R1*(atan2(x + t n)). For a round bore the circle
   // formula is exact; otherwise a few Newton steps on t follow.
   ContactKinematics
-  compute_kinematics(const ElasticityProblem &problem,
-                     const Profile           &bore,
-                     double                   relative_angle,
-                     const Tensor<1, 2>      &eccentricity)
+  compute_kinematics(const ElasticityProblem   &problem,
+                     const Profile             &bore,
+                     double                     relative_angle,
+                     const Tensor<1, 2>        &eccentricity,
+                     const std::vector<double> *pin_offsets)
   {
     const auto        &nodes = problem.pin_nodes;
     const auto        &faces = problem.bore_faces;
@@ -227,7 +229,10 @@ namespace wearlink::fe
 
     for (unsigned int i = 0; i < m; ++i)
       {
-        const Tensor<1, 2> x      = eccentricity + rotate(nodes[i].point, relative_angle);
+        Tensor<1, 2> point = nodes[i].point;
+        if (pin_offsets != nullptr)
+          point *= 1 + (*pin_offsets)[i] / point.norm();
+        const Tensor<1, 2> x      = eccentricity + rotate(point, relative_angle);
         const Tensor<1, 2> n      = rotate(nodes[i].normal, relative_angle);
         const double       radius = bore.radius(std::atan2(x[1], x[0]));
         const double       b      = x * n;
@@ -366,10 +371,12 @@ namespace wearlink::fe
 
   CondensedContactSolver::CondensedContactSolver(const ElasticityProblem &problem,
                                                  BoundaryCompliance      &compliance,
-                                                 unsigned int             max_iterations)
+                                                 unsigned int             max_iterations,
+                                                 unsigned int             primal_dual_limit)
     : problem(problem)
     , compliance(compliance)
     , max_iterations(max_iterations)
+    , primal_dual_limit(primal_dual_limit)
   {
   }
 
@@ -623,12 +630,163 @@ namespace wearlink::fe
           gap[i] = g;
         }
     }
+
+    /**
+     * A feasible start of the monotone phase: λ ≥ 0 with Σ λ n = P (force control) on the
+     * two candidates of ensure_two_active (closest, and the one bracketing P with it),
+     * or λ = 0 (displacement control). Returns the candidates that carry it (none if
+     * no such pair brackets the load).
+     */
+    std::vector<unsigned int>
+    feasible_start(const ContactKinematics &kin,
+                   const bool               force_control,
+                   const Tensor<1, 2>      &load,
+                   std::vector<double>     &lambda)
+    {
+      std::fill(lambda.begin(), lambda.end(), 0.0);
+      std::vector<unsigned int> pair;
+      if (!force_control)
+        return pair;
+      ensure_two_active(pair, kin.g0, kin.normal, load);
+      if (pair.size() < 2)
+        return pair;
+      const auto  &a = kin.normal[pair[0]], &b = kin.normal[pair[1]];
+      const double d  = a[0] * b[1] - a[1] * b[0];
+      const double l0 = d != 0.0 ? (load[0] * b[1] - load[1] * b[0]) / d : -1.0;
+      const double l1 = d != 0.0 ? (a[0] * load[1] - a[1] * load[0]) / d : -1.0;
+      if (!(l0 >= 0 && l1 >= 0))
+        return {}; // no pair brackets the load: no feasible start
+      lambda[pair[0]] = l0;
+      lambda[pair[1]] = l1;
+      return pair;
+    }
+
+    /**
+     * The monotone (Lawson–Hanson type) step of the primal active-set method from the
+     * feasible λ towards the minimizer @p x of the current active set: the longest step
+     * α ∈ [0, 1) that keeps λ ≥ 0; the candidates whose force reaches zero leave the
+     * set. Returns α, or 1 (changing nothing) if @p x is feasible itself.
+     */
+    double
+    step_back_to_feasible(std::vector<unsigned int> &active, const Eigen::VectorXd &x, std::vector<double> &lambda)
+    {
+      double       alpha   = 1;
+      unsigned int blocker = active.size();
+      for (unsigned int s = 0; s < active.size(); ++s)
+        if (x[s] <= 0)
+          {
+            const double l = lambda[active[s]];
+            const double a = l > 0 ? l / (l - x[s]) : 0.0;
+            if (blocker == active.size() || a < alpha)
+              {
+                alpha   = a;
+                blocker = s;
+              }
+          }
+      if (blocker == active.size())
+        return 1;
+      if (alpha == 0)
+        {
+          // Degenerate: candidates at zero force that the minimizer wants tensile leave;
+          // the point does not move, and the others (at zero too, but wanted compressive)
+          // stay.
+          std::vector<unsigned int> kept;
+          for (unsigned int s = 0; s < active.size(); ++s)
+            if (lambda[active[s]] > 0 || x[s] > 0)
+              kept.push_back(active[s]);
+          active = kept;
+          return 0;
+        }
+      double max_lambda = 0;
+      for (unsigned int s = 0; s < active.size(); ++s)
+        {
+          double &l = lambda[active[s]];
+          l += alpha * (x[s] - l);
+          max_lambda = std::max(max_lambda, l);
+        }
+      lambda[active[blocker]] = 0;
+      std::vector<unsigned int> kept;
+      for (const auto i : active)
+        if (lambda[i] > 1e-14 * max_lambda)
+          kept.push_back(i);
+        else
+          lambda[i] = 0;
+      active = kept;
+      return alpha;
+    }
+
+    /** The penetrating candidates outside the active set, the worst first. */
+    std::vector<unsigned int>
+    penetrating(const std::vector<double> &lambda, const std::vector<double> &gap, const double tolerance)
+    {
+      std::vector<unsigned int> out;
+      for (unsigned int i = 0; i < gap.size(); ++i)
+        if (lambda[i] == 0.0 && gap[i] < -tolerance)
+          out.push_back(i);
+      std::stable_sort(out.begin(), out.end(), [&](unsigned int a, unsigned int b) { return gap[a] < gap[b]; });
+      return out;
+    }
+
+    /**
+     * The monotone primal active-set method (see CondensedContactSolver::solve); true
+     * when it ends within @p max_iterations (counted in @p iterations), with the final
+     * set in @p active.
+     */
+    bool
+    monotone_active_set(const ContactKinematics   &kin,
+                        ComplianceReader          &reader,
+                        const bool                 force_control,
+                        const Tensor<1, 2>        &load,
+                        const unsigned int         max_iterations,
+                        std::vector<unsigned int> &active,
+                        std::vector<double>       &lambda,
+                        std::vector<double>       &gap,
+                        Tensor<1, 2>              &U,
+                        unsigned int              &iterations)
+    {
+      const double tolerance      = gap_tolerance(kin);
+      const double max_weight_sum = reader.max_weight_sum(lambda.size());
+      // From the feasible pair alone: a start from the primal–dual iteration's last set
+      // (bloated where it cycled) cost one step back per surplus candidate (measured:
+      // ~100 steps to end at 2 active on a worn pair).
+      active = feasible_start(kin, force_control, load, lambda);
+      if (force_control && active.size() < 2)
+        return false;
+      std::sort(active.begin(), active.end());
+      for (unsigned int it = 0; it < max_iterations; ++it, ++iterations)
+        {
+          if (force_control)
+            ensure_two_active(active, kin.g0, kin.normal, load);
+          const ActiveColumns cols  = reader.columns(active, max_pointwise_active);
+          const auto          x     = solve_active_system(kin, active, cols, reader, force_control, load);
+          const double        alpha = step_back_to_feasible(active, x.lambda, lambda);
+          if (alpha < 1)
+            continue;
+          for (unsigned int s = 0; s < active.size(); ++s)
+            lambda[active[s]] = x.lambda[s];
+          U = x.U;
+          candidate_gaps(kin, active, cols, reader, x.lambda, lambda, U, max_weight_sum, tolerance, gap);
+          const auto joining = penetrating(lambda, gap, tolerance);
+          if (joining.empty())
+            return true;
+          active.insert(std::upper_bound(active.begin(), active.end(), joining.front()), joining.front());
+        }
+      return false;
+    }
   } // namespace
 
   // S = N A⁻¹ Nᵀ: U = S⁻¹ (P + N A⁻¹ g0), λ = A⁻¹ (Nᵀ U − g0). The gaps of all
   // candidates then follow from the cached compliance columns of the active ones, and
   // the active set is updated until it repeats. The last active set warm-starts the
   // next load state (consecutive states of a mechanism are close).
+  // This primal–dual iteration is fast but may cycle on worn, conforming profiles
+  // (hundreds of candidates switching at once, beyond update_active_set's safeguard);
+  // after primal_dual_limit iterations a monotone primal active-set method takes over from a feasible point:
+  // λ stays ≥ 0 and balances the load, the objective ½λᵀAλ + g0ᵀλ never increases and
+  // drops at every step that is not degenerate, so no active set repeats and the
+  // iteration ends (Lawson–Hanson: the worst penetrating candidate joins, one at a
+  // time, which keeps the step non-degenerate; batches of all penetrating candidates
+  // were tried and cost long chains of one-by-one removals on worn pairs).
   ContactSolution
   CondensedContactSolver::solve(const ContactKinematics &kin, bool force_control, const Tensor<1, 2> &load)
   {
@@ -651,7 +809,7 @@ namespace wearlink::fe
     std::set<std::vector<unsigned int>> history;
     Tensor<1, 2>                        U;
     bool                                converged = false;
-    for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
+    for (unsigned int iteration = 1; iteration <= std::min(max_iterations, primal_dual_limit); ++iteration)
       {
         sol.iterations           = iteration;
         const ActiveColumns cols = reader.columns(active, max_pointwise_active);
@@ -669,10 +827,27 @@ namespace wearlink::fe
             converged = true;
             break;
           }
+        if (iteration >= primal_dual_limit)
+          break; // slow or cycling in spite of update_active_set's safeguard: the monotone method takes over
         active = next;
       }
     if (!converged)
-      not_converged("condensed", max_iterations);
+      {
+        ++n_monotone;
+        sol.monotone = true;
+        converged    = monotone_active_set(kin,
+                                        reader,
+                                        force_control,
+                                        load,
+                                        10 * max_iterations,
+                                        active,
+                                        lambda,
+                                        gap,
+                                        U,
+                                        sol.iterations);
+      }
+    if (!converged)
+      not_converged("condensed", sol.iterations);
 
     previous_active     = active;
     previous_load       = load;

@@ -31,7 +31,8 @@
 //     primal–dual active-set method (semismooth Newton for this QP):
 //         min ½ λᵀAλ + g0ᵀλ  s.t. λ ≥ 0, Σ λ_i n_i = P,
 //     whose multiplier of the equality constraint is U. Each iteration is a small
-//     Cholesky solve on the active set.
+//     Cholesky solve on the active set. Where it cycles (worn, conforming pairs) a
+//     monotone primal active-set method (Lawson–Hanson) finishes from a feasible point.
 //   - ReferenceContactSolver: the same active-set iteration on the full FE system of
 //     both bodies (deal.II step-41 style): the active contact conditions g_i = 0 are
 //     affine constraints between the pin node and the bore nodes, the core is tied to
@@ -68,13 +69,18 @@ namespace wearlink::fe
   /**
    * Place the pin (its candidates from @p problem) at eccentricity @p eccentricity
    * (bushing frame) and relative rotation @p relative_angle, and cast each candidate's
-   * normal ray onto the bore profile @p bore.
+   * normal ray onto the bore profile @p bore. @p pin_offsets (if given, one per pin
+   * candidate) moves each candidate radially by that much [m] before the ray is cast:
+   * the difference between the pin's current profile and the meshed one, so that a
+   * mesh kept across small wear updates still sees the current gaps (the normals and
+   * the compliance stay those of the mesh).
    */
   ContactKinematics
   compute_kinematics(const ElasticityProblem    &problem,
                      const Profile              &bore,
                      double                      relative_angle,
-                     const dealii::Tensor<1, 2> &eccentricity);
+                     const dealii::Tensor<1, 2> &eccentricity,
+                     const std::vector<double>  *pin_offsets = nullptr);
 
   /** Result of one load state. */
   struct ContactSolution
@@ -90,6 +96,7 @@ namespace wearlink::fe
     std::vector<double> gap;
     unsigned int        iterations = 0;
     unsigned int        n_active   = 0;
+    bool                monotone   = false; ///< the condensed solver's monotone phase was needed
     /** Full displacement field (reference solver only; empty otherwise). */
     dealii::Vector<double> displacement;
   };
@@ -97,9 +104,14 @@ namespace wearlink::fe
   class CondensedContactSolver
   {
   public:
+    /**
+     * @param primal_dual_limit primal–dual iterations before the monotone method takes
+     *        over (0: the monotone method alone; see solve()).
+     */
     CondensedContactSolver(const ElasticityProblem &problem,
                            BoundaryCompliance      &compliance,
-                           unsigned int             max_iterations);
+                           unsigned int             max_iterations,
+                           unsigned int             primal_dual_limit = 30);
 
     /**
      * @param force_control true: U unknown with Σ λ n = @p load [N/m, bushing frame];
@@ -116,10 +128,19 @@ namespace wearlink::fe
     dealii::Vector<double>
     displacement_field(const ContactKinematics &kinematics, const ContactSolution &solution) const;
 
+    /** Load states that needed the monotone phase (see solve()). */
+    unsigned long
+    n_monotone_solves() const
+    {
+      return n_monotone;
+    }
+
   private:
     const ElasticityProblem  &problem;
     BoundaryCompliance       &compliance;
     const unsigned int        max_iterations;
+    const unsigned int        primal_dual_limit;
+    unsigned long             n_monotone = 0;
     std::vector<unsigned int> previous_active;
     dealii::Tensor<1, 2>      previous_load;
   };

@@ -28,10 +28,14 @@
 #include "contact/tabulated_normal_force_law.h"
 #include "fe/fe_settings.h"
 
+#include <array>
+#include <memory>
 #include <string>
 
 namespace wearlink::fe
 {
+  class PinBushingModel;
+
   struct FeForceLawSettings
   {
     FeSettings   fe;
@@ -62,8 +66,22 @@ namespace wearlink::fe
     bool         from_cache     = false;
     unsigned int n_solves       = 0;
     double       max_half_angle = 0; ///< largest FE contact half-angle over the table [rad]
+    unsigned int n_repaired     = 0; ///< approaches replaced to make the table monotone (see the .cc)
+    double       max_repair     = 0; ///< the largest such change [m]
     std::string  cache_file;
   };
+
+  /**
+   * Make @p approach (directions × levels, levels fastest) increase with the load in
+   * every direction, repairing violations up to @p tolerance [m] (counted in @p build);
+   * a larger one is a NumericalError. See the .cc for the rule.
+   */
+  void
+  make_monotone(std::vector<double>                      &approach,
+                const std::vector<double>                &forces,
+                const std::vector<std::array<double, 2>> &directions,
+                double                                    tolerance,
+                TableBuild                               &build);
 
   /** The table's load levels: n_levels forces spaced logarithmically from min_force to max_force [N]. */
   std::vector<double>
@@ -71,12 +89,17 @@ namespace wearlink::fe
 
   /**
    * Tabulate the elastic force against the approach for @p geometry (see the file
-   * comment). NumericalError if the FE approach does not increase with the load.
+   * comment). Approaches that do not increase with the load by no more than 1 % of
+   * the surface element size (noise of a worn pocket at the lowest loads) are repaired
+   * and counted; a larger violation is a NumericalError. A
+   * worn pair's table is solved on the shared model of fe/model_pool.h (kept in
+   * @p worn_model if given, so that it outlives the call).
    */
   contact::ForceApproachTable
-  build_force_approach_table(const contact::JointGeometry &geometry,
-                             const FeForceLawSettings     &settings,
-                             TableBuild                   &build);
+  build_force_approach_table(const contact::JointGeometry     &geometry,
+                             const FeForceLawSettings         &settings,
+                             TableBuild                       &build,
+                             std::shared_ptr<PinBushingModel> *worn_model = nullptr);
 
   /**
    * The FE approach at each of @p forces (increasing) in one contact direction
@@ -107,9 +130,10 @@ namespace wearlink::fe
     build_table(const contact::JointGeometry &geometry) override;
 
   private:
-    const FeForceLawSettings settings;
-    TableBuild               last_build;
-    double                   total_build_seconds = 0;
-    unsigned int             n_builds = 0, n_cached = 0;
+    const FeForceLawSettings         settings;
+    std::shared_ptr<PinBushingModel> worn_model; ///< kept across profile updates ('Remesh depth')
+    TableBuild                       last_build;
+    double                           total_build_seconds = 0;
+    unsigned int                     n_builds = 0, n_cached = 0;
   };
 } // namespace wearlink::fe

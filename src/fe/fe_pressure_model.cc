@@ -3,6 +3,7 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "fe/model_pool.h"
 #include "fe/pin_bushing_model.h"
 
 #include <filesystem>
@@ -16,51 +17,54 @@ namespace wearlink::fe
   {
   }
 
-  // A temporary mesh directory is the model's own: it goes with the model (the meshes
-  // a user wants to keep are written where 'Mesh directory' says, and the wear layer
-  // writes the worn geometry's .msh into the run's output directory itself).
-  FePressureModel::~FePressureModel()
-  {
-    model.reset(); // before its temporary mesh directory goes
-  }
+  FePressureModel::~FePressureModel() = default;
 
-  // A new mesh per geometry: worn profiles change the domain, so the mesh, the
-  // stiffness, its factorization and the cached compliance are all rebuilt.
+  // A new mesh only when the profiles left the reach of the current one ('Remesh
+  // depth'); the pool decides, and may hand out the model the joint's fe force law
+  // made for the same geometry.
   void
   FePressureModel::update_geometry(const contact::JointGeometry &g)
   {
-    if (mesh_directory.empty())
+    geometry = g;
+    if (model && within_reach(*model, geometry, settings))
       {
-        if (settings.mesh_directory.empty())
-          {
-            temporary_meshes = std::make_unique<TemporaryDirectory>("fe");
-            mesh_directory   = temporary_meshes->path();
-          }
-        else
-          {
-            mesh_directory = settings.mesh_directory;
-            make_output_directory(mesh_directory);
-          }
+        use_profiles(*model, geometry);
+        return;
       }
-    if (model)
+    bool reused = false;
+    auto next   = shared_model(geometry, settings, &reused);
+    if (next == model)
+      return;
+    if (model && created_model)
       {
         const auto &st = model->statistics();
         past_mesh_time += st.mesh_time;
         past_setup_time += st.assembly_time + st.factorization_time;
         past_compliance_time += model->compliance_time();
       }
-    model.reset();
-    geometry              = g;
-    const std::string msh = mesh_directory + "/pin_bushing_" + std::to_string(mesh_counter++) + ".msh";
-    model                 = std::make_unique<PinBushingModel>(geometry, settings, msh);
-    model->prepare_condensed();
+    model         = std::move(next);
+    created_model = !reused;
+    ++mesh_counter;
+  }
+
+  const contact::JointGeometry *
+  FePressureModel::meshed_geometry() const
+  {
+    return model ? &model->meshed_geometry() : nullptr;
+  }
+
+  void
+  FePressureModel::restore_geometry(const contact::JointGeometry &meshed, const contact::JointGeometry &current)
+  {
+    update_geometry(meshed);
+    update_geometry(current);
   }
 
   PhaseTimings
   FePressureModel::timings() const
   {
     double mesh = past_mesh_time, setup = past_setup_time, compliance = past_compliance_time;
-    if (model)
+    if (model && created_model)
       {
         const auto &st = model->statistics();
         mesh += st.mesh_time;
@@ -94,6 +98,7 @@ namespace wearlink::fe
   {
     if (model == nullptr || (load.force[0] == 0 && load.force[1] == 0))
       return false;
+    use_profiles(*model, geometry);
     const ContactResult r = model->solve(load_case(load), SolverKind::condensed, stem + ".vtu");
     std::ostringstream  csv;
     csv << std::setprecision(12) << "pin_angle_rad,bore_angle_rad,pressure_Pa,force_N\n";
@@ -106,8 +111,7 @@ namespace wearlink::fe
   std::string
   FePressureModel::mesh_file() const
   {
-    return mesh_counter == 0 ? std::string() :
-                               mesh_directory + "/pin_bushing_" + std::to_string(mesh_counter - 1) + ".msh";
+    return model ? model->mesh_path() : std::string();
   }
 
   void
@@ -118,6 +122,7 @@ namespace wearlink::fe
     out.bore.assign(geometry.bore.n_points(), 0.0);
     if (load.force[0] == 0 && load.force[1] == 0)
       return;
+    use_profiles(*model, geometry);
     const ContactResult r = model->solve(load_case(load), SolverKind::condensed);
     out                   = model->surface_pressure(r);
   }

@@ -2,7 +2,10 @@
 // The `fe` pressure model: contact pressure on both surfaces of a shaft–bushing pair from
 // the 2D plane-strain contact FE model of the actual (worn) pin and bushing
 // (REFERENCE.md §5; ARCHITECTURE.md fe/). It is constructed only when a scene selects
-// it; nothing is meshed or factored before update_geometry(). Each load state is solved
+// it; nothing is meshed or factored before update_geometry(), which re-meshes only when
+// the profiles have moved beyond 'Remesh depth' (otherwise the worn profiles enter the
+// gaps of the kept mesh), and shares the model with the joint's `fe` force law
+// (fe/model_pool.h). The set-up of a shared model is reported by the holder that made it. Each load state is solved
 // under force control with the condensed solver: the pin is pushed into the bore by
 // −ContactLoad::force (the bushing's force on the pin), and the resulting pressure is
 // returned per discrete area of each profile, each in its own body frame. The
@@ -10,7 +13,6 @@
 // equilibrium position itself. No deal.II type leaks out (pimpl in PinBushingModel).
 #pragma once
 
-#include "base/atomic_file.h"
 #include "contact/pressure_model.h"
 #include "fe/fe_settings.h"
 
@@ -47,21 +49,27 @@ namespace wearlink::fe
     std::string
     mesh_file() const override;
 
-    /** Number of meshes built so far (one per update_geometry()). */
+    /** Number of meshes in use so far (a new one whenever the profiles moved beyond 'Remesh depth'). */
     unsigned int
     n_meshes() const
     {
       return mesh_counter;
     }
 
+    /** The geometry the current mesh was made of (resume: re-mesh it, then update). */
+    const contact::JointGeometry *
+    meshed_geometry() const override;
+
+    void
+    restore_geometry(const contact::JointGeometry &meshed, const contact::JointGeometry &current) override;
+
   private:
-    const FeSettings                    settings;
-    std::string                         mesh_directory;
-    unsigned int                        mesh_counter = 0;
-    std::unique_ptr<TemporaryDirectory> temporary_meshes; ///< when 'Mesh directory' is empty: removed with the model
-    contact::JointGeometry              geometry;
-    std::unique_ptr<PinBushingModel>    model;
-    /** Set-up times of the models already replaced [s]. */
+    const FeSettings                 settings;
+    unsigned int                     mesh_counter = 0;
+    contact::JointGeometry           geometry;
+    std::shared_ptr<PinBushingModel> model; ///< shared (fe/model_pool.h)
+    /** Set-up times of the models this one created and already let go [s]. */
     double past_mesh_time = 0, past_setup_time = 0, past_compliance_time = 0;
+    bool   created_model = false; ///< the current model was meshed for this one (its set-up is reported here)
   };
 } // namespace wearlink::fe

@@ -27,6 +27,8 @@ namespace wearlink::fe
       fail("'Bushing outer radius ratio' must be > 1.");
     if (degree < 1 || degree > 2)
       fail("'Element degree' must be 1 or 2.");
+    if (!(remesh_depth >= 0 && remesh_depth <= 100))
+      fail("'Remesh depth' must lie in [0, 100] (a fraction of the surface element size).");
   }
 
 
@@ -95,7 +97,22 @@ namespace wearlink::fe
             "100",
             Integer(1),
             "Iteration limit of the active-set contact solvers; exceeding it is a "
-            "numerical error that names the load case.",
+            "numerical error. The condensed solver's primal–dual iteration hands over to its "
+            "monotone (Lawson–Hanson) method after 30 iterations or when it cycles; that "
+            "method ends in finitely many steps and is allowed 10 × this limit.",
+            "none");
+    declare(prm,
+            "Remesh depth",
+            "0",
+            Double(0, 100),
+            "Re-mesh a worn pair only when a profile has moved by more than this fraction of "
+            "the (refined) surface element size since its mesh was made. Below it the mesh, "
+            "its factorization and its compliance columns are kept, and the worn profiles "
+            "enter the contact gaps exactly (the bore as the surface the pin's rays meet, the "
+            "pin as a radial offset of each contact node); what is approximated is the "
+            "elastic compliance of the worn surface layer. 0: re-mesh at every profile "
+            "change (the exact path; costly at fine element sizes). The error of a value is "
+            "a row of `wearlink study accuracy` (knob remesh-depth).",
             "none");
     declare(prm,
             "Mesh directory",
@@ -121,6 +138,7 @@ namespace wearlink::fe
     s.refinements               = static_cast<unsigned int>(reader.get_integer("Global refinements"));
     s.max_active_set_iterations = static_cast<unsigned int>(reader.get_integer("Maximum active-set iterations"));
     s.mesh_directory            = reader.get("Mesh directory");
+    s.remesh_depth              = reader.get_double("Remesh depth");
     if (s.max_element_size < s.surface_element_size)
       reader.fail("Maximum element size", "it must be ≥ 'Surface element size'");
     if (!(s.outer_radius_ratio > 1))

@@ -8,6 +8,7 @@
 
 #include "base/parameters.h"
 
+#include <cmath>
 #include <string>
 
 namespace wearlink::fe
@@ -43,6 +44,14 @@ namespace wearlink::fe
     unsigned int degree = 1;
     /** Global refinements of the gmsh mesh (each halves every element size). */
     unsigned int refinements = 0;
+    /**
+     * Re-mesh when a profile has moved by more than this fraction of the surface
+     * element size (after refinements) since its mesh was made; below it the mesh, its
+     * factorization and the compliance columns are kept and the worn profiles enter
+     * through the gaps only (PinBushingModel::update_profiles). 0: re-mesh at every
+     * profile change (the exact path) [-].
+     */
+    double remesh_depth = 0;
     /** Iteration limit of the active-set contact solvers. */
     unsigned int max_active_set_iterations = 100;
     /**
@@ -54,12 +63,25 @@ namespace wearlink::fe
     double refined_arc_bore_centre = 0; ///< bushing-frame centre of the refined arc [rad]
     double refined_arc_pin_centre  = 0; ///< pin-frame centre of the refined arc [rad]
     /**
+     * Primal–dual active-set iterations of the condensed solver before its monotone
+     * method takes over (see CondensedContactSolver::solve); 0: the monotone method
+     * alone. Not a scene parameter (tests compare the two).
+     */
+    unsigned int primal_dual_iterations = 100;
+    /**
      * Distribute the reference solver over the MPI ranks of MPI_COMM_WORLD (METIS
      * partitions; MPI must be initialized by the program). Not a scene parameter.
      */
     bool distribute_reference = false;
     /** Directory for the generated .msh files ("" = a temporary directory). */
     std::string mesh_directory;
+
+    /** Element size along the contact surfaces after the global refinements [m]. */
+    double
+    effective_surface_element_size() const
+    {
+      return std::ldexp(surface_element_size, -static_cast<int>(refinements));
+    }
 
     /** InputError if a size is not positive or the fractions are out of range. */
     void

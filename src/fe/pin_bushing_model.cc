@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace wearlink::fe
@@ -80,7 +81,9 @@ namespace wearlink::fe
   public:
     Impl(const contact::JointGeometry &geometry, const FeSettings &settings, const std::string &msh_path)
       : geometry(geometry)
+      , meshed(geometry)
       , settings(settings)
+      , msh_path(msh_path)
     {
       settings.check("the FE model settings");
       for (const auto *m : {&geometry.bushing, &geometry.pin_material})
@@ -138,7 +141,10 @@ namespace wearlink::fe
       const auto start         = Clock::now();
       compliance               = std::make_unique<BoundaryCompliance>(*problem);
       stats.factorization_time = seconds_since(start);
-      condensed = std::make_unique<CondensedContactSolver>(*problem, *compliance, settings.max_active_set_iterations);
+      condensed                = std::make_unique<CondensedContactSolver>(*problem,
+                                                           *compliance,
+                                                           settings.max_active_set_iterations,
+                                                           settings.primal_dual_iterations);
     }
 
     // Force control: the pin starts at the rigid-contact position along the load
@@ -175,7 +181,11 @@ namespace wearlink::fe
       const double      R          = geometry.pin.min_radius();
       for (unsigned int update = 0; update < 6; ++update)
         {
-          kin = compute_kinematics(*problem, geometry.bore, relative_angle, e);
+          kin = compute_kinematics(*problem,
+                                   geometry.bore,
+                                   relative_angle,
+                                   e,
+                                   pin_offsets.empty() ? nullptr : &pin_offsets);
           sol = kind == SolverKind::condensed ? condensed->solve(kin, force_control, P) :
                                                 reference->solve(kin, force_control, P);
           iterations += sol.iterations;
@@ -188,6 +198,7 @@ namespace wearlink::fe
 
       ContactResult r;
       r.iterations             = iterations;
+      r.monotone               = sol.monotone;
       r.n_active               = sol.n_active;
       const auto        &nodes = problem->pin_nodes;
       const unsigned int m     = nodes.size();
@@ -310,8 +321,35 @@ namespace wearlink::fe
       return out;
     }
 
-    const contact::JointGeometry            geometry;
+    // Profiles since the mesh was made: the bore enters the gaps exactly (its profile is
+    // what the rays meet), the pin through a radial offset of each candidate.
+    void
+    update_profiles(const Profile &bore, const Profile &pin)
+    {
+      if (bore.n_points() != meshed.bore.n_points() || pin.n_points() != meshed.pin.n_points())
+        throw InputError("The FE model's profiles can only be updated by profiles with the same number of samples (" +
+                         std::to_string(meshed.bore.n_points()) + " bore, " + std::to_string(meshed.pin.n_points()) +
+                         " pin).");
+      if (bore.samples() == geometry.bore.samples() && pin.samples() == geometry.pin.samples())
+        return;
+      geometry.bore = bore;
+      geometry.pin  = pin;
+      pin_offsets.clear();
+      if (pin.samples() == meshed.pin.samples())
+        return;
+      pin_offsets.resize(problem->pin_nodes.size());
+      for (unsigned int i = 0; i < pin_offsets.size(); ++i)
+        {
+          const double angle = problem->pin_nodes[i].angle;
+          pin_offsets[i]     = pin.radius(angle) - meshed.pin.radius(angle);
+        }
+    }
+
+    contact::JointGeometry                  geometry; ///< current profiles
+    const contact::JointGeometry            meshed;   ///< profiles of the mesh
     const FeSettings                        settings;
+    const std::string                       msh_path;
+    std::vector<double>                     pin_offsets; ///< current − meshed pin radius per candidate (empty: none)
     SetupStatistics                         stats;
     std::unique_ptr<ElasticityProblem>      problem;
     std::unique_ptr<BoundaryCompliance>     compliance;
@@ -363,6 +401,44 @@ namespace wearlink::fe
   PinBushingModel::n_compliance_solves() const
   {
     return impl->compliance ? impl->compliance->n_back_substitutions() : 0;
+  }
+
+  void
+  PinBushingModel::update_profiles(const Profile &bore, const Profile &pin)
+  {
+    impl->update_profiles(bore, pin);
+  }
+
+  double
+  PinBushingModel::profile_drift(const Profile &bore, const Profile &pin) const
+  {
+    const auto &m = impl->meshed;
+    if (bore.n_points() != m.bore.n_points() || pin.n_points() != m.pin.n_points())
+      return std::numeric_limits<double>::infinity();
+    double drift = 0;
+    for (unsigned int k = 0; k < bore.n_points(); ++k)
+      drift = std::max(drift, std::abs(bore[k] - m.bore[k]));
+    for (unsigned int k = 0; k < pin.n_points(); ++k)
+      drift = std::max(drift, std::abs(pin[k] - m.pin[k]));
+    return drift;
+  }
+
+  const contact::JointGeometry &
+  PinBushingModel::meshed_geometry() const
+  {
+    return impl->meshed;
+  }
+
+  const contact::JointGeometry &
+  PinBushingModel::current_geometry() const
+  {
+    return impl->geometry;
+  }
+
+  const std::string &
+  PinBushingModel::mesh_path() const
+  {
+    return impl->msh_path;
   }
 
   const SetupStatistics &

@@ -70,7 +70,8 @@ namespace wearlink::fe
     double       half_width                    = 0; ///< half the contact arc length along the pin surface [m]
     unsigned int n_active                      = 0;
     unsigned int iterations                    = 0; ///< active-set iterations (summed over kinematic updates)
-    double       solve_time                    = 0; ///< wall time of this load state [s]
+    bool         monotone   = false; ///< the condensed solver needed its monotone phase (last kinematic update)
+    double       solve_time = 0;     ///< wall time of this load state [s]
     /** Per pin contact candidate (sorted by pin-frame angle): */
     std::vector<double> pin_angle;  ///< pin-frame angle [rad]
     std::vector<double> bore_angle; ///< bushing-frame angle of its contact point [rad]
@@ -126,6 +127,32 @@ namespace wearlink::fe
 
     const SetupStatistics &
     statistics() const;
+
+    /**
+     * Keep the mesh, its factorization and the compliance columns, and solve from now
+     * on with these (worn) profiles: the bore's enters the gaps exactly, the pin's as a
+     * radial offset of each contact candidate from the meshed surface. What is kept is
+     * the elastic compliance of the meshed bodies, an approximation of order
+     * (profile drift / element size) in the surface layer; profile_drift() measures
+     * the drift so that the caller can re-mesh when it grows (FeSettings::remesh_depth).
+     * InputError unless the sample counts equal the meshed profiles'.
+     */
+    void
+    update_profiles(const Profile &bore, const Profile &pin);
+
+    /** max |r − r_meshed| over both profiles' samples [m] (∞ for other sample counts). */
+    double
+    profile_drift(const Profile &bore, const Profile &pin) const;
+
+    /** The geometry the mesh was made of, and the one in use (update_profiles). */
+    const contact::JointGeometry &
+    meshed_geometry() const;
+    const contact::JointGeometry &
+    current_geometry() const;
+
+    /** The gmsh file of the mesh. */
+    const std::string &
+    mesh_path() const;
 
     /**
      * Pressure per discrete area of both profiles [Pa]: the nodal forces are spread

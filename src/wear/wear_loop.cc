@@ -2,8 +2,10 @@
 #include "wear/wear_loop.h"
 
 #include "base/exceptions.h"
+#include "base/numbers.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace wearlink::wear
 {
@@ -15,6 +17,30 @@ namespace wearlink::wear
       return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
     }
   } // namespace
+
+  // Periodic Gaussian of standard deviation σ = λ √(2 ln 2) / (2π) (transfer
+  // exp(−q²σ²/2) = 1/2 at q = 2π/λ), in samples of spacing 2πR/n, truncated at 4σ and
+  // renormalized: a circular convolution whose weights sum to 1 keeps the mean.
+  std::vector<double>
+  smoothed(const std::vector<double> &depth, const double wavelength, const double radius)
+  {
+    const auto n = static_cast<long>(depth.size());
+    if (!(wavelength > 0) || n < 3)
+      return depth;
+    const double sigma = wavelength * std::sqrt(2 * std::log(2.0)) / (2 * numbers::pi) / (2 * numbers::pi * radius / n);
+    const long   half  = std::min<long>(n / 2, static_cast<long>(std::ceil(4 * sigma)));
+    if (half < 1)
+      return depth;
+    std::vector<double> w(2 * half + 1);
+    double              sum = 0;
+    for (long d = -half; d <= half; ++d)
+      sum += w[d + half] = std::exp(-0.5 * d * d / (sigma * sigma));
+    std::vector<double> out(n, 0.0);
+    for (long k = 0; k < n; ++k)
+      for (long d = -half; d <= half; ++d)
+        out[k] += w[d + half] / sum * depth[((k + d) % n + n) % n];
+    return out;
+  }
 
   WearLoop::WearLoop(const WearLoopSettings                &settings,
                      std::vector<WearingJoint>              wearing,
@@ -61,12 +87,14 @@ namespace wearlink::wear
     if (!match)
       throw InputError("Cannot resume from '" + where + "': its joints do not match the scene's wearing joints.");
     st = std::move(state);
-    // The pressure models get the geometry they last meshed, which may lag the profiles
-    // by up to Remesh interval − 1 iterations.
+    // A pressure model that keeps its mesh across small updates (fe, 'Remesh depth')
+    // meshes the geometry it had meshed before, then takes the current profiles.
     for (unsigned int i = 0; i < wearing.size(); ++i)
       {
-        wearing[i].joint->set_profiles(st.joints[i].bore, st.joints[i].pin);
-        wearing[i].wear->model->update_geometry(geometry(i, st.joints[i].meshed_bore, st.joints[i].meshed_pin));
+        const auto &js = st.joints[i];
+        wearing[i].joint->set_profiles(js.bore, js.pin);
+        wearing[i].wear->model->restore_geometry(geometry(i, js.meshed_bore, js.meshed_pin),
+                                                 geometry(i, js.bore, js.pin));
       }
   }
 
@@ -163,13 +191,15 @@ namespace wearlink::wear
                             const LoadRecorder       &loads,
                             const double              factor)
   {
-    auto &js   = st.joints[i];
-    auto  bore = js.bore.samples();
-    auto  pin  = js.pin.samples();
+    auto      &js         = st.joints[i];
+    auto       bore       = js.bore.samples();
+    auto       pin        = js.pin.samples();
+    const auto bore_depth = smoothed(increment.bore_depth(), settings.smoothing_wavelength, js.bore.mean_radius());
+    const auto pin_depth  = smoothed(increment.pin_depth(), settings.smoothing_wavelength, js.pin.mean_radius());
     for (unsigned int k = 0; k < bore.size(); ++k)
-      bore[k] += factor * increment.bore_depth()[k];
+      bore[k] += factor * bore_depth[k];
     for (unsigned int k = 0; k < pin.size(); ++k)
-      pin[k] -= factor * increment.pin_depth()[k];
+      pin[k] -= factor * pin_depth[k];
     const bool worn_through = std::any_of(pin.begin(), pin.end(), [](const double r) { return !(r > 0); });
     if (worn_through)
       throw NumericalError("Wear iteration " + std::to_string(st.iterations_done + 1) + ": the pin of joint " +
@@ -205,16 +235,14 @@ namespace wearlink::wear
       {
         auto &js = st.joints[i];
         wearing[i].joint->set_profiles(js.bore, js.pin);
-        auto      &model = *wearing[i].wear->model;
-        const bool fe    = model.requires_fe_geometry();
-        if (fe && st.iterations_done % settings.remesh_interval != 0)
-          continue; // the fe model keeps its mesh between re-meshes
-        js.meshed_bore = js.bore;
-        js.meshed_pin  = js.pin;
+        auto     &model = *wearing[i].wear->model;
         Stopwatch update;
         model.update_geometry(geometry(i, js.bore, js.pin));
-        if (!fe) // the fe model times its own phases
+        if (!model.requires_fe_geometry()) // the fe model times its own phases
           own_timings.pressure_evaluation += update.seconds();
+        const auto *meshed = model.meshed_geometry();
+        js.meshed_bore     = meshed ? meshed->bore : js.bore;
+        js.meshed_pin      = meshed ? meshed->pin : js.pin;
       }
   }
 

@@ -12,7 +12,7 @@
 //                             the iteration's cumulative records;
 //   5. update_clearance_model rebuild the clearance joints' gap from the new profiles and
 //                             give the pressure models the new geometry (the fe model
-//                             re-meshes every Remesh interval iterations);
+//                             re-meshes only beyond its 'Remesh depth');
 //   6. checkpoint             write the state (wear/wear_state.h), if a path is set.
 // The loop knows the mechanism only through the joints it wears and a function that
 // advances the dynamics (the workflow's run of the scene), so it sits below the scene
@@ -54,6 +54,14 @@ namespace wearlink::wear
                                                         double                                  t1,
                                                         const Eigen::VectorXd                  &y0,
                                                         const std::vector<mbs::StepObserver *> &observers)>;
+
+  /**
+   * @p depth (periodic samples around a surface of mean radius @p radius [m]) low-pass
+   * filtered at @p wavelength [m] (Wear/Smoothing wavelength: Gaussian, transfer 1/2
+   * there, mean kept); unchanged for a wavelength of 0.
+   */
+  std::vector<double>
+  smoothed(const std::vector<double> &depth, double wavelength, double radius);
 
   class WearLoop
   {

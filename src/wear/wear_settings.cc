@@ -156,12 +156,19 @@ namespace wearlink::wear
               "Pressure evaluations per cycle with Pressure evaluation = samples per cycle.",
               "none");
       declare(prm,
-              "Remesh interval",
-              "1",
-              P::Integer(1),
-              "Iterations between re-meshes of the fe pressure model's worn geometry "
-              "(other pressure models follow the profiles every iteration).",
-              "none");
+              "Smoothing wavelength",
+              "0",
+              P::Double(0),
+              "Low-pass filter of each iteration's depth increments (periodic Gaussian whose "
+              "transfer is 1/2 at this wavelength along the surface; the mean, hence the "
+              "volume, is kept). Why: a pressure model that resolves the worn surface (fe) "
+              "flattens features shorter than the contact width elastically, so in reality "
+              "their wear decays within a small part of an iteration; one explicit "
+              "extrapolated step (× Extrapolation factor) overshoots them instead and the "
+              "depth grows saw-tooth spikes from one discrete area to the next. Set it to "
+              "about the contact width; 0: no filter (the simplified pressure models do not "
+              "see the worn surface's short features and need none).",
+              "m");
     }
 
     /** The before/after response and the profile plots. */
@@ -287,12 +294,12 @@ namespace wearlink::wear
       r.get("Clearance model") == "exact" ? contact::ClearanceForm::exact : contact::ClearanceForm::per_area;
     s.evaluation =
       r.get("Pressure evaluation") == "every step" ? PressureEvaluation::every_step : PressureEvaluation::samples;
-    s.samples_per_cycle = static_cast<unsigned int>(r.get_integer("Load samples per cycle"));
-    s.remesh_interval   = static_cast<unsigned int>(r.get_integer("Remesh interval"));
-    s.response_cycles   = r.get_double("Response cycles");
-    s.response_body     = r.get("Response body");
-    s.magnification     = r.get_double("Profile magnification");
-    s.fe_output         = r.get_bool("FE output");
+    s.samples_per_cycle    = static_cast<unsigned int>(r.get_integer("Load samples per cycle"));
+    s.smoothing_wavelength = r.get_double("Smoothing wavelength");
+    s.response_cycles      = r.get_double("Response cycles");
+    s.response_body        = r.get("Response body");
+    s.magnification        = r.get_double("Profile magnification");
+    s.fe_output            = r.get_bool("FE output");
     r.leave();
     return s;
   }

@@ -66,7 +66,7 @@ namespace wearlink::wear
     contact::ClearanceForm clearance_form       = contact::ClearanceForm::exact;
     PressureEvaluation     evaluation           = PressureEvaluation::every_step;
     unsigned int           samples_per_cycle    = 100;
-    unsigned int           remesh_interval      = 1; ///< iterations between FE re-meshes
+    double                 smoothing_wavelength = 0; ///< low-pass of the depth increments [m]; 0: none
     double                 response_cycles      = 1; ///< before/after response [cycles]
     std::string            response_body;            ///< body whose response is plotted
     double                 magnification = 0;        ///< profile plots; 0: automatic

@@ -38,11 +38,11 @@ namespace wearlink::wear
 
   struct JointWearState
   {
-    std::string                  name;
-    Profile                      initial_bore, initial_pin; ///< at the start of the run
-    Profile                      bore, pin;                 ///< current worn profiles
-    Profile                      meshed_bore, meshed_pin;   ///< geometry the pressure model last received
-    std::vector<IterationRecord> history;                   ///< one per finished iteration
+    std::string name;
+    Profile     initial_bore, initial_pin; ///< at the start of the run
+    Profile     bore, pin;                 ///< current worn profiles
+    Profile     meshed_bore, meshed_pin;   ///< geometry of the pressure model's mesh (fe; else = bore, pin)
+    std::vector<IterationRecord> history;  ///< one per finished iteration
   };
 
   struct WearState

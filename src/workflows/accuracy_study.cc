@@ -101,7 +101,7 @@ namespace wearlink::workflows
         {"pressure-model", "Pressure model of every wearing joint"},
         {"fe-element-size", "fe Surface element size"},
         {"fe-degree", "fe Element degree"},
-        {"remesh-interval", "Wear/Remesh interval (fe)"},
+        {"remesh-depth", "fe Remesh depth: profile drift kept on one mesh, in surface element sizes"},
       };
       return c;
     }
@@ -633,7 +633,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                       "smallest elements"));
           knobs.push_back(make_knob("fe-degree", paths(fe, "fe/Element degree"), {"1", "2"}, "degree 2"));
           knobs.push_back(
-            make_knob("remesh-interval", {"Wear/Remesh interval"}, {"5", "2", "1"}, "re-mesh every iteration"));
+            make_knob("remesh-depth", paths(fe, "fe/Remesh depth"), {"2", "0.5", "0"}, "re-mesh at every update"));
         }
     }
   } // namespace

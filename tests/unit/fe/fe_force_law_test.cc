@@ -235,3 +235,37 @@ TEST(FeForceLaw, ElasticImpactConservesEnergyAndSummaryStatesTheLaw)
     << "the cached table is the table";
   ::unsetenv("WEARLINK_CACHE_DIR");
 }
+
+// The monotone repair of a table: a lowest level whose approach lies 25 nm above the next
+// one's (noise of a worn pocket, as measured after 10,000 revolutions) is replaced by the
+// power law of the segment above it and counted; the repaired direction increases; a
+// violation beyond the tolerance is refused with a message naming the level.
+TEST(FeForceLaw, TableRepairsNoiseAtTheLowestLevelsAndRefusesMore)
+{
+  const std::vector<double>                forces     = {10, 20, 40, 80};
+  const std::vector<std::array<double, 2>> directions = {{0, 0}, {0, 1}};
+  std::vector<double> approach = {1.727e-7, 1.476e-7, 2.076e-7, 3.276e-7, 1e-7, 1.6e-7, 2.5e-7, 4e-7};
+  TableBuild          build;
+  make_monotone(approach, forces, directions, 0.25e-6, build);
+  EXPECT_EQ(build.n_repaired, 1u);
+  const double slope = std::log(2.076e-7 / 1.476e-7) / std::log(2.0);
+  EXPECT_NEAR(approach[0], 1.476e-7 * std::pow(0.5, slope), 1e-15);
+  EXPECT_NEAR(build.max_repair, 1.727e-7 - approach[0], 1e-15);
+  for (std::size_t r = 1; r < approach.size(); ++r)
+    if (r % forces.size() != 0)
+      EXPECT_LT(approach[r - 1], approach[r]) << r;
+  EXPECT_EQ(approach[4], 1e-7) << "a monotone direction is left alone";
+
+  std::vector<double> bad = {3e-6, 1e-6, 2e-6, 3e-6, 1e-7, 1.6e-7, 2.5e-7, 4e-7};
+  std::string         msg = "(no NumericalError)";
+  try
+    {
+      make_monotone(bad, forces, directions, 0.25e-6, build);
+    }
+  catch (const NumericalError &e)
+    {
+      msg = e.message();
+    }
+  EXPECT_NE(msg.find("not monotone"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("10.000000 N"), std::string::npos) << msg;
+}

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The low-pass filter of the depth increments (Wear/Smoothing wavelength): the mean
+// (the volume) is kept, a sinusoid at the stated wavelength keeps half its amplitude,
+// long waves pass, the saw-tooth of neighbouring areas is removed, 0 changes nothing.
+#include "wear/wear_loop.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+using wearlink::wear::smoothed;
+
+namespace
+{
+  constexpr double pi = 3.14159265358979323846;
+  constexpr double R  = 0.012;
+
+  /** 1 µm mean plus @p amplitude × cos(m ψ) on n samples. */
+  std::vector<double>
+  wave(unsigned int n, unsigned int m, double amplitude)
+  {
+    std::vector<double> v(n);
+    for (unsigned int k = 0; k < n; ++k)
+      v[k] = 1e-6 + amplitude * std::cos(2 * pi * m * k / n);
+    return v;
+  }
+
+  /** Amplitude of the cos(m ψ) part of @p v. */
+  double
+  amplitude_of(const std::vector<double> &v, unsigned int m)
+  {
+    double a = 0;
+    for (unsigned int k = 0; k < v.size(); ++k)
+      a += v[k] * std::cos(2 * pi * m * k / v.size());
+    return 2 * a / v.size();
+  }
+} // namespace
+
+TEST(Smoothing, KeepsTheMeanAndHalvesTheStatedWavelength)
+{
+  const unsigned int n = 360, m = 19; // wavelength 2πR/19 = 3.97 mm
+  const double       lambda = 2 * pi * R / m;
+  const auto         v      = wave(n, m, 1e-6);
+  const auto         s      = smoothed(v, lambda, R);
+  const double       mean_v = std::accumulate(v.begin(), v.end(), 0.0) / n;
+  const double       mean_s = std::accumulate(s.begin(), s.end(), 0.0) / n;
+  EXPECT_NEAR(mean_s, mean_v, 1e-12 * mean_v);
+  // The sampled, truncated Gaussian's transfer at 19 waves (σ = 2.1 samples) is 1/2
+  // to within the truncation at 4σ (e^−8).
+  EXPECT_NEAR(amplitude_of(s, m), 0.5e-6, 0.01e-6);
+  EXPECT_GT(amplitude_of(smoothed(wave(n, 2, 1e-6), lambda, R), 2), 0.99e-6) << "long waves pass";
+}
+
+TEST(Smoothing, RemovesTheSawToothAndZeroIsTheIdentity)
+{
+  const unsigned int  n = 360;
+  std::vector<double> saw(n);
+  for (unsigned int k = 0; k < n; ++k)
+    saw[k] = 8e-6 + (k % 2 == 0 ? 1 : -1) * 5e-6;
+  const auto s = smoothed(saw, 2e-3, R);
+  for (const double x : s)
+    EXPECT_NEAR(x, 8e-6, 1e-9);
+  EXPECT_EQ(smoothed(saw, 0, R), saw);
+}
