@@ -634,8 +634,7 @@ namespace wearlink::fe
     /**
      * A feasible start of the monotone phase: λ ≥ 0 with Σ λ n = P (force control) on the
      * two candidates of ensure_two_active (closest, and the one bracketing P with it),
-     * or λ = 0 (displacement control). Returns the candidates that carry it (none if
-     * no such pair brackets the load).
+     * or λ = 0 (displacement control). Returns the candidates that carry it.
      */
     std::vector<unsigned int>
     feasible_start(const ContactKinematics &kin,
@@ -651,13 +650,13 @@ namespace wearlink::fe
       if (pair.size() < 2)
         return pair;
       const auto  &a = kin.normal[pair[0]], &b = kin.normal[pair[1]];
-      const double d  = a[0] * b[1] - a[1] * b[0];
-      const double l0 = d != 0.0 ? (load[0] * b[1] - load[1] * b[0]) / d : -1.0;
-      const double l1 = d != 0.0 ? (a[0] * load[1] - a[1] * load[0]) / d : -1.0;
-      if (!(l0 >= 0 && l1 >= 0))
-        return {}; // no pair brackets the load: no feasible start
-      lambda[pair[0]] = l0;
-      lambda[pair[1]] = l1;
+      const double d = a[0] * b[1] - a[1] * b[0];
+      if (d == 0.0)
+        return pair;
+      // Clipped at 0 when the pair does not bracket the load (then the start is not
+      // quite feasible; the first full step restores the balance).
+      lambda[pair[0]] = std::max(0.0, (load[0] * b[1] - load[1] * b[0]) / d);
+      lambda[pair[1]] = std::max(0.0, (a[0] * load[1] - a[1] * load[0]) / d);
       return pair;
     }
 
@@ -750,9 +749,13 @@ namespace wearlink::fe
       // (bloated where it cycled) cost one step back per surplus candidate (measured:
       // ~100 steps to end at 2 active on a worn pair).
       active = feasible_start(kin, force_control, load, lambda);
-      if (force_control && active.size() < 2)
-        return false;
       std::sort(active.begin(), active.end());
+      // A candidate that joins and is dropped again at once without the point moving
+      // (round-off at a penetration near the tolerance) is blocked until the point
+      // moves; violations left only at blocked candidates below 1 nm count as solved.
+      const unsigned int m = lambda.size();
+      std::vector<char>  blocked(m, 0);
+      unsigned int       joined = m;
       for (unsigned int it = 0; it < max_iterations; ++it, ++iterations)
         {
           if (force_control)
@@ -760,16 +763,29 @@ namespace wearlink::fe
           const ActiveColumns cols  = reader.columns(active, max_pointwise_active);
           const auto          x     = solve_active_system(kin, active, cols, reader, force_control, load);
           const double        alpha = step_back_to_feasible(active, x.lambda, lambda);
+          if (alpha == 0 && joined < m && !std::binary_search(active.begin(), active.end(), joined))
+            blocked[joined] = 1;
+          else if ((alpha > 0 && alpha < 1) || (alpha == 1 && joined < m)) // the point moved
+            std::fill(blocked.begin(), blocked.end(), 0);
+          joined = m;
           if (alpha < 1)
             continue;
           for (unsigned int s = 0; s < active.size(); ++s)
             lambda[active[s]] = x.lambda[s];
           U = x.U;
           candidate_gaps(kin, active, cols, reader, x.lambda, lambda, U, max_weight_sum, tolerance, gap);
-          const auto joining = penetrating(lambda, gap, tolerance);
-          if (joining.empty())
-            return true;
-          active.insert(std::upper_bound(active.begin(), active.end(), joining.front()), joining.front());
+          double worst_blocked = 0;
+          for (const auto i : penetrating(lambda, gap, tolerance))
+            if (!blocked[i])
+              {
+                joined = i;
+                break;
+              }
+            else
+              worst_blocked = std::min(worst_blocked, gap[i]);
+          if (joined == m)
+            return worst_blocked > -1e-9;
+          active.insert(std::upper_bound(active.begin(), active.end(), joined), joined);
         }
       return false;
     }
@@ -780,8 +796,8 @@ namespace wearlink::fe
   // the active set is updated until it repeats. The last active set warm-starts the
   // next load state (consecutive states of a mechanism are close).
   // This primal–dual iteration is fast but may cycle on worn, conforming profiles
-  // (hundreds of candidates switching at once, beyond update_active_set's safeguard);
-  // after primal_dual_limit iterations a monotone primal active-set method takes over from a feasible point:
+  // (hundreds of candidates switching at once); when it revisits an active set, or
+  // after primal_dual_limit iterations, a monotone primal active-set method takes over from a feasible point:
   // λ stays ≥ 0 and balances the load, the objective ½λᵀAλ + g0ᵀλ never increases and
   // drops at every step that is not degenerate, so no active set repeats and the
   // iteration ends (Lawson–Hanson: the worst penetrating candidate joins, one at a
@@ -827,8 +843,8 @@ namespace wearlink::fe
             converged = true;
             break;
           }
-        if (iteration >= primal_dual_limit)
-          break; // slow or cycling in spite of update_active_set's safeguard: the monotone method takes over
+        if (history.count(next) != 0 || iteration >= primal_dual_limit)
+          break; // cycling, or slow: the monotone method takes over
         active = next;
       }
     if (!converged)

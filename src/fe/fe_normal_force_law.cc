@@ -17,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace wearlink::fe
@@ -112,6 +114,7 @@ namespace wearlink::fe
           build.n_solves       = j.at("solves").get<unsigned int>();
           build.max_half_angle = j.at("max_half_angle_rad").get<double>();
           build.n_repaired     = j.value("repaired_points", 0u);
+          build.n_failed       = j.value("failed_solves", 0u);
           build.max_repair     = j.value("max_repair_m", 0.0);
           return contact::ForceApproachTable(j.at("forces_N").get<std::vector<double>>(),
                                              j.at("bore_directions").get<unsigned int>(),
@@ -141,6 +144,7 @@ namespace wearlink::fe
       j["solves"]             = b.n_solves;
       j["max_half_angle_rad"] = b.max_half_angle;
       j["repaired_points"]    = b.n_repaired;
+      j["failed_solves"]      = b.n_failed;
       j["max_repair_m"]       = b.max_repair;
       try
         {
@@ -176,13 +180,20 @@ namespace wearlink::fe
           lc.pin_angle     = psi_b - psi_p; // the contact direction psi_b meets the pin at psi_p
           for (const double F : forces)
             {
-              lc.load               = {F * std::cos(psi_b), F * std::sin(psi_b)};
-              const ContactResult r = model.solve(lc, SolverKind::condensed);
-              const auto          e = r.pin_displacement;
-              const double        d = gap.evaluate(mbs::Vec2(e[0], e[1]), 0.0, lc.pin_angle).penetration;
-              approach.push_back(d);
-              build.max_half_angle = std::max(build.max_half_angle, r.half_angle);
+              lc.load = {F * std::cos(psi_b), F * std::sin(psi_b)};
               ++build.n_solves;
+              try
+                {
+                  const ContactResult r = model.solve(lc, SolverKind::condensed);
+                  const auto          e = r.pin_displacement;
+                  approach.push_back(gap.evaluate(mbs::Vec2(e[0], e[1]), 0.0, lc.pin_angle).penetration);
+                  build.max_half_angle = std::max(build.max_half_angle, r.half_angle);
+                }
+              catch (const NumericalError &) // filled from its neighbours and counted (fill_failed)
+                {
+                  approach.push_back(std::numeric_limits<double>::quiet_NaN());
+                  ++build.n_failed;
+                }
             }
         }
       build.solve_seconds = solving.seconds();
@@ -332,6 +343,48 @@ namespace wearlink::fe
         }
   }
 
+  // A level whose FE solve failed is filled by the power law through its nearest solved
+  // neighbours in the same direction (log–log interpolation between them, or the slope
+  // of the two nearest on one side, 1 if there is only one); more than a quarter of a
+  // direction failing is a NumericalError.
+  void
+  fill_failed(std::vector<double>                      &approach,
+              const std::vector<double>                &forces,
+              const std::vector<std::array<double, 2>> &directions)
+  {
+    const std::size_t K = forces.size();
+    for (std::size_t d = 0; d < directions.size(); ++d)
+      {
+        double                  *a = &approach[d * K];
+        std::vector<std::size_t> ok;
+        for (std::size_t k = 0; k < K; ++k)
+          if (std::isfinite(a[k]) && a[k] > 0)
+            ok.push_back(k);
+        if (ok.size() == K)
+          continue;
+        if (ok.size() < 2 || 4 * (K - ok.size()) > K)
+          throw NumericalError("The FE contact solver failed at " + std::to_string(K - ok.size()) + " of the " +
+                               std::to_string(K) + " load levels of the force–approach table in the direction " +
+                               std::to_string(directions[d][0]) + " rad (bushing frame), " +
+                               std::to_string(directions[d][1]) +
+                               " rad (pin frame); refine the contact surfaces ('Surface element size').");
+        for (std::size_t k = 0; k < K; ++k)
+          if (!(std::isfinite(a[k]) && a[k] > 0))
+            {
+              auto        hi = std::upper_bound(ok.begin(), ok.end(), k);
+              std::size_t i, j; // the two solved levels the power law goes through
+              if (hi == ok.begin())
+                i = ok[0], j = ok[1];
+              else if (hi == ok.end())
+                i = ok[ok.size() - 2], j = ok.back();
+              else
+                i = *(hi - 1), j = *hi;
+              const double slope = std::log(a[j] / a[i]) / std::log(forces[j] / forces[i]);
+              a[k]               = a[i] * std::pow(forces[k] / forces[i], slope);
+            }
+      }
+  }
+
   std::vector<double>
   table_load_levels(const FeForceLawSettings &s)
   {
@@ -396,6 +449,13 @@ namespace wearlink::fe
       }
     else
       approach = solve_table(*model, g, forces, directions, build);
+    if (build.n_failed > 0)
+      {
+        fill_failed(approach, forces, directions);
+        std::cerr << "[wearlink] warning: the FE contact solver failed at " << build.n_failed << " of "
+                  << build.n_solves << " force–approach table points; they were filled from their neighbours "
+                  << "(table_failed_solves in summary.json)\n";
+      }
     make_monotone(approach, forces, directions, 0.01 * s.fe.effective_surface_element_size(), build);
     contact::ForceApproachTable table(forces, n_b, n_p, approach);
     if (s.cache)
@@ -454,6 +514,7 @@ namespace wearlink::fe
     j["table_build_time_total_s"] = total_build_seconds;
     j["table_max_half_angle_deg"] = last_build.max_half_angle * 180 / pi;
     j["table_repaired_points"]    = last_build.n_repaired;
+    j["table_failed_solves"]      = last_build.n_failed;
     j["table_max_repair_m"]       = last_build.max_repair;
     j["table_within_validity"]    = last_build.max_half_angle < pi / 2;
     return j;

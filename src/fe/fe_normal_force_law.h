@@ -68,6 +68,7 @@ namespace wearlink::fe
     double       max_half_angle = 0; ///< largest FE contact half-angle over the table [rad]
     unsigned int n_repaired     = 0; ///< approaches replaced to make the table monotone (see the .cc)
     double       max_repair     = 0; ///< the largest such change [m]
+    unsigned int n_failed       = 0; ///< points whose FE solve failed, filled from their neighbours
     std::string  cache_file;
   };
 

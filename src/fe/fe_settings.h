@@ -67,7 +67,7 @@ namespace wearlink::fe
      * method takes over (see CondensedContactSolver::solve); 0: the monotone method
      * alone. Not a scene parameter (tests compare the two).
      */
-    unsigned int primal_dual_iterations = 100;
+    unsigned int primal_dual_iterations = 30;
     /**
      * Distribute the reference solver over the MPI ranks of MPI_COMM_WORLD (METIS
      * partitions; MPI must be initialized by the program). Not a scene parameter.
