@@ -30,18 +30,25 @@
 //     contact candidates (pin and bore parts from BoundaryCompliance) and a
 //     primal–dual active-set method (semismooth Newton for this QP):
 //         min ½ λᵀAλ + g0ᵀλ  s.t. λ ≥ 0, Σ λ_i n_i = P,
-//     whose multiplier of the equality constraint is U. Each iteration is a small
-//     Cholesky solve on the active set. Where it cycles (worn, conforming pairs) a
-//     monotone primal active-set method (Lawson–Hanson) finishes from a feasible point.
+//     whose multiplier of the equality constraint is U. It works on the contact window
+//     only: the candidates whose initial gap is below a threshold that the elastic
+//     deformation cannot bridge (checked against the solution and widened when it is not
+//     enough; outside it the gaps stay open).
+//     The window's columns of A are gathered once per state; the Cholesky factor of the
+//     active block is kept in an order that puts the arc's edges last (distance from the
+//     first point of contact), so that an iteration, which changes the active set at the
+//     edges, re-factors only the rows after the first change (LAPACK, i.e. OpenBLAS on
+//     Debian). Where the iteration cycles (worn, conforming pairs) a monotone primal
+//     active-set method (Lawson–Hanson) finishes from a feasible point.
 //   - ReferenceContactSolver: the same active-set iteration on the full FE system of
 //     both bodies (deal.II step-41 style): the active contact conditions g_i = 0 are
 //     affine constraints between the pin node and the bore nodes, the core is tied to
 //     one master node loaded by P, and every iteration re-factors the constrained
-//     system; λ_i are the residual forces.
+//     system; λ_i are the residual forces. It sees every candidate.
 #pragma once
 
-#include "base/profile.h"
 #include "fe/boundary_compliance.h"
+#include "fe/contact_kinematics.h"
 #include "fe/elasticity_problem.h"
 
 #include <deal.II/base/tensor.h>
@@ -53,53 +60,61 @@
 
 namespace wearlink::fe
 {
-  /** Geometry of one load state: where each pin candidate meets the bore. */
-  struct ContactKinematics
-  {
-    double                                   relative_angle = 0; ///< θ_pin − θ_bushing [rad]
-    dealii::Tensor<1, 2>                     eccentricity;       ///< reference pin position, bushing frame [m]
-    std::vector<double>                      g0;                 ///< initial gap per pin candidate [m]
-    std::vector<dealii::Tensor<1, 2>>        normal;             ///< pin normal, bushing frame
-    std::vector<double>                      bore_angle; ///< bushing-frame angle of the contact point on the bore
-    std::vector<std::array<unsigned int, 3>> masters;    ///< bore nodes of the face met
-    std::vector<std::array<double, 3>>       weights;    ///< their interpolation weights
-    std::vector<unsigned char>               n_masters;
-  };
-
-  /**
-   * Place the pin (its candidates from @p problem) at eccentricity @p eccentricity
-   * (bushing frame) and relative rotation @p relative_angle, and cast each candidate's
-   * normal ray onto the bore profile @p bore. @p pin_offsets (if given, one per pin
-   * candidate) moves each candidate radially by that much [m] before the ray is cast:
-   * the difference between the pin's current profile and the meshed one, so that a
-   * mesh kept across small wear updates still sees the current gaps (the normals and
-   * the compliance stay those of the mesh).
-   */
-  ContactKinematics
-  compute_kinematics(const ElasticityProblem    &problem,
-                     const Profile              &bore,
-                     double                      relative_angle,
-                     const dealii::Tensor<1, 2> &eccentricity,
-                     const std::vector<double>  *pin_offsets = nullptr);
-
-  /** Result of one load state. */
+  /** Result of one load state (per position of the kinematics it was solved on). */
   struct ContactSolution
   {
-    std::vector<double>  lambda;          ///< normal force per pin candidate [N/m]
-    dealii::Tensor<1, 2> pin_translation; ///< U, bushing frame [m]
-    dealii::Tensor<1, 2> resultant;       ///< Σ λ_i n_i, bushing frame [N/m]
-    /**
-     * Final gap per pin candidate [m]. Condensed solver: exact for the candidates within
-     * reach of the contact (see CondensedContactSolver::solve), a lower bound for the
-     * others (still far above the tolerance).
-     */
-    std::vector<double> gap;
-    unsigned int        iterations = 0;
-    unsigned int        n_active   = 0;
-    bool                monotone   = false; ///< the condensed solver's monotone phase was needed
+    std::vector<double>  lambda;          ///< normal force per position [N/m]
+    dealii::Tensor<1, 2> pin_translation; ///< U, bushing frame [m] (from the pose the solver was given)
+    /** The translation from the last linearization's pose: gap = g0 − n·U_last + A λ there [m]. */
+    dealii::Tensor<1, 2> last_translation;
+    dealii::Tensor<1, 2> resultant; ///< Σ λ_i n_i, bushing frame [N/m]
+    std::vector<double>  gap;       ///< final gap per position [m]
+    /** The active positions at the end (for a warm start of the same state). */
+    std::vector<unsigned int> active;
+    unsigned int              iterations = 0;
+    unsigned int              n_active   = 0;
+    bool                      monotone   = false; ///< the condensed solver's monotone phase was needed
     /** Full displacement field (reference solver only; empty otherwise). */
     dealii::Vector<double> displacement;
   };
+
+  namespace condensed_detail
+  {
+    class WindowCompliance;
+    class ActiveFactor;
+    struct WindowState;
+  } // namespace condensed_detail
+
+  /** Kinematic updates of one load state at most (the last one is accepted). */
+  constexpr unsigned int max_relinearizations = 6;
+
+  /** The smallest radius of the meshed pin surface (its candidates) [m]. */
+  double
+  smallest_pin_radius(const ElasticityProblem &problem);
+
+  /**
+   * True when the pin translation @p U of a linearization is small enough to stop
+   * re-linearizing: |U| < 2e-4 R (R = smallest_pin_radius()). The gap is linearized as g0 − n·U;
+   * the exact change of a ray's length is −(ν·U)/(ν·n), ν the bore normal where it
+   * lands, which differs by less than 2 % of |U| on the contact arcs of interest.
+   */
+  inline bool
+  relinearization_done(const dealii::Tensor<1, 2> &U, const double pin_radius)
+  {
+    return U.norm() < 2e-4 * pin_radius;
+  }
+
+  /**
+   * An estimate of the elastic approach of a conforming pin–bore pair under the load per
+   * unit length @p load_per_length [N/m]: Johnson's cylinder in a cylindrical hole,
+   * δ = 0.9 P/(πE*) [ln(4πE*ΔR/P) − 1] (the factor: the rigid pin core and the clamped
+   * ring of the FE model make it stiffer than two unbounded bodies; within 10 % of the FE
+   * approach from 100 N to 100 kN on the steel pair of params/pin_bushing.prm), and at
+   * least 0.1 P/(πE*). Deterministic, so that a load state's path through the
+   * kinematic updates does not depend on what was solved before.
+   */
+  double
+  predicted_approach(double load_per_length, double effective_modulus, double radial_clearance);
 
   class CondensedContactSolver
   {
@@ -114,11 +129,23 @@ namespace wearlink::fe
                            unsigned int             primal_dual_limit = 30);
 
     /**
+     * One load state about @p pose, on its contact window (compute_window_kinematics):
+     * the window first reaches half of @p closure_estimate [m] (the elastic approach
+     * expected), and is widened and the state solved again if the solution's elastic
+     * deformation could close a gap outside it (see the .cc). Under force control the
+     * gaps are refreshed about the translated pin (refresh_gaps()) until the
+     * translation of the last linearization is below relinearization_done(); the
+     * solution's pin_translation is the total from @p pose. @p kinematics receives the
+     * window's kinematics (its gaps those of the last linearization).
      * @param force_control true: U unknown with Σ λ n = @p load [N/m, bushing frame];
-     *        false: U = 0 (the eccentricity of @p kinematics is the given one).
+     *        false: U = 0 (the eccentricity of @p pose is the given one).
      */
     ContactSolution
-    solve(const ContactKinematics &kinematics, bool force_control, const dealii::Tensor<1, 2> &load);
+    solve(const PinPose              &pose,
+          bool                        force_control,
+          const dealii::Tensor<1, 2> &load,
+          double                      closure_estimate,
+          ContactKinematics          &kinematics);
 
     /**
      * Displacement field of both bodies for a solution (one back substitution with the
@@ -136,13 +163,22 @@ namespace wearlink::fe
     }
 
   private:
-    const ElasticityProblem  &problem;
-    BoundaryCompliance       &compliance;
-    const unsigned int        max_iterations;
-    const unsigned int        primal_dual_limit;
-    unsigned long             n_monotone = 0;
-    std::vector<unsigned int> previous_active;
-    dealii::Tensor<1, 2>      previous_load;
+    void
+    solve_linearized(const ContactKinematics            &kinematics,
+                     condensed_detail::WindowCompliance &A,
+                     condensed_detail::ActiveFactor     &factor,
+                     bool                                force_control,
+                     const dealii::Tensor<1, 2>         &load,
+                     condensed_detail::WindowState      &state,
+                     bool                               &monotone_used);
+
+    const ElasticityProblem &problem;
+    BoundaryCompliance      &compliance;
+    const unsigned int       max_iterations;
+    const unsigned int       primal_dual_limit;
+    const double             clearance;  ///< mean radial clearance of the meshed surfaces [m]
+    const double             pin_radius; ///< smallest radius of the meshed pin surface [m]
+    unsigned long            n_monotone = 0;
   };
 
   class ReferenceContactSolver
@@ -158,6 +194,7 @@ namespace wearlink::fe
      */
     ReferenceContactSolver(const ElasticityProblem &problem, unsigned int max_iterations, bool distributed = false);
 
+    /** One load state on the kinematics of every candidate (compute_kinematics()). */
     ContactSolution
     solve(const ContactKinematics &kinematics, bool force_control, const dealii::Tensor<1, 2> &load) const;
 
@@ -174,15 +211,13 @@ namespace wearlink::fe
   };
 
   /**
-   * Initial active set shared by both solvers (so that they take the same path).
-   * Displacement control: the candidates that overlap. Force control with the load per
-   * unit length P (bushing frame): the candidates whose initial gap is within the Hertz approach
-   * δ_H = 2P/(π E*) of the smallest one. For a contact of relative radius R*, Hertz's
-   * half-width b satisfies b²/(2R*) = 2P/(πE*), so this picks the arc |s| < b about the
-   * first point of contact whatever R* is — also on worn, conforming profiles, where it
-   * overestimates the arc (the iteration then only removes candidates). Starting from
-   * the one or two closest candidates instead lets the pin slide sideways in the first
-   * iteration and costs ~20 iterations at 1 kN (measured), each touching new columns.
+   * Initial active set of the reference solver. Displacement control: the candidates
+   * that overlap. Force control with the load per unit length P (bushing frame): the
+   * candidates whose initial gap is within the Hertz approach δ_H = 2P/(π E*) of the
+   * smallest one. For a contact of relative radius R*, Hertz's half-width b satisfies
+   * b²/(2R*) = 2P/(πE*), so this picks the arc |s| < b about the first point of contact
+   * whatever R* is — also on worn, conforming profiles, where it overestimates the arc
+   * (the iteration then only removes candidates).
    */
   std::vector<unsigned int>
   initial_active_set(const ContactKinematics    &kinematics,

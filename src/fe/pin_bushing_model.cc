@@ -148,12 +148,14 @@ namespace wearlink::fe
     }
 
     // Force control: the pin starts at the rigid-contact position along the load
-    // direction (radial gap of the two profiles there) and the solver finds the
-    // elastic translation U. The gap is linearized in U; if U is large enough for the
-    // neglected term |U|²/(2R) to matter (worn profiles guide the pin sideways), the
-    // kinematics are recomputed about e + U and the state solved again.
+    // direction (radial gap of the two profiles there) plus the predicted elastic
+    // approach (predicted_approach(): deterministic, so that a state's result does not
+    // depend on what was solved before), and the solver finds the elastic translation U
+    // from there. The gap is linearized in U; the gaps are refreshed about e + U with the
+    // contact pairing of the first pose (refresh_gaps()) and the state solved again until
+    // relinearization_done(). Both solvers take this same path.
     ContactResult
-    solve(const LoadCase &load, SolverKind kind, const std::string &vtu_path)
+    solve(const LoadCase &load, SolverKind kind, const std::string &vtu_path, const bool all_angles)
     {
       const auto start = Clock::now();
       if (kind == SolverKind::condensed)
@@ -162,6 +164,7 @@ namespace wearlink::fe
       const double relative_angle = load.pin_angle - load.bushing_angle;
       const bool   force_control  = load.control == Control::force;
       Tensor<1, 2> P, e;
+      double       closure = 0;
       if (force_control)
         {
           const Tensor<1, 2> F = rotate(tensor(load.load), -load.bushing_angle);
@@ -170,57 +173,27 @@ namespace wearlink::fe
           P                = F / L;
           const double phi = std::atan2(F[1], F[0]);
           const double s   = geometry.bore.radius(phi) - geometry.pin.radius(phi - relative_angle);
-          e                = s * F / F.norm();
+          closure          = predicted_approach(P.norm(),
+                                       problem->effective_modulus(),
+                                       geometry.bore.mean_radius() - geometry.pin.mean_radius());
+          e                = (s + closure) * F / F.norm();
         }
       else
         e = rotate(tensor(load.eccentricity), -load.bushing_angle);
 
+      PinPose pose;
+      pose.bore           = &geometry.bore;
+      pose.relative_angle = relative_angle;
+      pose.eccentricity   = e;
+      pose.pin_offsets    = pin_offsets.empty() ? nullptr : &pin_offsets;
       ContactKinematics kin;
-      ContactSolution   sol;
-      unsigned int      iterations = 0;
-      const double      R          = geometry.pin.min_radius();
-      for (unsigned int update = 0; update < 6; ++update)
-        {
-          kin = compute_kinematics(*problem,
-                                   geometry.bore,
-                                   relative_angle,
-                                   e,
-                                   pin_offsets.empty() ? nullptr : &pin_offsets);
-          sol = kind == SolverKind::condensed ? condensed->solve(kin, force_control, P) :
-                                                reference->solve(kin, force_control, P);
-          iterations += sol.iterations;
-          const double U = sol.pin_translation.norm();
-          if (!force_control || U < 2e-4 * R)
-            break;
-          e += sol.pin_translation;
-        }
+      ContactSolution   sol = kind == SolverKind::condensed ? condensed->solve(pose, force_control, P, closure, kin) :
+                                                              reference_solve(pose, force_control, P, kin);
       ++n_solves;
-
-      ContactResult r;
-      r.iterations             = iterations;
-      r.monotone               = sol.monotone;
-      r.n_active               = sol.n_active;
-      const auto        &nodes = problem->pin_nodes;
-      const unsigned int m     = nodes.size();
-      r.pin_angle.resize(m);
-      r.bore_angle = kin.bore_angle;
-      r.pressure.resize(m);
-      r.force.resize(m);
-      for (unsigned int i = 0; i < m; ++i)
-        {
-          r.pin_angle[i]  = nodes[i].angle;
-          r.pressure[i]   = sol.lambda[i] / nodes[i].weight;
-          r.force[i]      = sol.lambda[i] * L;
-          r.peak_pressure = std::max(r.peak_pressure, r.pressure[i]);
-        }
-      const Tensor<1, 2> resultant = rotate(sol.resultant * L, load.bushing_angle);
-      const Tensor<1, 2> ecc       = rotate(e + sol.pin_translation, load.bushing_angle);
-      r.resultant                  = {resultant[0], resultant[1]};
-      r.pin_displacement           = {ecc[0], ecc[1]};
-      if (force_control)
-        r.equilibrium_relative_residual = (resultant - tensor(load.load)).norm() / tensor(load.load).norm();
-      contact_extent(kin, sol, r);
-
+      ContactResult r = result(load, kin, sol, e);
+      r.iterations    = sol.iterations;
+      if (all_angles || !vtu_path.empty())
+        r.bore_angle = compute_kinematics(*problem, pose).bore_angle;
       if (!vtu_path.empty())
         {
           const Vector<double> u =
@@ -228,6 +201,68 @@ namespace wearlink::fe
           problem->output_results(u, vtu_path);
         }
       r.solve_time = seconds_since(start);
+      return r;
+    }
+
+    // The reference solver's path: every candidate, the same linearizations as the
+    // condensed solver's.
+    ContactSolution
+    reference_solve(PinPose pose, const bool force_control, const Tensor<1, 2> &P, ContactKinematics &kin) const
+    {
+      const Tensor<1, 2> e0 = pose.eccentricity;
+      kin                   = compute_kinematics(*problem, pose);
+      Tensor<1, 2>    U_total;
+      ContactSolution sol;
+      unsigned int    iterations = 0;
+      const double    R          = smallest_pin_radius(*problem);
+      for (unsigned int update = 0; update < max_relinearizations; ++update)
+        {
+          sol = reference->solve(kin, force_control, P);
+          iterations += sol.iterations;
+          U_total += sol.pin_translation;
+          if (!force_control || relinearization_done(sol.pin_translation, R))
+            break;
+          pose.eccentricity = e0 + U_total;
+          refresh_gaps(*problem, pose, kin);
+        }
+      sol.last_translation = sol.pin_translation;
+      sol.pin_translation  = U_total;
+      sol.iterations       = iterations;
+      return sol;
+    }
+
+    // The per-candidate arrays (zero force and NaN bore angle outside the kinematics'
+    // window), the resultant, the equilibrium residual and the contact extent.
+    ContactResult
+    result(const LoadCase &load, const ContactKinematics &kin, const ContactSolution &sol, const Tensor<1, 2> &e) const
+    {
+      ContactResult r;
+      r.monotone               = sol.monotone;
+      r.n_active               = sol.n_active;
+      const auto        &nodes = problem->pin_nodes;
+      const unsigned int m     = nodes.size();
+      const double       L     = geometry.axial_length;
+      r.pin_angle.resize(m);
+      r.bore_angle.assign(m, std::numeric_limits<double>::quiet_NaN());
+      r.pressure.assign(m, 0.0);
+      r.force.assign(m, 0.0);
+      for (unsigned int i = 0; i < m; ++i)
+        r.pin_angle[i] = nodes[i].angle;
+      for (unsigned int p = 0; p < kin.candidates.size(); ++p)
+        {
+          const unsigned int i = kin.candidates[p];
+          r.bore_angle[i]      = kin.bore_angle[p];
+          r.pressure[i]        = sol.lambda[p] / nodes[i].weight;
+          r.force[i]           = sol.lambda[p] * L;
+          r.peak_pressure      = std::max(r.peak_pressure, r.pressure[i]);
+        }
+      const Tensor<1, 2> resultant = rotate(sol.resultant * L, load.bushing_angle);
+      const Tensor<1, 2> ecc       = rotate(e + sol.pin_translation, load.bushing_angle);
+      r.resultant                  = {resultant[0], resultant[1]};
+      r.pin_displacement           = {ecc[0], ecc[1]};
+      if (load.control == Control::force)
+        r.equilibrium_relative_residual = (resultant - tensor(load.load)).norm() / tensor(load.load).norm();
+      contact_extent(kin, sol, r);
       return r;
     }
 
@@ -240,19 +275,21 @@ namespace wearlink::fe
       if (sol.resultant.norm() == 0)
         return;
       const double        direction = std::atan2(sol.resultant[1], sol.resultant[0]);
-      const unsigned int  m         = kin.g0.size();
-      std::vector<double> beta(m), s(m);
-      for (unsigned int i = 0; i < m; ++i)
+      const unsigned int  w         = kin.candidates.size();
+      std::vector<double> beta(w), s(w), p(w);
+      for (unsigned int q = 0; q < w; ++q)
         {
-          beta[i]          = wrap(kin.bore_angle[i] - direction);
-          const double psi = wrap(problem->pin_nodes[i].angle - (direction - kin.relative_angle));
-          s[i]             = psi * geometry.pin.radius(problem->pin_nodes[i].angle);
+          const auto &node = problem->pin_nodes[kin.candidates[q]];
+          beta[q]          = wrap(kin.bore_angle[q] - direction);
+          const double psi = wrap(node.angle - (direction - kin.relative_angle));
+          s[q]             = psi * geometry.pin.radius(node.angle);
+          p[q]             = r.pressure[kin.candidates[q]];
         }
-      std::vector<unsigned int> order(m);
+      std::vector<unsigned int> order(w);
       std::iota(order.begin(), order.end(), 0);
       std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) { return beta[a] < beta[b]; });
       int first = -1, last = -1;
-      for (unsigned int k = 0; k < m; ++k)
+      for (unsigned int k = 0; k < w; ++k)
         if (sol.lambda[order[k]] > 0)
           {
             if (first < 0)
@@ -263,13 +300,9 @@ namespace wearlink::fe
         return;
       auto edge = [&](int k_last, int k_inner, int k_out, const std::vector<double> &x) {
         const auto at = [&](int k) {
-          return order[(k + m) % m];
+          return order[std::clamp(k, 0, static_cast<int>(w) - 1)];
         };
-        return contact_edge(x[at(k_last)],
-                            r.pressure[at(k_last)],
-                            x[at(k_inner)],
-                            r.pressure[at(k_inner)],
-                            x[at(k_out)]);
+        return contact_edge(x[at(k_last)], p[at(k_last)], x[at(k_inner)], p[at(k_inner)], x[at(k_out)]);
       };
       const bool   single      = first == last;
       const int    inner_right = single ? last : last - 1;
@@ -373,9 +406,9 @@ namespace wearlink::fe
   }
 
   ContactResult
-  PinBushingModel::solve(const LoadCase &load, SolverKind solver, const std::string &vtu_path)
+  PinBushingModel::solve(const LoadCase &load, SolverKind solver, const std::string &vtu_path, const bool all_angles)
   {
-    return impl->solve(load, solver, vtu_path);
+    return impl->solve(load, solver, vtu_path, all_angles);
   }
 
   void

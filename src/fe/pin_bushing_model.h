@@ -74,7 +74,7 @@ namespace wearlink::fe
     double       solve_time = 0;     ///< wall time of this load state [s]
     /** Per pin contact candidate (sorted by pin-frame angle): */
     std::vector<double> pin_angle;  ///< pin-frame angle [rad]
-    std::vector<double> bore_angle; ///< bushing-frame angle of its contact point [rad]
+    std::vector<double> bore_angle; ///< bushing-frame angle of its contact point [rad] (see solve())
     std::vector<double> pressure;   ///< nodal contact pressure [Pa]
     std::vector<double> force;      ///< nodal contact force over the length L [N]
   };
@@ -105,9 +105,14 @@ namespace wearlink::fe
     PinBushingModel &
     operator=(const PinBushingModel &) = delete;
 
-    /** Solve one load state; if @p vtu_path is not empty, write the fields there. */
+    /**
+     * Solve one load state; if @p vtu_path is not empty, write the fields there. The
+     * condensed solver sees only the contact window (contact_solver.h): outside it the
+     * result's bore angles are NaN unless @p all_angles (or a VTU) asks for every
+     * candidate's.
+     */
     ContactResult
-    solve(const LoadCase &load, SolverKind solver, const std::string &vtu_path = "");
+    solve(const LoadCase &load, SolverKind solver, const std::string &vtu_path = "", bool all_angles = false);
 
     /** Factor the clamped system now (otherwise on the first condensed solve). */
     void

@@ -61,12 +61,14 @@ namespace wearlink::workflows
       std::vector<double> first(loads.size());
       for (std::size_t k = 0; k < loads.size(); ++k)
         first[k] = model.solve(loads[k], fe::SolverKind::condensed).solve_time;
-      for (const auto &lc : loads)
-        out.results.push_back(model.solve(lc, fe::SolverKind::condensed));
       double mean = 0, mean_first = 0;
       for (std::size_t k = 0; k < loads.size(); ++k)
         {
-          mean += out.results[k].solve_time / loads.size();
+          const double timed = model.solve(loads[k], fe::SolverKind::condensed).solve_time;
+          // The result written out has every candidate's bore angle (not timed).
+          out.results.push_back(model.solve(loads[k], fe::SolverKind::condensed, "", true));
+          out.results.back().solve_time = timed;
+          mean += timed / loads.size();
           mean_first += first[k] / loads.size();
         }
       auto &s                       = out.json;

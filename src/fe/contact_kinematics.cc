@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "fe/contact_kinematics.h"
+
+#include "base/numbers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace wearlink::fe
+{
+  using namespace dealii;
+  using numbers::pi;
+  using numbers::two_pi;
+
+  namespace
+  {
+    Tensor<1, 2>
+    rotate(const Tensor<1, 2> &v, const double angle)
+    {
+      const double c = std::cos(angle), s = std::sin(angle);
+      Tensor<1, 2> r;
+      r[0] = c * v[0] - s * v[1];
+      r[1] = s * v[0] + c * v[1];
+      return r;
+    }
+
+    /** Lagrange basis on p+1 equidistant points of [0, 1], evaluated at @p xi. */
+    std::array<double, 3>
+    lagrange_weights(const unsigned int n_points, const double xi)
+    {
+      std::array<double, 3> w{};
+      const unsigned int    p = n_points - 1;
+      for (unsigned int k = 0; k < n_points; ++k)
+        {
+          double v = 1;
+          for (unsigned int l = 0; l < n_points; ++l)
+            if (l != k)
+              v *= (xi - double(l) / p) / (double(k) - double(l)) * p;
+          w[k] = v;
+        }
+      return w;
+    }
+
+    /** What one pin candidate's ray gives (one position of ContactKinematics). */
+    struct Ray
+    {
+      double                      g0 = 0, bore_angle = 0;
+      Tensor<1, 2>                normal;
+      std::array<unsigned int, 3> masters{};
+      std::array<double, 3>       weights{};
+      unsigned char               n_masters = 0;
+    };
+
+    /** The length of the ray from @p x along @p n to the bore profile. */
+    double
+    ray_length(const Profile &bore, const bool round, const Tensor<1, 2> &x, const Tensor<1, 2> &n)
+    {
+      const double radius = bore.radius(std::atan2(x[1], x[0]));
+      const double b      = x * n;
+      double       t      = -b + std::sqrt(std::max(b * b - x * x + radius * radius, 0.0));
+      if (!round)
+        for (unsigned int it = 0; it < 20; ++it)
+          {
+            const Tensor<1, 2> y     = x + t * n;
+            const double       rho   = y.norm();
+            const double       alpha = std::atan2(y[1], y[0]);
+            const double       f     = rho - bore.radius(alpha);
+            if (std::abs(f) < 1e-14 * rho)
+              break;
+            const double df = (y * n) / rho - bore.slope(alpha) * (y[0] * n[1] - y[1] * n[0]) / (rho * rho);
+            t -= f / df;
+          }
+      return t;
+    }
+
+    /** The bore face that the polar angle @p alpha falls in, and the position in it. */
+    void
+    locate_on_bore(const std::vector<SurfaceFace> &faces, const double alpha, Ray &ray)
+    {
+      auto it =
+        std::upper_bound(faces.begin(), faces.end(), alpha, [](double a, const SurfaceFace &f) { return a < f.begin; });
+      unsigned int f = it == faces.begin() ? faces.size() - 1 : (it - faces.begin()) - 1;
+      double       d = alpha - faces[f].begin;
+      d -= two_pi * std::floor(d / two_pi);
+      if (d > faces[f].span)
+        {
+          // Between the end of this face and the start of the next (round-off): take
+          // the nearer one.
+          const unsigned int g  = (f + 1) % faces.size();
+          double             dg = alpha - faces[g].begin;
+          dg -= two_pi * std::round(dg / two_pi);
+          if (std::abs(dg) < d - faces[f].span)
+            {
+              f = g;
+              d = 0;
+            }
+          else
+            d = faces[f].span;
+        }
+      const double xi       = std::clamp(d / faces[f].span, 0.0, 1.0);
+      const auto   n_points = static_cast<unsigned int>(faces[f].nodes.size());
+      const auto   w        = lagrange_weights(n_points, xi);
+      ray.n_masters         = n_points;
+      for (unsigned int a = 0; a < n_points; ++a)
+        {
+          ray.masters[a] = faces[f].nodes[a];
+          ray.weights[a] = w[a];
+        }
+    }
+
+    Ray
+    cast(const ElasticityProblem &problem, const PinPose &pose, const bool round, const unsigned int i)
+    {
+      const auto  &node  = problem.pin_nodes[i];
+      Tensor<1, 2> point = node.point;
+      if (pose.pin_offsets != nullptr)
+        point *= 1 + (*pose.pin_offsets)[i] / point.norm();
+      Ray                ray;
+      const Tensor<1, 2> x = pose.eccentricity + rotate(point, pose.relative_angle);
+      ray.normal           = rotate(node.normal, pose.relative_angle);
+      ray.g0               = ray_length(*pose.bore, round, x, ray.normal);
+      const Tensor<1, 2> y = x + ray.g0 * ray.normal;
+      ray.bore_angle       = std::atan2(y[1], y[0]);
+      locate_on_bore(problem.bore_faces, ray.bore_angle, ray);
+      return ray;
+    }
+
+    void
+    append(ContactKinematics &k, const unsigned int i, const Ray &ray)
+    {
+      k.candidates.push_back(i);
+      k.g0.push_back(ray.g0);
+      k.normal.push_back(ray.normal);
+      k.bore_angle.push_back(ray.bore_angle);
+      k.masters.push_back(ray.masters);
+      k.weights.push_back(ray.weights);
+      k.n_masters.push_back(ray.n_masters);
+    }
+
+    ContactKinematics
+    empty_kinematics(const PinPose &pose)
+    {
+      ContactKinematics k;
+      k.relative_angle = pose.relative_angle;
+      k.eccentricity   = pose.eccentricity;
+      // Round-off of the gap formula: lengths of the size of the bore radius.
+      k.tolerance = 1e-13 * pose.bore->max_radius();
+      return k;
+    }
+
+    /** max |dR/dψ| of the linear interpolant of @p p [m/rad]. */
+    double
+    max_slope(const Profile &p)
+    {
+      const unsigned int n = p.n_points();
+      double             s = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        s = std::max(s, std::abs(p[(k + 1) % n] - p[k]));
+      return s * n / two_pi;
+    }
+
+    /** max |dR/dψ| of the pin as its candidates sample it (offsets included) [m/rad]. */
+    double
+    pin_max_slope(const ElasticityProblem &problem, const PinPose &pose)
+    {
+      const auto        &nodes = problem.pin_nodes;
+      const unsigned int m     = nodes.size();
+      auto               r     = [&](unsigned int i) {
+        return nodes[i].point.norm() + (pose.pin_offsets != nullptr ? (*pose.pin_offsets)[i] : 0.0);
+      };
+      double s = 0;
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          const unsigned int j  = (i + 1) % m;
+          double             da = nodes[j].angle - nodes[i].angle;
+          da -= two_pi * std::floor(da / two_pi);
+          if (da > 0)
+            s = std::max(s, std::abs(r(j) - r(i)) / da);
+        }
+      return s;
+    }
+  } // namespace
+
+
+  ContactKinematics
+  compute_kinematics(const ElasticityProblem &problem, const PinPose &pose)
+  {
+    ContactKinematics  k     = empty_kinematics(pose);
+    const bool         round = pose.bore->is_round();
+    const unsigned int m     = problem.pin_nodes.size();
+    for (unsigned int i = 0; i < m; ++i)
+      append(k, i, cast(problem, pose, round, i));
+    return k;
+  }
+
+
+  void
+  refresh_gaps(const ElasticityProblem &problem, const PinPose &pose, ContactKinematics &k)
+  {
+    const bool round = pose.bore->is_round();
+    k.eccentricity   = pose.eccentricity;
+    for (unsigned int p = 0; p < k.candidates.size(); ++p)
+      {
+        const unsigned int i     = k.candidates[p];
+        Tensor<1, 2>       point = problem.pin_nodes[i].point;
+        if (pose.pin_offsets != nullptr)
+          point *= 1 + (*pose.pin_offsets)[i] / point.norm();
+        k.g0[p] = ray_length(*pose.bore, round, pose.eccentricity + rotate(point, pose.relative_angle), k.normal[p]);
+      }
+  }
+
+
+  // Blocks of B candidates between sampled ones: a block whose bound (mean of its two
+  // end gaps − L Δψ/2) exceeds the threshold cannot hold a candidate below it.
+  ContactKinematics
+  compute_window_kinematics(const ElasticityProblem &problem,
+                            const PinPose           &pose,
+                            const WindowThreshold   &rule,
+                            double                  *threshold_used)
+  {
+    constexpr unsigned int B     = 8;
+    const auto            &nodes = problem.pin_nodes;
+    const unsigned int     m     = nodes.size();
+    const bool             round = pose.bore->is_round();
+    const double           L = 2 * (pose.eccentricity.norm() + max_slope(*pose.bore) + pin_max_slope(problem, pose));
+    const unsigned int     n_blocks = (m + B - 1) / B;
+    std::vector<double>    sampled(n_blocks);
+    double                 g_min = std::numeric_limits<double>::max();
+    for (unsigned int j = 0; j < n_blocks; ++j)
+      {
+        sampled[j] = cast(problem, pose, round, j * B).g0;
+        g_min      = std::min(g_min, sampled[j]);
+      }
+    const double threshold = std::max({rule.at_least, g_min + rule.above_smallest, -rule.overlap_factor * g_min});
+    if (threshold_used != nullptr)
+      *threshold_used = threshold;
+
+    // The candidates below the threshold, with their rays, in increasing order.
+    std::vector<std::pair<unsigned int, Ray>> below;
+    for (unsigned int j = 0; j < n_blocks; ++j)
+      {
+        const unsigned int a  = j * B;
+        const unsigned int b  = std::min(a + B, m); // b = m: the block ends at candidate 0
+        double             da = nodes[b % m].angle - nodes[a].angle;
+        da -= two_pi * std::floor(da / two_pi);
+        const double lower = 0.5 * (sampled[j] + sampled[(j + 1) % n_blocks]) - 0.5 * L * da;
+        if (sampled[j] <= threshold)
+          below.emplace_back(a, cast(problem, pose, round, a));
+        if (lower <= threshold)
+          for (unsigned int i = a + 1; i < b; ++i)
+            if (Ray ray = cast(problem, pose, round, i); ray.g0 <= threshold)
+              below.emplace_back(i, ray);
+      }
+    // Padded by one candidate on either side, so that every contact node's neighbours
+    // (the ends of its tributary arc) are in the window.
+    std::vector<char> in(m, 0);
+    for (const auto &b : below)
+      in[b.first] = 1;
+    ContactKinematics k    = empty_kinematics(pose);
+    std::size_t       next = 0;
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        const bool listed = next < below.size() && below[next].first == i;
+        if (listed)
+          append(k, i, below[next++].second);
+        else if (in[(i + 1) % m] || in[(i + m - 1) % m])
+          append(k, i, cast(problem, pose, round, i));
+      }
+    return k;
+  }
+} // namespace wearlink::fe
