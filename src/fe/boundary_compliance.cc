@@ -3,6 +3,8 @@
 
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
+#include "fe/boundary_ids.h"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
@@ -10,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 namespace wearlink::fe
 {
@@ -22,53 +23,113 @@ namespace wearlink::fe
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
   };
 
+  namespace
+  {
+    /** Per DoF: 1 if it belongs to a pin cell, 0 for the bushing. */
+    std::vector<char>
+    pin_dofs(const ElasticityProblem &problem)
+    {
+      std::vector<char>             is_pin(problem.dof_handler.n_dofs(), 0);
+      std::vector<global_dof_index> dofs(problem.fe.n_dofs_per_cell());
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->material_id() == material_ids::pin)
+          {
+            cell->get_dof_indices(dofs);
+            for (const auto d : dofs)
+              is_pin[d] = 1;
+          }
+      return is_pin;
+    }
+
+    /** Factor the lower triangle of K on the DoFs with reduced index ≥ 0 and body @p body. */
+    void
+    factor_body(const SparseMatrix<double>                               &K,
+                const std::vector<long>                                  &reduced_index,
+                const std::vector<char>                                  &is_pin,
+                const char                                                body,
+                const long                                                n_free,
+                Eigen::SparseMatrix<double>                              &matrix,
+                Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> &llt)
+    {
+      std::vector<Eigen::Triplet<double>> entries;
+      for (types::global_dof_index row = 0; row < K.m(); ++row)
+        {
+          const long r = reduced_index[row];
+          if (r < 0 || is_pin[row] != body)
+            continue;
+          for (auto e = K.begin(row); e != K.end(row); ++e)
+            {
+              const long c = reduced_index[e->column()];
+              if (c >= 0 && c <= r)
+                entries.emplace_back(r, c, e->value());
+            }
+        }
+      matrix.resize(n_free, n_free);
+      matrix.setFromTriplets(entries.begin(), entries.end());
+      llt.compute(matrix);
+      if (llt.info() != Eigen::Success)
+        throw NumericalError("The clamped stiffness matrix of the pin–bushing mesh is not positive "
+                             "definite (CHOLMOD failed): check the mesh (inverted elements?) and "
+                             "the materials.");
+      EffectLedger::instance().add_resource("factorizations");
+    }
+
+    /**
+     * S if rotating @p nodes by one of @p sectors sectors maps node i onto node i + S
+     * (positions and normals to 1e-9 of the radius), else 0.
+     */
+    unsigned int
+    sector_size(const std::vector<SurfaceNode> &nodes, const unsigned int sectors)
+    {
+      const unsigned int m = nodes.size();
+      if (sectors < 2 || m % sectors != 0)
+        return 0;
+      const unsigned int S = m / sectors;
+      const double       a = numbers::two_pi / sectors, c = std::cos(a), s = std::sin(a);
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          const auto  &p = nodes[i], &q = nodes[(i + S) % m];
+          const double tol = 1e-9 * p.point.norm();
+          if (std::hypot(c * p.point[0] - s * p.point[1] - q.point[0], s * p.point[0] + c * p.point[1] - q.point[1]) >
+                tol ||
+              std::hypot(c * p.normal[0] - s * p.normal[1] - q.normal[0],
+                         s * p.normal[0] + c * p.normal[1] - q.normal[1]) > 1e-9)
+            return 0;
+        }
+      return S;
+    }
+  } // namespace
+
+
   // Homogeneous Dirichlet conditions on the core and the outer edge: those DoFs are
   // removed from the system (a load that vanishes there gives a displacement that
-  // vanishes there), and the SPD remainder is factored once.
-  BoundaryCompliance::BoundaryCompliance(const ElasticityProblem &problem)
+  // vanishes there), and each body's SPD remainder is factored once.
+  BoundaryCompliance::BoundaryCompliance(const ElasticityProblem &problem,
+                                         const unsigned int       pin_sectors,
+                                         const unsigned int       bore_sectors)
     : problem(problem)
-    , factorization(std::make_unique<Factorization>())
+    , pin_factor(std::make_unique<Factorization>())
+    , ring_factor(std::make_unique<Factorization>())
     , pin_columns(problem.pin_nodes.size())
     , bore_columns(problem.bore_nodes.size())
-    , pin_bounds(problem.pin_nodes.size(), std::numeric_limits<double>::quiet_NaN())
-    , bore_bounds(problem.bore_nodes.size(), std::numeric_limits<double>::quiet_NaN())
+    , pin_sector_size(sector_size(problem.pin_nodes, pin_sectors))
+    , bore_sector_size(sector_size(problem.bore_nodes, bore_sectors))
+    , bore_sector_angle(bore_sector_size > 0 ? numbers::two_pi / bore_sectors : 0.0)
   {
-    const auto n = problem.dof_handler.n_dofs();
-    reduced_index.assign(n, 0);
+    const auto        n      = problem.dof_handler.n_dofs();
+    const auto        is_pin = pin_dofs(problem);
+    std::vector<char> clamped(n, 0);
     for (const auto &c : problem.core_nodes)
-      reduced_index[c[0]] = reduced_index[c[1]] = -1;
+      clamped[c[0]] = clamped[c[1]] = 1;
     for (const auto d : problem.outer_dofs)
-      reduced_index[d] = -1;
-    long n_free = 0;
-    for (auto &r : reduced_index)
-      if (r == 0)
-        r = n_free++;
-
-    // Lower triangle of the reduced matrix (CHOLMOD reads one triangle).
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(problem.stiffness_matrix.n_nonzero_elements() / 2 + n);
-    const auto &K = problem.stiffness_matrix;
-    for (types::global_dof_index row = 0; row < n; ++row)
-      {
-        const long r = reduced_index[row];
-        if (r < 0)
-          continue;
-        for (auto e = K.begin(row); e != K.end(row); ++e)
-          {
-            const long c = reduced_index[e->column()];
-            if (c >= 0 && c <= r)
-              entries.emplace_back(r, c, e->value());
-          }
-      }
-    auto &f = *factorization;
-    f.matrix.resize(n_free, n_free);
-    f.matrix.setFromTriplets(entries.begin(), entries.end());
-    f.llt.compute(f.matrix);
-    if (f.llt.info() != Eigen::Success)
-      throw NumericalError("The clamped stiffness matrix of the pin–bushing mesh is not positive "
-                           "definite (CHOLMOD failed): check the mesh (inverted elements?) and "
-                           "the materials.");
-    EffectLedger::instance().add_resource("factorizations");
+      clamped[d] = 1;
+    reduced_index.assign(n, -1);
+    long n_pin = 0, n_ring = 0;
+    for (types::global_dof_index d = 0; d < n; ++d)
+      if (!clamped[d])
+        reduced_index[d] = is_pin[d] ? n_pin++ : n_ring++;
+    factor_body(problem.stiffness_matrix, reduced_index, is_pin, 1, n_pin, pin_factor->matrix, pin_factor->llt);
+    factor_body(problem.stiffness_matrix, reduced_index, is_pin, 0, n_ring, ring_factor->matrix, ring_factor->llt);
   }
 
 
@@ -78,14 +139,13 @@ namespace wearlink::fe
   namespace
   {
     /**
-     * Up to @p block missing columns around @p j along the (periodic) candidate list:
-     * j first, then alternately its neighbours on either side.
+     * Up to @p block missing columns around @p j among the first @p n entries of the
+     * (periodic) candidate list: j first, then alternately its neighbours on either side.
      */
     template <typename Columns>
     std::vector<unsigned int>
-    missing_neighbours(const Columns &columns, unsigned int j, unsigned int block)
+    missing_neighbours(const Columns &columns, const unsigned int n, const unsigned int j, const unsigned int block)
     {
-      const unsigned int        n = columns.size();
       std::vector<unsigned int> chosen{j};
       for (unsigned int d = 1; chosen.size() < block && 2 * d <= n; ++d)
         for (const unsigned int k : {(j + d) % n, (j + n - d) % n})
@@ -97,17 +157,18 @@ namespace wearlink::fe
 
 
   void
-  BoundaryCompliance::compute_pin_block(unsigned int j)
+  BoundaryCompliance::compute_pin_block(const unsigned int j)
   {
     const auto         start  = std::chrono::steady_clock::now();
     const auto        &nodes  = problem.pin_nodes;
-    const auto         chosen = missing_neighbours(pin_columns, j, block_size);
+    const unsigned int n      = pin_sector_size > 0 ? pin_sector_size : nodes.size();
+    const auto         chosen = missing_neighbours(pin_columns, n, j, block_size);
     const unsigned int b      = chosen.size();
-    Eigen::MatrixXd    rhs    = Eigen::MatrixXd::Zero(factorization->matrix.rows(), b);
+    Eigen::MatrixXd    rhs    = Eigen::MatrixXd::Zero(pin_factor->matrix.rows(), b);
     for (unsigned int s = 0; s < b; ++s)
       for (unsigned int d = 0; d < 2; ++d)
         rhs(reduced_index[nodes[chosen[s]].dofs[d]], s) = nodes[chosen[s]].normal[d];
-    const Eigen::MatrixXd u = factorization->llt.solve(rhs);
+    const Eigen::MatrixXd u = pin_factor->llt.solve(rhs);
     n_solves += b;
     for (unsigned int s = 0; s < b; ++s)
       {
@@ -122,93 +183,76 @@ namespace wearlink::fe
 
 
   void
-  BoundaryCompliance::compute_bore_block(unsigned int c)
+  BoundaryCompliance::compute_bore_block(const unsigned int c)
   {
-    const auto         start  = std::chrono::steady_clock::now();
-    const auto        &nodes  = problem.bore_nodes;
-    const unsigned int n      = nodes.size();
-    const auto         chosen = missing_neighbours(bore_columns, c, block_size / 2);
-    const unsigned int b      = chosen.size();
-    Eigen::MatrixXd    rhs    = Eigen::MatrixXd::Zero(factorization->matrix.rows(), 2 * b);
+    const auto         start = std::chrono::steady_clock::now();
+    const auto        &nodes = problem.bore_nodes;
+    const unsigned int q     = nodes.size();
+    const auto         chosen =
+      missing_neighbours(bore_columns, bore_sector_size > 0 ? bore_sector_size : q, c, block_size / 2);
+    const unsigned int b   = chosen.size();
+    Eigen::MatrixXd    rhs = Eigen::MatrixXd::Zero(ring_factor->matrix.rows(), 2 * b);
     for (unsigned int s = 0; s < b; ++s)
       for (unsigned int d = 0; d < 2; ++d)
         rhs(reduced_index[nodes[chosen[s]].dofs[d]], 2 * s + d) = 1;
-    const Eigen::MatrixXd u = factorization->llt.solve(rhs);
+    const Eigen::MatrixXd u = ring_factor->llt.solve(rhs);
     n_solves += 2 * b;
     for (unsigned int s = 0; s < b; ++s)
       {
         auto &column = bore_columns[chosen[s]];
-        column.resize(4 * n);
+        column.resize(4 * q);
         for (unsigned int d = 0; d < 2; ++d)
-          for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int a = 0; a < q; ++a)
             {
-              column[2 * n * d + 2 * a]     = u(reduced_index[nodes[a].dofs[0]], 2 * s + d);
-              column[2 * n * d + 2 * a + 1] = u(reduced_index[nodes[a].dofs[1]], 2 * s + d);
+              column[2 * q * d + 2 * a]     = u(reduced_index[nodes[a].dofs[0]], 2 * s + d);
+              column[2 * q * d + 2 * a + 1] = u(reduced_index[nodes[a].dofs[1]], 2 * s + d);
             }
       }
     seconds_in_columns += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
 
-  const std::vector<double> &
-  BoundaryCompliance::pin_column(unsigned int j)
+  BoundaryCompliance::PinColumn
+  BoundaryCompliance::pin_column(const unsigned int j)
   {
-    if (pin_columns[j].empty())
-      compute_pin_block(j);
-    return pin_columns[j];
+    const unsigned int base = pin_sector_size > 0 ? j % pin_sector_size : j;
+    if (pin_columns[base].empty())
+      compute_pin_block(base);
+    return {pin_columns[base].data(), j - base};
   }
 
 
-  const std::vector<double> &
-  BoundaryCompliance::bore_column(unsigned int c)
+  BoundaryCompliance::BoreColumn
+  BoundaryCompliance::bore_column(const unsigned int c)
   {
-    if (bore_columns[c].empty())
-      compute_bore_block(c);
-    return bore_columns[c];
-  }
-
-
-  double
-  BoundaryCompliance::pin_column_bound(const unsigned int j)
-  {
-    if (std::isnan(pin_bounds[j]))
+    const unsigned int base = bore_sector_size > 0 ? c % bore_sector_size : c;
+    if (bore_columns[base].empty())
+      compute_bore_block(base);
+    BoreColumn column{bore_columns[base].data(), c - base};
+    if (column.shift > 0)
       {
-        double b = 0;
-        for (const double v : pin_column(j))
-          b = std::max(b, std::abs(v));
-        pin_bounds[j] = b;
+        const double angle = bore_sector_angle * (column.shift / bore_sector_size);
+        column.cos         = std::cos(angle);
+        column.sin         = std::sin(angle);
       }
-    return pin_bounds[j];
-  }
-
-
-  double
-  BoundaryCompliance::bore_column_bound(const unsigned int c)
-  {
-    if (std::isnan(bore_bounds[c]))
-      {
-        const auto        &col = bore_column(c);
-        const unsigned int q   = bore_columns.size();
-        double             b   = 0;
-        for (unsigned int n = 0; n < q; ++n)
-          b = std::max(b,
-                       std::hypot(col[2 * n], col[2 * n + 1]) + std::hypot(col[2 * q + 2 * n], col[2 * q + 2 * n + 1]));
-        bore_bounds[c] = b;
-      }
-    return bore_bounds[c];
+    return column;
   }
 
 
   void
   BoundaryCompliance::solve_clamped(Vector<double> &rhs_and_solution) const
   {
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(factorization->matrix.rows());
-    for (std::size_t i = 0; i < reduced_index.size(); ++i)
+    const auto        is_pin = pin_dofs(problem);
+    Eigen::VectorXd   f_pin  = Eigen::VectorXd::Zero(pin_factor->matrix.rows());
+    Eigen::VectorXd   f_ring = Eigen::VectorXd::Zero(ring_factor->matrix.rows());
+    const std::size_t n      = reduced_index.size();
+    for (std::size_t i = 0; i < n; ++i)
       if (reduced_index[i] >= 0)
-        rhs(reduced_index[i]) = rhs_and_solution(i);
-    const Eigen::VectorXd u = factorization->llt.solve(rhs);
-    for (std::size_t i = 0; i < reduced_index.size(); ++i)
-      rhs_and_solution(i) = reduced_index[i] >= 0 ? u(reduced_index[i]) : 0.0;
+        (is_pin[i] ? f_pin : f_ring)(reduced_index[i]) = rhs_and_solution(i);
+    const Eigen::VectorXd u_pin  = pin_factor->llt.solve(f_pin);
+    const Eigen::VectorXd u_ring = ring_factor->llt.solve(f_ring);
+    for (std::size_t i = 0; i < n; ++i)
+      rhs_and_solution(i) = reduced_index[i] < 0 ? 0.0 : (is_pin[i] ? u_pin : u_ring)(reduced_index[i]);
   }
 
 

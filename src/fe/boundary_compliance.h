@@ -4,9 +4,9 @@
 // Both bodies are clamped where they are held: the pin at its rigid core (its elastic
 // displacement is measured relative to the core, which translates with the unknown pin
 // displacement), the bushing at its outer edge. The clamped stiffness matrix is SPD and
-// block diagonal (the bodies do not touch in the mesh); it is factored once per mesh
-// (see below). A column of the compliance is one forward/backward
-// substitution:
+// block diagonal (the bodies do not touch in the mesh): each body's block is factored
+// once per mesh, on its own (a column of one body then touches only its factor). A
+// column of the compliance is one forward/backward substitution:
 //   - pin column j: the displacement, projected on every pin candidate's normal, due to
 //     a unit force along the normal ν_j of pin candidate j (pin frame). Normal-to-normal
 //     compliance ν_i·C_ij ν_j is invariant under a rigid rotation of the pin, so one
@@ -19,7 +19,16 @@
 // the candidates that are in contact, and a wear cycle re-uses them. precompute_all()
 // fills every column (what a benchmark of the full influence matrix measures).
 //
-// Factorization: the clamped DoFs are removed and the SPD remainder is factored by
+// Rotation-invariant bodies (a periodic mesh of K identical sectors,
+// fe/pin_bushing_mesher.h): rotating by one sector maps candidate i to i + S (S = the
+// candidates per sector, in the angle-sorted order) and the body onto itself, so
+// C(i + kS, j + kS) = R_k C(i, j) R_kᵀ (R_k the rotation by k sectors; the identity for
+// the pin's normal-to-normal entries). Only the S columns of the first sector are
+// computed; a column is handed out as a view of one of them, shifted and rotated. The
+// constructor checks the node positions and normals for the rotation symmetry (to 1e-9
+// of the radius) and computes every column otherwise.
+//
+// Factorization: the clamped DoFs are removed and each body's SPD block is factored by
 // CHOLMOD's supernodal Cholesky (through Eigen's CholmodSupport). A missing column is
 // computed together with up to block_size − 1 missing neighbours along the surface
 // (candidates are sorted by angle, and a contact zone is contiguous), as one
@@ -39,40 +48,58 @@ namespace wearlink::fe
   class BoundaryCompliance
   {
   public:
-    /** Clamp core and outer edge and factor @p problem's stiffness matrix. */
-    explicit BoundaryCompliance(const ElasticityProblem &problem);
+    /**
+     * Clamp core and outer edge and factor @p problem's stiffness matrix per body.
+     * @param pin_sectors, bore_sectors the sectors of a periodic mesh of each body
+     *        (MeshStatistics; 0: not periodic).
+     */
+    BoundaryCompliance(const ElasticityProblem &problem, unsigned int pin_sectors = 0, unsigned int bore_sectors = 0);
     ~BoundaryCompliance();
 
     /** Columns computed per multi-right-hand-side solve (pin; bore uses half). */
     static constexpr unsigned int block_size = 32;
 
     /**
-     * ν_i · u_i for all pin candidates i, for a unit normal force on pin candidate
-     * @p j [m per N/m].
+     * One column of the pin compliance: entry i (ν_i · u_i for a unit normal force on
+     * the column's candidate j) [m per N/m] is base[(i + m − shift) mod m].
      */
-    const std::vector<double> &
+    struct PinColumn
+    {
+      const double *base  = nullptr;
+      unsigned int  shift = 0;
+    };
+    PinColumn
     pin_column(unsigned int j);
 
     /**
-     * Displacements of all bore candidates for unit forces at bore candidate @p c:
-     * entries [2a + d] for a force along x, [2 n_bore + 2a + d] along y (d = x, y).
+     * One column of the bore compliance: the displacement at bore candidate a for a unit
+     * force f (bushing frame) at the column's candidate c is R u', u' = f'x X(a') + f'y
+     * Y(a'), f' = Rᵀ f, a' = (a + q − shift) mod q, with X(a') = (base[2a'], base[2a'+1])
+     * and Y(a') = (base[2q + 2a'], base[2q + 2a' + 1]), R the rotation by (cos, sin)
+     * [m per N/m].
      */
-    const std::vector<double> &
+    struct BoreColumn
+    {
+      const double *base  = nullptr;
+      unsigned int  shift = 0;
+      double        cos = 1, sin = 0;
+    };
+    BoreColumn
     bore_column(unsigned int c);
 
-    /** max_i |pin_column(j)[i]| [m per N/m], computed once per column. */
-    double
-    pin_column_bound(unsigned int j);
+    /** True when the pin's (the bore's) columns are rotations of one sector's. */
+    bool
+    pin_periodic() const
+    {
+      return pin_sector_size > 0;
+    }
+    bool
+    bore_periodic() const
+    {
+      return bore_sector_size > 0;
+    }
 
-    /**
-     * Largest displacement of any bore node for a unit force at bore candidate @p c in
-     * any direction, bounded by |u_x| + |u_y| of the responses to unit x and y forces
-     * [m per N/m], computed once per column.
-     */
-    double
-    bore_column_bound(unsigned int c);
-
-    /** Fill every column (the full influence matrices). */
+    /** Fill every column (the full influence matrices; one sector's for a periodic body). */
     void
     precompute_all();
 
@@ -101,16 +128,16 @@ namespace wearlink::fe
     void
     compute_bore_block(unsigned int c);
 
-    struct Factorization; // CHOLMOD through Eigen (kept out of this header)
+    struct Factorization; // CHOLMOD through Eigen, one per body (kept out of this header)
 
     const ElasticityProblem       &problem;
-    std::unique_ptr<Factorization> factorization;
-    /** Row of each DoF in the reduced (unclamped) system, −1 for clamped DoFs. */
+    std::unique_ptr<Factorization> pin_factor, ring_factor;
+    /** Per DoF: its row in its body's reduced (unclamped) system, −1 for clamped DoFs. */
     std::vector<long>                reduced_index;
     std::vector<std::vector<double>> pin_columns;
     std::vector<std::vector<double>> bore_columns;
-    std::vector<double>              pin_bounds;  ///< NaN until computed
-    std::vector<double>              bore_bounds; ///< NaN until computed
+    unsigned int                     pin_sector_size = 0, bore_sector_size = 0; ///< S per body, 0: not periodic
+    double                           bore_sector_angle  = 0;
     unsigned long                    n_solves           = 0;
     double                           seconds_in_columns = 0;
   };

@@ -47,6 +47,7 @@ namespace wearlink::fe
       WindowCompliance(const ElasticityProblem &problem, BoundaryCompliance &compliance, const ContactKinematics &kin)
         : kin(kin)
         , compliance(compliance)
+        , n_pin(problem.pin_nodes.size())
         , n_bore(problem.bore_nodes.size())
         , local(problem.bore_nodes.size(), -1)
         , columns(kin.candidates.size())
@@ -67,6 +68,13 @@ namespace wearlink::fe
             ++std::get<2>(runs.back());
           }
         field.resize(2 * rows.size());
+        // How each position reads the field: its faces' rows with weight × normal.
+        readers.resize(kin.candidates.size());
+        for (unsigned int q = 0; q < kin.candidates.size(); ++q)
+          for (unsigned int a = 0; a < kin.n_masters[q]; ++a)
+            readers[q].push_back({2 * static_cast<unsigned int>(local[kin.masters[q][a]]),
+                                  kin.weights[q][a] * kin.normal[q][0],
+                                  kin.weights[q][a] * kin.normal[q][1]});
       }
 
       unsigned int
@@ -92,43 +100,75 @@ namespace wearlink::fe
       }
 
     private:
+      /**
+       * field += the displacement of the window's bore nodes for the force (fx, fy) at
+       * @p column's node (rotated into the column's sector and back; contiguous runs,
+       * so that the loops vectorize).
+       */
+      void
+      add_bore_response(const BoundaryCompliance::BoreColumn &column, const double fx, const double fy)
+      {
+        const double  c = column.cos, s = column.sin;
+        const double  gx = c * fx + s * fy, gy = c * fy - s * fx; // Rᵀ f
+        const double *X = column.base, *Y = column.base + 2 * n_bore;
+        for (const auto &[r0, b0, n] : runs)
+          {
+            unsigned int r = r0, left = n;
+            unsigned int b = (b0 + n_bore - column.shift) % n_bore;
+            while (left > 0)
+              {
+                const unsigned int len = std::min(left, n_bore - b);
+                double            *f   = field.data() + 2 * r;
+                const double      *x = X + 2 * b, *y = Y + 2 * b;
+                for (unsigned int t = 0; t < len; ++t)
+                  {
+                    const double ux = gx * x[2 * t] + gy * y[2 * t];
+                    const double uy = gx * x[2 * t + 1] + gy * y[2 * t + 1];
+                    f[2 * t] += c * ux - s * uy;
+                    f[2 * t + 1] += s * ux + c * uy;
+                  }
+                r += len;
+                left -= len;
+                b = 0;
+              }
+          }
+      }
+
       void
       gather(const unsigned int p)
       {
         const unsigned int w   = kin.candidates.size();
         auto              &col = columns[p];
         col.resize(w);
-        const auto &pin = compliance.pin_column(kin.candidates[p]);
-        for (unsigned int q = 0; q < w; ++q)
-          col[q] = pin[kin.candidates[q]];
+        const auto pin = compliance.pin_column(kin.candidates[p]);
+        for (unsigned int q = 0; q < w;) // runs of consecutive candidates: contiguous copies
+          {
+            unsigned int i   = kin.candidates[q] + n_pin - pin.shift;
+            i                = i >= n_pin ? i - n_pin : i;
+            unsigned int len = 1;
+            while (q + len < w && kin.candidates[q + len] == kin.candidates[q] + len && i + len < n_pin)
+              ++len;
+            std::copy(pin.base + i, pin.base + i + len, col.begin() + q);
+            q += len;
+          }
         // The bore displacement of a unit λ_p at the window's bore nodes.
         std::fill(field.begin(), field.end(), 0.0);
         for (unsigned int a = 0; a < kin.n_masters[p]; ++a)
-          {
-            const auto  &c  = compliance.bore_column(kin.masters[p][a]);
-            const double fx = kin.weights[p][a] * kin.normal[p][0];
-            const double fy = kin.weights[p][a] * kin.normal[p][1];
-            for (const auto &[r0, b0, n] : runs) // contiguous, so that the loop vectorizes
-              {
-                const double *cx = c.data() + 2 * b0, *cy = c.data() + 2 * n_bore + 2 * b0;
-                double       *f = field.data() + 2 * r0;
-                for (unsigned int j = 0; j < 2 * n; ++j)
-                  f[j] += fx * cx[j] + fy * cy[j];
-              }
-          }
+          add_bore_response(compliance.bore_column(kin.masters[p][a]),
+                            kin.weights[p][a] * kin.normal[p][0],
+                            kin.weights[p][a] * kin.normal[p][1]);
         for (unsigned int q = 0; q < w; ++q)
-          for (unsigned int a = 0; a < kin.n_masters[q]; ++a)
-            {
-              const int r = local[kin.masters[q][a]];
-              col[q] += kin.weights[q][a] * (kin.normal[q][0] * field[2 * r] + kin.normal[q][1] * field[2 * r + 1]);
-            }
+          for (const auto &[r, cx, cy] : readers[q])
+            col[q] += cx * field[r] + cy * field[r + 1];
       }
 
       const ContactKinematics  &kin;
       BoundaryCompliance       &compliance;
-      const unsigned int        n_bore;
+      const unsigned int        n_pin, n_bore;
       std::vector<int>          local; ///< row of each bore node in the window's field, −1 outside
       std::vector<unsigned int> rows;  ///< the window's bore nodes, increasing
+      /** Per position: its face's rows (2 × row index into the field) with weight × normal (x, y). */
+      std::vector<std::vector<std::tuple<unsigned int, double, double>>> readers;
       /** Runs of consecutive bore nodes: (first row, first node, length). */
       std::vector<std::tuple<unsigned int, unsigned int, unsigned int>> runs;
       std::vector<double>                                               field;

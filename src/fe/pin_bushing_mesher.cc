@@ -8,7 +8,11 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -174,6 +178,231 @@ namespace wearlink::fe
       const int g = gmsh::model::addPhysicalGroup(dim, tags);
       gmsh::model::setPhysicalName(dim, g, name);
     }
+
+    /**
+     * Element size h within the layer of thickness t below the given (contact) curves,
+     * then growing linearly with the distance d from them, h(d) = min(h + growth (d − t),
+     * H) — gmsh Distance + Threshold fields, @p samples points per curve.
+     */
+    void
+    set_size_field(const std::vector<int> &curves, const double samples, const MeshSpecification &spec)
+    {
+      const double              h = 2 * spec.surface_element_size, H = 2 * spec.max_element_size;
+      const std::vector<double> list(curves.begin(), curves.end());
+      const int                 distance = gmsh::model::mesh::field::add("Distance");
+      gmsh::model::mesh::field::setNumbers(distance, "CurvesList", list);
+      gmsh::model::mesh::field::setNumber(distance, "NumPointsPerCurve", samples);
+      const int threshold = gmsh::model::mesh::field::add("Threshold");
+      gmsh::model::mesh::field::setNumber(threshold, "IField", distance);
+      gmsh::model::mesh::field::setNumber(threshold, "LcMin", h);
+      gmsh::model::mesh::field::setNumber(threshold, "LcMax", H);
+      gmsh::model::mesh::field::setNumber(threshold, "DistMin", spec.layer_thickness);
+      gmsh::model::mesh::field::setNumber(threshold,
+                                          "DistMax",
+                                          spec.layer_thickness + std::max((H - h) / (2 * spec.size_growth), h));
+      gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
+    }
+
+    /**
+     * Mesh the current model (set_meshing_options()) and refuse a result that is not all
+     * quadrilaterals; returns their number.
+     */
+    unsigned long
+    generate_quadrilaterals()
+    {
+      set_meshing_options();
+      try
+        {
+          gmsh::model::mesh::generate(2);
+        }
+      catch (const std::string &message)
+        {
+          throw NumericalError("gmsh could not mesh the pin–bushing pair: " + message);
+        }
+      // deal.II needs quadrilaterals only: refuse a mixed mesh rather than pass it on.
+      std::vector<int>                      types;
+      std::vector<std::vector<std::size_t>> element_tags, node_tags;
+      gmsh::model::mesh::getElements(types, element_tags, node_tags, 2);
+      unsigned long n = 0;
+      for (std::size_t t = 0; t < types.size(); ++t)
+        {
+          if (types[t] == 3)
+            n += element_tags[t].size();
+          else if (!element_tags[t].empty())
+            throw NumericalError("gmsh left " + std::to_string(element_tags[t].size()) +
+                                 " non-quadrilateral elements (type " + std::to_string(types[t]) +
+                                 ") in the pin–bushing mesh; change 'Surface element size' or "
+                                 "'Size growth' slightly.");
+        }
+      return n;
+    }
+
+    /** One meshed sector of a body: its nodes, elements, and how its radial edges join. */
+    struct SectorMesh
+    {
+      std::vector<std::array<double, 2>>      points;
+      std::vector<std::array<std::size_t, 4>> quads;        ///< local node indices
+      std::vector<std::array<std::size_t, 2>> contact, far; ///< boundary segments on the two arcs
+      /** Per node: −1, or (on the edge at angle α) the node of the edge at 0 it is after a rotation by α. */
+      std::vector<long> master;
+    };
+
+    /** Sectors of a body whose contact surface has radius @p r (surface size @p h). */
+    unsigned int
+    sector_count(const double r, const double h)
+    {
+      return std::max(4L, std::lround(2 * pi * r / (periodic_sector_elements * h)));
+    }
+
+    /** Node and element data of the current gmsh model's entity (@p dim, @p tag) by type. */
+    std::vector<std::size_t>
+    element_nodes(const int type, const int tag)
+    {
+      std::vector<std::size_t> elements, nodes;
+      gmsh::model::mesh::getElementsByType(type, elements, nodes, tag);
+      return nodes;
+    }
+
+    /**
+     * Mesh the annular sector inner ≤ r ≤ outer, 0 ≤ θ ≤ 2π/K, whose contact arc (inner
+     * or outer) is transfinite at the surface size, the other sizes from the distance to
+     * it (as in the full mesh), the radial edge at 2π/K a rotated copy of the one at 0.
+     */
+    SectorMesh
+    mesh_sector(const double             inner,
+                const double             outer,
+                const bool               contact_outside,
+                const unsigned int       K,
+                const MeshSpecification &spec)
+    {
+      const double h = 2 * spec.surface_element_size, H = 2 * spec.max_element_size, alpha = 2 * pi / K;
+      gmsh::model::add(contact_outside ? "pin_sector" : "ring_sector");
+      namespace geo   = gmsh::model::geo;
+      const double hi = contact_outside ? H : h, ho = contact_outside ? h : H;
+      const int    centre = geo::addPoint(0, 0, 0, H);
+      const int    i0     = geo::addPoint(inner, 0, 0, hi),
+                i1        = geo::addPoint(inner * std::cos(alpha), inner * std::sin(alpha), 0, hi);
+      const int o0        = geo::addPoint(outer, 0, 0, ho),
+                o1        = geo::addPoint(outer * std::cos(alpha), outer * std::sin(alpha), 0, ho);
+      const int left = geo::addLine(i0, o0), right = geo::addLine(i1, o1);
+      const int inner_arc = geo::addCircleArc(i0, centre, i1), outer_arc = geo::addCircleArc(o0, centre, o1);
+      const int loop    = geo::addCurveLoop({left, outer_arc, -right, -inner_arc}); // counter-clockwise
+      const int surface = geo::addPlaneSurface({loop});
+      const int contact = contact_outside ? outer_arc : inner_arc;
+      geo::mesh::setTransfiniteCurve(contact, periodic_sector_elements / 2 + 1);
+      geo::synchronize();
+      const double c = std::cos(alpha), s = std::sin(alpha);
+      gmsh::model::mesh::setPeriodic(1, {right}, {left}, {c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+      set_size_field({contact}, 4 * periodic_sector_elements, spec);
+      generate_quadrilaterals();
+
+      SectorMesh               m;
+      std::vector<std::size_t> tags;
+      std::vector<double>      coords, params;
+      gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, false, false);
+      // The nodes of the sector's quadrilaterals (not, e.g., the centre point's).
+      std::set<std::size_t> used;
+      for (const auto t : element_nodes(3, surface))
+        used.insert(t);
+      std::map<std::size_t, std::size_t> index;
+      for (std::size_t i = 0; i < tags.size(); ++i)
+        if (used.count(tags[i]) != 0)
+          {
+            index[tags[i]] = m.points.size();
+            m.points.push_back({coords[3 * i], coords[3 * i + 1]});
+          }
+      // Quadrilaterals counter-clockwise (deal.II needs a positive Jacobian; gmsh's
+      // orientation follows the surface's, which it may choose either way).
+      const auto quads = element_nodes(3, surface);
+      for (std::size_t e = 0; e + 3 < quads.size(); e += 4)
+        {
+          std::array<std::size_t, 4> q     = {index.at(quads[e]),
+                                              index.at(quads[e + 1]),
+                                              index.at(quads[e + 2]),
+                                              index.at(quads[e + 3])};
+          double                     area2 = 0; // twice the signed area (shoelace)
+          for (unsigned v = 0; v < 4; ++v)
+            {
+              const auto &a = m.points[q[v]], &b = m.points[q[(v + 1) % 4]];
+              area2 += a[0] * b[1] - a[1] * b[0];
+            }
+          if (area2 < 0)
+            std::swap(q[1], q[3]);
+          m.quads.push_back(q);
+        }
+      auto segments = [&](const int curve, std::vector<std::array<std::size_t, 2>> &out) {
+        const auto lines = element_nodes(1, curve);
+        for (std::size_t e = 0; e + 1 < lines.size(); e += 2)
+          out.push_back({index.at(lines[e]), index.at(lines[e + 1])});
+      };
+      segments(contact, m.contact);
+      segments(contact_outside ? inner_arc : outer_arc, m.far);
+      int                      tag_master = 0;
+      std::vector<std::size_t> slaves, masters;
+      std::vector<double>      affine;
+      gmsh::model::mesh::getPeriodicNodes(1, right, tag_master, slaves, masters, affine);
+      m.master.assign(m.points.size(), -1);
+      for (std::size_t k = 0; k < slaves.size(); ++k)
+        m.master[index.at(slaves[k])] = static_cast<long>(index.at(masters[k]));
+      return m;
+    }
+
+    /**
+     * K rotated copies of @p sector as the nodes and elements of the discrete entities
+     * @p surface, @p contact_curve and @p far_curve of the current model; node and
+     * element tags continue from @p next_node and @p next_element.
+     */
+    void
+    add_rotated_copies(const SectorMesh &sector,
+                       const unsigned    K,
+                       const int         surface,
+                       const int         contact_curve,
+                       const int         far_curve,
+                       std::size_t      &next_node,
+                       std::size_t      &next_element)
+    {
+      const std::size_t        n = sector.points.size();
+      std::vector<std::size_t> own(n);
+      std::size_t              n_own = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (sector.master[i] < 0)
+          own[i] = n_own++;
+      const std::size_t first = next_node;
+      auto              tag   = [&](const unsigned k, const std::size_t i) {
+        if (sector.master[i] >= 0)
+          return first + ((k + 1) % K) * n_own + own[sector.master[i]];
+        return first + k * n_own + own[i];
+      };
+      std::vector<std::size_t> node_tags;
+      std::vector<double>      coords;
+      for (unsigned k = 0; k < K; ++k)
+        {
+          const double c = std::cos(2 * pi * k / K), s = std::sin(2 * pi * k / K);
+          for (std::size_t i = 0; i < n; ++i)
+            if (sector.master[i] < 0)
+              {
+                const auto &p = sector.points[i];
+                node_tags.push_back(tag(k, i));
+                coords.insert(coords.end(), {c * p[0] - s * p[1], s * p[0] + c * p[1], 0.0});
+              }
+        }
+      gmsh::model::mesh::addNodes(2, surface, node_tags, coords);
+      next_node += K * n_own;
+      auto add = [&](const int dim_tag, const int type, const auto &elements) {
+        std::vector<std::size_t> element_tags, nodes;
+        for (unsigned k = 0; k < K; ++k)
+          for (const auto &e : elements)
+            {
+              element_tags.push_back(next_element++);
+              for (const auto i : e)
+                nodes.push_back(tag(k, i));
+            }
+        gmsh::model::mesh::addElementsByType(dim_tag, type, element_tags, nodes);
+      };
+      add(surface, 3, sector.quads);
+      add(contact_curve, 1, sector.contact);
+      add(far_curve, 1, sector.far);
+    }
   } // namespace
 
 
@@ -207,6 +436,56 @@ namespace wearlink::fe
   }
 
 
+  namespace
+  {
+    /** The periodic construction (see write_pin_bushing_mesh()) of a round pair. */
+    MeshStatistics
+    write_periodic_mesh(const double R1, const double R2, const MeshSpecification &spec, const std::string &msh_path)
+    {
+      GmshSession    session;
+      MeshStatistics stats;
+      const double   h      = spec.surface_element_size;
+      stats.pin_sectors     = sector_count(R2, h);
+      stats.bore_sectors    = sector_count(R1, h);
+      const SectorMesh pin  = mesh_sector(spec.core_radius, R2, true, stats.pin_sectors, spec);
+      const SectorMesh ring = mesh_sector(R1, spec.outer_radius, false, stats.bore_sectors, spec);
+
+      gmsh::model::add("pin_bushing");
+      enum : int
+      {
+        pin_area = 1,
+        ring_area,
+        core_curve = 1,
+        pin_curve,
+        bore_curve,
+        outer_curve
+      };
+      for (const int t : {pin_area, ring_area})
+        gmsh::model::addDiscreteEntity(2, t);
+      for (const int t : {core_curve, pin_curve, bore_curve, outer_curve})
+        gmsh::model::addDiscreteEntity(1, t);
+      std::size_t next_node = 1, next_element = 1;
+      add_rotated_copies(pin, stats.pin_sectors, pin_area, pin_curve, core_curve, next_node, next_element);
+      add_rotated_copies(ring, stats.bore_sectors, ring_area, bore_curve, outer_curve, next_node, next_element);
+      name_group(2, {pin_area}, "MaterialID:" + std::to_string(material_ids::pin));
+      name_group(2, {ring_area}, "MaterialID:" + std::to_string(material_ids::bushing));
+      name_group(1, {core_curve}, "BoundaryID:" + std::to_string(boundary_ids::pin_core));
+      name_group(1, {pin_curve}, "BoundaryID:" + std::to_string(boundary_ids::pin_surface));
+      name_group(1, {bore_curve}, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
+      name_group(1, {outer_curve}, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
+
+      stats.n_nodes          = next_node - 1;
+      stats.n_quadrilaterals = stats.pin_sectors * pin.quads.size() + stats.bore_sectors * ring.quads.size();
+      stats.n_refined_surface_segments =
+        stats.pin_sectors * pin.contact.size() + stats.bore_sectors * ring.contact.size();
+      const std::string tmp = temporary_name_for(msh_path);
+      gmsh::write(tmp);
+      commit_external_file(tmp, msh_path);
+      return stats;
+    }
+  } // namespace
+
+
   MeshStatistics
   write_pin_bushing_mesh(const Profile           &bore,
                          const Profile           &pin,
@@ -214,6 +493,8 @@ namespace wearlink::fe
                          const std::string       &msh_path)
   {
     check_pin_bushing_geometry(bore, pin, spec);
+    if (spec.periodic && spec.refined_half_angle >= pi && bore.is_round() && pin.is_round())
+      return write_periodic_mesh(bore.mean_radius(), pin.mean_radius(), spec, msh_path);
     // Sizes before the final split of every element into quadrilaterals (see below).
     const double h = 2 * spec.surface_element_size;
     const double H = 2 * spec.max_element_size;
@@ -249,48 +530,9 @@ namespace wearlink::fe
     name_group(1, bore_curves, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
     name_group(1, outer_curves, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
 
-    // Element size: h within the layer of thickness t below the contact surfaces, then
-    // growing linearly with the distance d from them, h(d) = min(h + growth (d − t), H).
-    // (Distance from the refined, uniformly spaced arcs of both surfaces.)
-    const std::vector<double> surface_curves(refined.begin(), refined.end());
-    const double              samples  = static_cast<double>(std::max(pin_segments, bore_segments)) + 10;
-    const int                 distance = gmsh::model::mesh::field::add("Distance");
-    gmsh::model::mesh::field::setNumbers(distance, "CurvesList", surface_curves);
-    gmsh::model::mesh::field::setNumber(distance, "NumPointsPerCurve", samples);
-    const int threshold = gmsh::model::mesh::field::add("Threshold");
-    gmsh::model::mesh::field::setNumber(threshold, "IField", distance);
-    gmsh::model::mesh::field::setNumber(threshold, "LcMin", h);
-    gmsh::model::mesh::field::setNumber(threshold, "LcMax", H);
-    gmsh::model::mesh::field::setNumber(threshold, "DistMin", spec.layer_thickness);
-    gmsh::model::mesh::field::setNumber(threshold,
-                                        "DistMax",
-                                        spec.layer_thickness + std::max((H - h) / (2 * spec.size_growth), h));
-    gmsh::model::mesh::field::setAsBackgroundMesh(threshold);
-
-    set_meshing_options();
-    try
-      {
-        gmsh::model::mesh::generate(2);
-      }
-    catch (const std::string &message)
-      {
-        throw NumericalError("gmsh could not mesh the pin–bushing pair: " + message);
-      }
-
-    // deal.II needs quadrilaterals only: refuse a mixed mesh rather than pass it on.
-    std::vector<int>                      types;
-    std::vector<std::vector<std::size_t>> element_tags, node_tags;
-    gmsh::model::mesh::getElements(types, element_tags, node_tags, 2);
-    for (std::size_t t = 0; t < types.size(); ++t)
-      {
-        if (types[t] == 3)
-          stats.n_quadrilaterals += element_tags[t].size();
-        else if (!element_tags[t].empty())
-          throw NumericalError("gmsh left " + std::to_string(element_tags[t].size()) +
-                               " non-quadrilateral elements (type " + std::to_string(types[t]) +
-                               ") in the pin–bushing mesh; change 'Surface element size' or "
-                               "'Size growth' slightly.");
-      }
+    // Element size from the distance to the refined, uniformly spaced arcs of both surfaces.
+    set_size_field(refined, static_cast<double>(std::max(pin_segments, bore_segments)) + 10, spec);
+    stats.n_quadrilaterals = generate_quadrilaterals();
     std::vector<std::size_t> all_nodes;
     std::vector<double>      coords, params;
     gmsh::model::mesh::getNodes(all_nodes, coords, params, -1, -1, false, false);

@@ -45,7 +45,16 @@ namespace wearlink::fe
     double refined_half_angle  = 4;
     double bore_refined_centre = 0; ///< centre of the refined arc, bushing frame [rad]
     double pin_refined_centre  = 0; ///< centre of the refined arc, pin frame [rad]
+    /**
+     * Round profiles refined all around are meshed as identical sectors (see
+     * write_pin_bushing_mesh()), so that each body's compliance is invariant under the
+     * rotation by one sector; false: the general construction (as for worn profiles).
+     */
+    bool periodic = true;
   };
+
+  /** Contact-surface elements per sector of a periodic mesh (after the final split). */
+  constexpr unsigned int periodic_sector_elements = 32;
 
   /** Counts of the generated mesh. */
   struct MeshStatistics
@@ -53,6 +62,8 @@ namespace wearlink::fe
     unsigned long n_nodes                    = 0;
     unsigned long n_quadrilaterals           = 0;
     unsigned long n_refined_surface_segments = 0; ///< both surfaces, at the surface size
+    /** Sectors of a periodic mesh per body (0: not periodic); periodic_sector_elements surface elements each. */
+    unsigned int pin_sectors = 0, bore_sectors = 0;
   };
 
   /**
@@ -67,6 +78,17 @@ namespace wearlink::fe
   /**
    * Mesh the pair and write it as a gmsh .msh file to @p msh_path (atomically). Each
    * call is one gmsh session (counted in the EffectLedger as "gmsh sessions").
+   *
+   * Round profiles refined all around (the wear loop's fresh joints, the fe law's round
+   * tables) with spec.periodic: each body is K identical sectors. gmsh meshes one
+   * sector (its contact arc transfinite with periodic_sector_elements / 2 segments
+   * before the split, its two radial edges periodic, sizes from the same fields), and
+   * the mesher writes K copies of it rotated by 2π k/K, merging the shared edges'
+   * nodes (gmsh's own periodic surfaces need its ANN search, which Debian's gmsh
+   * lacks). K = 2πR / (periodic_sector_elements × surface size), rounded, per body.
+   * The compliance of such a body is the same for every sector (BoundaryCompliance
+   * computes one sector's columns); meshes/pin_bushing_sector.geo is the sector as a
+   * .geo.
    */
   MeshStatistics
   write_pin_bushing_mesh(const Profile           &bore,

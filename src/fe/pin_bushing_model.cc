@@ -138,8 +138,8 @@ namespace wearlink::fe
     {
       if (compliance)
         return;
-      const auto start         = Clock::now();
-      compliance               = std::make_unique<BoundaryCompliance>(*problem);
+      const auto start = Clock::now();
+      compliance = std::make_unique<BoundaryCompliance>(*problem, stats.mesh.pin_sectors, stats.mesh.bore_sectors);
       stats.factorization_time = seconds_since(start);
       condensed                = std::make_unique<CondensedContactSolver>(*problem,
                                                            *compliance,

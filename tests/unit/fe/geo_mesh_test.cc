@@ -157,6 +157,7 @@ TEST(GeoMesh, GeoFileAndApiMesherGiveTheSameMesh)
   spec.max_element_size     = max_size;
   spec.size_growth          = 0.3;
   spec.layer_thickness      = 0.1e-3;
+  spec.periodic             = false; // the general construction (SectorGeoFile… covers the periodic one)
   const std::string msh     = dir + "/api.msh";
   const auto        stats =
     fe::write_pin_bushing_mesh(Profile::round(bore_radius, n_points), Profile::round(pin_radius, n_points), spec, msh);
@@ -194,6 +195,66 @@ TEST(GeoMesh, GeoFileAndApiMesherGiveTheSameMesh)
   EXPECT_EQ(geo_file.quadrilaterals, api.quadrilaterals);
   EXPECT_EQ(geo_file.segments, api.segments);
   check_areas(geo_msh);
+}
+
+// meshes/pin_bushing_sector.geo holds the two sectors that the periodic mesher meshes
+// and copies around (round profiles refined all around): meshed by gmsh from the file,
+// each sector must have the quadrilaterals whose K copies the C++ mesher reports, its
+// contact arc periodic_sector_elements segments, and K = 2πR / (32 × surface size).
+TEST(GeoMesh, SectorGeoFileIsWhatThePeriodicMesherCopies)
+{
+  const std::string dir          = wearlink::testing::fresh_directory("geo_sector");
+  const double      surface_size = 1e-4, max_size = 2e-3;
+  const std::string geo = dir + "/sector_sized.geo";
+  std::ofstream(geo) << "surface_size = " << surface_size << ";\nmax_size = " << max_size << ";\nInclude \""
+                     << wearlink::testing::source_path("meshes/pin_bushing_sector.geo") << "\";\n";
+  std::map<std::string, std::size_t> quads; // per material group
+  gmsh::initialize(0, nullptr, false);
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(geo);
+  gmsh::model::mesh::generate(2);
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 2);
+  for (const auto &[dim, tag] : groups)
+    {
+      std::string name;
+      gmsh::model::getPhysicalName(dim, tag, name);
+      std::vector<int> surfaces;
+      gmsh::model::getEntitiesForPhysicalGroup(dim, tag, surfaces);
+      for (const int surface : surfaces)
+        {
+          std::vector<int>                      types;
+          std::vector<std::vector<std::size_t>> tags, nodes;
+          gmsh::model::mesh::getElements(types, tags, nodes, 2, surface);
+          for (std::size_t t = 0; t < types.size(); ++t)
+            quads[name] += types[t] == 3 ? tags[t].size() : 0;
+        }
+    }
+  gmsh::finalize();
+
+  fe::MeshSpecification spec;
+  spec.core_radius          = core_radius;
+  spec.outer_radius         = outer_radius;
+  spec.surface_element_size = surface_size;
+  spec.max_element_size     = max_size;
+  spec.size_growth          = 0.3;
+  spec.layer_thickness      = 0.1e-3;
+  const std::string msh     = dir + "/periodic.msh";
+  const auto        stats =
+    fe::write_pin_bushing_mesh(Profile::round(bore_radius, 360), Profile::round(pin_radius, 360), spec, msh);
+  const auto sectors = [&](const double R) {
+    return std::lround(2 * M_PI * R / (fe::periodic_sector_elements * surface_size));
+  };
+  EXPECT_EQ(stats.pin_sectors, sectors(pin_radius));
+  EXPECT_EQ(stats.bore_sectors, sectors(bore_radius));
+  EXPECT_EQ(stats.n_quadrilaterals,
+            stats.pin_sectors * quads.at("MaterialID:1") + stats.bore_sectors * quads.at("MaterialID:2"));
+  const auto api = count(msh, false);
+  EXPECT_EQ(api.segments.at("BoundaryID:2"), stats.pin_sectors * fe::periodic_sector_elements);
+  EXPECT_EQ(api.segments.at("BoundaryID:3"), stats.bore_sectors * fe::periodic_sector_elements);
+  EXPECT_EQ(api.quadrilaterals, stats.n_quadrilaterals);
+  EXPECT_EQ(api.nodes, stats.n_nodes);
+  check_areas(msh);
 }
 
 TEST(GeoMesh, ShippedFixtureIsTheGeoMeshAndReadsWithItsIdsAndAreas)
