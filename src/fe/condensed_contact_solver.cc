@@ -463,10 +463,12 @@ namespace wearlink::fe
     double
     step_back_to_feasible(std::vector<unsigned int> &active, const std::vector<double> &x, std::vector<double> &lambda)
     {
-      double       alpha   = 1;
+      double       alpha = 1, tolerance = 0; // forces this close to zero are zero (active_set::update)
       unsigned int blocker = active.size();
+      for (const double v : x)
+        tolerance = std::max(tolerance, 1e-10 * std::abs(v));
       for (unsigned int s = 0; s < active.size(); ++s)
-        if (x[s] <= 0)
+        if (x[s] < -tolerance)
           {
             const double l = lambda[active[s]];
             const double a = l > 0 ? l / (l - x[s]) : 0.0;
@@ -484,7 +486,7 @@ namespace wearlink::fe
           // Degenerate: positions at zero force that the minimizer wants tensile leave;
           // the point does not move, and the others stay.
           for (unsigned int s = 0; s < active.size(); ++s)
-            if (lambda[active[s]] > 0 || x[s] > 0)
+            if (lambda[active[s]] > 0 || x[s] >= -tolerance)
               kept.push_back(active[s]);
           active = kept;
           return 0;
@@ -733,6 +735,8 @@ namespace wearlink::fe
         const double needed = U_total.norm() + 0.25 * largest_opening(kin, st) + kin.tolerance;
         if (needed <= threshold || threshold >= 4 * pose.bore->max_radius())
           {
+            for (auto &l : st.lambda) // round-off of a force that is zero (active_set::update)
+              l = std::max(l, 0.0);
             sol.lambda           = st.lambda;
             sol.gap              = st.gap;
             sol.active           = st.active;

@@ -58,14 +58,20 @@ namespace wearlink::fe
       std::vector<char> is_active(gap.size(), 0);
       for (const auto i : active)
         is_active[i] = 1;
+      // A force this close to zero is zero (round-off of the active system): it must not
+      // leave while a neighbour penetrates, or a load along one candidate's normal, which
+      // that candidate carries alone, makes the two-candidate rule cycle.
+      double lambda_tolerance = 0;
+      for (const auto i : active)
+        lambda_tolerance = std::max(lambda_tolerance, 1e-10 * std::abs(lambda[i]));
       std::vector<unsigned int> next;
       unsigned int              worst_lambda = 0, worst_gap = 0;
-      double                    min_lambda = 0, min_gap = -tolerance;
+      double                    min_lambda = -lambda_tolerance, min_gap = -tolerance;
       for (unsigned int i = 0; i < gap.size(); ++i)
         {
           if (is_active[i])
             {
-              if (lambda[i] > 0)
+              if (lambda[i] >= -lambda_tolerance)
                 next.push_back(i);
               else if (lambda[i] < min_lambda)
                 {
@@ -90,10 +96,11 @@ namespace wearlink::fe
           // if there are any, otherwise add every penetrating one. If that set was seen
           // too, correct the single worst violation (monotone, but one at a time).
           std::vector<unsigned int> partial;
+          const bool                tensile = min_lambda < -lambda_tolerance;
           for (const auto i : active)
-            if (min_lambda >= 0 || lambda[i] > 0)
+            if (!tensile || lambda[i] >= -lambda_tolerance)
               partial.push_back(i);
-          if (min_lambda >= 0)
+          if (!tensile)
             for (unsigned int i = 0; i < gap.size(); ++i)
               if (!is_active[i] && gap[i] < -tolerance)
                 partial.push_back(i);
@@ -102,7 +109,7 @@ namespace wearlink::fe
           if (next == active || history.count(next))
             {
               next = active;
-              if (min_lambda < 0)
+              if (tensile)
                 next.erase(std::find(next.begin(), next.end(), worst_lambda));
               else if (min_gap < -tolerance)
                 next.insert(std::upper_bound(next.begin(), next.end(), worst_gap), worst_gap);

@@ -30,7 +30,7 @@ namespace wearlink::fe
     namespace fs = std::filesystem;
 
     constexpr const char *cache_format  = "wearlink-fe-force-approach-table";
-    constexpr int         cache_version = 2;
+    constexpr int         cache_version = 3; // 3: round pairs on the periodic shared mesh
     /**
      * Half-angle of the refined arc of a round pair's mesh, centred on the one tabulated
      * direction [rad]: 1.5 × the Hertz half-angle b/R1 at the largest load plus 0.2 rad
@@ -189,10 +189,13 @@ namespace wearlink::fe
                   approach.push_back(gap.evaluate(mbs::Vec2(e[0], e[1]), 0.0, lc.pin_angle).penetration);
                   build.max_half_angle = std::max(build.max_half_angle, r.half_angle);
                 }
-              catch (const NumericalError &) // filled from its neighbours and counted (fill_failed)
+              catch (const NumericalError &e) // filled from its neighbours and counted (fill_failed)
                 {
                   approach.push_back(std::numeric_limits<double>::quiet_NaN());
-                  ++build.n_failed;
+                  if (build.n_failed++ == 0)
+                    build.first_failure = std::to_string(F) + " N in the direction " + std::to_string(psi_b) +
+                                          " rad (bushing frame), " + std::to_string(psi_p) +
+                                          " rad (pin frame): " + e.what();
                 }
             }
         }
@@ -398,7 +401,7 @@ namespace wearlink::fe
   build_force_approach_table(const contact::JointGeometry     &g,
                              const FeForceLawSettings         &s,
                              TableBuild                       &build,
-                             std::shared_ptr<PinBushingModel> *worn_model)
+                             std::shared_ptr<PinBushingModel> *shared)
   {
     const Stopwatch clock;
     build                            = TableBuild();
@@ -406,23 +409,20 @@ namespace wearlink::fe
     const unsigned int        n_b    = round ? 1 : s.n_bore_directions;
     const unsigned int        n_p    = round ? 1 : s.n_pin_directions;
     const std::vector<double> forces = table_load_levels(s);
-    // A worn pair's table is solved on the joint's shared model (the fe pressure model's
-    // too), whose mesh may be of slightly less worn profiles ('Remesh depth'): those
-    // belong to the key.
-    std::shared_ptr<PinBushingModel> model;
-    if (!round)
+    // The table is solved on the joint's shared model (the fe pressure model's too; for a
+    // round pair a periodic mesh, whose one sector of columns serves every direction),
+    // whose mesh may be of slightly less worn profiles ('Remesh depth'): those belong to
+    // the key.
+    bool       reused = false;
+    const auto model  = shared_model(g, s.fe, &reused);
+    if (!reused)
       {
-        bool reused = false;
-        model       = shared_model(g, s.fe, &reused);
-        if (!reused)
-          {
-            build.mesh_seconds  = model->statistics().mesh_time;
-            build.setup_seconds = model->statistics().assembly_time + model->statistics().factorization_time;
-          }
-        if (worn_model != nullptr)
-          *worn_model = model;
+        build.mesh_seconds  = model->statistics().mesh_time;
+        build.setup_seconds = model->statistics().assembly_time + model->statistics().factorization_time;
       }
-    const std::string key = geometry_key(g, s, model ? &model->meshed_geometry() : nullptr);
+    if (shared != nullptr)
+      *shared = model;
+    const std::string key = geometry_key(g, s, &model->meshed_geometry());
     if (s.cache)
       {
         build.cache_file                   = cache_file(key);
@@ -438,23 +438,13 @@ namespace wearlink::fe
     for (unsigned int i = 0; i < n_b; ++i)
       for (unsigned int j = 0; j < n_p; ++j)
         directions.push_back({two_pi * i / n_b, two_pi * j / n_p});
-    std::vector<double> approach;
-    if (round) // one direction: refine the mesh about it only
-      {
-        FeSettings fe              = s.fe;
-        fe.refined_arc_half_angle  = round_refined_half_angle(g, forces.back());
-        fe.refined_arc_bore_centre = 0;
-        fe.refined_arc_pin_centre  = 0;
-        approach                   = solve_table_on_own_mesh(g, fe, forces, directions, build);
-      }
-    else
-      approach = solve_table(*model, g, forces, directions, build);
+    std::vector<double> approach = solve_table(*model, g, forces, directions, build);
     if (build.n_failed > 0)
       {
         fill_failed(approach, forces, directions);
         std::cerr << "[wearlink] warning: the FE contact solver failed at " << build.n_failed << " of "
                   << build.n_solves << " force–approach table points; they were filled from their neighbours "
-                  << "(table_failed_solves in summary.json)\n";
+                  << "(table_failed_solves in summary.json). The first: " << build.first_failure << "\n";
       }
     make_monotone(approach, forces, directions, 0.01 * s.fe.effective_surface_element_size(), build);
     contact::ForceApproachTable table(forces, n_b, n_p, approach);
@@ -492,7 +482,7 @@ namespace wearlink::fe
   contact::ForceApproachTable
   FeNormalForceLaw::build_table(const contact::JointGeometry &geometry)
   {
-    contact::ForceApproachTable table = build_force_approach_table(geometry, settings, last_build, &worn_model);
+    contact::ForceApproachTable table = build_force_approach_table(geometry, settings, last_build, &model);
     total_build_seconds += last_build.seconds;
     ++n_builds;
     n_cached += last_build.from_cache ? 1 : 0;

@@ -15,7 +15,7 @@
 //
 // The table (contact/force_approach_table.h): 'Table load levels' forces spaced
 // logarithmically from 'Table minimum force' to 'Table maximum force' [N]; round
-// profiles need one direction (and a mesh refined only around it), worn ones
+// profiles need one direction (on the periodic mesh of fe/pin_bushing_mesher.h), worn ones
 // 'Table bore directions' × 'Table pin directions' (the contact direction in the
 // bushing frame, and in the pin frame, which the joint's relative rotation decouples).
 // It is rebuilt in update_geometry() (construction and every profile update) and
@@ -69,6 +69,7 @@ namespace wearlink::fe
     unsigned int n_repaired     = 0; ///< approaches replaced to make the table monotone (see the .cc)
     double       max_repair     = 0; ///< the largest such change [m]
     unsigned int n_failed       = 0; ///< points whose FE solve failed, filled from their neighbours
+    std::string  first_failure;      ///< where and why the first of them failed
     std::string  cache_file;
   };
 
@@ -92,15 +93,16 @@ namespace wearlink::fe
    * Tabulate the elastic force against the approach for @p geometry (see the file
    * comment). Approaches that do not increase with the load by no more than 1 % of
    * the surface element size (noise of a worn pocket at the lowest loads) are repaired
-   * and counted; a larger violation is a NumericalError. A
-   * worn pair's table is solved on the shared model of fe/model_pool.h (kept in
-   * @p worn_model if given, so that it outlives the call).
+   * and counted; a larger violation is a NumericalError. The table is solved on the
+   * joint's shared model of fe/model_pool.h (kept in @p shared if given, so that it
+   * outlives the call): a round pair's is a periodic mesh, whose one sector of
+   * compliance columns serves every direction.
    */
   contact::ForceApproachTable
   build_force_approach_table(const contact::JointGeometry     &geometry,
                              const FeForceLawSettings         &settings,
                              TableBuild                       &build,
-                             std::shared_ptr<PinBushingModel> *worn_model = nullptr);
+                             std::shared_ptr<PinBushingModel> *shared = nullptr);
 
   /**
    * The FE approach at each of @p forces (increasing) in one contact direction
@@ -131,10 +133,11 @@ namespace wearlink::fe
     build_table(const contact::JointGeometry &geometry) override;
 
   private:
-    const FeForceLawSettings         settings;
-    std::shared_ptr<PinBushingModel> worn_model; ///< kept across profile updates ('Remesh depth')
-    TableBuild                       last_build;
-    double                           total_build_seconds = 0;
-    unsigned int                     n_builds = 0, n_cached = 0;
+    const FeForceLawSettings settings;
+    std::shared_ptr<PinBushingModel>
+                 model; ///< the joint's shared FE model, kept across profile updates ('Remesh depth')
+    TableBuild   last_build;
+    double       total_build_seconds = 0;
+    unsigned int n_builds = 0, n_cached = 0;
   };
 } // namespace wearlink::fe
