@@ -11,6 +11,7 @@ namespace wearlink
     fe_setup += o.fe_setup;
     fe_compliance += o.fe_compliance;
     pressure_evaluation += o.pressure_evaluation;
+    contact_law_tables += o.contact_law_tables;
     wear_bookkeeping += o.wear_bookkeeping;
     outputs += o.outputs;
     before_after_dynamics += o.before_after_dynamics;
@@ -23,6 +24,7 @@ namespace wearlink
   {
     Json t                     = Json::object();
     t["before/after dynamics"] = before_after_dynamics;
+    t["contact-law tables"]    = contact_law_tables;
     t["dynamics"]              = dynamics;
     t["fe compliance"]         = fe_compliance;
     t["fe set-up"]             = fe_setup;

@@ -41,11 +41,13 @@ namespace wearlink
    */
   struct PhaseTimings
   {
-    double dynamics              = 0; ///< integrating the mechanism
-    double meshing               = 0; ///< gmsh
-    double fe_setup              = 0; ///< FE assembly and factorization
-    double fe_compliance         = 0; ///< condensed compliance columns
-    double pressure_evaluation   = 0; ///< pressure models on the load history
+    double dynamics            = 0; ///< integrating the mechanism
+    double meshing             = 0; ///< gmsh
+    double fe_setup            = 0; ///< FE assembly and factorization
+    double fe_compliance       = 0; ///< condensed compliance columns
+    double pressure_evaluation = 0; ///< pressure models on the load history
+    /** Normal force laws built from the geometry (the fe law's tables, FE set-up included when a build made the model). */
+    double contact_law_tables    = 0;
     double wear_bookkeeping      = 0; ///< Archard sums, profiles, checkpoints
     double outputs               = 0; ///< files and plots
     double before_after_dynamics = 0; ///< the before/after-wear comparison runs

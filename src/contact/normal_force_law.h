@@ -26,6 +26,7 @@
 
 #include "base/json.h"
 #include "base/registry.h"
+#include "base/timings.h"
 #include "contact/pressure_model.h"
 
 #include <algorithm>
@@ -81,6 +82,16 @@ namespace wearlink::contact
     report() const
     {
       return Json::object();
+    }
+    /**
+     * Wall time spent building the law from the geometry so far, in contact_law_tables
+     * [s] (the fe law's tables, with the FE model's set-up when a table build made it).
+     * Closed-form laws report nothing.
+     */
+    virtual PhaseTimings
+    timings() const
+    {
+      return {};
     }
   };
 

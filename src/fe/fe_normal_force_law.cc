@@ -489,6 +489,14 @@ namespace wearlink::fe
     return table;
   }
 
+  PhaseTimings
+  FeNormalForceLaw::timings() const
+  {
+    PhaseTimings t;
+    t.contact_law_tables = total_build_seconds;
+    return t;
+  }
+
   Json
   FeNormalForceLaw::report() const
   {

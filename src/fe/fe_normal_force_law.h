@@ -128,6 +128,10 @@ namespace wearlink::fe
     Json
     report() const override;
 
+    /** contact_law_tables: every table build so far (the one at construction included). */
+    PhaseTimings
+    timings() const override;
+
   protected:
     contact::ForceApproachTable
     build_table(const contact::JointGeometry &geometry) override;

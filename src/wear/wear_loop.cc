@@ -285,6 +285,8 @@ namespace wearlink::wear
     PhaseTimings t = own_timings;
     for (const auto &w : wearing)
       t += w.wear->model->timings();
+    for (const auto *j : clearance_joints)
+      t += j->normal_force_law().timings();
     return t;
   }
 } // namespace wearlink::wear

@@ -130,8 +130,8 @@ namespace wearlink::wear
     }
 
     /**
-     * Wall time of the loop's phases so far [s], the pressure models' FE phases
-     * included.
+     * Wall time of the loop's phases so far [s], the pressure models' FE phases and
+     * the clearance joints' contact-law tables (NormalForceLaw::timings()) included.
      */
     PhaseTimings
     timings() const;
