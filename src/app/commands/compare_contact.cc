@@ -31,11 +31,22 @@ of the scene:
      relative to that load (printed; deviations.csv);
   3. the effect on the dynamics: the scene run for N driving cycles (default 100) with
      every clearance joint on lankarani-nikravesh, johnson, esdu-78035 and fe (the
-     scene's restitution): contact fraction, peak normal force, impacts, peak body
-     acceleration, steps, wall time (effects.csv). --no-effects skips these runs.
+     scene's restitution): contact fraction, peak and mean normal force, impacts, peak
+     body acceleration, steps, wall time (effects.csv). In a wear scene also one wear
+     iteration per law (Wear/Cycles per iteration from assembly, the scene's pressure
+     model, no extrapolation): the volumes worn off pin and bushing and Archard's
+     k_D ∫ F|v| dt per wearing joint. --no-effects skips these runs.
+  4. pressure distributions on the bore at four loads per joint, from the mean to the
+     peak normal force in contact of the lankarani-nikravesh run (the effect run; with
+     --no-effects a 10-cycle run), spaced geometrically, the pin pushed into the bore at
+     the bushing's −y (with --worn: at the deepest bore wear): hertz-strip, winkler (if
+     given) and fe, fresh and worn; peak pressure and contact half-angle of each and
+     their ratio to fe (printed; pressure.csv, pressure.png).
 Writes into DIR (default: output/<scene name>_contact): force_approach.csv (approach_m,
 then force_N_<law>_<state>_<joint>), force_approach.png, deviations.csv, effects.csv,
-compare_contact.txt. The FE tables are cached like the fe law's (see --help of run).
+pressure.csv (bore_angle_rad, then pressure_Pa_<model>_<state>_<joint>_<load>N),
+pressure.png, compare_contact.txt. The FE tables are cached like the fe law's (see
+--help of run).
 
 Exit status: 0 success, 2 bad input, 3 numerical failure.
 )";
@@ -64,7 +75,9 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       const auto c = workflows::compare_contact(r);
       std::cout << c.table();
       workflows::write_contact_comparison(out, c);
-      std::cout << "\nwrote " << out << "/force_approach.csv, force_approach.png, deviations.csv, effects.csv\n";
+      std::cout << "\nwrote " << out
+                << "/force_approach.csv, force_approach.png, deviations.csv, effects.csv, pressure.csv, pressure.png, "
+                   "compare_contact.txt\n";
       return 0;
     }
   } // namespace
@@ -72,7 +85,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
   extern const Command compare_contact_command;
   const Command        compare_contact_command = {"compare-contact",
                                                   "compare-contact SCENE.prm [--worn DIR]  simplified contact laws "
-                                                         "against the FE model: curves, deviations, effects",
+                                                         "against the FE model: curves, deviations, effects, pressures",
                                                   help_text,
                                                   run};
 } // namespace wearlink::app
