@@ -650,16 +650,6 @@ namespace wearlink::fe
       return std::max(r1 - r2, 1e-9);
     }
 
-    /** Smallest distance between neighbouring pin candidates along the surface [m]. */
-    double
-    candidate_spacing(const ElasticityProblem &problem)
-    {
-      const auto &nodes = problem.pin_nodes;
-      double      h     = std::numeric_limits<double>::max();
-      for (unsigned int i = 0; i < nodes.size(); ++i)
-        h = std::min(h, (nodes[(i + 1) % nodes.size()].point - nodes[i].point).norm());
-      return h;
-    }
   } // namespace condensed_detail
 
   using namespace condensed_detail;
@@ -717,6 +707,13 @@ namespace wearlink::fe
   }
 
 
+  // Pairings: the window kinematics at a pose, its compliance and factor; within one,
+  // linearizations that refresh the gaps (refresh_gaps()) until the pin's translation of
+  // the last one is small (relinearization_done()). A pin that slides by more than a
+  // quarter of the candidate spacing since the pairing (a light load on a worn, inclined
+  // bore: 70 µm measured) is paired anew at its new pose, warm-started from the active
+  // candidates; a window too narrow for the solution's deformation is widened and the
+  // pairing solved again.
   ContactSolution
   CondensedContactSolver::solve(const PinPose      &pose,
                                 const bool          force_control,
@@ -729,58 +726,89 @@ namespace wearlink::fe
     double                    T       = 0.5 * std::max(closure_estimate, 0.0);
     std::vector<unsigned int> warm;
     ContactSolution           sol;
-    for (unsigned int attempt = 0; attempt < 8; ++attempt)
+    PinPose                   paired  = pose;
+    unsigned int              updates = 0;
+    for (unsigned int pairing = 0; pairing < 4 * max_relinearizations; ++pairing)
       {
         double threshold = 0;
-        kin              = compute_window_kinematics(problem, pose, {T, 1e-3 * spacing, 0.5}, &threshold);
+        kin              = compute_window_kinematics(problem, paired, {T, 1e-3 * spacing, 0.5}, &threshold);
         WindowCompliance A(problem, compliance, kin);
         ActiveFactor     factor(A, kin, m);
         WindowState      st;
         st.lambda.assign(kin.g0.size(), 0.0);
         st.active = starting_set(kin, clearance, warm, force_control, load);
-        // Linearizations about the translated pin, the pairing kept (refresh_gaps()).
-        Tensor<1, 2> U_total;
-        PinPose      moved = pose;
-        for (unsigned int update = 0; update < max_relinearizations; ++update)
+        Tensor<1, 2>       U_pair; // since `paired`
+        PinPose            moved = paired;
+        bool               slid = false, narrow = false;
+        const unsigned int updates_before = updates; // a widened window solves this pairing again
+        for (;;)
           {
             solve_linearized(kin, A, factor, force_control, load, st, sol.monotone);
-            U_total += st.U;
-            if (!force_control || relinearization_done(st.U, pin_radius))
+            U_pair += st.U;
+            // First the window (so that the path is the reference solver's, which sees
+            // every candidate), then the linearization and the pairing.
+            const double needed = U_pair.norm() + 0.25 * largest_opening(kin, st) + kin.tolerance;
+            if ((narrow = needed > threshold && threshold < 4 * pose.bore->max_radius()))
+              {
+                T = 2 * needed;
+                break;
+              }
+            if (!force_control || relinearization_done(st.U, pin_radius) || ++updates >= max_relinearizations)
               break;
-            moved.eccentricity = pose.eccentricity + U_total;
+            if ((slid = pairing_outdated(U_pair, spacing)))
+              break;
+            moved.eccentricity = paired.eccentricity + U_pair;
             refresh_gaps(problem, moved, kin);
           }
         sol.iterations += st.iterations;
-        const double needed = U_total.norm() + 0.25 * largest_opening(kin, st) + kin.tolerance;
-        if (needed <= threshold || threshold >= 4 * pose.bore->max_radius())
-          {
-            sol.resultant = 0;
-            for (const auto p : st.active)
-              sol.resultant += st.lambda[p] * kin.normal[p];
-            // A gross failure, not round-off: the 2 × 2 Schur complement of two nearly
-            // parallel normals (neighbouring candidates at a small load) has a condition
-            // of ~1e6, so the balance holds to ~1e-10, not to machine precision.
-            const double residual = (sol.resultant - load).norm() / load.norm();
-            if (force_control && !(residual <= 1e-8))
-              throw NumericalError("The condensed contact solver ended out of equilibrium (resultant off the load by " +
-                                   format_number(residual, 3) +
-                                   " of it). Refine the contact surfaces ('Surface element size').");
-            for (auto &l : st.lambda) // round-off of a force that is zero (active_set::update)
-              l = std::max(l, 0.0);
-            sol.lambda           = st.lambda;
-            sol.gap              = st.gap;
-            sol.active           = st.active;
-            sol.pin_translation  = U_total;
-            sol.last_translation = st.U;
-            sol.n_active         = st.active.size();
-            return sol;
-          }
-        T = 2 * needed;
         warm.clear();
         for (const auto p : st.active)
           warm.push_back(kin.candidates[p]);
+        if (narrow)
+          {
+            updates = updates_before;
+            continue;
+          }
+        if (slid)
+          {
+            paired.eccentricity += U_pair;
+            T = 0.5 * std::max(closure_estimate, 0.0);
+            continue;
+          }
+        finish(kin, st, force_control, load, sol);
+        sol.pin_translation = paired.eccentricity - pose.eccentricity + U_pair;
+        return sol;
       }
     throw NumericalError("The condensed contact solver could not find a contact window that holds the contact.");
+  }
+
+
+  // The solution of the last linearization: the balance checked (a gross failure, not
+  // round-off: the 2 × 2 Schur complement of two nearly parallel normals has a condition
+  // of ~1e6, so it holds to ~1e-10, not to machine precision), forces zero up to
+  // round-off made zero.
+  void
+  CondensedContactSolver::finish(const ContactKinematics &kin,
+                                 WindowState             &st,
+                                 const bool               force_control,
+                                 const Tensor<1, 2>      &load,
+                                 ContactSolution         &sol) const
+  {
+    sol.resultant = 0;
+    for (const auto p : st.active)
+      sol.resultant += st.lambda[p] * kin.normal[p];
+    const double residual = (sol.resultant - load).norm() / load.norm();
+    if (force_control && !(residual <= 1e-8))
+      throw NumericalError("The condensed contact solver ended out of equilibrium (resultant off the load by " +
+                           format_number(residual, 3) +
+                           " of it). Refine the contact surfaces ('Surface element size').");
+    for (auto &l : st.lambda) // round-off of a force that is zero (active_set::update)
+      l = std::max(l, 0.0);
+    sol.lambda           = st.lambda;
+    sol.gap              = st.gap;
+    sol.active           = st.active;
+    sol.last_translation = st.U;
+    sol.n_active         = st.active.size();
   }
 
 

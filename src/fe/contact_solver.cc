@@ -170,6 +170,17 @@ namespace wearlink::fe
 
 
   double
+  candidate_spacing(const ElasticityProblem &problem)
+  {
+    const auto &nodes = problem.pin_nodes;
+    double      h     = std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      h = std::min(h, (nodes[(i + 1) % nodes.size()].point - nodes[i].point).norm());
+    return h;
+  }
+
+
+  double
   smallest_pin_radius(const ElasticityProblem &problem)
   {
     double r = std::numeric_limits<double>::max();

@@ -85,8 +85,23 @@ namespace wearlink::fe
     struct WindowState;
   } // namespace condensed_detail
 
-  /** Kinematic updates of one load state at most (the last one is accepted). */
-  constexpr unsigned int max_relinearizations = 6;
+  /** Linearizations of one load state at most (the last one is accepted). */
+  constexpr unsigned int max_relinearizations = 12;
+
+  /** Smallest distance between neighbouring pin candidates along the surface [m]. */
+  double
+  candidate_spacing(const ElasticityProblem &problem);
+
+  /**
+   * True when the pin has moved by @p U since the pose its contact pairing was computed
+   * at by more than a quarter of the candidate @p spacing: then it is paired anew
+   * (refresh_gaps() keeps the pairing for smaller moves).
+   */
+  inline bool
+  pairing_outdated(const dealii::Tensor<1, 2> &U, const double spacing)
+  {
+    return U.norm() > 0.25 * spacing;
+  }
 
   /** The smallest radius of the meshed pin surface (its candidates) [m]. */
   double
@@ -163,6 +178,13 @@ namespace wearlink::fe
     }
 
   private:
+    void
+    finish(const ContactKinematics       &kinematics,
+           condensed_detail::WindowState &state,
+           bool                           force_control,
+           const dealii::Tensor<1, 2>    &load,
+           ContactSolution               &solution) const;
+
     void
     solve_linearized(const ContactKinematics            &kinematics,
                      condensed_detail::WindowCompliance &A,

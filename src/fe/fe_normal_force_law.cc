@@ -353,7 +353,8 @@ namespace wearlink::fe
   void
   fill_failed(std::vector<double>                      &approach,
               const std::vector<double>                &forces,
-              const std::vector<std::array<double, 2>> &directions)
+              const std::vector<std::array<double, 2>> &directions,
+              const std::string                        &first_failure)
   {
     const std::size_t K = forces.size();
     for (std::size_t d = 0; d < directions.size(); ++d)
@@ -370,7 +371,9 @@ namespace wearlink::fe
                                std::to_string(K) + " load levels of the force–approach table in the direction " +
                                std::to_string(directions[d][0]) + " rad (bushing frame), " +
                                std::to_string(directions[d][1]) +
-                               " rad (pin frame); refine the contact surfaces ('Surface element size').");
+                               " rad (pin frame); refine the contact surfaces ('Surface element size'). The first "
+                               "failure of the table: " +
+                               first_failure);
         for (std::size_t k = 0; k < K; ++k)
           if (!(std::isfinite(a[k]) && a[k] > 0))
             {
@@ -441,7 +444,7 @@ namespace wearlink::fe
     std::vector<double> approach = solve_table(*model, g, forces, directions, build);
     if (build.n_failed > 0)
       {
-        fill_failed(approach, forces, directions);
+        fill_failed(approach, forces, directions, build.first_failure);
         std::cerr << "[wearlink] warning: the FE contact solver failed at " << build.n_failed << " of "
                   << build.n_solves << " force–approach table points; they were filled from their neighbours "
                   << "(table_failed_solves in summary.json). The first: " << build.first_failure << "\n";

@@ -204,29 +204,36 @@ namespace wearlink::fe
       return r;
     }
 
-    // The reference solver's path: every candidate, the same linearizations as the
-    // condensed solver's.
+    // The reference solver's path: every candidate, the same linearizations and
+    // pairings as the condensed solver's (CondensedContactSolver::solve()).
     ContactSolution
-    reference_solve(PinPose pose, const bool force_control, const Tensor<1, 2> &P, ContactKinematics &kin) const
+    reference_solve(const PinPose &pose, const bool force_control, const Tensor<1, 2> &P, ContactKinematics &kin) const
     {
-      const Tensor<1, 2> e0 = pose.eccentricity;
-      kin                   = compute_kinematics(*problem, pose);
-      Tensor<1, 2>    U_total;
+      PinPose paired = pose, moved = pose;
+      kin = compute_kinematics(*problem, paired);
+      Tensor<1, 2>    U_pair;
       ContactSolution sol;
       unsigned int    iterations = 0;
-      const double    R          = smallest_pin_radius(*problem);
-      for (unsigned int update = 0; update < max_relinearizations; ++update)
+      const double    R = smallest_pin_radius(*problem), spacing = candidate_spacing(*problem);
+      for (unsigned int update = 1;; ++update)
         {
           sol = reference->solve(kin, force_control, P);
           iterations += sol.iterations;
-          U_total += sol.pin_translation;
-          if (!force_control || relinearization_done(sol.pin_translation, R))
+          U_pair += sol.pin_translation;
+          if (!force_control || relinearization_done(sol.pin_translation, R) || update >= max_relinearizations)
             break;
-          pose.eccentricity = e0 + U_total;
-          refresh_gaps(*problem, pose, kin);
+          if (pairing_outdated(U_pair, spacing))
+            {
+              paired.eccentricity += U_pair;
+              U_pair = 0;
+              kin    = compute_kinematics(*problem, paired);
+              continue;
+            }
+          moved.eccentricity = paired.eccentricity + U_pair;
+          refresh_gaps(*problem, moved, kin);
         }
       sol.last_translation = sol.pin_translation;
-      sol.pin_translation  = U_total;
+      sol.pin_translation  = paired.eccentricity - pose.eccentricity + U_pair;
       sol.iterations       = iterations;
       return sol;
     }

@@ -102,6 +102,7 @@ namespace wearlink::workflows
         {"fe-element-size", "fe Surface element size"},
         {"fe-degree", "fe Element degree"},
         {"remesh-depth", "fe Remesh depth: profile drift kept on one mesh, in surface element sizes"},
+        {"fe-law-table", "fe law table: bore × pin directions tabulated for worn profiles (Table bore/pin directions)"},
       };
       return c;
     }
@@ -427,6 +428,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       const io::Scene         &scene;
       bool                     quick = false;
       std::vector<std::string> clearance, wearing, fe; ///< joint names
+      std::vector<std::string> fe_law;                 ///< joints on the fe normal force law
       /** Scale factors, coarse -> fine, around the scene's value (×1 is the scene's). */
       std::vector<double> coarsen;
 
@@ -618,7 +620,10 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
         }
     }
 
-    /** FE element size and degree, re-mesh interval (joints with the fe pressure model). */
+    /**
+     * FE element size and degree, re-mesh depth (joints with the fe pressure model); the
+     * direction grid of the fe law's worn tables.
+     */
     void
     fe_knobs(const KnobContext &c, std::vector<Knob> &knobs)
     {
@@ -635,15 +640,30 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
           knobs.push_back(
             make_knob("remesh-depth", paths(fe, "fe/Remesh depth"), {"2", "0.5", "0"}, "re-mesh at every update"));
         }
+      if (!c.fe_law.empty() && !c.wearing.empty()) // worn profiles: the direction grid of the law's table
+        {
+          Knob k;
+          k.name        = "fe-law-table";
+          k.description = description_of(k.name);
+          k.targets     = {paths(c.fe_law, "fe/Table bore directions"), paths(c.fe_law, "fe/Table pin directions")};
+          for (const char *n : {"4", "8", "16"})
+            k.values.push_back({n, n});
+          k.reference = "most directions";
+          knobs.push_back(k);
+        }
     }
   } // namespace
 
   std::vector<Knob>
   knobs_for(const io::Scene &scene, bool quick)
   {
-    KnobContext c{scene, quick, {}, {}, {}, {}};
+    KnobContext c{scene, quick, {}, {}, {}, {}, {}};
     for (const auto *j : scene.clearance_joints)
-      c.clearance.push_back(j->name());
+      {
+        c.clearance.push_back(j->name());
+        if (entry_of(scene, "Joint " + j->name() + "/Clearance/Normal force law") == "fe")
+          c.fe_law.push_back(j->name());
+      }
     for (const auto &w : scene.wear)
       {
         c.wearing.push_back(w->joint);
