@@ -29,8 +29,8 @@ namespace wearlink::fe
     using numbers::two_pi;
     namespace fs = std::filesystem;
 
-    constexpr const char *cache_format  = "wearlink-fe-force-approach-table";
-    constexpr int         cache_version = 3; // 3: round pairs on the periodic shared mesh
+    constexpr const char *cache_format = "wearlink-fe-force-approach-table";
+    constexpr int cache_version        = 4; // 3: round pairs on the periodic shared mesh; 4: re-pairing of sliding pins
     /**
      * Half-angle of the refined arc of a round pair's mesh, centred on the one tabulated
      * direction [rad]: 1.5 × the Hertz half-angle b/R1 at the largest load plus 0.2 rad
@@ -415,17 +415,9 @@ namespace wearlink::fe
     // The table is solved on the joint's shared model (the fe pressure model's too; for a
     // round pair a periodic mesh, whose one sector of columns serves every direction),
     // whose mesh may be of slightly less worn profiles ('Remesh depth'): those belong to
-    // the key.
-    bool       reused = false;
-    const auto model  = shared_model(g, s.fe, &reused);
-    if (!reused)
-      {
-        build.mesh_seconds  = model->statistics().mesh_time;
-        build.setup_seconds = model->statistics().assembly_time + model->statistics().factorization_time;
-      }
-    if (shared != nullptr)
-      *shared = model;
-    const std::string key = geometry_key(g, s, &model->meshed_geometry());
+    // the key. A table in the cache needs no model: none is made for it.
+    auto              model = find_shared_model(g, s.fe);
+    const std::string key   = geometry_key(g, s, model ? &model->meshed_geometry() : nullptr);
     if (s.cache)
       {
         build.cache_file                   = cache_file(key);
@@ -434,9 +426,20 @@ namespace wearlink::fe
           {
             build.from_cache = true;
             build.seconds    = clock.seconds();
+            if (shared != nullptr)
+              *shared = model;
             return cached;
           }
       }
+    bool reused = false;
+    model       = shared_model(g, s.fe, &reused);
+    if (!reused)
+      {
+        build.mesh_seconds  = model->statistics().mesh_time;
+        build.setup_seconds = model->statistics().assembly_time + model->statistics().factorization_time;
+      }
+    if (shared != nullptr)
+      *shared = model;
     std::vector<std::array<double, 2>> directions;
     for (unsigned int i = 0; i < n_b; ++i)
       for (unsigned int j = 0; j < n_p; ++j)

@@ -63,20 +63,40 @@ namespace wearlink::fe
     return drift == 0 || drift <= s.remesh_depth * s.effective_surface_element_size();
   }
 
+  namespace
+  {
+    /** The live model within reach (pool_mutex held), or nullptr. */
+    std::shared_ptr<PinBushingModel>
+    live_model(const contact::JointGeometry &geometry, const FeSettings &settings)
+    {
+      pool.erase(std::remove_if(pool.begin(), pool.end(), [](const Entry &e) { return e.model.expired(); }),
+                 pool.end());
+      for (const auto &e : pool)
+        if (same_setup(e.settings, settings))
+          if (auto model = e.model.lock(); model && within_reach(*model, geometry, settings))
+            return model;
+      return nullptr;
+    }
+  } // namespace
+
+  std::shared_ptr<PinBushingModel>
+  find_shared_model(const contact::JointGeometry &geometry, const FeSettings &settings)
+  {
+    const std::lock_guard<std::mutex> lock(pool_mutex);
+    return live_model(geometry, settings);
+  }
+
   std::shared_ptr<PinBushingModel>
   shared_model(const contact::JointGeometry &geometry, const FeSettings &settings, bool *reused)
   {
     const std::lock_guard<std::mutex> lock(pool_mutex);
-    pool.erase(std::remove_if(pool.begin(), pool.end(), [](const Entry &e) { return e.model.expired(); }), pool.end());
-    for (const auto &e : pool)
-      if (same_setup(e.settings, settings))
-        if (auto model = e.model.lock(); model && within_reach(*model, geometry, settings))
-          {
-            use_profiles(*model, geometry);
-            if (reused != nullptr)
-              *reused = true;
-            return model;
-          }
+    if (auto model = live_model(geometry, settings))
+      {
+        use_profiles(*model, geometry);
+        if (reused != nullptr)
+          *reused = true;
+        return model;
+      }
     auto        holder = std::make_shared<Holder>();
     std::string directory;
     if (settings.mesh_directory.empty())

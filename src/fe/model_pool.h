@@ -29,6 +29,10 @@ namespace wearlink::fe
   std::shared_ptr<PinBushingModel>
   shared_model(const contact::JointGeometry &geometry, const FeSettings &settings, bool *reused = nullptr);
 
+  /** The live model that shared_model() would hand out for @p geometry, or nullptr (none is made). */
+  std::shared_ptr<PinBushingModel>
+  find_shared_model(const contact::JointGeometry &geometry, const FeSettings &settings);
+
   /** True if @p model may serve @p geometry under @p settings (see above). */
   bool
   within_reach(const PinBushingModel &model, const contact::JointGeometry &geometry, const FeSettings &settings);

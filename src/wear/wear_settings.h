@@ -7,7 +7,7 @@
 //      archard/        Pin and Bushing wear coefficient k_D [m³/(N m)], Pin and
 //                      Bushing density [kg/m³] — physical data, required when active
 //  - once per scene, "Wear": the iteration loop (cycles per iteration, extrapolation,
-//    clearance model, load sampling, re-mesh interval, outputs).
+//    clearance model, load sampling, outputs; the fe model's re-mesh depth is its own).
 // Only deal.II's ParameterHandler is used here (no FE headers), so io/ and app/ may
 // include it.
 #pragma once

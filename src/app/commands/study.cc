@@ -23,7 +23,8 @@ Shows what accuracy costs in time. Each accuracy knob that applies to the scene
 (integrator tolerance or step, Baumgarte factors, contact law, discrete areas per
 profile, load sampling of the pressure model, wear step, simulated cycles per wear
 iteration, pressure model, and with
-Pressure model = fe: surface element size, element degree, re-mesh interval) is set
+Pressure model = fe: surface element size, element degree, re-mesh depth; with
+Normal force law = fe in a wear scene: the direction grid of the worn tables) is set
 to each of its values in turn, coarse to fine, while everything else keeps the
 scene's value. Every run is timed (reading, building and running) and compared with
 the knob's reference run (its finest value; for choices without a "finer" one, the
