@@ -309,8 +309,13 @@ namespace wearlink::fe
    * conforming profiles the lowest levels carry the load on one or two nodes in the
    * worn pocket, and their rigid overlap is noise at the scale of tens of nanometres
    * (measured: 0.17 µm at 10 N against 0.15 µm at 20 N in one direction after
-   * 10,000 revolutions). Repairs up to 1 % of the surface element size are counted in
-   * @p build; a larger one is a NumericalError naming the direction and level.
+   * 10,000 revolutions): repairs up to @p tolerance (1 % of the surface element size)
+   * are that noise. A larger one is physics the table cannot hold — in a worn pocket
+   * the frictionless pin slides sideways as the load grows, and the rigid overlap at
+   * its equilibrium need not grow (measured: 0.47 µm at 40 N, 0.25 µm at 80 N on the FE
+   * scene's worn joint B): it is repaired the same way, counted apart
+   * (n_repaired_beyond_noise, the first in first_large_repair) and warned about, so that
+   * a run goes on with a flagged approximation instead of stopping.
    */
   void
   make_monotone(std::vector<double>                      &approach,
@@ -331,15 +336,12 @@ namespace wearlink::fe
           if (k + 2 < K && approach[d * K + k + 2] > above && above > 0)
             slope = std::log(approach[d * K + k + 2] / above) / std::log(forces[k + 2] / forces[k + 1]);
           const double repaired = above * std::pow(forces[k] / forces[k + 1], std::max(slope, 0.1));
-          if (!(a - repaired <= tolerance))
-            throw NumericalError(
-              "The FE force–approach table is not monotone: in the direction " + std::to_string(directions[d][0]) +
-              " rad (bushing frame), " + std::to_string(directions[d][1]) + " rad (pin frame) the approach at " +
-              std::to_string(forces[k]) + " N is " + std::to_string(a * 1e6) + " µm, not below the " +
-              std::to_string(above * 1e6) + " µm at " + std::to_string(forces[k + 1]) +
-              " N by more than the noise allowed (1 % of the surface element size). On worn, conforming profiles "
-              "the pin can slide sideways in the worn pocket as the load grows; refine the contact surfaces "
-              "('Surface element size') or tabulate fewer load levels.");
+          if (!(a - repaired <= tolerance) && build.n_repaired_beyond_noise++ == 0)
+            build.first_large_repair = "in the direction " + std::to_string(directions[d][0]) +
+                                       " rad (bushing frame), " + std::to_string(directions[d][1]) +
+                                       " rad (pin frame) the approach at " + std::to_string(forces[k]) + " N was " +
+                                       std::to_string(a * 1e6) + " µm, above the " + std::to_string(above * 1e6) +
+                                       " µm at " + std::to_string(forces[k + 1]) + " N";
           build.max_repair = std::max(build.max_repair, a - repaired);
           ++build.n_repaired;
           a = repaired;
@@ -453,6 +455,12 @@ namespace wearlink::fe
                   << "(table_failed_solves in summary.json). The first: " << build.first_failure << "\n";
       }
     make_monotone(approach, forces, directions, 0.01 * s.fe.effective_surface_element_size(), build);
+    if (build.n_repaired_beyond_noise > 0)
+      std::cerr << "[wearlink] warning: the FE force–approach table is not monotone in the load at "
+                << build.n_repaired_beyond_noise << " of " << build.n_solves
+                << " points beyond the noise of 1 % of the surface element size (the pin slides sideways in a worn "
+                << "pocket as the load grows); they were made monotone (table_repairs_beyond_noise, "
+                << "table_max_repair_m in summary.json). The first: " << build.first_large_repair << "\n";
     contact::ForceApproachTable table(forces, n_b, n_p, approach);
     if (s.cache)
       write_cached(build.cache_file, key, table, build);
@@ -506,21 +514,22 @@ namespace wearlink::fe
   Json
   FeNormalForceLaw::report() const
   {
-    Json j                        = TabulatedNormalForceLaw::report();
-    j["table_fe_solves"]          = last_build.n_solves;
-    j["table_build_time_s"]       = last_build.seconds;
-    j["table_build_mesh_time_s"]  = last_build.mesh_seconds;
-    j["table_build_setup_time_s"] = last_build.setup_seconds;
-    j["table_build_solve_time_s"] = last_build.solve_seconds;
-    j["table_from_cache"]         = last_build.from_cache;
-    j["table_builds"]             = n_builds;
-    j["table_builds_from_cache"]  = n_cached;
-    j["table_build_time_total_s"] = total_build_seconds;
-    j["table_max_half_angle_deg"] = last_build.max_half_angle * 180 / pi;
-    j["table_repaired_points"]    = last_build.n_repaired;
-    j["table_failed_solves"]      = last_build.n_failed;
-    j["table_max_repair_m"]       = last_build.max_repair;
-    j["table_within_validity"]    = last_build.max_half_angle < pi / 2;
+    Json j                          = TabulatedNormalForceLaw::report();
+    j["table_fe_solves"]            = last_build.n_solves;
+    j["table_build_time_s"]         = last_build.seconds;
+    j["table_build_mesh_time_s"]    = last_build.mesh_seconds;
+    j["table_build_setup_time_s"]   = last_build.setup_seconds;
+    j["table_build_solve_time_s"]   = last_build.solve_seconds;
+    j["table_from_cache"]           = last_build.from_cache;
+    j["table_builds"]               = n_builds;
+    j["table_builds_from_cache"]    = n_cached;
+    j["table_build_time_total_s"]   = total_build_seconds;
+    j["table_max_half_angle_deg"]   = last_build.max_half_angle * 180 / pi;
+    j["table_repaired_points"]      = last_build.n_repaired;
+    j["table_repairs_beyond_noise"] = last_build.n_repaired_beyond_noise;
+    j["table_failed_solves"]        = last_build.n_failed;
+    j["table_max_repair_m"]         = last_build.max_repair;
+    j["table_within_validity"]      = last_build.max_half_angle < pi / 2;
     return j;
   }
 } // namespace wearlink::fe
