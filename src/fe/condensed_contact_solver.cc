@@ -25,15 +25,6 @@ namespace wearlink::fe
   {
     using blas_int = types::blas_int;
 
-    Tensor<1, 2>
-    rotate(const Tensor<1, 2> &v, const double angle)
-    {
-      const double c = std::cos(angle), s = std::sin(angle);
-      Tensor<1, 2> r;
-      r[0] = c * v[0] - s * v[1];
-      r[1] = s * v[0] + c * v[1];
-      return r;
-    }
 
     /**
      * The compliance between the positions of one window, A(q, p) = ∂g_q/∂λ_p: the pin

@@ -15,15 +15,6 @@ namespace wearlink::fe
 
   namespace
   {
-    Tensor<1, 2>
-    rotate(const Tensor<1, 2> &v, const double angle)
-    {
-      const double c = std::cos(angle), s = std::sin(angle);
-      Tensor<1, 2> r;
-      r[0] = c * v[0] - s * v[1];
-      r[1] = s * v[0] + c * v[1];
-      return r;
-    }
 
     /** Lagrange basis on p+1 equidistant points of [0, 1], evaluated at @p xi. */
     std::array<double, 3>

@@ -14,10 +14,22 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace wearlink::fe
 {
+  /** @p v rotated by @p angle [rad] (counter-clockwise). */
+  inline dealii::Tensor<1, 2>
+  rotate(const dealii::Tensor<1, 2> &v, const double angle)
+  {
+    const double         c = std::cos(angle), s = std::sin(angle);
+    dealii::Tensor<1, 2> r;
+    r[0] = c * v[0] - s * v[1];
+    r[1] = s * v[0] + c * v[1];
+    return r;
+  }
+
   /**
    * Geometry of one load state: where the pin candidates meet the bore. The arrays are
    * indexed by position p in @p candidates, the pin candidates they describe (increasing

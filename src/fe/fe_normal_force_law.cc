@@ -330,7 +330,7 @@ namespace wearlink::fe
         {
           double      &a     = approach[d * K + k];
           const double above = approach[d * K + k + 1];
-          if (a < above)
+          if (a < above && a > 0) // a pin resting in a worn pocket may overlap by nothing at all
             continue;
           double slope = 1;
           if (k + 2 < K && approach[d * K + k + 2] > above && above > 0)

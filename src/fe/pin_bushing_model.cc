@@ -30,15 +30,6 @@ namespace wearlink::fe
       return std::chrono::duration<double>(Clock::now() - start).count();
     }
 
-    Tensor<1, 2>
-    rotate(const Tensor<1, 2> &v, double angle)
-    {
-      const double c = std::cos(angle), s = std::sin(angle);
-      Tensor<1, 2> r;
-      r[0] = c * v[0] - s * v[1];
-      r[1] = s * v[0] + c * v[1];
-      return r;
-    }
 
     Tensor<1, 2>
     tensor(const std::array<double, 2> &a)

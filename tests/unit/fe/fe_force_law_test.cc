@@ -269,4 +269,13 @@ TEST(FeForceLaw, TableRepairsNoiseAtTheLowestLevelsAndFlagsMore)
   EXPECT_LT(bad[0], bad[1]);
   EXPECT_NEAR(large.max_repair, 3e-6 - bad[0], 1e-15);
   EXPECT_NE(large.first_large_repair.find("10.000000 N"), std::string::npos) << large.first_large_repair;
+
+  // No overlap at all at the lowest level (a pin resting in a worn pocket): repaired, not
+  // left to make a table whose force would not rise with the approach.
+  std::vector<double> none = {-0.0, 1.6e-7, 2.5e-7, 4e-7, 1e-7, 1.6e-7, 2.5e-7, 4e-7};
+  TableBuild          zero;
+  make_monotone(none, forces, directions, 0.25e-6, zero);
+  EXPECT_EQ(zero.n_repaired, 1u);
+  EXPECT_GT(none[0], 0.0);
+  EXPECT_LT(none[0], none[1]);
 }

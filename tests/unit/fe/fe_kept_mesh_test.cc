@@ -16,31 +16,6 @@ using namespace wearlink;
 using namespace wearlink::fe;
 using namespace wearlink::fe::testing;
 
-namespace
-{
-  /**
-   * A worn pair as the wear loop makes it: a smooth dent of depth @p bore_depth in the
-   * bore and @p pin_depth on the pin, both centred at −y (cos² over ±30°).
-   */
-  contact::JointGeometry
-  worn_pair(const double bore_depth, const double pin_depth)
-  {
-    auto                g = steel_pair();
-    const unsigned int  n = g.bore.n_points();
-    std::vector<double> bore(n), pin(n);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const double x    = std::remainder(2 * pi * k / n + pi / 2, 2 * pi) / (pi / 6);
-        const double dent = std::abs(x) < 1 ? std::pow(std::cos(0.5 * pi * x), 2) : 0.0;
-        bore[k]           = R1 + bore_depth * dent;
-        pin[k]            = R2 - pin_depth * dent;
-      }
-    g.bore = Profile::from_samples(bore, "worn bore");
-    g.pin  = Profile::from_samples(pin, "worn pin");
-    return g;
-  }
-} // namespace
-
 // 4 µm of bore wear and 2 µm of pin wear on 50 µm elements (drift 0.08 elements): the
 // kept mesh reproduces the re-meshed pair's peak pressure and pin displacement at 1 kN
 // and 10 kN to within 10 % of what the wear itself changed (the dent makes the
@@ -49,7 +24,7 @@ namespace
 // at 10 kN; the pin positions agree to 2e-9 m.
 TEST(FeKeptMesh, WornProfilesThroughTheGapsMatchARemesh)
 {
-  const auto      worn = worn_pair(4e-6, 2e-6);
+  const auto      worn = dented_pair(4e-6, 2e-6);
   const auto      s    = settings_about_minus_y(50e-6, 40);
   PinBushingModel kept(steel_pair(), s, mesh_file("kept_round"));
   PinBushingModel remeshed(worn, s, mesh_file("kept_worn"));
@@ -86,13 +61,13 @@ TEST(FeKeptMesh, PoolSharesWithinTheRemeshDepth)
   bool       reused = true;
   const auto first  = shared_model(steel_pair(), s, &reused);
   EXPECT_FALSE(reused);
-  const auto worn   = worn_pair(20e-6, 10e-6);
+  const auto worn   = dented_pair(20e-6, 10e-6);
   const auto second = shared_model(worn, s, &reused);
   EXPECT_TRUE(reused);
   EXPECT_EQ(first, second);
   EXPECT_EQ(second->current_geometry().bore.samples(), worn.bore.samples());
   EXPECT_EQ(second->meshed_geometry().bore.samples(), steel_pair().bore.samples());
-  const auto deep = shared_model(worn_pair(80e-6, 0), s, &reused);
+  const auto deep = shared_model(dented_pair(80e-6, 0), s, &reused);
   EXPECT_FALSE(reused) << "80 µm > 0.5 × 100 µm";
   auto other     = s;
   other.degree   = 2;

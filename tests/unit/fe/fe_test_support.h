@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace wearlink::fe::testing
 {
@@ -28,6 +29,28 @@ namespace wearlink::fe::testing
     g.axial_length = L;
     g.bushing      = {207e9, 0.3};
     g.pin_material = {207e9, 0.3};
+    return g;
+  }
+
+  /**
+   * A worn pair as the wear loop makes it: a smooth dent of depth @p bore_depth in the
+   * bore and @p pin_depth on the pin, both centred at −y (cos² over ±30°).
+   */
+  inline contact::JointGeometry
+  dented_pair(const double bore_depth, const double pin_depth)
+  {
+    auto                g = steel_pair();
+    const unsigned int  n = g.bore.n_points();
+    std::vector<double> bore(n), pin(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double x    = std::remainder(2 * pi * k / n + pi / 2, 2 * pi) / (pi / 6);
+        const double dent = std::abs(x) < 1 ? std::pow(std::cos(0.5 * pi * x), 2) : 0.0;
+        bore[k]           = R1 + bore_depth * dent;
+        pin[k]            = R2 - pin_depth * dent;
+      }
+    g.bore = Profile::from_samples(bore, "dented bore");
+    g.pin  = Profile::from_samples(pin, "dented pin");
     return g;
   }
 

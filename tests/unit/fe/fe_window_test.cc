@@ -25,25 +25,6 @@ using namespace wearlink::fe::testing;
 
 namespace
 {
-  /** A smooth dent (cos² over ±30° about −y) of @p bore_depth in the bore and @p pin_depth on the pin. */
-  contact::JointGeometry
-  dented_pair(const double bore_depth, const double pin_depth)
-  {
-    auto                g = steel_pair();
-    const unsigned int  n = g.bore.n_points();
-    std::vector<double> bore(n), pin(n);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const double x    = std::remainder(2 * pi * k / n + pi / 2, 2 * pi) / (pi / 6);
-        const double dent = std::abs(x) < 1 ? std::pow(std::cos(0.5 * pi * x), 2) : 0.0;
-        bore[k]           = R1 + bore_depth * dent;
-        pin[k]            = R2 - pin_depth * dent;
-      }
-    g.bore = Profile::from_samples(bore, "dented bore");
-    g.pin  = Profile::from_samples(pin, "dented pin");
-    return g;
-  }
-
   /** The elastic part A λ of the gap at window position q [m]. */
   double
   elastic_part(const ContactKinematics &kin, const ContactSolution &sol, const unsigned int q)

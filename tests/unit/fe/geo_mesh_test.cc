@@ -97,6 +97,20 @@ namespace
     return path;
   }
 
+  /** The pair's mesh specification with the given sizes (growth 0.3, a 0.1 mm layer). */
+  fe::MeshSpecification
+  specification(const double surface_size, const double max_size)
+  {
+    fe::MeshSpecification spec;
+    spec.core_radius          = core_radius;
+    spec.outer_radius         = outer_radius;
+    spec.surface_element_size = surface_size;
+    spec.max_element_size     = max_size;
+    spec.size_growth          = 0.3;
+    spec.layer_thickness      = 0.1e-3;
+    return spec;
+  }
+
   /** Per material id: mesh area, and the analytic band [low, high] it must lie in. */
   void
   check_areas(const std::string &msh)
@@ -150,15 +164,9 @@ TEST(GeoMesh, GeoFileAndApiMesherGiveTheSameMesh)
   const unsigned n_points = 72;
   const auto     geo      = count(geo_with_sizes(dir, surface_size, max_size, n_points), true);
 
-  fe::MeshSpecification spec;
-  spec.core_radius          = core_radius;
-  spec.outer_radius         = outer_radius;
-  spec.surface_element_size = surface_size;
-  spec.max_element_size     = max_size;
-  spec.size_growth          = 0.3;
-  spec.layer_thickness      = 0.1e-3;
-  spec.periodic             = false; // the general construction (SectorGeoFile… covers the periodic one)
-  const std::string msh     = dir + "/api.msh";
+  fe::MeshSpecification spec = specification(surface_size, max_size);
+  spec.periodic              = false; // the general construction (SectorGeoFile… covers the periodic one)
+  const std::string msh      = dir + "/api.msh";
   const auto        stats =
     fe::write_pin_bushing_mesh(Profile::round(bore_radius, n_points), Profile::round(pin_radius, n_points), spec, msh);
   const auto api = count(msh, false);
@@ -232,15 +240,9 @@ TEST(GeoMesh, SectorGeoFileIsWhatThePeriodicMesherCopies)
     }
   gmsh::finalize();
 
-  fe::MeshSpecification spec;
-  spec.core_radius          = core_radius;
-  spec.outer_radius         = outer_radius;
-  spec.surface_element_size = surface_size;
-  spec.max_element_size     = max_size;
-  spec.size_growth          = 0.3;
-  spec.layer_thickness      = 0.1e-3;
-  const std::string msh     = dir + "/periodic.msh";
-  const auto        stats =
+  fe::MeshSpecification spec = specification(surface_size, max_size);
+  const std::string     msh  = dir + "/periodic.msh";
+  const auto            stats =
     fe::write_pin_bushing_mesh(Profile::round(bore_radius, 360), Profile::round(pin_radius, 360), spec, msh);
   const auto sectors = [&](const double R) {
     return std::lround(2 * M_PI * R / (fe::periodic_sector_elements * surface_size));
