@@ -11,7 +11,7 @@ shift || true
 
 packages="cmake make g++ libdeal.ii-dev libeigen3-dev libmetis-dev gmsh libgmsh-dev
           googletest libgtest-dev libsuitesparse-dev gnuplot-nox openmpi-bin python3-matplotlib
-          nlohmann-json3-dev clang-format libopenblas0-serial"
+          nlohmann-json3-dev zlib1g-dev clang-format libopenblas0-serial"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -35,7 +35,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 case "$mode" in
   run)
     echo "== running the default scene (params/nine_bar_clearance.prm) into output/nine_bar_clearance"
-    ./build/wearlink run params/nine_bar_clearance.prm --output output/nine_bar_clearance
+    ./build/wearlink run params/nine_bar_clearance.prm --output output/nine_bar_clearance --overwrite
     ;;
   test)
     echo "== running the test suite"

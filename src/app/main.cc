@@ -5,6 +5,7 @@
 // bug and exits with 1 after printing what deal.II knows about it.
 #include "app/commands.h"
 #include "base/exceptions.h"
+#include "base/interrupt.h"
 #include "register_all.h"
 
 #include <deal.II/base/exceptions.h>
@@ -39,6 +40,7 @@ main(int argc, char **argv)
   try
     {
       dealii::deal_II_exceptions::disable_abort_on_exception();
+      wearlink::install_interrupt_handlers(); // SIGINT/SIGTERM: exit 128 + signal, temporaries removed
       wearlink::register_all();
 
       if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help")
@@ -81,6 +83,16 @@ main(int argc, char **argv)
     {
       std::cerr << "numerical failure: " << e.message() << '\n';
       return 3;
+    }
+  catch (const wearlink::IoError &e)
+    {
+      std::cerr << "error: " << e.message() << '\n';
+      return 4;
+    }
+  catch (const wearlink::Interrupted &e)
+    {
+      std::cerr << "interrupted: " << e.message() << '\n';
+      return 128 + e.signal_number();
     }
   catch (const dealii::ExceptionBase &e)
     {

@@ -2,10 +2,21 @@
 // Outputs are never half-written: every file wearlink writes goes to a temporary name
 // in the same directory and is renamed into place only when complete (rename is atomic
 // on POSIX file systems). A writer destroyed without commit() removes its temporary.
+// Before the rename the file's data is flushed to the disk (fsync), after it the
+// directory's entry, so that a machine that loses power keeps the old file or the new
+// one, never an empty one. A failed write, close or fsync (disk full, quota, I/O error)
+// is an IoError naming the file; the previous file of that name is left as it was.
+// Temporary names are ".<name>.partial-<pid><ext>". After SIGINT or SIGTERM nothing new
+// is moved into place (commit() removes its temporary and throws Interrupted); the
+// handler of a second signal removes the temporaries at once (base/interrupt.h), and
+// remove_stale_partials() removes those of a run that was killed outright.
 #pragma once
+
+#include "base/interrupt.h"
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace wearlink
 {
@@ -25,7 +36,10 @@ namespace wearlink
       return out;
     }
 
-    /** Flush, check for write errors, rename into place. */
+    /**
+     * Flush, check for write errors, fsync, rename into place, fsync the directory.
+     * IoError naming the file if any step fails (the temporary is removed).
+     */
     void
     commit();
 
@@ -37,10 +51,11 @@ namespace wearlink
     }
 
   private:
-    std::string   final_path;
-    std::string   tmp_path;
-    std::ofstream out;
-    bool          committed = false;
+    std::string         final_path;
+    std::string         tmp_path;
+    RegisteredTemporary registration;
+    std::ofstream       out;
+    bool                committed = false;
   };
 
   /** Write @p content to @p path atomically. */
@@ -49,7 +64,9 @@ namespace wearlink
 
   /**
    * Rename @p tmp (written by a third-party writer) to @p path, or remove it and throw
-   * if @p tmp does not exist.
+   * if @p tmp does not exist. After SIGINT or SIGTERM nothing is moved into place (the
+   * writer may have been stopped by the same signal): @p tmp is removed and Interrupted
+   * thrown.
    */
   void
   commit_external_file(const std::string &tmp, const std::string &path);
@@ -57,6 +74,18 @@ namespace wearlink
   /** A temporary name next to @p path, unique to this process. */
   std::string
   temporary_name_for(const std::string &path);
+
+  /** True if @p file_name (no directory) is a temporary name of temporary_name_for(). */
+  bool
+  is_temporary_name(const std::string &file_name);
+
+  /**
+   * Remove the temporary files in @p dir and its sub-directories (one level down) whose
+   * writing process no longer runs (a run killed with SIGKILL, or by a power cut);
+   * those of running processes are kept. Returns the paths removed.
+   */
+  std::vector<std::string>
+  remove_stale_partials(const std::string &dir);
 
   /**
    * A new directory under the system's temporary directory, named

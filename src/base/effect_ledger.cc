@@ -93,6 +93,13 @@ namespace wearlink
   }
 
   void
+  EffectLedger::restore(const std::map<std::string, std::map<std::string, long>> &c)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    counts = c;
+  }
+
+  void
   EffectLedger::reset()
   {
     std::lock_guard<std::mutex> lock(mutex);

@@ -42,6 +42,13 @@ namespace wearlink
     std::map<std::string, std::map<std::string, long>>
     snapshot() const;
 
+    /**
+     * Replace every count by @p counts: a resumed wear run continues the ledger of its
+     * checkpoint (which counted the set-up of the scene and the iterations before it).
+     */
+    void
+    restore(const std::map<std::string, std::map<std::string, long>> &counts);
+
     /** Forget everything (tests, and each member of a sweep). */
     void
     reset();

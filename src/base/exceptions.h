@@ -9,12 +9,17 @@
 //    embedding, constant, no neighbour beyond the Theiler window). Where the series came
 //    from the user, the caller turns it into an InputError naming the file or the scene
 //    entry; where a comparison asked, the missing value is reported with this reason.
+//  - IoError: the environment failed a valid request: an output file or directory that
+//    cannot be created or written (permission, disk full, a rename that fails). Exit 4.
+//  - Interrupted: SIGINT or SIGTERM arrived (base/interrupt.h); the program removes its
+//    temporary files on the way out and exits with 128 + the signal's number.
 // Our own bugs are caught by deal.II's Assert (debug builds only).
 #pragma once
 
 #include <deal.II/base/exceptions.h>
 
 #include <string>
+#include <utility>
 
 namespace wearlink
 {
@@ -63,5 +68,32 @@ namespace wearlink
   {
   public:
     using Error::Error;
+  };
+
+  /** The environment failed a valid request (cannot write a file, disk full). Exit status 4. */
+  class IoError : public Error
+  {
+  public:
+    using Error::Error;
+  };
+
+  /** The run was stopped by a signal (SIGINT, SIGTERM). Exit status 128 + signal. */
+  class Interrupted : public Error
+  {
+  public:
+    Interrupted(std::string message, const int signal_number)
+      : Error(std::move(message))
+      , number(signal_number)
+    {
+    }
+
+    int
+    signal_number() const
+    {
+      return number;
+    }
+
+  private:
+    int number;
   };
 } // namespace wearlink

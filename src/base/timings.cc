@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "base/timings.h"
 
+#include <utility>
+
 namespace wearlink
 {
   PhaseTimings &
@@ -34,5 +36,31 @@ namespace wearlink
     t["total"]                 = total;
     t["wear bookkeeping"]      = wear_bookkeeping;
     return t;
+  }
+
+  bool
+  PhaseTimings::from_json(const Json &j, PhaseTimings &out)
+  {
+    PhaseTimings                            t;
+    const std::pair<const char *, double *> fields[] = {{"before/after dynamics", &t.before_after_dynamics},
+                                                        {"contact-law tables", &t.contact_law_tables},
+                                                        {"dynamics", &t.dynamics},
+                                                        {"fe compliance", &t.fe_compliance},
+                                                        {"fe set-up", &t.fe_setup},
+                                                        {"meshing", &t.meshing},
+                                                        {"outputs", &t.outputs},
+                                                        {"pressure evaluation", &t.pressure_evaluation},
+                                                        {"total", &t.total},
+                                                        {"wear bookkeeping", &t.wear_bookkeeping}};
+    if (!j.is_object())
+      return false;
+    for (const auto &[key, value] : fields)
+      {
+        if (!j.contains(key) || !j.at(key).is_number())
+          return false;
+        *value = j.at(key).get<double>();
+      }
+    out = t;
+    return true;
   }
 } // namespace wearlink

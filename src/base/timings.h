@@ -59,5 +59,12 @@ namespace wearlink
     /** As summary.json's `wear_timing_s` (keys as in the README). */
     Json
     to_json() const;
+
+    /**
+     * From to_json()'s object; false (and @p out untouched) if a key is missing or not a
+     * number.
+     */
+    static bool
+    from_json(const Json &j, PhaseTimings &out);
   };
 } // namespace wearlink

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "wear/wear_loop.h"
 
+#include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "base/interrupt.h"
 #include "base/numbers.h"
 
 #include <algorithm>
@@ -56,11 +58,19 @@ namespace wearlink::wear
   }
 
   void
-  WearLoop::start(const double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0, const std::string &fingerprint)
+  WearLoop::start(const double                              t0,
+                  const Eigen::VectorXd                    &q0,
+                  const Eigen::VectorXd                    &v0,
+                  const std::string                        &fingerprint,
+                  const std::map<std::string, std::string> &scene)
   {
-    const auto n           = q0.size();
-    st                     = WearState();
-    st.fingerprint         = fingerprint;
+    const auto n   = q0.size();
+    st             = WearState();
+    st.fingerprint = fingerprint;
+    st.scene       = scene;
+    own_timings    = PhaseTimings();
+    earlier_total  = 0;
+    process_time.restart();
     st.time                = t0;
     st.state               = Eigen::VectorXd::Zero(2 * n + mbs::MechanismOde::n_quadratures);
     st.state.head(n)       = q0;
@@ -82,11 +92,20 @@ namespace wearlink::wear
   {
     bool match = state.joints.size() == wearing.size() && state.modes.size() == 2 * clearance_joints.size();
     for (unsigned int i = 0; match && i < wearing.size(); ++i)
-      match = state.joints[i].name == wearing[i].joint->name() &&
-              state.joints[i].bore.n_points() == wearing[i].joint->get_description().geometry.bore.n_points();
+      {
+        const auto &g = wearing[i].joint->get_description().geometry;
+        match         = state.joints[i].name == wearing[i].joint->name() &&
+                state.joints[i].bore.n_points() == g.bore.n_points() &&
+                state.joints[i].pin.n_points() == g.pin.n_points();
+      }
     if (!match)
       throw InputError("Cannot resume from '" + where + "': its joints do not match the scene's wearing joints.");
-    st = std::move(state);
+    st                = std::move(state);
+    own_timings       = st.timings;
+    earlier_total     = st.timings.total;
+    own_timings.total = 0;
+    process_time.restart();
+    EffectLedger::instance().restore(st.ledger);
     // A pressure model that keeps its mesh across small updates (fe, 'Remesh depth')
     // meshes the geometry it had meshed before, then takes the current profiles.
     for (unsigned int i = 0; i < wearing.size(); ++i)
@@ -109,6 +128,7 @@ namespace wearlink::wear
   void
   WearLoop::iterate(const std::vector<mbs::StepObserver *> &extra_observers)
   {
+    throw_if_interrupted();
     const double t_start    = st.time;
     const auto   loads      = record_loads(extra_observers, t_start + settings.cycles_per_iteration * period);
     const auto   increments = archard_increments(*loads, t_start);
@@ -122,6 +142,8 @@ namespace wearlink::wear
     ++st.iterations_done;
     own_timings.wear_bookkeeping += bookkeeping.seconds();
     update_clearance_model();
+    if (iteration_outputs)
+      iteration_outputs();
     bookkeeping.restart();
     checkpoint();
     own_timings.wear_bookkeeping += bookkeeping.seconds();
@@ -247,8 +269,12 @@ namespace wearlink::wear
   }
 
   void
-  WearLoop::checkpoint() const
+  WearLoop::checkpoint()
   {
+    EffectLedger::instance().add_calls("wear iterations", 1);
+    st.ledger        = EffectLedger::instance().snapshot();
+    st.timings       = timings();
+    st.timings.total = earlier_total + process_time.seconds();
     if (!checkpoint_path.empty())
       st.write(checkpoint_path);
   }

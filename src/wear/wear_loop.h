@@ -13,12 +13,16 @@
 //   5. update_clearance_model rebuild the clearance joints' gap from the new profiles and
 //                             give the pressure models the new geometry (the fe model
 //                             re-meshes only beyond its 'Remesh depth');
-//   6. checkpoint             write the state (wear/wear_state.h), if a path is set.
+//   6. checkpoint             write the iteration's files (set_iteration_outputs), count
+//                             the iteration in the effect ledger, keep the ledger
+//                             and the phase timings in the state, and write the state
+//                             (wear/wear_state.h), if a path is set.
 // The loop knows the mechanism only through the joints it wears and a function that
 // advances the dynamics (the workflow's run of the scene), so it sits below the scene
 // reader and the workflows. A resumed loop starts from a checkpoint: everything the next
 // iteration depends on is in it, so it ends with the same profiles as an uninterrupted
-// loop.
+// loop; it also continues the checkpoint's effect ledger and timings, so that the
+// resumed run reports the whole run, not only its own part.
 #pragma once
 
 #include "base/timings.h"
@@ -32,6 +36,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -83,23 +88,47 @@ namespace wearlink::wear
     /**
      * Start a fresh loop at time @p t0 from the assembled positions @p q0 and velocities
      * @p v0 (n_coordinates each), with the joints' current profiles as the unworn ones.
-     * @p fingerprint identifies the scene in the checkpoints.
+     * @p fingerprint and @p scene identify the scene in the checkpoints.
      */
     void
-    start(double t0, const Eigen::VectorXd &q0, const Eigen::VectorXd &v0, const std::string &fingerprint);
+    start(double                                    t0,
+          const Eigen::VectorXd                    &q0,
+          const Eigen::VectorXd                    &v0,
+          const std::string                        &fingerprint,
+          const std::map<std::string, std::string> &scene = {});
 
     /**
-     * Continue from @p state (read from a checkpoint). InputError naming @p where if its
-     * joints or sizes do not match this loop's.
+     * Continue from @p state (read from a checkpoint and checked against the scene with
+     * WearState::check_shape), with its effect ledger (which replaces this process's:
+     * it counted the set-up of the same scene) and its timings. InputError naming
+     * @p where if its joints or sizes do not match this loop's.
      */
     void
     resume(WearState state, const std::string &where);
+
+    /** Wall time of the run's earlier processes, up to the checkpoint resumed [s]. */
+    double
+    earlier_wall_time() const
+    {
+      return earlier_total;
+    }
 
     /** Checkpoint after every iteration into @p path ("" : none). */
     void
     set_checkpoint(const std::string &path)
     {
       checkpoint_path = path;
+    }
+
+    /**
+     * Called at the end of every iteration, before its checkpoint: the workflow writes
+     * the iteration's files there, so that a checkpoint never stands for an iteration
+     * whose files are missing (a run killed in between redoes the iteration).
+     */
+    void
+    set_iteration_outputs(std::function<void()> write)
+    {
+      iteration_outputs = std::move(write);
     }
 
     /** True when the iterations are done or the adaptive target is reached. */
@@ -159,7 +188,7 @@ namespace wearlink::wear
 
     /** Step 6. */
     void
-    checkpoint() const;
+    checkpoint();
 
     /** The contact modes of the clearance joints into / out of the state. */
     void
@@ -178,7 +207,10 @@ namespace wearlink::wear
     AdvanceDynamics                        advance;
     WearState                              st;
     std::string                            checkpoint_path;
+    std::function<void()>                  iteration_outputs; ///< see set_iteration_outputs()
     PhaseTimings                           own_timings;
-    std::vector<contact::ContactLoad>      peaks; ///< see peak_loads()
+    double                                 earlier_total = 0; ///< see earlier_wall_time()
+    Stopwatch                              process_time;      ///< since start() or resume()
+    std::vector<contact::ContactLoad>      peaks;             ///< see peak_loads()
   };
 } // namespace wearlink::wear

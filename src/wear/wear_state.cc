@@ -6,15 +6,20 @@
 #include "base/json.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <zlib.h>
 
 namespace wearlink::wear
 {
   namespace
   {
     constexpr const char *format_name    = "wearlink wear checkpoint";
-    constexpr int         format_version = 2;
+    constexpr int         format_version = 3;
+    constexpr const char *payload_key    = "\"payload\": ";
+    constexpr const char *refused =
+      " Resume is refused; start the run afresh (`--overwrite`) or restore an intact copy of the checkpoint.";
 
     Json
     to_json(const std::vector<double> &v)
@@ -73,7 +78,13 @@ namespace wearlink::wear
       fail(const std::string &what) const
       {
         throw InputError("The checkpoint '" + path + "' is malformed (" + what +
-                         "); it was not written by this wearlink or was edited.");
+                         "); it was not written by this wearlink or was edited." + refused);
+      }
+
+      [[noreturn]] void
+      damaged(const std::string &what) const
+      {
+        throw InputError("The checkpoint '" + path + "' is damaged: " + what + "." + refused);
       }
 
       const Json &
@@ -138,8 +149,17 @@ namespace wearlink::wear
       std::string path;
     };
 
-    Json
-    parse_checkpoint(const std::string &path)
+    std::string
+    crc32_of(const std::string &bytes)
+    {
+      const auto *data = reinterpret_cast<const Bytef *>(bytes.data());
+      char        hex[16];
+      std::snprintf(hex, sizeof(hex), "%08lx", ::crc32_z(::crc32_z(0L, Z_NULL, 0), data, bytes.size()));
+      return hex;
+    }
+
+    std::string
+    file_text(const std::string &path)
     {
       std::ifstream in(path, std::ios::binary);
       if (!in)
@@ -148,13 +168,75 @@ namespace wearlink::wear
                          "directory, and did it finish at least one wear iteration?).");
       std::stringstream text;
       text << in.rdbuf();
+      return text.str();
+    }
+
+    /** A file without the header line: an older format (named), or not a checkpoint. */
+    [[noreturn]] void
+    refuse_headerless(const Reader &r, const std::string &text)
+    {
+      Json j;
       try
         {
-          return Json::parse(text.str());
+          j = Json::parse(text);
+        }
+      catch (const Json::parse_error &)
+        {
+          r.fail("no header line: it is truncated or not a wear checkpoint");
+        }
+      if (j.is_object() && j.contains("version") && j.contains("format") && j.at("format") == format_name)
+        r.fail("format version " + j.at("version").dump() + ", this wearlink reads version " +
+               std::to_string(format_version));
+      r.fail("not a wear checkpoint");
+    }
+
+    /** The header's checks, then the payload checked against its length and checksum. */
+    Json
+    parse_checkpoint(const std::string &path)
+    {
+      const std::string text = file_text(path);
+      const Reader      r(path);
+      const auto        nl = text.find('\n');
+      const std::string key(payload_key);
+      if (nl == std::string::npos || nl == 0 || text[nl - 1] != ',' || text.compare(nl + 1, key.size(), key) != 0)
+        refuse_headerless(r, text);
+      Json header;
+      try
+        {
+          header = Json::parse(text.substr(0, nl - 1) + "}");
+        }
+      catch (const Json::parse_error &)
+        {
+          r.damaged("its header line is not valid JSON");
+        }
+      if (r.text(header, "format") != format_name)
+        r.fail("not a wear checkpoint");
+      if (r.number(header, "version") != format_version)
+        r.fail("format version " + r.entry(header, "version", "").dump() + ", this wearlink reads version " +
+               std::to_string(format_version));
+      const double      bytes   = r.number(header, "payload_bytes");
+      const std::string crc     = r.text(header, "payload_crc32");
+      const std::string payload = text.substr(nl + 1 + key.size());
+      if (!(bytes >= 0 && bytes == std::floor(bytes)))
+        r.damaged("its header's payload_bytes is not a count");
+      const auto n = static_cast<std::size_t>(bytes);
+      if (payload.size() < n + 2)
+        r.damaged("it is truncated: " + std::to_string(payload.size() < 2 ? 0 : payload.size() - 2) + " of the " +
+                  std::to_string(n) + " bytes its header announces (a full disk, or a copy that did not finish)");
+      if (payload.size() != n + 2 || payload.compare(n, 2, "}\n") != 0)
+        r.damaged("it does not end where its header says (" + std::to_string(payload.size() - 2) + " bytes, " +
+                  std::to_string(n) + " announced)");
+      const std::string body = payload.substr(0, n);
+      if (crc32_of(body) != crc)
+        r.damaged("its checksum does not match its content (CRC-32 " + crc32_of(body) + ", the header says " + crc +
+                  "): a byte was changed after it was written");
+      try
+        {
+          return Json::parse(body);
         }
       catch (const Json::parse_error &e)
         {
-          Reader(path).fail(std::string("not valid JSON: ") + e.what());
+          r.fail(std::string("not valid JSON: ") + e.what());
         }
     }
 
@@ -194,24 +276,116 @@ namespace wearlink::wear
     }
   } // namespace
 
+  namespace
+  {
+    Json
+    ledger_to_json(const std::map<std::string, std::map<std::string, long>> &ledger)
+    {
+      Json j = Json::object();
+      for (const auto &[category, counts] : ledger)
+        {
+          Json c = Json::object();
+          for (const auto &[key, n] : counts)
+            c[key] = n;
+          j[category] = c;
+        }
+      return j;
+    }
+
+    std::map<std::string, std::map<std::string, long>>
+    read_ledger(const Reader &r, const Json &j)
+    {
+      std::map<std::string, std::map<std::string, long>> out;
+      const Json                                        &ledger = r.entry(j, "ledger", "");
+      if (!ledger.is_object())
+        r.fail("'ledger' is not an object");
+      for (const auto &[category, counts] : ledger.items())
+        {
+          if (!counts.is_object())
+            r.fail("'ledger." + category + "' is not an object");
+          for (const auto &[key, n] : counts.items())
+            {
+              if (!n.is_number_integer())
+                r.fail("'ledger." + category + "." + key + "' is not a count");
+              out[category][key] = n.get<long>();
+            }
+        }
+      return out;
+    }
+
+    std::map<std::string, std::string>
+    read_scene_entries(const Reader &r, const Json &j)
+    {
+      std::map<std::string, std::string> out;
+      const Json                        &scene = r.entry(j, "scene", "");
+      if (!scene.is_object())
+        r.fail("'scene' is not an object");
+      for (const auto &[key, value] : scene.items())
+        out[key] = r.text(scene, key, "scene.");
+      return out;
+    }
+
+    /** The sizes inside the state agree with each other (before anything is used). */
+    void
+    check_consistency(const Reader &r, const WearState &s)
+    {
+      const auto n = std::to_string(s.iterations_done);
+      if (s.factors.size() != s.iterations_done)
+        r.fail("'factors' has " + std::to_string(s.factors.size()) + " entries for " + n + " iterations");
+      if (s.modes.size() % 2 != 0)
+        r.fail("'modes' has an odd number of entries");
+      if (!std::isfinite(s.time) || !std::isfinite(s.revolutions) || s.revolutions < 0)
+        r.fail("'time_s' or 'revolutions' is not a finite time or count");
+      for (std::size_t i = 0; i < s.joints.size(); ++i)
+        {
+          const auto       &js = s.joints[i];
+          const std::string at = "joints[" + std::to_string(i) + "].";
+          const auto        nb = js.initial_bore.n_points(), np = js.initial_pin.n_points();
+          if (js.bore.n_points() != nb || js.meshed_bore.n_points() != nb)
+            r.fail("'" + at + "bore' and 'meshed_bore' must have as many samples as 'initial_bore' (" +
+                   std::to_string(nb) + ")");
+          if (js.pin.n_points() != np || js.meshed_pin.n_points() != np)
+            r.fail("'" + at + "pin' and 'meshed_pin' must have as many samples as 'initial_pin' (" +
+                   std::to_string(np) + ")");
+          if (js.history.size() != s.iterations_done)
+            r.fail("'" + at + "history' has " + std::to_string(js.history.size()) + " records for " + n +
+                   " iterations");
+          for (std::size_t k = 0; k < js.history.size(); ++k)
+            if (js.history[k].depth_pin.size() != np || js.history[k].depth_bore.size() != nb)
+              r.fail("'" + at + "history[" + std::to_string(k) + "]' has depths of another size than the profiles");
+        }
+    }
+  } // namespace
+
   void
   WearState::write(const std::string &path) const
   {
     Json j           = Json::object();
-    j["format"]      = format_name;
-    j["version"]     = format_version;
     j["fingerprint"] = fingerprint;
+    j["scene"]       = Json::object();
+    for (const auto &[key, value] : scene)
+      j["scene"][key] = value;
     j["iterations"]  = iterations_done;
     j["revolutions"] = revolutions;
     j["time_s"]      = time;
     j["state"]       = to_json(std::vector<double>(state.data(), state.data() + state.size()));
     j["factors"]     = to_json(factors);
     j["modes"]       = to_json(modes);
+    j["ledger"]      = ledger_to_json(ledger);
+    j["timings_s"]   = timings.to_json();
     j["joints"]      = Json::array();
     for (const auto &js : joints)
       j["joints"].push_back(to_json(js));
     // Doubles are written in their shortest form that reads back to the same bits.
-    write_file_atomically(path, j.dump(1) + "\n");
+    const std::string payload = j.dump(1);
+    Json              header  = Json::object();
+    header["format"]          = format_name;
+    header["version"]         = format_version;
+    header["payload_bytes"]   = payload.size();
+    header["payload_crc32"]   = crc32_of(payload);
+    std::string text          = header.dump();
+    text.pop_back(); // the closing brace: the payload is the last entry
+    write_file_atomically(path, text + ",\n" + payload_key + payload + "}\n");
   }
 
   WearState
@@ -219,13 +393,9 @@ namespace wearlink::wear
   {
     const Json   j = parse_checkpoint(path);
     const Reader r(path);
-    if (r.text(j, "format") != format_name)
-      r.fail("not a wear checkpoint");
-    if (r.number(j, "version") != format_version)
-      r.fail("format version " + r.entry(j, "version", "").dump() + ", this wearlink reads version " +
-             std::to_string(format_version));
-    WearState s;
+    WearState    s;
     s.fingerprint       = r.text(j, "fingerprint");
+    s.scene             = read_scene_entries(r, j);
     const double n_iter = r.number(j, "iterations");
     if (!(n_iter >= 0 && n_iter <= 1e9 && n_iter == std::floor(n_iter)))
       r.fail("'iterations' is not a count");
@@ -236,9 +406,42 @@ namespace wearlink::wear
     s.state            = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
     s.factors          = r.numbers(j, "factors");
     s.modes            = r.numbers(j, "modes");
+    s.ledger           = read_ledger(r, j);
     const Json &joints = r.list(j, "joints");
     for (std::size_t i = 0; i < joints.size(); ++i)
       s.joints.push_back(read_joint(r, joints[i], "joints[" + std::to_string(i) + "]."));
+    if (!PhaseTimings::from_json(r.entry(j, "timings_s", ""), s.timings))
+      r.fail("'timings_s' is not the phases' wall times");
+    check_consistency(r, s);
     return s;
+  }
+
+  void
+  WearState::check_shape(const StateShape &shape, const std::string &where) const
+  {
+    const std::string cannot = "Cannot resume from '" + where + "': ";
+    const std::string fix    = " Resume with the scene the run was started with, or start afresh (`--overwrite`).";
+    if (joints.size() != shape.joints.size())
+      throw InputError(cannot + "it holds " + std::to_string(joints.size()) + " wearing joints, the scene has " +
+                       std::to_string(shape.joints.size()) + "." + fix);
+    for (std::size_t i = 0; i < joints.size(); ++i)
+      {
+        const auto &have = joints[i];
+        const auto &want = shape.joints[i];
+        if (have.name != want.name)
+          throw InputError(cannot + "its wearing joint " + std::to_string(i + 1) + " is '" + have.name +
+                           "', the scene's is '" + want.name + "'." + fix);
+        if (have.bore.n_points() != want.n_bore || have.pin.n_points() != want.n_pin)
+          throw InputError(cannot + "the profiles of joint " + have.name + " have " +
+                           std::to_string(have.bore.n_points()) + " (bore) and " + std::to_string(have.pin.n_points()) +
+                           " (pin) samples, the scene's " + std::to_string(want.n_bore) + " and " +
+                           std::to_string(want.n_pin) + "." + fix);
+      }
+    if (static_cast<std::size_t>(state.size()) != shape.n_state)
+      throw InputError(cannot + "its state has " + std::to_string(state.size()) +
+                       " entries, the mechanism of the scene needs " + std::to_string(shape.n_state) + "." + fix);
+    if (modes.size() != shape.n_modes)
+      throw InputError(cannot + "it holds contact modes of " + std::to_string(modes.size() / 2) +
+                       " clearance joints, the scene has " + std::to_string(shape.n_modes / 2) + "." + fix);
   }
 } // namespace wearlink::wear

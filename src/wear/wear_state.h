@@ -4,17 +4,29 @@
 // uninterrupted run would: the mechanism state [q | v | z] and time at the end of the
 // iteration, each joint's contact mode and captured impact velocity, the worn profiles
 // (and those the fe model was last meshed with), the cumulative volumes and the
-// per-iteration history used by the outputs. The checkpoint is JSON (format name and
-// version first); doubles are written in the shortest form that reads back to the same
-// bits (exact round trip), and the file is replaced atomically, so a run killed at any
-// moment leaves the previous complete checkpoint. Reading checks every entry's type;
-// a damaged file is an InputError naming the file and the entry.
+// per-iteration history used by the outputs; and, so that a resumed run reports the
+// whole run, the effect ledger and the phase timings up to the checkpoint.
+//
+// The checkpoint (format version 3) is JSON in two parts: a header line
+//   {"format": "wearlink wear checkpoint", "version": 3, "payload_bytes": N,
+//    "payload_crc32": "89abcdef",
+// and the payload, `"payload": {...}}`, whose N bytes carry zlib's CRC-32. Reading
+// checks, before anything is used: the header, the version, the length (a truncated
+// file), the checksum (a changed byte), every entry's type, and that the sizes agree
+// with each other (iterations, factors, history, profiles, depths); check_shape()
+// then checks them against the scene of the resuming run. Any failure is an
+// InputError naming the file and what is wrong; nothing of a refused checkpoint is
+// used. Doubles are written in the shortest form that reads back to the same bits
+// (exact round trip), and the file is replaced atomically (base/atomic_file.h), so a
+// run killed at any moment leaves the previous complete checkpoint.
 #pragma once
 
 #include "base/profile.h"
+#include "base/timings.h"
 
 #include <Eigen/Core>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -45,24 +57,53 @@ namespace wearlink::wear
     std::vector<IterationRecord> history;  ///< one per finished iteration
   };
 
+  /** What the scene of a resuming run needs of a state (WearState::check_shape). */
+  struct StateShape
+  {
+    std::size_t n_state = 0; ///< [q | v | z]
+    std::size_t n_modes = 0; ///< 2 per clearance joint
+    struct Joint
+    {
+      std::string  name;
+      unsigned int n_bore = 0, n_pin = 0; ///< profile samples
+    };
+    std::vector<Joint> joints; ///< the wearing joints, in order
+  };
+
   struct WearState
   {
-    std::string         fingerprint; ///< of the scene (resume refuses another scene)
-    unsigned int        iterations_done = 0;
-    double              revolutions     = 0; ///< mechanism revolutions represented so far
-    double              time            = 0; ///< simulated time at the end of the last iteration [s]
-    Eigen::VectorXd     state;               ///< [q | v | z] there
-    std::vector<double> factors;             ///< extrapolation factor of each iteration
+    std::string fingerprint; ///< of the scene (resume refuses another scene)
+    /** The scene's entries ("Section/Entry" → value) that a resume must find unchanged. */
+    std::map<std::string, std::string> scene;
+    unsigned int                       iterations_done = 0;
+    double                             revolutions     = 0; ///< mechanism revolutions represented so far
+    double                             time            = 0; ///< simulated time at the end of the last iteration [s]
+    Eigen::VectorXd                    state;               ///< [q | v | z] there
+    std::vector<double>                factors;             ///< extrapolation factor of each iteration
     /** Per clearance joint of the scene (worn or not): contact mode (0/1), δ̇⁻ [m/s]. */
     std::vector<double>         modes;
     std::vector<JointWearState> joints;
+    /** The effect ledger at the checkpoint (base/effect_ledger.h), all processes of the run. */
+    std::map<std::string, std::map<std::string, long>> ledger;
+    /** Wall time of the run's phases up to the checkpoint [s], all processes of the run. */
+    PhaseTimings timings;
 
     /** Write to @p path atomically. */
     void
     write(const std::string &path) const;
 
-    /** Read from @p path; InputError naming the file if it is missing or malformed. */
+    /**
+     * Read from @p path; InputError naming the file if it is missing, truncated,
+     * damaged (checksum), of another format version, malformed, or inconsistent.
+     */
     static WearState
     read(const std::string &path);
+
+    /**
+     * InputError naming @p where and the first size that differs from @p shape (the
+     * resuming scene's), with both values.
+     */
+    void
+    check_shape(const StateShape &shape, const std::string &where) const;
   };
 } // namespace wearlink::wear

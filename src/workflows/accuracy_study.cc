@@ -238,6 +238,10 @@ namespace wearlink::workflows
             m.quantities[scene.clearance_joints[k]->name() + " F_peak"] = peaks.force[k];
           m.quantities["a_peak"] = peaks.acceleration;
         }
+      catch (const Interrupted &) // SIGINT/SIGTERM stops the study, not this row
+        {
+          throw;
+        }
       catch (const Error &e)
         {
           m.ok      = false;

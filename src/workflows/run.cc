@@ -4,6 +4,7 @@
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "base/interrupt.h"
 #include "mbs/assembly.h"
 #include "workflows/analyses.h"
 
@@ -92,6 +93,7 @@ namespace wearlink::workflows
       void
       on_step(const mbs::StepContext &c) override
       {
+        throw_if_interrupted(); // SIGINT/SIGTERM: stop here, unwinding removes the temporaries
         ++steps;
         record(c.t, c.y, c.dydt, c.t - c.t_previous);
         if (csv)

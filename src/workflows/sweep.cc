@@ -168,6 +168,10 @@ namespace wearlink::workflows
             m.times  = section.section().points.time;
             m.points = section.section().points.values.front();
           }
+        catch (const Interrupted &) // SIGINT/SIGTERM stops the sweep, not this member
+          {
+            throw;
+          }
         catch (const std::exception &e)
           {
             m.status  = "failed";

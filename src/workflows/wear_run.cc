@@ -2,7 +2,6 @@
 #include "workflows/wear_run.h"
 
 #include "base/atomic_file.h"
-#include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "io/analyses_parameters.h"
 #include "io/wear_outputs.h"
@@ -10,6 +9,7 @@
 #include "workflows/analyses.h"
 #include "workflows/dynamics_comparison.h"
 #include "workflows/run.h"
+#include "workflows/scene_identity.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,26 +23,6 @@ namespace wearlink::workflows
 {
   namespace
   {
-    /**
-     * The scene's identity for resuming: its effective parameters without the entries
-     * that say how far to go (so a run can be resumed to more iterations).
-     */
-    std::string
-    fingerprint(const io::Scene &scene)
-    {
-      std::ostringstream os;
-      scene.parameters->print_parameters(os, dealii::ParameterHandler::ShortText);
-      std::istringstream in(os.str());
-      std::string        line, kept;
-      while (std::getline(in, line))
-        if (line.find("Number of iterations") == std::string::npos &&
-            line.find("Target revolutions") == std::string::npos)
-          kept += line + '\n';
-      std::ostringstream h;
-      h << std::hex << std::hash<std::string>()(kept) << '-' << kept.size();
-      return h.str();
-    }
-
     /**
      * The two-trajectory exponent (workflows/shadow_trajectory.h) of the fresh and of the worn
      * mechanism: the scene read again with its overrides plus the analysis, duration and
@@ -193,6 +173,38 @@ namespace wearlink::workflows
       };
     }
 
+    /**
+     * The checkpoint of a resumed run, refused (InputError naming what differs, with both
+     * values) unless it was written for this scene and fits its sizes.
+     */
+    wear::WearState
+    checked_checkpoint(const io::Scene &scene, const std::string &checkpoint)
+    {
+      auto       st      = wear::WearState::read(checkpoint);
+      const auto entries = scene_entries(scene);
+      if (st.fingerprint != fingerprint(entries) || st.scene != entries)
+        {
+          const std::string differences = scene_differences(st.scene, entries);
+          throw InputError("Cannot resume from '" + checkpoint + "': it was written for another scene than " +
+                           scene.file +
+                           " with these settings: " + (differences.empty() ? "its fingerprint differs" : differences) +
+                           ". Resume with the scene and --set options the run was started with (only Output/*, "
+                           "Wear/Number of iterations, Wear/Target revolutions, Wear/FE output and Wear/Profile "
+                           "magnification may change), or start afresh (`--overwrite`).");
+        }
+      wear::StateShape shape;
+      const auto       n = scene.mechanism->n_coordinates();
+      shape.n_state      = 2 * n + mbs::MechanismOde::n_quadratures;
+      shape.n_modes      = 2 * scene.clearance_joints.size();
+      for (const auto &w : scene.wear)
+        for (const auto *j : scene.clearance_joints)
+          if (j->name() == w->joint)
+            shape.joints.push_back(
+              {j->name(), j->get_description().geometry.bore.n_points(), j->get_description().geometry.pin.n_points()});
+      st.check_shape(shape, checkpoint);
+      return st;
+    }
+
     /** Start @p loop from the scene's assembly, or resume it from its checkpoint. */
     void
     start_or_resume(wear::WearLoop       &loop,
@@ -202,20 +214,7 @@ namespace wearlink::workflows
     {
       if (options.resume)
         {
-          auto st = wear::WearState::read(checkpoint);
-          if (st.fingerprint != fingerprint(scene))
-            throw InputError("Cannot resume from '" + checkpoint +
-                             "': it was written for a different scene "
-                             "(or different parameters) than " +
-                             scene.file +
-                             ". Only Wear/Number of iterations and Wear/Target revolutions may "
-                             "change on resume.");
-          const auto n = scene.mechanism->n_coordinates();
-          if (st.state.size() != static_cast<Eigen::Index>(2 * n + mbs::MechanismOde::n_quadratures))
-            throw InputError("Cannot resume from '" + checkpoint + "': its state has " +
-                             std::to_string(st.state.size()) + " entries, the mechanism of " + scene.file + " needs " +
-                             std::to_string(2 * n + mbs::MechanismOde::n_quadratures) + ".");
-          loop.resume(std::move(st), checkpoint);
+          loop.resume(checked_checkpoint(scene, checkpoint), checkpoint);
           return;
         }
       if (!options.output_directory.empty())
@@ -226,7 +225,8 @@ namespace wearlink::workflows
         }
       Eigen::VectorXd q0, v0;
       assemble_scene(scene, q0, v0);
-      loop.start(scene.start_time, q0, v0, fingerprint(scene));
+      const auto entries = scene_entries(scene);
+      loop.start(scene.start_time, q0, v0, fingerprint(entries), entries);
     }
 
     /** One line per iteration on stderr: revolutions, factor, depths and volume per joint. */
@@ -322,9 +322,9 @@ namespace wearlink::workflows
 
     /** summary.json and parameters.prm of a finished wear run. */
     void
-    write_run_files(const io::Scene &scene, const std::string &dir, WearRunResult &result, const Stopwatch &total)
+    write_run_files(const io::Scene &scene, const std::string &dir, WearRunResult &result, const double total)
     {
-      result.timings.total            = total.seconds();
+      result.timings.total            = total;
       result.summary["wear_timing_s"] = result.timings.to_json();
       std::ostringstream prm;
       scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
@@ -409,39 +409,41 @@ namespace wearlink::workflows
                                 io::response_body(scene),
                                 period / 400,
                                 scene.wear_loop.response_cycles * period);
+    loop.set_iteration_outputs([&]() {
+      if (write && options.final_outputs && loop.state().iterations_done == 1)
+        before.write_csv(dir + "/response_before.csv");
+      if (write)
+        io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
+      if (write && scene.wear_loop.fe_output)
+        write_fe_files(wearing, loop, dir, fe_meshes_copied);
+    });
     while (!loop.finished())
       {
         if (options.stop_after > 0 && done_here == options.stop_after)
           {
-            result.state   = loop.state();
-            result.timings = loop.timings();
+            result.state         = loop.state();
+            result.timings       = loop.timings();
+            result.timings.total = loop.earlier_wall_time() + total.seconds();
             return result;
           }
         const Stopwatch iteration;
-        const bool      first     = loop.state().iterations_done == 0;
         auto            observers = options.observers;
-        if (first)
+        if (loop.state().iterations_done == 0)
           observers.push_back(&before);
         loop.iterate(observers);
         ++done_here;
-        if (first && write && options.final_outputs)
-          before.write_csv(dir + "/response_before.csv");
-        if (write)
-          io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
-        if (write && scene.wear_loop.fe_output)
-          write_fe_files(wearing, loop, dir, fe_meshes_copied);
         if (options.progress)
           print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds());
       }
-    EffectLedger::instance().add_calls("wear iterations", done_here);
     result.state    = loop.state();
     result.timings  = loop.timings();
     result.finished = true;
     if (options.final_outputs)
       after_wear(scene, options, result);
+    // A resumed run's wall time includes its earlier processes' up to the checkpoint.
     if (options.final_outputs && write)
-      write_run_files(scene, dir, result, total);
-    result.timings.total = total.seconds();
+      write_run_files(scene, dir, result, loop.earlier_wall_time() + total.seconds());
+    result.timings.total = loop.earlier_wall_time() + total.seconds();
     return result;
   }
 } // namespace wearlink::workflows

@@ -5,10 +5,14 @@
 
 #include <array>
 #include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <zlib.h>
 
 namespace wearlink::testing
 {
@@ -112,5 +116,91 @@ namespace wearlink::testing
         return e.message();
       }
     return "(no InputError)";
+  }
+
+  std::vector<std::string>
+  partial_files_in(const std::string &dir)
+  {
+    std::vector<std::string> out;
+    if (!fs::exists(dir))
+      return out;
+    for (const auto &e : fs::recursive_directory_iterator(dir))
+      if (e.path().filename().string().find(".partial-") != std::string::npos)
+        out.push_back(e.path().string());
+    return out;
+  }
+
+  std::string
+  file_content(const std::string &path)
+  {
+    std::ifstream      in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  std::map<std::string, std::string>
+  directory_snapshot(const std::string &dir)
+  {
+    std::map<std::string, std::string> out;
+    for (const auto &f : files_in(dir))
+      out[fs::relative(f, dir).string()] = file_content(f);
+    return out;
+  }
+
+  std::string
+  reseal_checkpoint(const std::string &text)
+  {
+    const std::string key = "\n\"payload\": ";
+    const auto        at  = text.find(key);
+    if (at == std::string::npos || text.size() < at + key.size() + 2)
+      throw std::runtime_error("not a checkpoint of format version 3");
+    const std::string payload = text.substr(at + key.size(), text.size() - at - key.size() - 2);
+    char              crc[16];
+    std::snprintf(crc,
+                  sizeof(crc),
+                  "%08lx",
+                  ::crc32_z(::crc32_z(0L, Z_NULL, 0), reinterpret_cast<const Bytef *>(payload.data()), payload.size()));
+    Json header             = Json::parse(text.substr(0, at - 1) + "}");
+    header["payload_bytes"] = payload.size();
+    header["payload_crc32"] = crc;
+    std::string h           = header.dump();
+    h.pop_back();
+    return h + "," + key + payload + "}\n";
+  }
+
+  int
+  start_wearlink(const std::vector<std::string> &args, const std::string &log_file)
+  {
+    std::vector<std::string> all = {WEARLINK_BINARY};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char *> argv;
+    for (auto &a : all)
+      argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const pid_t pid = ::fork();
+    if (pid < 0)
+      throw std::runtime_error("fork failed");
+    if (pid == 0)
+      {
+        const int fd = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd >= 0)
+          {
+            ::dup2(fd, 1);
+            ::dup2(fd, 2);
+          }
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+      }
+    return pid;
+  }
+
+  int
+  wait_for(const int pid)
+  {
+    int status = 0;
+    if (::waitpid(pid, &status, 0) != pid)
+      return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
   }
 } // namespace wearlink::testing

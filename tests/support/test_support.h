@@ -5,6 +5,7 @@
 #include "base/json.h"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -43,4 +44,35 @@ namespace wearlink::testing
   /** Files (recursively) in @p dir. */
   std::vector<std::string>
   files_in(const std::string &dir);
+
+  /** The temporary files (".NAME.partial-PID...") in @p dir, recursively. */
+  std::vector<std::string>
+  partial_files_in(const std::string &dir);
+
+  /** The content of @p path ("" if it cannot be read). */
+  std::string
+  file_content(const std::string &path);
+
+  /** Every file of @p dir (recursively, relative path → content), to see that nothing changed. */
+  std::map<std::string, std::string>
+  directory_snapshot(const std::string &dir);
+
+  /**
+   * A wear checkpoint's text (wear/wear_state.h) with its header's payload length and
+   * CRC-32 made to match its payload again: a checkpoint edited on purpose, to reach
+   * the checks behind the checksum.
+   */
+  std::string
+  reseal_checkpoint(const std::string &text);
+
+  /**
+   * Start the wearlink executable with @p args in the background (output into
+   * @p log_file); returns its pid.
+   */
+  int
+  start_wearlink(const std::vector<std::string> &args, const std::string &log_file);
+
+  /** Wait for @p pid; its exit status, or 128 + the signal that ended it. */
+  int
+  wait_for(int pid);
 } // namespace wearlink::testing

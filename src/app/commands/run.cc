@@ -2,23 +2,28 @@
 // `wearlink run SCENE.prm`: read and validate a scene, assemble it, integrate it and
 // write summary.json, time_series.csv and parameters.prm into the output directory.
 // `--validate` stops after reading, building and assembling (no output is written);
-// `--print-parameters` prints every entry a scene can have.
+// `--print-parameters` prints every entry a scene can have. The output directory is held
+// for the run (base/output_directory.h): locked, and refused if it holds an earlier
+// run's files unless --overwrite (replace them) or --resume (continue that wear run).
 #include "workflows/run.h"
 
 #include "app/command_line.h"
 #include "base/exceptions.h"
+#include "base/output_directory.h"
 #include "io/scene.h"
 #include "workflows/wear_run.h"
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 namespace wearlink::app
 {
   namespace
   {
     const char *help_text =
-      R"(wearlink run SCENE.prm [--output DIR] [--set "Section/Entry=value" ...] [--quiet]
+      R"(wearlink run SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
+wearlink run SCENE.prm --resume DIR [--set ...] [--quiet]
 wearlink run --validate SCENE.prm [--set ...]
 wearlink run --print-parameters [SCENE.prm]
 
@@ -49,7 +54,21 @@ before_after_phase_*.png, before_after_lyapunov.csv, before_after_delay_scan.*; 
 'Analyses/Before-after wear' and `wearlink compare-dynamics --help`).
   --resume DIR        continue the wear run whose output directory is DIR from its
                       last finished iteration (same scene; Wear/Number of iterations
-                      and Wear/Target revolutions may be raised with --set)
+                      and Wear/Target revolutions may be raised with --set, Output/*,
+                      Wear/FE output and Wear/Profile magnification changed; a
+                      checkpoint of another scene, of another format version, truncated
+                      or damaged (checksum) is refused with what differs). The summary's
+                      effect ledger and wear_timing_s cover the whole run.
+
+The output directory (the default one too) is locked while the run lasts: a second run
+into it is refused with the first one's pid. A directory that holds the files of an
+earlier run (summary.json, checkpoint.json, time_series.csv, ...) is refused unless
+  --overwrite         the earlier run's files are removed first (only the names a run
+                      writes, listed above, and its sub-folders; other files are kept)
+or --resume continues it. Temporary files (".NAME.partial-PID") of a run that was
+killed are removed at the next start. SIGINT/SIGTERM stop a run: its temporary files
+are removed, finished files and the last checkpoint are kept (exit status 128 + signal;
+a second signal stops at once).
 
 Options:
   --output DIR        output directory
@@ -59,8 +78,122 @@ Options:
   --print-parameters  print every scene entry with its unit, default and meaning
   --quiet             no progress lines
 
-Exit status: 0 success, 2 bad input, 3 numerical failure.
+Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
+3 numerical failure, 4 a file could not be written (disk full, I/O error),
+130 / 143 stopped by SIGINT / SIGTERM.
 )";
+
+    /** The file names `wearlink run` writes (see the help above), for --overwrite. */
+    RunFiles
+    run_files()
+    {
+      RunFiles f;
+      f.patterns       = {"summary.json",
+                          "parameters.prm",
+                          "time_series.csv",
+                          "checkpoint.json",
+                          "analysis_series.csv",
+                          "phase_portrait_*.png",
+                          "poincare_section.csv",
+                          "poincare_*.png",
+                          "lyapunov_*.csv",
+                          "lyapunov_*.png",
+                          "wear_history.csv",
+                          "wear_depth_*.csv",
+                          "wear_depth_*.png",
+                          "profiles_*.csv",
+                          "profiles_*.msh",
+                          "profile_*_bore.png",
+                          "profile_*_pin.png",
+                          "bore_*.csv",
+                          "pin_*.csv",
+                          "wear_volume.png",
+                          "response_before.csv",
+                          "response_after.csv",
+                          "response.png",
+                          "before_after.md",
+                          "before_after_*.png",
+                          "before_after_*.csv",
+                          "mesh_*.msh",
+                          "fields_*.vtu",
+                          "fields_*_pressure.csv"};
+      f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe"};
+      return f;
+    }
+
+    /** Take @p dir for this run (see the help text): lock, stale temporaries, earlier runs. */
+    std::unique_ptr<OutputDirectory>
+    claim_output_directory(const std::string &dir, const ParsedArguments &a, const bool wear)
+    {
+      if (a.has("--overwrite") && a.has("--resume"))
+        throw InputError("--overwrite and --resume exclude each other: --resume continues the run in " +
+                         a.value("--resume") + ", --overwrite removes its files.");
+      const EarlierRun  earlier = a.has("--resume")    ? EarlierRun::resume :
+                                  a.has("--overwrite") ? EarlierRun::overwrite :
+                                                         EarlierRun::refuse;
+      const std::string advice  = wear ? "Add --overwrite to replace them, --resume " + dir +
+                                          " (instead of --output) to continue that wear run, or choose "
+                                           "another --output directory." :
+                                         "Add --overwrite to replace them, or choose another --output directory.";
+      auto              claimed = std::make_unique<OutputDirectory>(dir, earlier, run_files(), advice);
+      if (!a.has("--quiet") && !claimed->removed_partials().empty())
+        std::cerr << "[wearlink] removed " << claimed->removed_partials().size() << " temporary file(s) left in " << dir
+                  << " by a run that was killed\n";
+      if (!a.has("--quiet") && !claimed->removed_files().empty())
+        std::cerr << "[wearlink] --overwrite: removed " << claimed->removed_files().size()
+                  << " file(s) of the earlier run in " << dir << "\n";
+      return claimed;
+    }
+
+    /** `wearlink run` of a wear scene (or --resume): the wear loop and its outputs. */
+    int
+    run_wear_scene(io::Scene &scene, const std::string &file, const ParsedArguments &a)
+    {
+      if (!workflows::has_wear(scene))
+        throw InputError("--resume continues a wear run, but no clearance joint of " + file + " has a Wear law.");
+      workflows::WearRunOptions w;
+      w.resume           = a.has("--resume");
+      w.output_directory = a.has("--resume") ?
+                             a.value("--resume") :
+                             a.value("--output", "output/" + std::filesystem::path(file).stem().string());
+      w.progress         = !a.has("--quiet");
+      const auto claimed = claim_output_directory(w.output_directory, a, true);
+      const auto r       = workflows::run_wear(scene, w);
+      if (!r.before_after_report.empty())
+        std::cout << r.before_after_report << "\n";
+      std::cout << "wrote " << w.output_directory << "/summary.json (" << r.state.iterations_done
+                << " wear iterations, " << r.state.revolutions << " revolutions, " << r.timings.total << " s wall)\n";
+      return 0;
+    }
+
+    /** `wearlink run` of a scene without wear: one simulation and its analyses. */
+    int
+    run_plain_scene(io::Scene &scene, const std::string &file, const ParsedArguments &a)
+    {
+      const std::string     out     = a.value("--output", "output/" + std::filesystem::path(file).stem().string());
+      const auto            claimed = claim_output_directory(out, a, false);
+      workflows::RunOptions options;
+      options.output_directory = out;
+      options.progress         = !a.has("--quiet");
+      const Json summary       = workflows::run_scene(scene, options);
+      std::cout << "wrote " << out << "/summary.json (" << json_number(summary.at("steps")) << " steps, "
+                << json_number(summary.at("wall_time_s")) << " s wall)\n";
+      if (summary.contains("analyses") && summary.at("analyses").contains("lyapunov"))
+        {
+          const Json &l = summary.at("analyses").at("lyapunov");
+          for (std::size_t k = 0; k < l.size(); ++k)
+            {
+              std::cout << "  largest Lyapunov exponent of " << l[k].at("channel").get<std::string>() << " ("
+                        << l[k].at("method").get<std::string>() << "): " << json_number(l[k].at("exponent_per_s"))
+                        << " 1/s (natural log)";
+              if (l[k].contains("exponent_per_sample"))
+                std::cout << " = " << json_number(l[k].at("exponent_per_sample")) << " per sample of "
+                          << json_number(l[k].at("sample_interval_s")) << " s";
+              std::cout << "\n";
+            }
+        }
+      return 0;
+    }
 
     int
     run(const std::vector<std::string> &args)
@@ -71,6 +204,7 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
                                       {"--validate", false},
                                       {"--print-parameters", false},
                                       {"--quiet", false},
+                                      {"--overwrite", false},
                                       {"--resume", true}},
                                      "run");
       if (a.has("--print-parameters"))
@@ -96,45 +230,8 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
         }
 
       if (workflows::has_wear(scene) || a.has("--resume"))
-        {
-          if (!workflows::has_wear(scene))
-            throw InputError("--resume continues a wear run, but no clearance joint of " + file + " has a Wear law.");
-          workflows::WearRunOptions w;
-          w.resume           = a.has("--resume");
-          w.output_directory = a.has("--resume") ?
-                                 a.value("--resume") :
-                                 a.value("--output", "output/" + std::filesystem::path(file).stem().string());
-          w.progress         = !a.has("--quiet");
-          const auto r       = workflows::run_wear(scene, w);
-          if (!r.before_after_report.empty())
-            std::cout << r.before_after_report << "\n";
-          std::cout << "wrote " << w.output_directory << "/summary.json (" << r.state.iterations_done
-                    << " wear iterations, " << r.state.revolutions << " revolutions, " << r.timings.total
-                    << " s wall)\n";
-          return 0;
-        }
-      const std::string     out = a.value("--output", "output/" + std::filesystem::path(file).stem().string());
-      workflows::RunOptions options;
-      options.output_directory = out;
-      options.progress         = !a.has("--quiet");
-      const Json summary       = workflows::run_scene(scene, options);
-      std::cout << "wrote " << out << "/summary.json (" << json_number(summary.at("steps")) << " steps, "
-                << json_number(summary.at("wall_time_s")) << " s wall)\n";
-      if (summary.contains("analyses") && summary.at("analyses").contains("lyapunov"))
-        {
-          const Json &l = summary.at("analyses").at("lyapunov");
-          for (std::size_t k = 0; k < l.size(); ++k)
-            {
-              std::cout << "  largest Lyapunov exponent of " << l[k].at("channel").get<std::string>() << " ("
-                        << l[k].at("method").get<std::string>() << "): " << json_number(l[k].at("exponent_per_s"))
-                        << " 1/s (natural log)";
-              if (l[k].contains("exponent_per_sample"))
-                std::cout << " = " << json_number(l[k].at("exponent_per_sample")) << " per sample of "
-                          << json_number(l[k].at("sample_interval_s")) << " s";
-              std::cout << "\n";
-            }
-        }
-      return 0;
+        return run_wear_scene(scene, file, a);
+      return run_plain_scene(scene, file, a);
     }
   } // namespace
 

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// SIGINT and SIGTERM stop a run cleanly. The handlers (installed by the program's
+// main(), never by the library or the tests) only record the signal; the run notices
+// it at its next check (every accepted integrator step, every wear iteration, before a
+// file written by another program is moved into place) and throws Interrupted, so that
+// unwinding removes every temporary file (AtomicFile, TemporaryDirectory) and main()
+// exits with 128 + the signal. A second signal does not wait: the handler removes the
+// temporary files registered below (unlink is async-signal-safe) and leaves at once
+// with _exit(128 + signal). What a SIGKILL leaves behind is removed by the next run in
+// the same directory (remove_stale_partials in base/atomic_file.h).
+#pragma once
+
+#include <string>
+
+namespace wearlink
+{
+  /** Install the SIGINT and SIGTERM handlers (once per process; main() only). */
+  void
+  install_interrupt_handlers();
+
+  /** The signal received so far, or 0. */
+  int
+  interrupt_signal();
+
+  /** Throw Interrupted if a signal arrived (the check points named above). */
+  void
+  throw_if_interrupted();
+
+  /** The name of @p signal_number ("SIGTERM"). */
+  std::string
+  signal_name(int signal_number);
+
+  /**
+   * While it lives, @p path is removed by the handler of a second signal. A fixed number
+   * of paths can be registered (files open at the same time); beyond that a path is
+   * simply not registered (the next run removes it). Paths longer than 4095 bytes are
+   * not registered either.
+   */
+  class RegisteredTemporary
+  {
+  public:
+    explicit RegisteredTemporary(const std::string &path);
+    ~RegisteredTemporary();
+    RegisteredTemporary(const RegisteredTemporary &) = delete;
+    RegisteredTemporary &
+    operator=(const RegisteredTemporary &) = delete;
+
+  private:
+    int slot = -1;
+  };
+} // namespace wearlink

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Files and folders of a run (base/atomic_file.h, base/output_directory.h,
+// base/interrupt.h):
+//  - a write that fails (here: the file-size limit, as a full disk would) is an IoError
+//    naming the file, and the previous file and the directory are left as they were;
+//  - temporaries of dead writers are removed, those of running ones kept;
+//  - a locked directory is refused naming the holder's pid, and free again after it;
+//  - an earlier run's files are refused, or removed with overwrite (the user's own files
+//    are kept), or kept with resume;
+//  - SIGTERM is recorded and thrown at the next check; a second SIGTERM removes the
+//    registered temporaries and exits with 143 at once.
+// Signals and resource limits are tried in a forked child, never in the test process.
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/interrupt.h"
+#include "base/output_directory.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace wearlink;
+namespace fs = std::filesystem;
+
+namespace
+{
+  /** Run @p f in a forked child; its exit status (or 128 + signal). */
+  template <typename F>
+  int
+  in_child(F f)
+  {
+    const pid_t pid = ::fork();
+    if (pid == 0)
+      ::_exit(f());
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+
+  /** The pid of a process that has ended (forked, exited, reaped). */
+  pid_t
+  dead_pid()
+  {
+    const pid_t pid = ::fork();
+    if (pid == 0)
+      ::_exit(0);
+    ::waitpid(pid, nullptr, 0);
+    return pid;
+  }
+
+  RunFiles
+  run_files()
+  {
+    RunFiles f;
+    f.patterns       = {"summary.json", "time_series.csv", "wear_depth_*.csv"};
+    f.subdirectories = {"dynamics_before"};
+    return f;
+  }
+} // namespace
+
+TEST(AtomicFile, FailedWriteIsAnIoErrorNamingTheFile)
+{
+  const std::string dir  = wearlink::testing::fresh_directory("atomic_full");
+  const std::string path = dir + "/summary.json";
+  write_file_atomically(path, "previous\n");
+  const int status = in_child([&] {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit = {4096, 4096}; // as a full disk: writing beyond fails (EFBIG)
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try
+      {
+        write_file_atomically(path, std::string(1 << 20, 'x'));
+      }
+    catch (const IoError &e)
+      {
+        return e.message().find("Writing '" + path + "' failed") != std::string::npos ? 0 : 2;
+      }
+    catch (...)
+      {
+        return 3;
+      }
+    return 1;
+  });
+  EXPECT_EQ(status, 0) << "1: no error, 2: the message does not name the file, 3: not an IoError";
+  EXPECT_EQ(wearlink::testing::file_content(path), "previous\n");
+  EXPECT_TRUE(wearlink::testing::partial_files_in(dir).empty());
+}
+
+TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemoved)
+{
+  const std::string dir = wearlink::testing::fresh_directory("atomic_stale");
+  fs::create_directories(dir + "/fe");
+  const std::string dead = std::to_string(dead_pid());
+  const std::string mine = std::to_string(::getpid());
+  for (const std::string f : {"/.summary.json.partial-" + dead + ".json",
+                              "/fe/.mesh_A_1.msh.partial-" + dead + ".msh",
+                              "/.time_series.csv.partial-" + mine + ".csv",
+                              "/notes.partial-" + dead + ".txt", // not a name wearlink makes
+                              std::string("/summary.json")})
+    std::ofstream(dir + f) << "x";
+  const auto removed = remove_stale_partials(dir);
+  EXPECT_EQ(removed.size(), 2u);
+  EXPECT_FALSE(fs::exists(dir + "/.summary.json.partial-" + dead + ".json"));
+  EXPECT_FALSE(fs::exists(dir + "/fe/.mesh_A_1.msh.partial-" + dead + ".msh"));
+  EXPECT_TRUE(fs::exists(dir + "/.time_series.csv.partial-" + mine + ".csv")) << "a running writer's";
+  EXPECT_TRUE(fs::exists(dir + "/notes.partial-" + dead + ".txt"));
+  EXPECT_TRUE(fs::exists(dir + "/summary.json"));
+}
+
+TEST(OutputDirectory, LockedDirectoryIsRefusedNamingTheHolder)
+{
+  const std::string dir = wearlink::testing::fresh_directory("output_lock") + "/run";
+  {
+    OutputDirectory   first(dir, EarlierRun::refuse, run_files(), "");
+    const std::string m =
+      wearlink::testing::input_error_message([&] { OutputDirectory second(dir, EarlierRun::resume, run_files(), ""); });
+    EXPECT_NE(m.find("is in use by another wearlink run (pid " + std::to_string(::getpid()) + ";"), std::string::npos)
+      << m;
+    EXPECT_TRUE(fs::exists(dir + "/" + OutputDirectory::lock_file_name));
+  }
+  EXPECT_FALSE(fs::exists(dir + "/" + OutputDirectory::lock_file_name)) << "removed on release";
+  EXPECT_NO_THROW(OutputDirectory(dir, EarlierRun::refuse, run_files(), ""));
+}
+
+TEST(OutputDirectory, EarlierRunIsRefusedOverwrittenOrKept)
+{
+  const std::string dir = wearlink::testing::fresh_directory("output_earlier");
+  fs::create_directories(dir + "/dynamics_before/deeper");
+  for (const char *f : {"/summary.json",
+                        "/wear_depth_A.csv",
+                        "/notes.txt",
+                        "/dynamics_before/summary.json",
+                        "/dynamics_before/deeper/time_series.csv"})
+    std::ofstream(dir + f) << "x";
+  const std::string m = wearlink::testing::input_error_message(
+    [&] { OutputDirectory d(dir, EarlierRun::refuse, run_files(), "Add --overwrite."); });
+  EXPECT_NE(m.find("holds the files of an earlier run (dynamics_before/deeper/time_series.csv, "
+                   "dynamics_before/summary.json, summary.json, wear_depth_A.csv). Add --overwrite."),
+            std::string::npos)
+    << m;
+  EXPECT_TRUE(fs::exists(dir + "/summary.json")) << "nothing removed when refused";
+  EXPECT_FALSE(fs::exists(dir + "/" + OutputDirectory::lock_file_name)) << "a refused claim lets go";
+  {
+    OutputDirectory kept(dir, EarlierRun::resume, run_files(), "");
+    EXPECT_TRUE(kept.removed_files().empty());
+    EXPECT_TRUE(fs::exists(dir + "/summary.json"));
+  }
+  OutputDirectory cleared(dir, EarlierRun::overwrite, run_files(), "");
+  EXPECT_EQ(cleared.removed_files().size(), 4u);
+  EXPECT_FALSE(fs::exists(dir + "/summary.json"));
+  EXPECT_FALSE(fs::exists(dir + "/dynamics_before")) << "the run's emptied folder";
+  EXPECT_TRUE(fs::exists(dir + "/notes.txt")) << "the user's own file is kept";
+}
+
+TEST(Interrupt, SignalIsThrownAtTheNextCheckAndASecondOneExitsAtOnce)
+{
+  const int first = in_child([] {
+    install_interrupt_handlers();
+    if (interrupt_signal() != 0)
+      return 1;
+    ::raise(SIGTERM);
+    try
+      {
+        throw_if_interrupted();
+      }
+    catch (const Interrupted &e)
+      {
+        return e.signal_number() == SIGTERM && e.message().find("SIGTERM") != std::string::npos ? 0 : 2;
+      }
+    return 3;
+  });
+  EXPECT_EQ(first, 0);
+
+  const std::string dir    = wearlink::testing::fresh_directory("interrupt_second");
+  const std::string path   = dir + "/.summary.json.partial-1.json";
+  const int         second = in_child([&] {
+    install_interrupt_handlers();
+    std::ofstream(path) << "x";
+    RegisteredTemporary registered(path);
+    ::raise(SIGTERM);
+    ::raise(SIGTERM); // does not return
+    return 1;
+  });
+  EXPECT_EQ(second, 128 + SIGTERM);
+  EXPECT_FALSE(fs::exists(path)) << "removed by the handler of the second signal";
+}
