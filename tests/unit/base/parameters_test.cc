@@ -172,3 +172,29 @@ TEST(Parameters, OverridesBuilderFormatsNumbersOnceAndLetsTheUserWin)
   EXPECT_EQ(o.settings().back(), "Simulation/End time = 2");
   EXPECT_EQ(wearlink::ParameterOverrides::path_of(o.settings().back()), "Simulation/End time");
 }
+
+// `--output ""` once ran and wrote into the root directory; every command that takes
+// --output refuses an empty value (exit status 2) before it reads or writes anything.
+TEST(CommandLine, EmptyOutputIsRefusedByEveryCommand)
+{
+  const std::string                           scene    = wearlink::testing::source_path("params/nine_bar_ideal.prm");
+  const std::vector<std::vector<std::string>> commands = {{"run", scene},
+                                                          {"contact",
+                                                           wearlink::testing::source_path("params/pin_bushing.prm")},
+                                                          {"compare-pressure", scene},
+                                                          {"compare-contact", scene},
+                                                          {"compare-dynamics", "before", "after"},
+                                                          {"study", "accuracy", scene},
+                                                          {"sweep", scene},
+                                                          {"lyapunov", "series.csv"}};
+  for (auto args : commands)
+    {
+      const std::string name = args[0] == "study" ? "study accuracy" : args[0];
+      args.insert(args.end(), {"--output", ""});
+      const auto r = wearlink::testing::run_wearlink(args);
+      EXPECT_EQ(r.exit_status, 2) << name << ": " << r.output;
+      EXPECT_NE(r.output.find("The option --output of `wearlink " + name + "` is given an empty value"),
+                std::string::npos)
+        << name << ": " << r.output;
+    }
+}
