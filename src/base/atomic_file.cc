@@ -27,7 +27,9 @@ namespace wearlink
     , out(tmp_path)
   {
     if (!out)
-      throw InputError("Cannot write '" + final_path + "': the directory does not exist or is not writable.");
+      throw IoError("Cannot write '" + final_path +
+                    "': the directory does not exist or is not writable. Check its permissions, or "
+                    "choose another --output directory.");
   }
 
   AtomicFile::~AtomicFile()
@@ -47,7 +49,8 @@ namespace wearlink
     const bool ok = static_cast<bool>(out);
     out.close();
     if (!ok)
-      throw InputError("Writing '" + final_path + "' failed (disk full?).");
+      throw IoError("Writing '" + final_path +
+                    "' failed (disk full?). Free some space or choose another --output directory.");
     commit_external_file(tmp_path, final_path);
     committed = true;
   }
@@ -69,8 +72,10 @@ namespace wearlink
     std::filesystem::rename(tmp, path, ec);
     if (ec)
       {
+        const std::string why = ec.message();
         std::filesystem::remove(tmp, ec);
-        throw InputError("Cannot move the finished file into place at '" + path + "'.");
+        throw IoError("Cannot move the finished file into place at '" + path + "': " + why +
+                      ". Check the permissions of that directory.");
       }
   }
 
@@ -80,8 +85,8 @@ namespace wearlink
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir))
-      throw InputError("Cannot create the output directory '" + dir + "': " + ec.message() +
-                       ". Choose another --output directory.");
+      throw IoError("Cannot create the output directory '" + dir + "': " + ec.message() +
+                    ". Choose another --output directory.");
   }
   TemporaryDirectory::TemporaryDirectory(const std::string &what)
   {

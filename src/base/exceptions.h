@@ -9,6 +9,10 @@
 //    embedding, constant, no neighbour beyond the Theiler window). Where the series came
 //    from the user, the caller turns it into an InputError naming the file or the scene
 //    entry; where a comparison asked, the missing value is reported with this reason.
+//  - IoError: the environment failed a valid request: an output file or directory that
+//    cannot be created or written (permission, disk full, a rename that fails). Exit 4.
+// Exit status 1 is left for internal errors (our own bugs, std::bad_alloc when memory
+// runs out); src/app/main.cc maps the types to the codes and README.md lists them.
 // Our own bugs are caught by deal.II's Assert (debug builds only).
 #pragma once
 
@@ -60,6 +64,13 @@ namespace wearlink
 
   /** A valid scene the numerics could not carry through. Exit status 3. */
   class NumericalError : public Error
+  {
+  public:
+    using Error::Error;
+  };
+
+  /** The environment failed a valid request (cannot write a file, disk full). Exit status 4. */
+  class IoError : public Error
   {
   public:
     using Error::Error;

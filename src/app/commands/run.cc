@@ -59,7 +59,8 @@ Options:
   --print-parameters  print every scene entry with its unit, default and meaning
   --quiet             no progress lines
 
-Exit status: 0 success, 2 bad input, 3 numerical failure.
+Exit status: 0 success, 2 bad input, 3 numerical failure, 4 an output that cannot
+be written or memory that ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     int
