@@ -2,6 +2,7 @@
 #include "app/command_line.h"
 
 #include "base/exceptions.h"
+#include "base/text.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -93,6 +94,11 @@ namespace wearlink::app
                       throw InputError("The option " + name + " needs a value.");
                     value = args[++i];
                   }
+                if (trim(value).empty())
+                  throw InputError("The option " + name + " of `wearlink " + command +
+                                   "` is given an empty value. Give it a value (e.g. --output DIR names a "
+                                   "directory), or leave the option out to use its default; see `wearlink " +
+                                   command + " --help`.");
                 auto &v = out.values[name];
                 if (!v.empty() && !s->repeatable)
                   throw InputError("The option " + name + " is given twice.");

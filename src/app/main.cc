@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The wearlink program: dispatch to a sub-command and the one place where errors are
 // caught. A user error (InputError) prints its message and exits with status 2; a
-// numerical failure of a valid scene (NumericalError) exits with 3; anything else is a
-// bug and exits with 1 after printing what deal.II knows about it.
+// numerical failure of a valid scene (NumericalError) exits with 3; a fault of the
+// environment (IoError: a file that cannot be written, a full disk; std::bad_alloc:
+// memory ran out) exits with 4; anything else is a bug and exits with 1 after printing
+// what deal.II knows about it.
 #include "app/commands.h"
 #include "base/exceptions.h"
 #include "base/interrupt.h"
@@ -11,6 +13,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -28,8 +31,13 @@ namespace
            "  wearlink --print-parameters [SCENE]  every declared entry with its unit and "
            "default\n"
            "  wearlink --help | COMMAND --help\n\n"
-           "Exit status: 0 success, 2 bad input (the message says what to fix), 3 a\n"
-           "numerical failure in a valid scene, 1 an internal error.\n";
+           "Exit status:\n"
+           "  0  success\n"
+           "  1  internal error (a bug: please report it with the scene)\n"
+           "  2  bad input: scene, file or command line (the message says what to fix)\n"
+           "  3  numerical failure in a valid scene (the message names time, joint, residual)\n"
+           "  4  the environment failed: an output that cannot be written (permission, disk\n"
+           "     full) or memory that ran out\n";
   }
 } // namespace
 
@@ -37,6 +45,7 @@ int
 main(int argc, char **argv)
 {
   std::vector<std::string> args(argv + 1, argv + argc);
+  const std::string        command = args.empty() ? "" : (args[0] == "--validate" ? "run --validate" : args[0]);
   try
     {
       dealii::deal_II_exceptions::disable_abort_on_exception();
@@ -93,6 +102,14 @@ main(int argc, char **argv)
     {
       std::cerr << "interrupted: " << e.message() << '\n';
       return 128 + e.signal_number();
+    }
+  catch (const std::bad_alloc &)
+    {
+      std::cerr << "error: memory ran out during `wearlink " << command
+                << "`. Some size in the scene or the options (discrete areas, mesh elements, table "
+                   "sizes, samples, iterations) asks for more memory than this machine has; lower "
+                   "it, or run on a machine with more memory.\n";
+      return 4;
     }
   catch (const dealii::ExceptionBase &e)
     {

@@ -168,8 +168,10 @@ namespace wearlink
     std::filesystem::rename(tmp, path, ec);
     if (ec)
       {
+        const std::string why = ec.message();
         std::filesystem::remove(tmp, ec);
-        throw IoError("Cannot move the finished file into place at '" + path + "': " + ec.message() + ".");
+        throw IoError("Cannot move the finished file into place at '" + path + "': " + why +
+                      ". Check the permissions of that directory.");
       }
     sync_to_disk(directory_of(path), path, true);
   }

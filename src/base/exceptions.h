@@ -13,6 +13,8 @@
 //    cannot be created or written (permission, disk full, a rename that fails). Exit 4.
 //  - Interrupted: SIGINT or SIGTERM arrived (base/interrupt.h); the program removes its
 //    temporary files on the way out and exits with 128 + the signal's number.
+// Exit status 1 is left for internal errors (our own bugs); src/app/main.cc maps the
+// types to the codes and README.md lists them.
 // Our own bugs are caught by deal.II's Assert (debug builds only).
 #pragma once
 

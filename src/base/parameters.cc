@@ -79,7 +79,8 @@ namespace wearlink
         }
       catch (const dealii::ExceptionBase &e)
         {
-          throw InputError("Error in scene file '" + filename + "':\n  " + info_of(e));
+          throw InputError("Error in scene file '" + filename + "':\n  " + info_of(e) +
+                           "\n  (`wearlink --print-parameters` lists every entry with its allowed range and why.)");
         }
     }
   } // namespace
@@ -113,6 +114,13 @@ namespace wearlink
           placeholder = candidate;
           break;
         }
+    if (dynamic_cast<const dealii::Patterns::Double *>(&pattern) != nullptr && !pattern.match(placeholder))
+      {
+        // "[Double 1e+06...1e+13 (inclusive)]": a range that excludes 0 and 1 gives its lower end.
+        const std::string d = pattern.description(dealii::Patterns::PatternBase::Machine);
+        const auto        b = d.find("Double ") + 7;
+        placeholder         = d.substr(b, d.find("...", b) - b);
+      }
     if (dynamic_cast<const dealii::Patterns::Selection *>(&pattern) != nullptr)
       {
         // "[Selection a|b|c ]": the first choice stands in for the missing default.
@@ -288,58 +296,135 @@ namespace wearlink
   }
 
 
+  namespace
+  {
+    /** Files deeper in a chain of includes than this are refused (a chain this long is a mistake). */
+    constexpr std::size_t max_include_depth = 16;
+
+    /** The chain "a.prm → b.prm → a.prm" of the files being read. */
+    std::string
+    chain_text(const std::vector<std::string> &chain, const std::string &last)
+    {
+      std::string text;
+      for (const auto &f : chain)
+        text += "'" + f + "' → ";
+      return text + "'" + last + "'";
+    }
+
+    /** Open @p filename for reading, or throw an InputError that says why it cannot be. */
+    std::ifstream
+    open_prm_file(const std::string &filename)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      if (fs::is_directory(filename, ec))
+        throw InputError("'" + filename +
+                         "' is a directory, not a parameter file. Give the path of a .prm file "
+                         "(see params/ for examples).");
+      std::ifstream in(filename);
+      if (!in)
+        throw InputError("Cannot open the parameter file '" + filename +
+                         "': it does not exist or is not readable. Check the path (relative "
+                         "paths are taken from the current directory).");
+      return in;
+    }
+
+    /** The file named by the `include` line @p body (line @p line_no of @p filename). */
+    std::filesystem::path
+    included_file(const std::string &body, const std::string &filename, const unsigned line_no)
+    {
+      namespace fs = std::filesystem;
+      fs::path inc = trim(body.substr(7));
+      if (inc.empty())
+        throw InputError("In " + filename + " line " + std::to_string(line_no) + ": 'include' needs a file name.");
+      if (inc.is_relative())
+        inc = fs::path(filename).parent_path() / inc;
+      if (!fs::exists(inc))
+        throw InputError("In " + filename + " line " + std::to_string(line_no) + ": the included file '" +
+                         inc.string() +
+                         "' does not exist (include paths are relative to the "
+                         "including file).");
+      return inc;
+    }
+
+    /** Refuse to read @p file again while it is being read (a cycle), or too deep a chain. */
+    void
+    check_include_chain(const std::vector<std::string> &chain, const std::string &file, const unsigned line_no)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      for (const auto &f : chain)
+        if (fs::equivalent(f, file, ec))
+          throw InputError("In " + chain.back() + " line " + std::to_string(line_no) + ": including '" + file +
+                           "' makes a cycle of includes: " + chain_text(chain, file) +
+                           ". A file must not include itself, directly or through other files; remove "
+                           "one of these include lines.");
+      if (chain.size() >= max_include_depth)
+        throw InputError("In " + chain.back() + " line " + std::to_string(line_no) + ": including '" + file +
+                         "' nests includes " + std::to_string(chain.size() + 1) + " files deep; at most " +
+                         std::to_string(max_include_depth) + " are allowed. Chain: " + chain_text(chain, file) + ".");
+    }
+
+    /** The UTF-8 byte-order mark some editors write at the start of a text file. */
+    void
+    strip_byte_order_mark(std::string &first_line)
+    {
+      if (first_line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        first_line.erase(0, 3);
+    }
+
+    /** read_prm_file() with the chain of files that include @p filename. */
+    void
+    read_prm_file_in_chain(dealii::ParameterHandler &prm,
+                           const std::string        &filename,
+                           bool                      skip_undefined,
+                           std::vector<std::string> &chain)
+    {
+      std::ifstream in = open_prm_file(filename);
+      chain.push_back(filename);
+
+      // Split the file into balanced chunks at top-level `include` lines. Each chunk is
+      // padded with empty lines so that deal.II's line numbers stay those of the file.
+      std::string line;
+      std::string chunk;
+      unsigned    line_no = 0;
+      int         depth   = 0;
+      while (std::getline(in, line))
+        {
+          if (++line_no == 1)
+            strip_byte_order_mark(line);
+          const std::string body = strip_comment(line);
+          if (starts_with_word(body, "subsection"))
+            ++depth;
+          else if (body == "end")
+            --depth;
+
+          if (!starts_with_word(body, "include"))
+            {
+              chunk += line + '\n';
+              continue;
+            }
+          if (depth != 0)
+            throw InputError("In " + filename + " line " + std::to_string(line_no) +
+                             ": 'include' is only allowed outside subsections. Move it "
+                             "to the top level of the file.");
+          const auto inc = included_file(body, filename, line_no);
+          parse_chunk(prm, chunk, filename, skip_undefined);
+          check_include_chain(chain, inc.string(), line_no);
+          read_prm_file_in_chain(prm, inc.string(), skip_undefined, chain);
+          chunk = std::string(line_no, '\n');
+        }
+      parse_chunk(prm, chunk, filename, skip_undefined);
+      chain.pop_back();
+    }
+  } // namespace
+
+
   void
   read_prm_file(dealii::ParameterHandler &prm, const std::string &filename, bool skip_undefined)
   {
-    namespace fs = std::filesystem;
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError("Cannot open the parameter file '" + filename +
-                       "': it does not exist or is not readable. Check the path (relative "
-                       "paths are taken from the current directory).");
-
-    const fs::path base = fs::path(filename).parent_path();
-
-    // Split the file into balanced chunks at top-level `include` lines. Each chunk is
-    // padded with empty lines so that deal.II's line numbers stay those of the file.
-    std::string line;
-    std::string chunk;
-    unsigned    line_no = 0;
-    int         depth   = 0;
-    while (std::getline(in, line))
-      {
-        ++line_no;
-        const std::string body = strip_comment(line);
-        if (starts_with_word(body, "subsection"))
-          ++depth;
-        else if (body == "end")
-          --depth;
-
-        if (starts_with_word(body, "include"))
-          {
-            if (depth != 0)
-              throw InputError("In " + filename + " line " + std::to_string(line_no) +
-                               ": 'include' is only allowed outside subsections. Move it "
-                               "to the top level of the file.");
-            fs::path inc = trim(body.substr(7));
-            if (inc.empty())
-              throw InputError("In " + filename + " line " + std::to_string(line_no) +
-                               ": 'include' needs a file name.");
-            if (inc.is_relative())
-              inc = base / inc;
-            parse_chunk(prm, chunk, filename, skip_undefined);
-            if (!fs::exists(inc))
-              throw InputError("In " + filename + " line " + std::to_string(line_no) + ": the included file '" +
-                               inc.string() +
-                               "' does not exist (include paths are relative to the "
-                               "including file).");
-            read_prm_file(prm, inc.string(), skip_undefined);
-            chunk = std::string(line_no, '\n');
-          }
-        else
-          chunk += line + '\n';
-      }
-    parse_chunk(prm, chunk, filename, skip_undefined);
+    std::vector<std::string> chain;
+    read_prm_file_in_chain(prm, filename, skip_undefined, chain);
   }
 
 
@@ -413,19 +498,47 @@ namespace wearlink
     return trim(setting.substr(0, setting.find('=')));
   }
 
+  namespace
+  {
+    /**
+     * The parts "Section", "Sub", "Entry" of the override @p setting ("Section/Sub/Entry=value"),
+     * or an InputError if it has no '=', an empty path or an empty part ("A//B", "/B", "A/").
+     */
+    std::vector<std::string>
+    override_path_parts(const std::string &setting)
+    {
+      const std::string form = " Write it as --set \"Section/Sub/Entry=value\", e.g. --set \"Simulation/End "
+                               "time=0.5\"; `wearlink --print-parameters` lists the entries.";
+      const auto        eq   = setting.find('=');
+      if (eq == std::string::npos)
+        throw InputError("The override '--set " + setting + "' has no '='." + form);
+      const std::string path = trim(setting.substr(0, eq));
+      if (path.empty())
+        throw InputError("The override '--set " + setting + "' names no entry before the '='." + form);
+      std::vector<std::string> parts;
+      std::size_t              begin = 0;
+      while (true)
+        {
+          const auto slash = path.find('/', begin);
+          parts.push_back(trim(path.substr(begin, slash == std::string::npos ? std::string::npos : slash - begin)));
+          if (parts.back().empty())
+            throw InputError("The override '--set " + setting + "' has an empty section or entry name in '" + path +
+                             "'." + form);
+          if (slash == std::string::npos)
+            return parts;
+          begin = slash + 1;
+        }
+    }
+  } // namespace
+
   void
   apply_overrides(dealii::ParameterHandler &prm, const ParameterOverrides &overrides)
   {
     for (const auto &o : overrides.settings())
       {
-        const auto eq = o.find('=');
-        if (eq == std::string::npos)
-          throw InputError("The override '--set " + o + "' must have the form \"Section/Sub/Entry=value\".");
-        const std::string path  = trim(o.substr(0, eq));
-        const std::string value = trim(o.substr(eq + 1));
-        auto              parts = dealii::Utilities::split_string_list(path, '/');
-        for (auto &p : parts)
-          p = trim(p);
+        const auto                     parts = override_path_parts(o);
+        const std::string              path  = trim(o.substr(0, o.find('=')));
+        const std::string              value = trim(o.substr(o.find('=') + 1));
         const std::string              entry = parts.back();
         const std::vector<std::string> sections(parts.begin(), parts.end() - 1);
         if (!sections.empty() && !prm.subsection_path_exists(sections))
@@ -460,7 +573,8 @@ namespace wearlink
         for (std::size_t i = 0; i < sections.size(); ++i)
           prm.leave_subsection();
         if (!ok)
-          throw InputError("The override '--set " + o + "' cannot be applied: " + why);
+          throw InputError("The override '--set " + o + "' cannot be applied: " + why +
+                           " (`wearlink --print-parameters` lists every entry with its allowed range and why.)");
       }
   }
 

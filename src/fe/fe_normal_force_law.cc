@@ -242,17 +242,17 @@ namespace wearlink::fe
     declare(prm,
             "Table minimum force",
             "10",
-            Double(0),
+            Double(0, 1e9),
             "Smallest load level of the FE force–approach table. Below its approach the "
             "force follows the power law that continues the table's end slope down to zero.",
             "N");
     declare(prm,
             "Table maximum force",
             "1e5",
-            Double(0),
-            "Largest load level of the table. Beyond its approach the force follows the power "
-            "law of the table's end slope; every such evaluation is counted in summary.json "
-            "(extrapolations_above_table).",
+            Double(0, 1e9),
+            "Largest load level of the table, at most 1e9 N. Beyond its approach the force follows "
+            "the power law of the table's end slope; every such evaluation is counted in summary.json "
+            "(extrapolations_above_table) and warned about (warnings).",
             "N");
     declare(prm,
             "Table load levels",

@@ -39,20 +39,21 @@ namespace wearlink::fe
     declare(prm,
             "Surface element size",
             "25e-6",
-            Double(0),
+            Double(1e-7, 1),
             "Element size along both contact surfaces (pin and bore). It must resolve "
-            "the contact half-width: a Hertz half-width b needs about b/10 or finer.",
+            "the contact half-width: a Hertz half-width b needs about b/10 or finer. At least "
+            "0.1 µm: a 10-mm pin then has 6e5 surface elements, the most a mesh can hold in memory.",
             "m");
     declare(prm,
             "Maximum element size",
             "1.5e-3",
-            Double(0),
+            Double(1e-7, 1),
             "Largest element size, reached far from the contact surfaces.",
             "m");
     declare(prm,
             "Refined layer thickness",
             "0.1e-3",
-            Double(0),
+            Double(0, 1),
             "Depth below both contact surfaces over which the element size stays at "
             "'Surface element size' before growing: the contact stresses decay over about "
             "one contact half-width, which must be resolved too.",
@@ -60,7 +61,7 @@ namespace wearlink::fe
     declare(prm,
             "Size growth",
             "0.3",
-            Double(0),
+            Double(0, 100),
             "Growth rate of the element size with the distance d from the nearest "
             "contact surface: h(d) = min(h_surface + growth d, h_max).",
             "none");
@@ -75,8 +76,8 @@ namespace wearlink::fe
     declare(prm,
             "Bushing outer radius ratio",
             "2",
-            Double(1),
-            "Outer radius of the bushing ring / mean bore radius; the outer edge is "
+            Double(1, 100),
+            "Outer radius of the bushing ring / mean bore radius (at most 100); the outer edge is "
             "fixed. Used by the `fe` pressure model (the `contact` command takes the "
             "outer radius from its geometry section).",
             "none");
@@ -95,7 +96,7 @@ namespace wearlink::fe
     declare(prm,
             "Maximum active-set iterations",
             "100",
-            Integer(1),
+            Integer(1, 100000),
             "Iteration limit of the active-set contact solvers; exceeding it is a "
             "numerical error. The condensed solver's primal–dual iteration hands over to its "
             "monotone (Lawson–Hanson) method after 30 iterations or when it cycles; that "

@@ -130,14 +130,15 @@ namespace wearlink::io
               "relative to its bushing, and of each analysed body's centre of mass. x is the "
               "seed's choice (Figs 11–12).",
               "none");
-      declare(prm,
-              "Delay",
-              "0",
-              P::Integer(0),
-              "Delay of the embedding in samples; 0: from the average mutual information "
-              "(its first minimum; a map-like series: 1; a flow that decorrelates without a "
-              "minimum: the first delay with I <= I(0)/e).",
-              "samples");
+      declare(
+        prm,
+        "Delay",
+        "0",
+        P::Integer(0, 100000),
+        "Delay of the embedding in samples (at most 1e5; a series has at most 1e7 samples); 0: from the average mutual information "
+        "(its first minimum; a map-like series: 1; a flow that decorrelates without a "
+        "minimum: the first delay with I <= I(0)/e).",
+        "samples");
       declare(prm,
               "Embedding dimension",
               "0",
@@ -328,6 +329,12 @@ namespace wearlink::io
     s.sample_interval      = r.get_double("Sample interval");
     if ((s.phase_portrait || s.lyapunov) && !(s.sample_interval > 0.0))
       r.fail("Sample interval", "it must be > 0 s when phase-portrait or lyapunov is listed");
+    // The analysed series is kept in memory (a few dozen channels of doubles per sample).
+    const double samples = (scene.end_time - scene.start_time) / s.sample_interval;
+    if ((s.phase_portrait || s.lyapunov) && samples > 1e7)
+      r.fail("Sample interval",
+             "it would record " + format_number(samples, 3) + " samples over the run; at most 1e7 fit in memory",
+             "Choose a longer interval or a shorter run.");
     if (!(scene.start_time + s.transient < scene.end_time))
       r.fail("Transient",
              "it must end before the run does (End time − Start time = " +

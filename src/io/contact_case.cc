@@ -28,29 +28,31 @@ namespace wearlink::io
       declare_required(
         prm,
         "Bore radius",
-        Double(0),
-        "Nominal bore radius R1 (used when no bore profile file is given, and for the Hertz comparison).",
+        Double(1e-6, 1),
+        "Nominal bore radius R1 (used when no bore profile file is given, and for the Hertz comparison), 1 µm … 1 m.",
         "m");
       declare_required(prm,
                        "Pin radius",
-                       Double(0),
-                       "Nominal pin radius R2 (used when no pin profile file is given, and for the Hertz comparison).",
+                       Double(1e-6, 1),
+                       "Nominal pin radius R2 (used when no pin profile file is given, and for the Hertz comparison), "
+                       "1 µm … 1 m.",
                        "m");
       declare_required(prm,
                        "Bushing outer radius",
-                       Double(0),
-                       "Outer radius of the bushing ring; its outer edge is fixed.",
+                       Double(1e-6, 10),
+                       "Outer radius of the bushing ring; its outer edge is fixed. At most 10 m.",
                        "m");
       declare_required(prm,
                        "Axial length",
-                       Double(0),
-                       "Contact length along the pin axis; loads are spread over it (plane strain).",
+                       Double(1e-6, 1),
+                       "Contact length along the pin axis; loads are spread over it (plane strain), 1 µm … 1 m.",
                        "m");
       declare(prm,
               "Number of profile points",
               "360",
-              Integer(8),
-              "Discrete areas N of each profile (samples at ψ_k = 2πk/N).",
+              Integer(8, 100000),
+              "Discrete areas N of each profile (samples at ψ_k = 2πk/N), 8 … 100000 (finer than any mesh "
+              "of the surface can follow).",
               "none");
       declare(
         prm,
@@ -70,7 +72,11 @@ namespace wearlink::io
       for (const char *body : {"Bushing material", "Pin material"})
         {
           prm.enter_subsection(body);
-          declare_required(prm, "Youngs modulus", Double(0), "Young's modulus E.", "Pa");
+          declare_required(prm,
+                           "Youngs modulus",
+                           Double(1e6, 1e13),
+                           "Young's modulus E, 1e6 … 1e13 Pa: from soft rubber to beyond diamond.",
+                           "Pa");
           declare_required(prm, "Poisson ratio", Double(-1, 0.5), "Poisson's ratio ν.", "none");
           prm.leave_subsection();
         }
@@ -93,15 +99,17 @@ namespace wearlink::io
     declare(prm,
             "Load magnitudes",
             "100",
-            List(Double(0), 1),
-            "Magnitudes of the force on the pin, one load state each (force control).",
+            List(Double(0, 1e9), 1),
+            "Magnitudes of the force on the pin, one load state each (force control), at most 1e9 N.",
             "N");
     declare(
       prm,
       "Eccentricities",
       "0.5e-3",
-      List(Double(0), 1),
-      "Pin-centre offsets from the bore centre along 'Load direction', one load state each (displacement control).",
+      List(Double(0, 1), 1),
+      "Pin-centre offsets from the bore centre along 'Load direction', one load state each (displacement control). "
+      "Each may exceed the radial clearance by at most 5 % of the pin radius: the FE model is small-strain linear "
+      "elasticity.",
       "m");
     declare(prm,
             "Load direction",
@@ -193,6 +201,18 @@ namespace wearlink::io
         const double magnitude = std::stod(v);
         if (!(magnitude > 0))
           reader.fail(force_control ? "Load magnitudes" : "Eccentricities", "every value must be > 0");
+        // The FE model is small-strain linear elasticity: strains of order approach / R2
+        // beyond a few per cent describe no real material (steel yields near 0.2 %).
+        const double max_approach = 0.05 * R2;
+        if (!force_control && magnitude - (R1 - R2) > max_approach)
+          reader.fail("Eccentricities",
+                      "the eccentricity " + format_number(magnitude, 4) + " m pushes the pin " +
+                        format_number(magnitude - (R1 - R2), 4) + " m into the bore, beyond 5 % of the pin radius (" +
+                        format_number(max_approach, 4) +
+                        " m), where small-strain linear elasticity (the FE model) no "
+                        "longer describes any material",
+                      "Give eccentricities up to the radial clearance + 5 % of the pin radius (" +
+                        format_number(R1 - R2 + max_approach, 4) + " m); realistic approaches are micrometres.");
         const std::array<double, 2> value = {magnitude * direction[0] / norm, magnitude * direction[1] / norm};
         (force_control ? lc.load : lc.eccentricity) = value;
         loads.push_back(lc);

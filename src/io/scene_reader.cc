@@ -24,6 +24,13 @@ namespace wearlink::io
 
     const char *const joint_types = "revolute|translational|fixed-angle|angle-driver";
 
+    /** Upper bound of 'Number of discrete areas' (see its documentation). */
+    constexpr int max_discrete_areas = 100000;
+    /** Bound of |Start time| and |End time| [s]. */
+    constexpr double max_simulated_time = 1e6;
+    /** Rows time_series.csv may have (1e8 rows of ~50 columns: about 100 GB). */
+    constexpr double max_time_series_rows = 1e8;
+
     std::string
     join(const std::vector<std::string> &v, const std::string &sep = "|")
     {
@@ -69,8 +76,18 @@ namespace wearlink::io
     void
     declare_body(ParameterHandler &prm)
     {
-      declare_required(prm, "Mass", P::Double(0), "Mass of the body.", "kg");
-      declare_required(prm, "Moment of inertia", P::Double(0), "Moment of inertia about the centre of mass.", "kg m²");
+      declare_required(prm,
+                       "Mass",
+                       P::Double(0, 1e6),
+                       "Mass of the body, 0 < m ≤ 1e6 kg: no link of a planar mechanism weighs more than "
+                       "1000 t, so a larger value is a mistake of units or digits.",
+                       "kg");
+      declare_required(prm,
+                       "Moment of inertia",
+                       P::Double(0, 1e6),
+                       "Moment of inertia about the centre of mass, 0 < I ≤ 1e6 kg m² (a 1000-t link "
+                       "of 100 m would have 1e9; planar linkages stay far below 1e6).",
+                       "kg m²");
       declare_required(prm,
                        "Initial position",
                        point_pattern(),
@@ -112,17 +129,33 @@ namespace wearlink::io
               "Which body holds the bore (bushing); the other holds the pin. The joint's "
               "attachment points are the bore and pin centres.",
               "none");
-      declare_required(prm, "Bore radius", P::Double(0), "Nominal bore radius R1.", "m");
-      declare_required(prm, "Radial clearance", P::Double(0), "c = R1 − R2 (> 0); the pin radius is R1 − c.", "m");
+      declare_required(prm,
+                       "Bore radius",
+                       P::Double(1e-6, 1),
+                       "Nominal bore radius R1, 1 µm … 1 m (the range of pin joints; beyond it the "
+                       "value is a mistake of units).",
+                       "m");
+      declare_required(prm,
+                       "Radial clearance",
+                       P::Double(0, 0.5),
+                       "c = R1 − R2 (> 0); the pin radius is R1 − c. At most half the Bore radius: a "
+                       "pin less than half the bore's size is no clearance joint (the contact laws "
+                       "assume nearly conforming surfaces).",
+                       "m");
       declare_required(prm,
                        "Axial length",
-                       P::Double(0),
-                       "Contact length along the pin axis (used by pressure models).",
+                       P::Double(1e-6, 1),
+                       "Contact length along the pin axis (used by pressure models), 1 µm … 1 m.",
                        "m");
-      declare_required(prm, "Bushing elastic modulus", P::Double(0), "E of the bushing.", "Pa");
-      declare_required(prm, "Bushing Poisson ratio", P::Double(0, 0.5), "ν of the bushing.", "none");
-      declare_required(prm, "Pin elastic modulus", P::Double(0), "E of the pin.", "Pa");
-      declare_required(prm, "Pin Poisson ratio", P::Double(0, 0.5), "ν of the pin.", "none");
+      declare_required(prm,
+                       "Bushing elastic modulus",
+                       P::Double(1e6, 1e13),
+                       "E of the bushing, 1e6 … 1e13 Pa: from soft rubber (~1 MPa) to beyond diamond "
+                       "(1.2e12 Pa); outside it the value is a mistake of units.",
+                       "Pa");
+      declare_required(prm, "Bushing Poisson ratio", P::Double(0, 0.5), "ν of the bushing, 0 ≤ ν < 0.5.", "none");
+      declare_required(prm, "Pin elastic modulus", P::Double(1e6, 1e13), "E of the pin, 1e6 … 1e13 Pa.", "Pa");
+      declare_required(prm, "Pin Poisson ratio", P::Double(0, 0.5), "ν of the pin, 0 ≤ ν < 0.5.", "none");
       declare(prm,
               "Effective radius",
               "internal",
@@ -166,8 +199,10 @@ namespace wearlink::io
       declare(prm,
               "Number of discrete areas",
               "360",
-              P::Integer(8),
-              "Samples of each surface profile (discrete areas for wear).",
+              P::Integer(8, max_discrete_areas),
+              "Samples of each surface profile (discrete areas for wear), 8 … 100000: at 1e5 "
+              "areas an area of a 10-mm bore is 0.6 µm wide, finer than its roughness and than "
+              "any FE mesh of it; more would only exhaust memory.",
               "none");
       contact::normal_force_laws().declare_all(prm);
       contact::friction_laws().declare_all(prm);
@@ -239,34 +274,63 @@ namespace wearlink::io
               "dopri5: adaptive Dormand–Prince 5(4) with error control, dense output and "
               "contact onset/separation located in time (recommended).",
               "none");
-      declare(prm, "Time step", "1e-4", P::Double(0), "rk4 step size.", "s");
-      declare(prm, "Relative tolerance", "1e-6", P::Double(0), "dopri5: relative error tolerance per step.", "none");
+      declare(prm,
+              "Time step",
+              "1e-4",
+              P::Double(0, 1),
+              "rk4 step size, 0 < h ≤ 1 s. A step above 1/100 of the driving period cannot follow "
+              "a cycle and is warned about (summary.json, warnings).",
+              "s");
+      declare(prm,
+              "Relative tolerance",
+              "1e-6",
+              P::Double(1e-14, 1),
+              "dopri5: relative error tolerance per step, 1e-14 … 1 (below 1e-14 is round-off).",
+              "none");
       declare(prm,
               "Position tolerance",
               "1e-9",
-              P::Double(0),
-              "dopri5: absolute error tolerance of positions (m) and angles (rad).",
+              P::Double(1e-15, 1e-3),
+              "dopri5: absolute error tolerance of positions (m) and angles (rad), 1e-15 … 1e-3 "
+              "(a looser one could not resolve any clearance).",
               "m");
       declare(prm,
               "Velocity tolerance",
               "1e-6",
-              P::Double(0),
-              "dopri5: absolute error tolerance of velocities (m/s, rad/s).",
+              P::Double(1e-15, 1),
+              "dopri5: absolute error tolerance of velocities (m/s, rad/s), 1e-15 … 1.",
               "m/s");
-      declare(prm, "Maximum step", "1e-3", P::Double(0), "dopri5: largest step.", "s");
-      declare(prm, "Minimum step", "1e-14", P::Double(0), "dopri5: a step below this is a numerical failure.", "s");
+      declare(prm, "Maximum step", "1e-3", P::Double(0, 1), "dopri5: largest step, at most 1 s.", "s");
+      declare(prm,
+              "Minimum step",
+              "1e-14",
+              P::Double(0, 1e-3),
+              "dopri5: a step below this is a numerical failure; at most 1e-3 s.",
+              "s");
       declare(prm,
               "Baumgarte alpha",
               "5",
-              P::Double(0),
-              "α of the Baumgarte stabilization γ − 2αΦ̇ − β²Φ (seed eq. 27).",
+              P::Double(0, 1e6),
+              "α of the Baumgarte stabilization γ − 2αΦ̇ − β²Φ (seed eq. 27), 0 … 1e6 1/s (a "
+              "faster correction than 1 µs is stiffer than any step can follow).",
               "1/s");
-      declare(prm, "Baumgarte beta", "5", P::Double(0), "β of the Baumgarte stabilization.", "1/s");
+      declare(prm, "Baumgarte beta", "5", P::Double(0, 1e6), "β of the Baumgarte stabilization, 0 … 1e6 1/s.", "1/s");
       prm.leave_subsection();
 
       prm.enter_subsection("Simulation");
-      declare(prm, "Start time", "0", P::Double(), "Time at which assembly happens.", "s");
-      declare_required(prm, "End time", P::Double(), "Time at which the run stops.", "s");
+      declare(prm,
+              "Start time",
+              "0",
+              P::Double(-max_simulated_time, max_simulated_time),
+              "Time at which assembly happens, |t| ≤ 1e6 s.",
+              "s");
+      declare_required(prm,
+                       "End time",
+                       P::Double(-max_simulated_time, max_simulated_time),
+                       "Time at which the run stops, |t| ≤ 1e6 s: 11.6 days of motion, far more than "
+                       "any run integrates step by step (wear runs represent long service by "
+                       "extrapolation instead).",
+                       "s");
       prm.leave_subsection();
 
       prm.enter_subsection("Output");
@@ -431,6 +495,11 @@ namespace wearlink::io
         r.fail("Radial clearance",
                "it must be smaller than the Bore radius (" + format_number(bore) +
                  " m): the pin radius R1 − c would be ≤ 0 (pin larger than the bore)");
+      if (!(clearance <= 0.5 * bore))
+        r.fail("Radial clearance",
+               "it must be at most half the Bore radius (" + format_number(0.5 * bore, 4) +
+                 " m): the pin would be less than half the bore's size, no clearance joint",
+               "Radial clearances of pin joints are micrometres to a few tenths of a millimetre.");
       const double pin_radius = bore - clearance;
       const auto   n_areas    = static_cast<unsigned int>(r.get_integer("Number of discrete areas"));
 
@@ -521,6 +590,13 @@ namespace wearlink::io
       r.enter("Output");
       scene.write_time_series = r.get_bool("Time series");
       scene.output_interval   = r.get_double("Time series interval");
+      const double rows       = (scene.end_time - scene.start_time) / scene.output_interval;
+      if (scene.write_time_series && scene.output_interval > 0 && rows > max_time_series_rows)
+        r.fail("Time series interval",
+               "it would write " + format_number(rows, 3) + " rows over " +
+                 format_number(scene.end_time - scene.start_time) + " s; at most " +
+                 format_number(max_time_series_rows, 3) + " are allowed",
+               "Choose a longer interval, or set Time series = false.");
       r.leave();
     }
 

@@ -6,6 +6,14 @@
 
 namespace wearlink::wear
 {
+  namespace
+  {
+    /** Bound of the wear coefficients [m³/(N m)] (see their documentation). */
+    constexpr double max_wear_coefficient = 1e-8;
+    /** Bound of the densities [kg/m³]. */
+    constexpr double max_density = 3e4;
+  } // namespace
+
   namespace P = dealii::Patterns;
 
   void
@@ -31,28 +39,29 @@ namespace wearlink::wear
     prm.enter_subsection("archard");
     declare_required(prm,
                      "Pin wear coefficient",
-                     P::Double(0),
+                     P::Double(0, max_wear_coefficient),
                      "Dimensional wear coefficient k_D = K/H of the pin surface (REFERENCE.md "
                      "§4: 1e-13 … 7e-11 m³/(N m) for Al alloys dry on steel; 1 mm³/(N m) = "
-                     "1e-9 m³/(N m)). Only used if Wear law = archard.",
+                     "1e-9 m³/(N m)), 0 … 1e-8 m³/(N m): 100 × the most severe dry wear measured; a "
+                     "larger value is a mistake of units. Only used if Wear law = archard.",
                      "m³/(N m)");
     declare_required(prm,
                      "Bushing wear coefficient",
-                     P::Double(0),
-                     "Dimensional wear coefficient k_D of the bore surface. Only used if Wear "
-                     "law = archard.",
+                     P::Double(0, max_wear_coefficient),
+                     "Dimensional wear coefficient k_D of the bore surface, 0 … 1e-8 m³/(N m). Only "
+                     "used if Wear law = archard.",
                      "m³/(N m)");
     declare_required(prm,
                      "Pin density",
-                     P::Double(0),
-                     "Density of the pin material, for the mass loss. Only used if Wear law = "
-                     "archard.",
+                     P::Double(1, max_density),
+                     "Density of the pin material, for the mass loss, 1 … 3e4 kg/m³ (the densest "
+                     "element, osmium, has 22 590 kg/m³). Only used if Wear law = archard.",
                      "kg/m³");
     declare_required(prm,
                      "Bushing density",
-                     P::Double(0),
-                     "Density of the bushing material, for the mass loss. Only used if Wear "
-                     "law = archard.",
+                     P::Double(1, max_density),
+                     "Density of the bushing material, for the mass loss, 1 … 3e4 kg/m³. Only used "
+                     "if Wear law = archard.",
                      "kg/m³");
     prm.leave_subsection();
   }
@@ -67,7 +76,7 @@ namespace wearlink::wear
       declare(prm,
               "Cycle period",
               "0",
-              P::Double(0),
+              P::Double(0, 1e6),
               "Duration of one mechanism cycle (one crank revolution); 0 takes 2π/|ω| of the "
               "first angle driver. Only used by wear runs (some joint has Wear law = "
               "archard), as are all entries of this section except Clearance model.",
@@ -75,16 +84,18 @@ namespace wearlink::wear
       declare(prm,
               "Cycles per iteration",
               "1",
-              P::Double(0),
+              P::Double(0, 1e4),
               "Mechanism cycles simulated per wear iteration (wear is accumulated over them, "
-              "then extrapolated).",
+              "then extrapolated), at most 1e4: the load history of an iteration is kept in "
+              "memory, and extrapolation represents more cycles at no cost.",
               "cycles");
       declare(prm,
               "Number of iterations",
               "1",
-              P::Integer(1),
+              P::Integer(1, 100000),
               "Wear iterations (Extrapolation = fixed); the largest number of iterations "
-              "(adaptive).",
+              "(adaptive). At most 1e5 (each iteration simulates at least one cycle and keeps "
+              "a row of history; raise Extrapolation factor instead).",
               "none");
       declare(prm,
               "Extrapolation",
@@ -98,7 +109,7 @@ namespace wearlink::wear
       declare(prm,
               "Extrapolation factor",
               "1",
-              P::Double(0),
+              P::Double(0, 1e9),
               "fixed: revolutions represented by one simulated cycle.",
               "none");
       declare(prm,
@@ -111,7 +122,7 @@ namespace wearlink::wear
       declare(prm,
               "Maximum extrapolation factor",
               "1e6",
-              P::Double(0),
+              P::Double(0, 1e9),
               "adaptive: largest factor per iteration.",
               "none");
       declare(prm,
@@ -152,8 +163,9 @@ namespace wearlink::wear
       declare(prm,
               "Load samples per cycle",
               "100",
-              P::Integer(8),
-              "Pressure evaluations per cycle with Pressure evaluation = samples per cycle.",
+              P::Integer(8, 100000),
+              "Pressure evaluations per cycle with Pressure evaluation = samples per cycle, 8 … "
+              "1e5 (more windows than integrator steps give nothing).",
               "none");
       declare(prm,
               "Smoothing wavelength",
@@ -178,7 +190,7 @@ namespace wearlink::wear
       declare(prm,
               "Response cycles",
               "1",
-              P::Double(0),
+              P::Double(0, 1e4),
               "Cycles of the dynamic response recorded before wear (start of the first "
               "iteration) and after wear (a run with the final profiles from the same "
               "initial state), for the before/after plot.",

@@ -5,10 +5,12 @@
 #include "base/effect_ledger.h"
 #include "base/numbers.h"
 #include "base/text.h"
+#include "base/validity_warnings.h"
 #include "contact/hertz.h"
 
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace wearlink::workflows
@@ -201,6 +203,25 @@ namespace wearlink::workflows
       return hertz;
     }
 
+    /**
+     * Hertz's line contact assumes a contact narrow against the radii: a half-angle past
+     * 90° (a contact wider than half the pin) is far outside it, and so is the comparison.
+     */
+    ValidityWarnings
+    contact_case_warnings(const Json &hertz)
+    {
+      ValidityWarnings w;
+      for (const auto &row : hertz)
+        w.check({"Hertz contact half-angle at " + format_number(json_number(row.at("load_N")), 4) + " N",
+                 json_number(row.at("half_angle_deg")),
+                 90,
+                 "deg",
+                 "a contact wider than half the pin",
+                 "Hertz's theory assumes a contact narrow against the radii, so its row of the comparison does "
+                 "not apply (the FE solution does not rest on that assumption)"});
+      return w;
+    }
+
     /** The effect ledger as JSON. */
     Json
     ledger_json()
@@ -285,10 +306,15 @@ namespace wearlink::workflows
                     c.run_condensed ? fe::SolverKind::condensed : fe::SolverKind::reference,
                     run.root ? out + "/fields_" + std::to_string(k) + ".vtu" : std::string());
 
-    summary["ledger"]    = ledger_json();
-    summary["mpi_ranks"] = run.n_ranks;
+    summary["ledger"]               = ledger_json();
+    summary["mpi_ranks"]            = run.n_ranks;
+    const ValidityWarnings warnings = contact_case_warnings(summary["hertz"]);
+    summary["warnings"]             = warnings.json();
     if (run.root)
-      write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
+      {
+        write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
+        warnings.print(std::cerr);
+      }
     log << "\nWrote " << out << "/summary.json\n";
     return summary;
   }

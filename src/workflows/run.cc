@@ -5,6 +5,8 @@
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/interrupt.h"
+#include "base/text.h"
+#include "io/analyses_parameters.h"
 #include "mbs/assembly.h"
 #include "workflows/analyses.h"
 
@@ -346,6 +348,74 @@ namespace wearlink::workflows
     };
   } // namespace
 
+  namespace
+  {
+    /** The warnings of the integrator: constraint violation, energy balance, rk4 step. */
+    void
+    integrator_warnings(const io::Scene &scene, const Json &summary, ValidityWarnings &w)
+    {
+      const auto       &is       = scene.simulation.integrator;
+      const bool        rk4      = is.type == mbs::IntegratorType::rk4;
+      const double      position = is.absolute_tolerance.empty() ? 1e-9 : is.absolute_tolerance[0];
+      const double      limit    = std::max(1e3 * position, 1e-6);
+      const std::string reason = "1000 × the Position tolerance " + format_number(position, 3) + " m, at least 1 µm";
+      w.check({"largest constraint violation",
+               json_number(summary.at("max_constraint_violation_m")),
+               limit,
+               "m",
+               reason,
+               "the bodies drift off their joints; the motion is not that of the mechanism. Use a smaller Time "
+               "step (rk4) or the dopri5 integrator"});
+      // dopri5 keeps each step's local error near its relative tolerance; over a run the
+      // balance may lose a few hundred of them. rk4 promises no tolerance: 1 % is far off.
+      const double energy_limit = rk4 ? 1e-2 : std::max(1e3 * is.relative_tolerance, 1e-3);
+      w.check({"energy balance relative error",
+               json_number(summary.at("energy_balance_relative_error")),
+               energy_limit,
+               "",
+               rk4 ? std::string("1 % for the fixed-step rk4") :
+                     "1000 × the Relative tolerance " + format_number(is.relative_tolerance, 3) + ", at least 1e-3",
+               "the integrator does not conserve the energy it should; reduce the Time step (rk4) or the "
+               "tolerances (dopri5)"});
+      const double period = io::driving_period_if_known(scene);
+      if (rk4 && period > 0)
+        w.check({"rk4 Time step",
+                 is.time_step,
+                 period / 100,
+                 "s",
+                 "1/100 of the driving period " + format_number(period, 3) + " s",
+                 "a fixed step this long cannot follow the motion of one cycle, let alone contact impacts"});
+    }
+  } // namespace
+
+  ValidityWarnings
+  run_validity_warnings(const io::Scene &scene, const Json &summary)
+  {
+    ValidityWarnings w;
+    integrator_warnings(scene, summary, w);
+    for (const auto &[name, joint] : summary.at("clearance_joints").items())
+      {
+        const double clearance = json_number(joint.at("radial_clearance_m"));
+        w.check({"joint " + name + ": largest penetration",
+                 json_number(joint.at("max_penetration_m")),
+                 0.2 * clearance,
+                 "m",
+                 "20 % of the radial clearance " + format_number(clearance, 3) + " m",
+                 "the contact arc exceeds ±34°, where force laws that assume a contact narrow against the radii "
+                 "(hertz, lankarani-nikravesh, flores, the hertz-strip pressure) no longer hold; check the elastic "
+                 "moduli and the loads"});
+        if (joint.contains("extrapolations_above_table"))
+          w.check({"joint " + name + ": evaluations of the contact-law table above its largest load",
+                   json_number(joint.at("extrapolations_above_table")),
+                   0,
+                   "",
+                   "the table's range " + joint.at("table_force_range_N").dump() + " N",
+                   "their forces come from a power law extrapolated beyond the FE solutions; raise Table maximum "
+                   "force"});
+      }
+    return w;
+  }
+
   void
   assemble_scene(const io::Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v)
   {
@@ -407,7 +477,11 @@ namespace wearlink::workflows
           c[key] = count;
         ledger[category] = c;
       }
-    summary["effect_ledger"] = ledger;
+    summary["effect_ledger"]        = ledger;
+    const ValidityWarnings warnings = run_validity_warnings(scene, summary);
+    summary["warnings"]             = warnings.json();
+    if (options.warnings != nullptr)
+      options.warnings->merge(warnings);
 
     if (write)
       {
@@ -417,6 +491,7 @@ namespace wearlink::workflows
         scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
         write_file_atomically(options.output_directory + "/parameters.prm", prm.str());
         write_file_atomically(options.output_directory + "/summary.json", summary.dump(2));
+        warnings.print(std::cerr);
       }
     return summary;
   }

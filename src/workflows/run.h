@@ -8,6 +8,7 @@
 
 #include "analysis/recorded_run.h"
 #include "base/json.h"
+#include "base/validity_warnings.h"
 #include "io/scene.h"
 #include "mbs/simulation.h"
 
@@ -44,15 +45,32 @@ namespace wearlink::workflows
     const analysis::AnalysesSettings *analyses_settings = nullptr;
     /** If set (and analyses are on), receives what the analyses recorded. */
     analysis::RecordedRun *recorded = nullptr;
+    /**
+     * If set, receives this run's validity warnings (merged: a wear run collects those of
+     * all its iterations). They are always in the summary's `warnings` list, and printed
+     * to stderr when the run writes its summary.json.
+     */
+    ValidityWarnings *warnings = nullptr;
   };
 
   /**
    * Assemble and integrate @p scene from its start to its end time. Returns the run
-   * summary (see README: summary.json). Throws InputError for an impossible assembly,
+   * summary (see README: summary.json), whose `warnings` list names every result
+   * beyond the validity of its model (run_validity_warnings()). Throws InputError for an impossible assembly,
    * NumericalError for a failure of the numerics.
    */
   Json
   run_scene(io::Scene &scene, const RunOptions &options);
+
+  /**
+   * The results of a run (its @p summary) beyond the validity of their models: a
+   * penetration beyond 20 % of a joint's radial clearance, a constraint violation beyond
+   * 1000 × the position tolerance (at least 1 µm), an energy balance off by more than
+   * the integrator promises, an rk4 step above 1/100 of the driving period, evaluations
+   * of a contact-law table beyond its largest load.
+   */
+  ValidityWarnings
+  run_validity_warnings(const io::Scene &scene, const Json &summary);
 
   /** Assemble @p scene at its start time (q, v); throws InputError if impossible. */
   void

@@ -154,12 +154,12 @@ namespace wearlink::workflows
 
     /** The scene's dynamics as the wear loop advances them (no analyses per iteration). */
     wear::AdvanceDynamics
-    dynamics_of(io::Scene &scene)
+    dynamics_of(io::Scene &scene, ValidityWarnings &warnings)
     {
-      return [&scene](const double                            t0,
-                      const double                            t1,
-                      const Eigen::VectorXd                  &y0,
-                      const std::vector<mbs::StepObserver *> &observers) {
+      return [&scene, &warnings](const double                            t0,
+                                 const double                            t1,
+                                 const Eigen::VectorXd                  &y0,
+                                 const std::vector<mbs::StepObserver *> &observers) {
         Eigen::VectorXd y1;
         RunOptions      ro;
         ro.initial_state = &y0;
@@ -168,6 +168,7 @@ namespace wearlink::workflows
         ro.final_state   = &y1;
         ro.observers     = observers;
         ro.analyses      = false; // the scene's analyses run before and after wear instead
+        ro.warnings      = &warnings;
         run_scene(scene, ro);
         return y1;
       };
@@ -297,8 +298,10 @@ namespace wearlink::workflows
       ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
       ro.observers = {&after};
       ro.analyses  = false;
+      ro.warnings  = &result.warnings;
       Stopwatch dynamics;
-      result.summary = run_scene(scene, ro);
+      result.summary             = run_scene(scene, ro);
+      result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
       if (write)
@@ -330,6 +333,7 @@ namespace wearlink::workflows
       scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
       write_file_atomically(dir + "/parameters.prm", prm.str());
       write_file_atomically(dir + "/summary.json", result.summary.dump(2));
+      result.warnings.print(std::cerr);
     }
   } // namespace
 
@@ -398,12 +402,12 @@ namespace wearlink::workflows
     const double                          period  = cycle_period(scene);
     const std::vector<wear::WearingJoint> wearing = wearing_joints(scene);
     std::vector<std::string>              fe_meshes_copied;
-    wear::WearLoop loop(scene.wear_loop, wearing, scene.clearance_joints, period, dynamics_of(scene));
+    WearRunResult                         result;
+    wear::WearLoop loop(scene.wear_loop, wearing, scene.clearance_joints, period, dynamics_of(scene, result.warnings));
     start_or_resume(loop, scene, options, checkpoint);
     if (write)
       loop.set_checkpoint(checkpoint);
 
-    WearRunResult        result;
     unsigned int         done_here = 0;
     io::ResponseRecorder before(*scene.mechanism,
                                 io::response_body(scene),

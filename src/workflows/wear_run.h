@@ -9,6 +9,7 @@
 
 #include "base/json.h"
 #include "base/timings.h"
+#include "base/validity_warnings.h"
 #include "io/scene.h"
 #include "wear/wear_state.h"
 
@@ -48,6 +49,11 @@ namespace wearlink::workflows
      * before_after.md; its numbers are in summary["before_after"]).
      */
     std::string before_after_report;
+    /**
+     * Results beyond their models' validity, over all iterations of this process and the
+     * response after wear (summary["warnings"]; not kept across --resume).
+     */
+    ValidityWarnings warnings;
   };
 
   /** True if some clearance joint of @p scene has a wear law. */

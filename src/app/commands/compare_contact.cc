@@ -4,6 +4,7 @@
 // curves, tables and the plot.
 #include "app/command_line.h"
 #include "base/exceptions.h"
+#include "base/text.h"
 #include "workflows/contact_comparison.h"
 
 #include <filesystem>
@@ -48,7 +49,8 @@ pressure.csv (bore_angle_rad, then pressure_Pa_<model>_<state>_<joint>_<load>N),
 pressure.png, compare_contact.txt. The FE tables are cached like the fe law's (see
 --help of run).
 
-Exit status: 0 success, 2 bad input, 3 numerical failure.
+Exit status: 0 success, 2 bad input, 3 numerical failure, 4 an output that cannot
+be written or memory that ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     int
@@ -66,6 +68,9 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       r.worn_directory = a.value("--worn", "");
       r.cycles         = a.number("--cycles", 100);
       r.effects        = !a.has("--no-effects");
+      if (!(r.cycles > 0 && r.cycles <= 1e4))
+        throw InputError("--cycles is " + format_number(r.cycles) +
+                         "; it must be > 0 and at most 1e4 (the load history of the cycles is kept in memory).");
       if (!r.worn_directory.empty() && !std::filesystem::is_directory(r.worn_directory))
         throw InputError("--worn '" + r.worn_directory +
                          "' is not a directory; give the output directory of a wear run (it holds bore_<J>.csv "

@@ -51,7 +51,8 @@ Writes into DIR (default output/compare_dynamics), each file atomically:
   --published-note TEXT   their source and units
 
 Exit status: 0 success, 2 bad input (missing directory, a run without analyses, a
-channel not recorded in both, a delay below the sample interval).
+channel not recorded in both, a delay below the sample interval), 4 an output that
+cannot be written or memory that ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     workflows::ComparedRun

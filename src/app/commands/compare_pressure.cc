@@ -4,6 +4,7 @@
 // writes compare_pressure.csv, compare_depth_<J>.csv/.png.
 #include "app/command_line.h"
 #include "base/exceptions.h"
+#include "base/text.h"
 #include "io/scene.h"
 #include "workflows/pressure_comparison.h"
 
@@ -30,7 +31,8 @@ evaluation (with fe, 'samples per cycle' keeps it affordable).
 Writes into DIR (default: output/<scene name>_compare): compare_pressure.csv,
 compare_depth_<J>.csv and compare_depth_<J>.png.
 
-Exit status: 0 success, 2 bad input, 3 numerical failure.
+Exit status: 0 success, 2 bad input, 3 numerical failure, 4 an output that cannot
+be written or memory that ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     int
@@ -46,8 +48,9 @@ Exit status: 0 success, 2 bad input, 3 numerical failure.
       io::Scene                      scene  = io::read_scene(file, a.all("--set"));
       const std::vector<std::string> models = a.list("--models", "hertz-strip,winkler,fe");
       const double                   cycles = a.number("--cycles", scene.wear_loop.cycles_per_iteration);
-      if (!(cycles > 0))
-        throw InputError("--cycles must be > 0.");
+      if (!(cycles > 0 && cycles <= 1e4))
+        throw InputError("--cycles is " + format_number(cycles) +
+                         "; it must be > 0 and at most 1e4 (the load history of the cycles is kept in memory).");
       const auto c = workflows::compare_pressure_models(scene, models, cycles);
       std::cout << c.table();
       const std::string out = a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_compare");

@@ -52,7 +52,8 @@ ranks (METIS partitions of the mesh, a PETSc matrix factored by MUMPS); the cond
 solver runs on every rank (it is small and serial) and rank 0 writes all outputs. The
 answer is the serial one.
 
-Exit status: 0 success, 2 bad input, 3 numerical failure.
+Exit status: 0 success, 2 bad input, 3 numerical failure, 4 an output that cannot
+be written or memory that ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     int

@@ -70,7 +70,8 @@ Rosenstein: mean log divergence vs time with the fitted line), .csv (the plotted
 and .json (the summary).
 
 Exit status: 0 success, 2 bad input (missing file, unknown column, NaN or too short
-series, bad option value).
+series, bad option value), 4 an output that cannot be written or memory that ran
+out, 1 an internal error (see `wearlink --help`).
 )";
 
     /** A non-negative integer option (at least @p min), or unset. */

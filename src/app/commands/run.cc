@@ -79,8 +79,9 @@ Options:
   --quiet             no progress lines
 
 Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
-3 numerical failure, 4 a file could not be written (disk full, I/O error),
-130 / 143 stopped by SIGINT / SIGTERM.
+3 numerical failure, 4 an output that cannot be written (disk full, I/O error) or
+memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
+(see `wearlink --help`).
 )";
 
     /** The file names `wearlink run` writes (see the help above), for --overwrite. */

@@ -48,7 +48,8 @@ Options:
 )") + workflows::study_file_help() +
       R"(
 Exit status: 0 success (a run that fails is a row of the table), 2 bad input (nothing
-is written), 3 numerical failure.
+is written), 3 numerical failure, 4 an output that cannot be written or memory that
+ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     int

@@ -46,7 +46,8 @@ Options:
 A member whose value is invalid or whose run fails (e.g. a mechanism that cannot be
 assembled) is reported in members.csv, sweep.json and on the screen; the other members
 still run. Exit status: 0 if the sweep ran (even with failed members), 2 bad input
-(scene, option or channel), 3 if every member failed.
+(scene, option or channel), 3 if every member failed, 4 an output that cannot be
+written or memory that ran out, 1 an internal error (see `wearlink --help`).
 
 Outputs in DIR (written by rank 0 only, each atomically): bifurcation.csv,
 members.csv, bifurcation.png, sweep.json.

@@ -86,6 +86,76 @@ TEST(Parameters, OverridesAreChecked)
   EXPECT_THROW(apply_overrides(prm, {"Joint/Radial clearance"}), InputError);
 }
 
+// Malformed overrides are input errors with the form to use, never a crash: "=1" once
+// read past the end of an empty path (SIGSEGV).
+TEST(Parameters, MalformedOverridesNameTheProblem)
+{
+  dealii::ParameterHandler prm;
+  declare(prm);
+  for (const char *bad : {"=1", " = 1", "/Radial clearance=1", "Joint/=1", "Joint//Radial clearance=1", "Joint/"})
+    {
+      const auto m = wearlink::testing::input_error_message([&] { apply_overrides(prm, {bad}); });
+      EXPECT_NE(m.find(std::string("'--set ") + bad + "'"), std::string::npos) << m;
+      EXPECT_NE(m.find("Section/Sub/Entry=value"), std::string::npos) << m;
+    }
+  // The tree is left as it was (no subsection left entered).
+  apply_overrides(prm, {"Joint/Radial clearance=2e-4"});
+  prm.enter_subsection("Joint");
+  EXPECT_DOUBLE_EQ(prm.get_double("Radial clearance"), 2e-4);
+}
+
+// Some editors start a UTF-8 file with a byte-order mark; the first line is read as if
+// it were not there (deal.II would otherwise see an unknown line "\xEF\xBB\xBFsubsection").
+TEST(Parameters, ByteOrderMarkIsSkipped)
+{
+  const std::string dir = wearlink::testing::fresh_directory("prm_bom");
+  std::ofstream(dir + "/part.prm") << "\xEF\xBB\xBFsubsection Joint\n set Radial clearance = 0.3e-3\nend\n";
+  std::ofstream(dir + "/scene.prm") << "\xEF\xBB\xBF# a comment first\ninclude part.prm\nsubsection Joint\n set Youngs "
+                                       "modulus = 2e11\nend\n";
+  dealii::ParameterHandler prm;
+  declare(prm);
+  read_prm_file(prm, dir + "/scene.prm");
+  check_required_entries(prm, dir + "/scene.prm");
+  prm.enter_subsection("Joint");
+  EXPECT_DOUBLE_EQ(prm.get_double("Radial clearance"), 0.3e-3);
+  EXPECT_DOUBLE_EQ(prm.get_double("Youngs modulus"), 2e11);
+}
+
+// Includes that come back to a file being read are a cycle (named file by file); a long
+// chain without a cycle stops at the depth limit; a directory is not a parameter file.
+TEST(Parameters, IncludeCyclesDepthAndDirectoriesAreInputErrors)
+{
+  const std::string dir = wearlink::testing::fresh_directory("prm_cycles");
+  std::ofstream(dir + "/self.prm") << "# includes itself\ninclude self.prm\n";
+  std::ofstream(dir + "/a.prm") << "include b.prm\n";
+  std::ofstream(dir + "/b.prm") << "\n\ninclude ./a.prm\n";
+  for (int k = 0; k < 20; ++k)
+    std::ofstream(dir + "/chain" + std::to_string(k) + ".prm") << "include chain" << k + 1 << ".prm\n";
+  std::ofstream(dir + "/chain20.prm") << "subsection Joint\n set Radial clearance = 1e-4\nend\n";
+
+  dealii::ParameterHandler prm;
+  declare(prm);
+  const auto self = wearlink::testing::input_error_message([&] { read_prm_file(prm, dir + "/self.prm"); });
+  EXPECT_NE(self.find("self.prm line 2"), std::string::npos) << self;
+  EXPECT_NE(self.find("cycle of includes: '" + dir + "/self.prm' → '" + dir + "/self.prm'"), std::string::npos) << self;
+
+  const auto cycle = wearlink::testing::input_error_message([&] { read_prm_file(prm, dir + "/a.prm"); });
+  EXPECT_NE(cycle.find("b.prm line 3"), std::string::npos) << cycle;
+  EXPECT_NE(cycle.find("'" + dir + "/a.prm' → '" + dir + "/b.prm' → '" + dir + "/./a.prm'"), std::string::npos)
+    << cycle;
+
+  const auto deep = wearlink::testing::input_error_message([&] { read_prm_file(prm, dir + "/chain0.prm"); });
+  EXPECT_NE(deep.find("17 files deep; at most 16"), std::string::npos) << deep;
+  // 16 files deep is allowed.
+  read_prm_file(prm, dir + "/chain5.prm");
+  prm.enter_subsection("Joint");
+  EXPECT_DOUBLE_EQ(prm.get_double("Radial clearance"), 1e-4);
+  prm.leave_subsection();
+
+  const auto folder = wearlink::testing::input_error_message([&] { read_prm_file(prm, dir); });
+  EXPECT_NE(folder.find("'" + dir + "' is a directory, not a parameter file"), std::string::npos) << folder;
+}
+
 // Settings made by the program go through one typed builder: numbers to 17 significant
 // digits (they read back exactly), later settings win, and a path the user sets removes
 // the program's own setting of it.
@@ -101,4 +171,30 @@ TEST(Parameters, OverridesBuilderFormatsNumbersOnceAndLetsTheUserWin)
   ASSERT_EQ(o.settings().size(), 2u);
   EXPECT_EQ(o.settings().back(), "Simulation/End time = 2");
   EXPECT_EQ(wearlink::ParameterOverrides::path_of(o.settings().back()), "Simulation/End time");
+}
+
+// `--output ""` once ran and wrote into the root directory; every command that takes
+// --output refuses an empty value (exit status 2) before it reads or writes anything.
+TEST(CommandLine, EmptyOutputIsRefusedByEveryCommand)
+{
+  const std::string                           scene    = wearlink::testing::source_path("params/nine_bar_ideal.prm");
+  const std::vector<std::vector<std::string>> commands = {{"run", scene},
+                                                          {"contact",
+                                                           wearlink::testing::source_path("params/pin_bushing.prm")},
+                                                          {"compare-pressure", scene},
+                                                          {"compare-contact", scene},
+                                                          {"compare-dynamics", "before", "after"},
+                                                          {"study", "accuracy", scene},
+                                                          {"sweep", scene},
+                                                          {"lyapunov", "series.csv"}};
+  for (auto args : commands)
+    {
+      const std::string name = args[0] == "study" ? "study accuracy" : args[0];
+      args.insert(args.end(), {"--output", ""});
+      const auto r = wearlink::testing::run_wearlink(args);
+      EXPECT_EQ(r.exit_status, 2) << name << ": " << r.output;
+      EXPECT_NE(r.output.find("The option --output of `wearlink " + name + "` is given an empty value"),
+                std::string::npos)
+        << name << ": " << r.output;
+    }
 }
