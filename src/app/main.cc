@@ -37,7 +37,9 @@ namespace
            "  2  bad input: scene, file or command line (the message says what to fix)\n"
            "  3  numerical failure in a valid scene (the message names time, joint, residual)\n"
            "  4  the environment failed: an output that cannot be written (permission, disk\n"
-           "     full) or memory that ran out\n";
+           "     full) or memory that ran out\n"
+           "  128 + N  stopped by signal N (130 SIGINT, 143 SIGTERM): temporary files removed,\n"
+           "     the last checkpoint kept\n";
   }
 } // namespace
 

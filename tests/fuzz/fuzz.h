@@ -28,10 +28,12 @@ namespace wearlink::fuzz
   is_documented_exit_status(int status);
 
   /**
-   * The factor by which the reported constraint violation may exceed the integrator's
-   * position tolerance before summary.json must carry a warning that says so.
+   * The documented rule (README, `warnings`): a constraint violation beyond
+   * violation_warning_factor × the integrator's position tolerance, and at least
+   * violation_warning_floor_m, must be in summary.json's `warnings`.
    */
-  inline constexpr double violation_warning_factor = 10;
+  inline constexpr double violation_warning_factor  = 1000;
+  inline constexpr double violation_warning_floor_m = 1e-6;
 
   // ---- randomness -------------------------------------------------------------------
 

@@ -18,7 +18,8 @@
 // within physical ranges (clearance, masses and inertias, elastic moduli, restitution,
 // friction, crank speed, integrator tolerances, Baumgarte factors). Besides the checks
 // above it must not be rejected as bad input (exit 2), and wherever the reported
-// constraint violation exceeds violation_warning_factor × the position tolerance,
+// constraint violation exceeds violation_warning_factor × the position tolerance (and
+// violation_warning_floor_m),
 // summary.json must say so in its `warnings` list.
 //
 // Every failure prints the seed and index, the mutations, the tail of the program's
@@ -446,8 +447,10 @@ namespace
             const double ratio = violation / tolerance;
             worst_ratio        = std::max(worst_ratio, ratio);
             over_tolerance += ratio > 1;
-            over_factor += ratio > violation_warning_factor;
-            if (ratio > violation_warning_factor && !warns_about_constraints(summary))
+            const bool must_warn =
+              violation > std::max(violation_warning_factor * tolerance, violation_warning_floor_m);
+            over_factor += must_warn;
+            if (must_warn && !warns_about_constraints(summary))
               problems.push_back("max_constraint_violation_m = " + sci(violation) + " is " + sci(ratio) +
                                  " × the position tolerance " + sci(tolerance) +
                                  ", and summary.json has no warning about it (`warnings`)");
@@ -489,8 +492,8 @@ namespace
     tally.print("random scenes seed " + std::to_string(o.seed) + ", indices " + std::to_string(o.first) + "–" +
                 std::to_string(o.first + o.count - 1));
     std::cout << "  constraint violation / position tolerance: worst " << sci(worst_ratio) << "; above 1 in "
-              << over_tolerance << " runs, above " << violation_warning_factor << " (a warning required) in "
-              << over_factor << "\n";
+              << over_tolerance << " runs, above " << violation_warning_factor << " and " << violation_warning_floor_m
+              << " m (a warning required) in " << over_factor << "\n";
     return tally.failures.empty() ? 0 : 1;
   }
 } // namespace
