@@ -2,6 +2,7 @@
 #include "base/parameters.h"
 
 #include "base/exceptions.h"
+#include "base/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -393,6 +394,10 @@ namespace wearlink
         {
           if (++line_no == 1)
             strip_byte_order_mark(line);
+          if (!is_valid_utf8(line))
+            throw InputError("In " + filename + " line " + std::to_string(line_no) +
+                             ": the line is not valid UTF-8 text (a stray byte, e.g. a Latin-1 "
+                             "character or a binary file). Save the file as UTF-8.");
           const std::string body = strip_comment(line);
           if (starts_with_word(body, "subsection"))
             ++depth;
@@ -536,9 +541,13 @@ namespace wearlink
   {
     for (const auto &o : overrides.settings())
       {
-        const auto                     parts = override_path_parts(o);
-        const std::string              path  = trim(o.substr(0, o.find('=')));
-        const std::string              value = trim(o.substr(o.find('=') + 1));
+        const auto        parts = override_path_parts(o);
+        const std::string path  = trim(o.substr(0, o.find('=')));
+        const std::string value = trim(o.substr(o.find('=') + 1));
+        if (!is_valid_utf8(o))
+          throw InputError("The override '--set " + path +
+                           "=…' is not valid UTF-8 text (a stray byte, e.g. a Latin-1 character). "
+                           "Write it in UTF-8.");
         const std::string              entry = parts.back();
         const std::vector<std::string> sections(parts.begin(), parts.end() - 1);
         if (!sections.empty() && !prm.subsection_path_exists(sections))

@@ -22,4 +22,43 @@ namespace wearlink
     os << std::setprecision(significant_digits) << value;
     return os.str();
   }
+
+  bool
+  is_valid_utf8(const std::string &s)
+  {
+    std::size_t i = 0;
+    while (i < s.size())
+      {
+        const auto   c = static_cast<unsigned char>(s[i]);
+        unsigned int n = 0; // continuation bytes
+        char32_t     code;
+        if (c < 0x80)
+          {
+            ++i;
+            continue;
+          }
+        if (c >= 0xC2 && c <= 0xDF)
+          n = 1, code = c & 0x1F;
+        else if (c >= 0xE0 && c <= 0xEF)
+          n = 2, code = c & 0x0F;
+        else if (c >= 0xF0 && c <= 0xF4)
+          n = 3, code = c & 0x07;
+        else
+          return false; // a continuation byte without a lead, or an invalid lead
+        if (i + n >= s.size())
+          return false; // truncated
+        for (unsigned int k = 1; k <= n; ++k)
+          {
+            const auto b = static_cast<unsigned char>(s[i + k]);
+            if ((b & 0xC0) != 0x80)
+              return false;
+            code = (code << 6) | (b & 0x3F);
+          }
+        const char32_t smallest[] = {0, 0x80, 0x800, 0x10000};
+        if (code < smallest[n] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+          return false;
+        i += n + 1;
+      }
+    return true;
+  }
 } // namespace wearlink

@@ -19,4 +19,12 @@ namespace wearlink
    */
   std::string
   format_number(double value, int significant_digits = std::numeric_limits<double>::max_digits10);
+
+  /**
+   * Whether @p s is well-formed UTF-8 (no stray continuation bytes, no truncated or
+   * overlong sequences, no surrogates, nothing above U+10FFFF). Text that ends up in a
+   * JSON file must be.
+   */
+  bool
+  is_valid_utf8(const std::string &s);
 } // namespace wearlink

@@ -248,7 +248,13 @@ namespace wearlink::io
               P::Double(),
               "translational, fixed-angle and angle-driver: θ2 − θ1 at t = 0.",
               "rad");
-      declare(prm, "Angular velocity", "0", P::Double(), "angle-driver: constant rate of θ2 − θ1.", "rad/s");
+      declare(prm,
+              "Angular velocity",
+              "0",
+              P::Double(-1e4, 1e4),
+              "angle-driver: constant rate of θ2 − θ1, at most 1e4 rad/s in magnitude (95,000 rpm: "
+              "beyond any mechanism this tool models).",
+              "rad/s");
       declare(prm,
               "Model",
               "ideal",
@@ -300,7 +306,13 @@ namespace wearlink::io
               P::Double(1e-15, 1),
               "dopri5: absolute error tolerance of velocities (m/s, rad/s), 1e-15 … 1.",
               "m/s");
-      declare(prm, "Maximum step", "1e-3", P::Double(0, 1), "dopri5: largest step, at most 1 s.", "s");
+      declare(prm,
+              "Maximum step",
+              "1e-3",
+              P::Double(1e-7, 1),
+              "dopri5: largest step, 1e-7 … 1 s (below 1e-7 s a simulated second would take more than "
+              "ten million steps: the error control, not this cap, resolves fast contact).",
+              "s");
       declare(prm,
               "Minimum step",
               "1e-14",
@@ -518,6 +530,14 @@ namespace wearlink::io
         r.fail_section("the pin profile (mean radius " + format_number(d.geometry.pin.mean_radius()) +
                        " m) is not smaller than the bore profile (mean radius " +
                        format_number(d.geometry.bore.mean_radius()) + " m): the pin does not fit in the bore.");
+      // Wear only opens a bore and thins a pin: a profile whose pin reaches beyond the
+      // bore's narrowest point is a damaged file, not a worn pair.
+      if (!(d.geometry.pin.max_radius() < d.geometry.bore.min_radius()))
+        r.fail_section("the pin profile reaches out to " + format_number(d.geometry.pin.max_radius(), 6) +
+                       " m, beyond the narrowest radius of the bore profile (" +
+                       format_number(d.geometry.bore.min_radius(), 6) +
+                       " m): the pin would cut through the bushing. Check the profile files (a radius of the "
+                       "wrong unit or a damaged line).");
 
       d.geometry.axial_length                = r.get_positive("Axial length");
       d.geometry.bushing.youngs_modulus      = r.get_positive("Bushing elastic modulus");
@@ -553,12 +573,13 @@ namespace wearlink::io
       // ground bushing; a good guess otherwise).
       const double bushing_angle =
         desc.bushing_body == mbs::ground ? 0.0 : scene.mechanism->get_bodies()[desc.bushing_body].initial_angle;
-      scene.assembly_constraints.push_back(mbs::make_revolute(joint,
-                                                              desc.bushing_body,
-                                                              desc.bushing_point,
-                                                              desc.pin_body,
-                                                              desc.pin_point,
-                                                              mbs::rotate(e0, bushing_angle)));
+      // A revolute constraint's second body moves: with the pin on the ground, the pair is
+      // written the other way round (p_bushing − p_pin = −e).
+      const mbs::Vec2 e = mbs::rotate(e0, bushing_angle);
+      scene.assembly_constraints.push_back(
+        desc.pin_body == mbs::ground ?
+          mbs::make_revolute(joint, desc.pin_body, desc.pin_point, desc.bushing_body, desc.bushing_point, -e) :
+          mbs::make_revolute(joint, desc.bushing_body, desc.bushing_point, desc.pin_body, desc.pin_point, e));
       scene.clearance_joints.push_back(joint_element.get());
       scene.mechanism->add_force_element(std::move(joint_element));
     }

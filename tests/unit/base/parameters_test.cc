@@ -4,6 +4,7 @@
 // command-line overrides checked against the declared tree.
 #include "base/exceptions.h"
 #include "base/parameters.h"
+#include "base/text.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -197,4 +198,19 @@ TEST(CommandLine, EmptyOutputIsRefusedByEveryCommand)
                 std::string::npos)
         << name << ": " << r.output;
     }
+}
+
+// Text that reaches summary.json must be UTF-8 (a Latin-1 title once ran a whole
+// simulation and then failed in the JSON writer).
+TEST(Text, Utf8ValidationAcceptsTextAndRefusesStrayBytes)
+{
+  EXPECT_TRUE(is_valid_utf8("plain ASCII"));
+  EXPECT_TRUE(is_valid_utf8("Ambrósio, 5000 rpm, θ₂ − θ₁, 𝜋"));
+  EXPECT_TRUE(is_valid_utf8(""));
+  EXPECT_FALSE(is_valid_utf8("caf\xe9")); // Latin-1 é
+  EXPECT_FALSE(is_valid_utf8("\x80 stray continuation"));
+  EXPECT_FALSE(is_valid_utf8("truncated \xe2\x88"));      // the first two of three bytes
+  EXPECT_FALSE(is_valid_utf8("overlong \xc0\xaf"));       // '/' in two bytes
+  EXPECT_FALSE(is_valid_utf8("surrogate \xed\xa0\x80"));  // U+D800
+  EXPECT_FALSE(is_valid_utf8("beyond \xf4\x90\x80\x80")); // U+110000
 }
