@@ -164,12 +164,12 @@ TEST(StudyAccuracy, QuickStudyVariesTheActiveKnobsAndTimesEveryRun)
   EXPECT_LT(coarse.first, fine.first) << "the reference has the most iterations";
   EXPECT_NEAR(coarse.first * coarse.second, fine.first * fine.second, 1e-6 * fine.first * fine.second)
     << "every wear-step value represents the same revolutions";
-  // Rows at the scene's own settings are one run, measured once: the contact-law
-  // reference (the scene's law) and the wear step 2 × f (the quick scene's) share its time.
-  const auto &scene_law = by_knob["contact-law"].back();
+  // Rows at the scene's own settings are one run, measured once: the discrete-areas
+  // reference (the quick scene's 360 areas) and the wear step 2 × f (its 2 iterations).
+  const auto &scene_areas = by_knob["discrete-areas"].back();
   ASSERT_EQ(parts(wear_step[1]).first, 2.0) << "quick: the scene's 2 iterations";
-  EXPECT_EQ(scene_law.at("wall_time_s"), wear_step[1].at("wall_time_s"))
-    << scene_law.at("value") << " and " << wear_step[1].at("value") << " are the same scene";
+  EXPECT_EQ(scene_areas.at("wall_time_s"), wear_step[1].at("wall_time_s"))
+    << scene_areas.at("value") << " areas and " << wear_step[1].at("value") << " are the same scene";
 
   std::ifstream     md(dir + "/accuracy.md");
   std::stringstream text;
