@@ -81,6 +81,53 @@ namespace wearlink::io
           prm.leave_subsection();
         }
     }
+
+    /**
+     * The load states of subsection Loads (force or eccentricity control, one state per
+     * magnitude along the load direction) for a bore of radius @p R1 and a pin of @p R2.
+     */
+    std::vector<fe::LoadCase>
+    read_load_states(ParameterReader       &reader,
+                     const double           R1,
+                     const double           R2,
+                     bool                  &force_control,
+                     std::array<double, 2> &direction)
+    {
+      reader.enter("Loads");
+      force_control     = reader.get("Control") == "force";
+      direction         = reader.get_point("Load direction");
+      const double norm = std::hypot(direction[0], direction[1]);
+      if (!(norm > 0))
+        reader.fail("Load direction", "it must be a non-zero vector");
+      std::vector<fe::LoadCase> loads;
+      for (const auto &v : reader.get_list(force_control ? "Load magnitudes" : "Eccentricities"))
+        {
+          fe::LoadCase lc;
+          lc.control             = force_control ? fe::Control::force : fe::Control::displacement;
+          lc.bushing_angle       = reader.get_double("Bushing angle") * pi / 180;
+          lc.pin_angle           = reader.get_double("Pin angle") * pi / 180;
+          const double magnitude = std::stod(v);
+          if (!(magnitude > 0))
+            reader.fail(force_control ? "Load magnitudes" : "Eccentricities", "every value must be > 0");
+          // The FE model is small-strain linear elasticity: strains of order approach / R2
+          // beyond a few per cent describe no real material (steel yields near 0.2 %).
+          const double max_approach = 0.05 * R2;
+          if (!force_control && magnitude - (R1 - R2) > max_approach)
+            reader.fail("Eccentricities",
+                        "the eccentricity " + format_number(magnitude, 4) + " m pushes the pin " +
+                          format_number(magnitude - (R1 - R2), 4) + " m into the bore, beyond 5 % of the pin radius (" +
+                          format_number(max_approach, 4) +
+                          " m), where small-strain linear elasticity (the FE model) no "
+                          "longer describes any material",
+                        "Give eccentricities up to the radial clearance + 5 % of the pin radius (" +
+                          format_number(R1 - R2 + max_approach, 4) + " m); realistic approaches are micrometres.");
+          const std::array<double, 2> value = {magnitude * direction[0] / norm, magnitude * direction[1] / norm};
+          (force_control ? lc.load : lc.eccentricity) = value;
+          loads.push_back(lc);
+        }
+      reader.leave();
+      return loads;
+    }
   } // namespace
 
   void
@@ -185,39 +232,9 @@ namespace wearlink::io
       }
 
     // Load states.
-    reader.enter("Loads");
-    const bool   force_control = reader.get("Control") == "force";
-    const auto   direction     = reader.get_point("Load direction");
-    const double norm          = std::hypot(direction[0], direction[1]);
-    if (!(norm > 0))
-      reader.fail("Load direction", "it must be a non-zero vector");
-    std::vector<fe::LoadCase> loads;
-    for (const auto &v : reader.get_list(force_control ? "Load magnitudes" : "Eccentricities"))
-      {
-        fe::LoadCase lc;
-        lc.control             = force_control ? fe::Control::force : fe::Control::displacement;
-        lc.bushing_angle       = reader.get_double("Bushing angle") * pi / 180;
-        lc.pin_angle           = reader.get_double("Pin angle") * pi / 180;
-        const double magnitude = std::stod(v);
-        if (!(magnitude > 0))
-          reader.fail(force_control ? "Load magnitudes" : "Eccentricities", "every value must be > 0");
-        // The FE model is small-strain linear elasticity: strains of order approach / R2
-        // beyond a few per cent describe no real material (steel yields near 0.2 %).
-        const double max_approach = 0.05 * R2;
-        if (!force_control && magnitude - (R1 - R2) > max_approach)
-          reader.fail("Eccentricities",
-                      "the eccentricity " + format_number(magnitude, 4) + " m pushes the pin " +
-                        format_number(magnitude - (R1 - R2), 4) + " m into the bore, beyond 5 % of the pin radius (" +
-                        format_number(max_approach, 4) +
-                        " m), where small-strain linear elasticity (the FE model) no "
-                        "longer describes any material",
-                      "Give eccentricities up to the radial clearance + 5 % of the pin radius (" +
-                        format_number(R1 - R2 + max_approach, 4) + " m); realistic approaches are micrometres.");
-        const std::array<double, 2> value = {magnitude * direction[0] / norm, magnitude * direction[1] / norm};
-        (force_control ? lc.load : lc.eccentricity) = value;
-        loads.push_back(lc);
-      }
-    reader.leave();
+    bool                  force_control = true;
+    std::array<double, 2> direction{};
+    const auto            loads = read_load_states(reader, R1, R2, force_control, direction);
 
     reader.enter("FE model");
     fe::FeSettings settings         = fe::read_fe_settings(reader);

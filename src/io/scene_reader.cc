@@ -477,26 +477,13 @@ namespace wearlink::io
     // ------------------------------------------------------------------------------
     // Construction.
 
-    void
-    build_clearance_joint(Scene             &scene,
-                          ParameterReader   &r,
-                          const std::string &joint,
-                          int                body_1,
-                          const mbs::Vec2   &point_1,
-                          int                body_2,
-                          const mbs::Vec2   &point_2)
+    /**
+     * Bore radius, clearance and the two profiles (round, or from profile files) of the
+     * clearance joint in @p r's current section into @p d; returns the radial clearance.
+     */
+    double
+    read_clearance_profiles(ParameterReader &r, contact::ClearanceJointDescription &d)
     {
-      r.enter("Clearance");
-      contact::ClearanceJointDescription d;
-      d.name               = joint;
-      const bool bush_on_1 = r.get("Bushing on") == "body 1";
-      d.bushing_body       = bush_on_1 ? body_1 : body_2;
-      d.bushing_point      = bush_on_1 ? point_1 : point_2;
-      d.pin_body           = bush_on_1 ? body_2 : body_1;
-      d.pin_point          = bush_on_1 ? point_2 : point_1;
-      if (d.pin_body == mbs::ground && d.bushing_body == mbs::ground)
-        r.fail_section("a clearance joint needs at least one moving body.");
-
       const double bore      = r.get_positive("Bore radius");
       const double clearance = r.get_double("Radial clearance");
       if (!(clearance > 0))
@@ -538,7 +525,13 @@ namespace wearlink::io
                        format_number(d.geometry.bore.min_radius(), 6) +
                        " m): the pin would cut through the bushing. Check the profile files (a radius of the "
                        "wrong unit or a damaged line).");
+      return clearance;
+    }
 
+    /** Axial length, materials and the effective-radius convention into @p d. */
+    void
+    read_clearance_materials(ParameterReader &r, contact::ClearanceJointDescription &d)
+    {
       d.geometry.axial_length                = r.get_positive("Axial length");
       d.geometry.bushing.youngs_modulus      = r.get_positive("Bushing elastic modulus");
       d.geometry.bushing.poisson_ratio       = r.get_double("Bushing Poisson ratio");
@@ -550,6 +543,30 @@ namespace wearlink::io
         r.fail("Pin Poisson ratio", "it must be < 0.5 (incompressible is not allowed)");
       d.effective_radius = r.get("Effective radius") == "internal" ? contact::EffectiveRadius::internal :
                                                                      contact::EffectiveRadius::seed_printed;
+    }
+
+    void
+    build_clearance_joint(Scene             &scene,
+                          ParameterReader   &r,
+                          const std::string &joint,
+                          int                body_1,
+                          const mbs::Vec2   &point_1,
+                          int                body_2,
+                          const mbs::Vec2   &point_2)
+    {
+      r.enter("Clearance");
+      contact::ClearanceJointDescription d;
+      d.name               = joint;
+      const bool bush_on_1 = r.get("Bushing on") == "body 1";
+      d.bushing_body       = bush_on_1 ? body_1 : body_2;
+      d.bushing_point      = bush_on_1 ? point_1 : point_2;
+      d.pin_body           = bush_on_1 ? body_2 : body_1;
+      d.pin_point          = bush_on_1 ? point_2 : point_1;
+      if (d.pin_body == mbs::ground && d.bushing_body == mbs::ground)
+        r.fail_section("a clearance joint needs at least one moving body.");
+
+      const double clearance = read_clearance_profiles(r, d);
+      read_clearance_materials(r, d);
 
       d.normal_force_law = r.get("Normal force law");
       auto normal        = contact::normal_force_laws().create(d.normal_force_law, r, "Normal force law");
