@@ -43,6 +43,21 @@ namespace wearlink::mbs
   void
   Mechanism::finalize()
   {
+    index_rows_and_bodies();
+    order_schur_rows();
+    plan_schur_assembly();
+    const unsigned int nb = n_bodies();
+    rhs.setZero(n_equations);
+    lambda.setZero(n_equations);
+    forces.setZero(3 * nb);
+    trig.assign(2 * nb, 0.0);
+    work.assign(n_equations, 0.0);
+    inverse_pivot.assign(n_equations, 0.0);
+  }
+
+  void
+  Mechanism::index_rows_and_bodies()
+  {
     const unsigned int nb = n_bodies();
     row_offset.resize(constraints.size());
     n_equations = 0;
@@ -68,13 +83,17 @@ namespace wearlink::mbs
       }
     rows.resize(constraints.size());
     schur.assign(std::size_t(n_equations) * n_equations, 0.0);
+  }
 
+  void
+  Mechanism::order_schur_rows()
+  {
     // Coupling graph of the constraint rows: two rows are coupled when they share a body.
     const unsigned int                     m = n_equations;
     std::vector<std::vector<unsigned int>> adjacent(m);
-    for (unsigned int b = 0; b < nb; ++b)
-      for (const auto &[c1, s1] : body_constraints[b])
-        for (const auto &[c2, s2] : body_constraints[b])
+    for (const auto &list : body_constraints)
+      for (const auto &[c1, s1] : list)
+        for (const auto &[c2, s2] : list)
           for (unsigned int k1 = 0; k1 < constraints[c1]->n_equations(); ++k1)
             for (unsigned int k2 = 0; k2 < constraints[c2]->n_equations(); ++k2)
               if (row_offset[c1] + k1 != row_offset[c2] + k2)
@@ -124,11 +143,36 @@ namespace wearlink::mbs
           f = std::min(f, permuted[a]);
         first_column[permuted[r]] = f;
       }
-    rhs.setZero(n_equations);
-    lambda.setZero(n_equations);
-    forces.setZero(3 * nb);
-    trig.assign(2 * nb, 0.0);
-    work.assign(n_equations, 0.0);
+  }
+
+  void
+  Mechanism::plan_schur_assembly()
+  {
+    // Every pair of constraint rows that share a body contributes one product per body
+    // to the lower triangle of S; listing them once removes the index arithmetic and
+    // the nested loops from every right-hand side.
+    const unsigned int m = n_equations;
+    schur_terms.clear();
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      for (const auto &[c1, side1] : body_constraints[b])
+        for (const auto &[c2, side2] : body_constraints[b])
+          for (unsigned int k1 = 0; k1 < constraints[c1]->n_equations(); ++k1)
+            for (unsigned int k2 = 0; k2 < constraints[c2]->n_equations(); ++k2)
+              {
+                const unsigned int row = permuted[row_offset[c1] + k1];
+                const unsigned int col = permuted[row_offset[c2] + k2];
+                if (col > row)
+                  continue;
+                const ConstraintRows &r1 = rows[c1], &r2 = rows[c2];
+                schur_terms.push_back({std::size_t(row) * m + col,
+                                       side1 == 0 ? r1.jac_i[k1] : r1.jac_j[k1],
+                                       side2 == 0 ? r2.jac_i[k2] : r2.jac_j[k2],
+                                       &inverse_mass[3 * b]});
+              }
+    // In memory order of the targets, for locality.
+    std::stable_sort(schur_terms.begin(), schur_terms.end(), [](const SchurTerm &x, const SchurTerm &y) {
+      return x.target < y.target;
+    });
   }
 
   void
@@ -173,8 +217,7 @@ namespace wearlink::mbs
     const unsigned int nb = n_bodies();
     for (unsigned int b = 0; b < nb; ++b)
       {
-        trig[2 * b]     = std::cos(q[3 * b + 2]);
-        trig[2 * b + 1] = std::sin(q[3 * b + 2]);
+        ::sincos(q[3 * b + 2], &trig[2 * b + 1], &trig[2 * b]); // one call for both (glibc)
       }
     const StateView s(q, v, trig.data());
     apply_forces(t, s, power);
@@ -241,78 +284,56 @@ namespace wearlink::mbs
   void
   Mechanism::assemble_schur_complement()
   {
-    const unsigned int nb = n_bodies();
-    // S = Φq M⁻¹ Φqᵀ from the per-body blocks (lower triangle only).
+    // S = Φq M⁻¹ Φqᵀ, lower triangle, from the planned products (plan_schur_assembly).
     const unsigned int m = n_equations;
     for (unsigned int i = 0; i < m; ++i)
       std::fill(schur.begin() + i * m + first_column[i], schur.begin() + i * m + i + 1, 0.0);
-    for (unsigned int b = 0; b < nb; ++b)
-      {
-        const auto &list = body_constraints[b];
-        for (const auto &[c1, side1] : list)
-          {
-            const auto &r1 = rows[c1];
-            for (const auto &[c2, side2] : list)
-              {
-                const auto &r2 = rows[c2];
-                for (unsigned int k1 = 0; k1 < r1.n; ++k1)
-                  {
-                    const double      *j1  = side1 == 0 ? r1.jac_i[k1] : r1.jac_j[k1];
-                    const unsigned int row = permuted[row_offset[c1] + k1];
-                    for (unsigned int k2 = 0; k2 < r2.n; ++k2)
-                      {
-                        const unsigned int col = permuted[row_offset[c2] + k2];
-                        if (col > row)
-                          continue;
-                        const double *j2 = side2 == 0 ? r2.jac_i[k2] : r2.jac_j[k2];
-                        schur[row * m + col] += j1[0] * inverse_mass[3 * b] * j2[0] +
-                                                j1[1] * inverse_mass[3 * b + 1] * j2[1] +
-                                                j1[2] * inverse_mass[3 * b + 2] * j2[2];
-                      }
-                  }
-              }
-          }
-      }
+    double *S = schur.data();
+    for (const SchurTerm &t : schur_terms)
+      S[t.target] += t.a[0] * t.w[0] * t.b[0] + t.a[1] * t.w[1] * t.b[1] + t.a[2] * t.w[2] * t.b[2];
   }
 
   void
   Mechanism::factor_schur_complement(const double t)
   {
     const unsigned int m = n_equations;
-    // Cholesky S = L Lᵀ in place within the envelope, then λ = S⁻¹ rhs. S has a few
-    // dozen rows at most; a plain envelope factorization beats a blocked dense library
-    // one by a wide margin here (measured with callgrind on the nine-bar: Eigen's
-    // dynamic LLT spent ~3× the instructions in its blocking and GEMV kernels, the
-    // dense loop ~2× those of the envelope loop).
+    // Cholesky S = L Lᵀ in place within the envelope, row by row (each entry is one
+    // contiguous dot product of two rows). S has a few dozen rows at most; a plain
+    // envelope factorization beats a blocked dense library one by a wide margin here
+    // (callgrind on the nine-bar: Eigen's dynamic LLT spent ~3× the instructions in its
+    // blocking and GEMV kernels). The reciprocal pivots are kept for the solves.
     double *L = schur.data();
-    for (unsigned int j = 0; j < m; ++j)
+    for (unsigned int i = 0; i < m; ++i)
       {
-        const unsigned int fj = first_column[j];
-        double             d  = L[j * m + j];
-        for (unsigned int k = fj; k < j; ++k)
-          d -= L[j * m + k] * L[j * m + k];
-        if (!(d > 1e-14 * (1.0 + std::abs(L[j * m + j]))))
+        double            *Li = L + std::size_t(i) * m;
+        const unsigned int fi = first_column[i];
+        for (unsigned int j = fi; j < i; ++j)
           {
-            std::ostringstream os;
-            os << "The constraint Jacobian lost rank at t = " << t
-               << " s (the mechanism locks up or passes a singular position); the "
-                  "equations of motion cannot be solved. Check the joint geometry and the "
-                  "drivers.";
-            throw NumericalError(os.str());
+            const double *Lj = L + std::size_t(j) * m;
+            double        s  = Li[j];
+            for (unsigned int k = std::max(fi, first_column[j]); k < j; ++k)
+              s -= Li[k] * Lj[k];
+            Li[j] = s * inverse_pivot[j];
           }
-        d                = std::sqrt(d);
-        L[j * m + j]     = d;
-        const double inv = 1.0 / d;
-        for (unsigned int i = j + 1; i < m; ++i)
-          {
-            if (first_column[i] > j)
-              continue;
-            double s = L[i * m + j];
-            for (unsigned int k = std::max(fj, first_column[i]); k < j; ++k)
-              s -= L[i * m + k] * L[j * m + k];
-            L[i * m + j] = s * inv;
-          }
+        double d = Li[i];
+        for (unsigned int k = fi; k < i; ++k)
+          d -= Li[k] * Li[k];
+        if (!(d > 1e-14 * (1.0 + std::abs(Li[i]))))
+          throw_rank_loss(t);
+        Li[i]            = std::sqrt(d);
+        inverse_pivot[i] = 1.0 / Li[i];
       }
+  }
+
+  void
+  Mechanism::throw_rank_loss(const double t) const
+  {
+    std::ostringstream os;
+    os << "The constraint Jacobian lost rank at t = " << t
+       << " s (the mechanism locks up or passes a singular position); the "
+          "equations of motion cannot be solved. Check the joint geometry and the "
+          "drivers.";
+    throw NumericalError(os.str());
   }
 
   void
@@ -324,17 +345,19 @@ namespace wearlink::mbs
       work[permuted[r]] = rhs[r];
     for (unsigned int i = 0; i < m; ++i) // L y = rhs
       {
-        double s = work[i];
+        const double *Li = L + std::size_t(i) * m;
+        double        s  = work[i];
         for (unsigned int k = first_column[i]; k < i; ++k)
-          s -= L[i * m + k] * work[k];
-        work[i] = s / L[i * m + i];
+          s -= Li[k] * work[k];
+        work[i] = s * inverse_pivot[i];
       }
     for (unsigned int i = m; i-- > 0;) // Lᵀ λ = y
       {
-        const double x = work[i] / L[i * m + i];
-        work[i]        = x;
+        const double *Li = L + std::size_t(i) * m;
+        const double  x  = work[i] * inverse_pivot[i];
+        work[i]          = x;
         for (unsigned int k = first_column[i]; k < i; ++k)
-          work[k] -= L[i * m + k] * x;
+          work[k] -= Li[k] * x;
       }
     for (unsigned int r = 0; r < m; ++r)
       lambda[r] = work[permuted[r]];

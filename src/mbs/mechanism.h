@@ -175,9 +175,22 @@ namespace wearlink::mbs
     /** S = Φq M⁻¹ Φqᵀ from the per-body blocks (lower triangle, envelope only). */
     void
     assemble_schur_complement();
+    // The steps of finalize().
+    /** Row offsets of the constraints, M⁻¹, and which constraints touch each body. */
+    void
+    index_rows_and_bodies();
+    /** The permutation of S (reverse Cuthill–McKee) and its envelope. */
+    void
+    order_schur_rows();
+    /** The flat list of products that assemble S (schur_terms). */
+    void
+    plan_schur_assembly();
     /** S = L Lᵀ in place; NumericalError naming @p t if Φq lost rank. */
     void
     factor_schur_complement(double t);
+    /** The NumericalError of a singular S (Φq lost rank) at time @p t. */
+    [[noreturn]] void
+    throw_rank_loss(double t) const;
     /** λ = S⁻¹ rhs (two triangular solves in the permuted order). */
     void
     solve_multipliers();
@@ -210,9 +223,22 @@ namespace wearlink::mbs
     std::vector<double>       schur;
     std::vector<unsigned int> permuted;     ///< row r of Φ sits at position permuted[r] in S
     std::vector<unsigned int> first_column; ///< envelope start per permuted row
-    Eigen::VectorXd           rhs, lambda, forces;
-    std::vector<double>       trig; ///< cos θ, sin θ per body
-    std::vector<double>       work; ///< permuted right-hand side / solution
+    /**
+     * One product of the assembly: S[target] += Σ_d a[d] w[d] b[d], with a and b the
+     * Jacobian rows (3 entries, one body) of two constraint rows that share the body
+     * and w that body's M⁻¹ diagonal. Planned once by finalize(); the pointers are into
+     * `rows` and `inverse_mass`, which are never resized afterwards.
+     */
+    struct SchurTerm
+    {
+      std::size_t   target;
+      const double *a, *b, *w;
+    };
+    std::vector<SchurTerm> schur_terms;
+    Eigen::VectorXd        rhs, lambda, forces;
+    std::vector<double>    trig;          ///< cos θ, sin θ per body
+    std::vector<double>    work;          ///< permuted right-hand side / solution
+    std::vector<double>    inverse_pivot; ///< 1 / L_ii of the last factorization
 
     long evaluations = 0;
   };
