@@ -6,7 +6,11 @@
 //   dopri5  Dormand–Prince 5(4) with embedded error estimate, PI step-size control
 //           (Hairer, Nørsett & Wanner, Solving ODE I, §II.4–5 and the dopri5 code) and
 //           the 4th-order continuous extension for dense output.
-// Both finish every step with f evaluated at the new point (FSAL for dopri5, the next
+//   dop853  Dormand–Prince 8(5,3) (Hairer's DOP853: 12 stages, an error estimate that
+//           blends the 5th- and 3rd-order embedded solutions, I control) with the
+//           7th-order dense output, whose three extra stages are evaluated only for the
+//           steps in which dense output is asked for.
+// All finish every step with f evaluated at the new point (FSAL for dopri5, the next
 // step's first stage for rk4), so an observer reading the system after step() sees the
 // accelerations and reactions of the accepted state.
 #pragma once
@@ -32,14 +36,18 @@ namespace wearlink::mbs
   enum class IntegratorType
   {
     rk4,
-    dopri5
+    dopri5,
+    dop853
   };
 
-  /** "rk4" / "dopri5" → type; throws InputError on anything else. */
+  /** "rk4" / "dopri5" / "dop853" → type; throws InputError on anything else. */
   IntegratorType
   parse_integrator_type(const std::string &name);
   std::string
   integrator_names();
+  /** The scene's name of @p type. */
+  std::string
+  integrator_name(IntegratorType type);
 
   struct IntegratorSettings
   {

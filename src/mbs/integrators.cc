@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "base/exceptions.h"
+#include "mbs/adaptive_runge_kutta.h"
 #include "mbs/integrator.h"
 
 #include <algorithm>
@@ -15,13 +16,30 @@ namespace wearlink::mbs
       return IntegratorType::rk4;
     if (name == "dopri5")
       return IntegratorType::dopri5;
+    if (name == "dop853")
+      return IntegratorType::dop853;
     throw InputError("Unknown integrator '" + name + "'; valid are " + integrator_names() + ".");
   }
 
   std::string
   integrator_names()
   {
-    return "rk4|dopri5";
+    return "rk4|dopri5|dop853";
+  }
+
+  std::string
+  integrator_name(const IntegratorType type)
+  {
+    switch (type)
+      {
+        case IntegratorType::rk4:
+          return "rk4";
+        case IntegratorType::dopri5:
+          return "dopri5";
+        case IntegratorType::dop853:
+          return "dop853";
+      }
+    throw InputError("Unknown integrator type.");
   }
 
   Integrator::Integrator(OdeSystem &system, const IntegratorSettings &settings)
@@ -142,106 +160,36 @@ namespace wearlink::mbs
                        d6 = -1453857185.0 / 822651844, d7 = 69997945.0 / 29380423;
     } // namespace dp
 
-    class DormandPrince : public Integrator
+    class DormandPrince : public AdaptiveRungeKutta
     {
     public:
+      // PI control as in Hairer's dopri5: β = 0.04, growth ≤ 10, shrink ≤ 5 per step.
       DormandPrince(OdeSystem &system, const IntegratorSettings &settings)
-        : Integrator(system, settings)
+        : AdaptiveRungeKutta(system, settings, Controller{0.2 - 0.75 * 0.04, 0.04, 0.2, 10.0}, 5)
       {
         const unsigned int n = system.size();
         for (auto *v : {&k2, &k3, &k4, &k5, &k6, &k7, &tmp, &err, &r2, &r3, &r4, &r5})
           v->setZero(n);
-        tolerance.resize(n);
-        for (unsigned int i = 0; i < n; ++i)
-          tolerance[i] = i < settings.absolute_tolerance.size() ? settings.absolute_tolerance[i] : 1e-9;
-        h = settings.initial_step;
       }
 
       void
       step(double t_limit) override
       {
         if (!(h > 0))
-          h = initial_step_size();
+          h = initial_step_size(tmp, k2);
         bool last_rejected = false;
         while (true)
           {
-            double hs = std::min({h, settings.max_step, t_limit - t});
-            if (!(hs > 0))
-              throw NumericalError("dopri5: no time left to step (t = " + std::to_string(t) + " s).");
-            if (hs < settings.min_step && hs < t_limit - t)
-              {
-                std::ostringstream os;
-                os << "dopri5: the step size fell to " << hs << " s at t = " << t << " s (minimum " << settings.min_step
-                   << " s); the error tolerance cannot be met there. Loosen "
-                      "Integrator/Relative tolerance or look for a singular position.";
-                throw NumericalError(os.str());
-              }
-            using namespace dp;
-            tmp = y + hs * a21 * f;
-            evaluate(t + c2 * hs, tmp, k2);
-            tmp = y + hs * (a31 * f + a32 * k2);
-            evaluate(t + c3 * hs, tmp, k3);
-            tmp = y + hs * (a41 * f + a42 * k2 + a43 * k3);
-            evaluate(t + c4 * hs, tmp, k4);
-            tmp = y + hs * (a51 * f + a52 * k2 + a53 * k3 + a54 * k4);
-            evaluate(t + c5 * hs, tmp, k5);
-            tmp = y + hs * (a61 * f + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
-            evaluate(t + hs, tmp, k6);
-            tmp                = y + hs * (a71 * f + a73 * k3 + a74 * k4 + a75 * k5 + a76 * k6);
+            const double hs    = trial_step(t_limit, "dopri5");
             const double t_new = (hs >= t_limit - t) ? t_limit : t + hs;
-            evaluate(t_new, tmp, k7);
-            err = hs * (e1 * f + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
-
-            double       sum          = 0;
-            unsigned int n_controlled = 0;
-            for (Eigen::Index i = 0; i < y.size(); ++i)
-              if (tolerance[i] > 0)
-                {
-                  const double sc =
-                    tolerance[i] + settings.relative_tolerance * std::max(std::abs(y[i]), std::abs(tmp[i]));
-                  const double r = err[i] / sc;
-                  sum += r * r;
-                  ++n_controlled;
-                }
-            double error_norm = std::sqrt(sum / std::max(1u, n_controlled));
-            if (!std::isfinite(error_norm))
-              error_norm = 1e10; // a blown-up trial step is rejected and shrunk
-
-            // PI step-size control (Hairer's dopri5: β = 0.04).
-            constexpr double beta = 0.04, safe = 0.9, fac_min = 0.2, fac_max = 10.0;
-            const double     expo  = 0.2 - 0.75 * beta;
-            const double     fac11 = std::pow(error_norm, expo);
-            if (error_norm <= 1.0)
+            stages(hs, t_new);
+            err = hs * (dp::e1 * f + dp::e3 * k3 + dp::e4 * k4 + dp::e5 * k5 + dp::e6 * k6 + dp::e7 * k7);
+            if (control(error_norm(err, tmp), hs, last_rejected))
               {
-                double fac   = fac11 / std::pow(fac_old, beta);
-                fac          = std::max(1.0 / fac_max, std::min(1.0 / fac_min, fac / safe));
-                double h_new = hs / fac;
-                if (last_rejected)
-                  h_new = std::min(h_new, hs);
-                fac_old = std::max(error_norm, 1e-4);
-
-                // Dense-output coefficients (continuous extension of order 4).
-                r2 = tmp - y;
-                r3 = hs * f - r2;
-                r4 = r2 - hs * k7 - r3;
-                r5 = hs * (d1 * f + d3 * k3 + d4 * k4 + d5 * k5 + d6 * k6 + d7 * k7);
-
-                y_prev = y;
-                f_prev = f;
-                t_prev = t;
-                y      = tmp;
-                f      = k7;
-                t      = t_new;
-                // A step shortened to land on t_limit (an event or the end time) says
-                // little about the next one: keep the earlier proposal if it was larger.
-                const bool truncated = hs < std::min(h, settings.max_step);
-                h                    = truncated ? std::max(h, h_new) : h_new;
-                ++n_accepted;
+                prepare_dense_output(hs);
+                advance(t_new, tmp, k7);
                 return;
               }
-            ++n_rejected;
-            last_rejected = true;
-            h             = hs / std::min(1.0 / fac_min, fac11 / safe);
           }
       }
 
@@ -262,43 +210,37 @@ namespace wearlink::mbs
       }
 
     private:
-      /** Hairer's starting-step heuristic (Solving ODE I, §II.4). */
-      double
-      initial_step_size()
+      /** The seven stages from (t, y, f); the 5th-order solution lands in tmp, f there in k7. */
+      void
+      stages(const double hs, const double t_new)
       {
-        double       d0 = 0, d1 = 0;
-        unsigned int n_controlled = 0;
-        for (Eigen::Index i = 0; i < y.size(); ++i)
-          if (tolerance[i] > 0)
-            {
-              const double sc = tolerance[i] + settings.relative_tolerance * std::abs(y[i]);
-              d0 += (y[i] / sc) * (y[i] / sc);
-              d1 += (f[i] / sc) * (f[i] / sc);
-              ++n_controlled;
-            }
-        d0        = std::sqrt(d0 / std::max(1u, n_controlled));
-        d1        = std::sqrt(d1 / std::max(1u, n_controlled));
-        double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
-        h0        = std::min(h0, settings.max_step);
-        tmp       = y + h0 * f;
-        evaluate(t + h0, tmp, k2);
-        double d2 = 0;
-        for (Eigen::Index i = 0; i < y.size(); ++i)
-          if (tolerance[i] > 0)
-            {
-              const double sc = tolerance[i] + settings.relative_tolerance * std::abs(y[i]);
-              d2 += ((k2[i] - f[i]) / sc) * ((k2[i] - f[i]) / sc);
-            }
-        d2 = std::sqrt(d2 / std::max(1u, n_controlled)) / h0;
-        const double h1 =
-          std::max(d1, d2) <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / std::max(d1, d2), 0.2);
-        return std::min({100 * h0, h1, settings.max_step});
+        using namespace dp;
+        tmp = y + hs * a21 * f;
+        evaluate(t + c2 * hs, tmp, k2);
+        tmp = y + hs * (a31 * f + a32 * k2);
+        evaluate(t + c3 * hs, tmp, k3);
+        tmp = y + hs * (a41 * f + a42 * k2 + a43 * k3);
+        evaluate(t + c4 * hs, tmp, k4);
+        tmp = y + hs * (a51 * f + a52 * k2 + a53 * k3 + a54 * k4);
+        evaluate(t + c5 * hs, tmp, k5);
+        tmp = y + hs * (a61 * f + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
+        evaluate(t + hs, tmp, k6);
+        tmp = y + hs * (a71 * f + a73 * k3 + a74 * k4 + a75 * k5 + a76 * k6);
+        evaluate(t_new, tmp, k7);
       }
 
-      Eigen::VectorXd     k2, k3, k4, k5, k6, k7, tmp, err, r2, r3, r4, r5;
-      std::vector<double> tolerance;
-      double              h       = 0;
-      double              fac_old = 1e-4;
+      /** Coefficients of the continuous extension of order 4 (before advance()). */
+      void
+      prepare_dense_output(const double hs)
+      {
+        using namespace dp;
+        r2 = tmp - y;
+        r3 = hs * f - r2;
+        r4 = r2 - hs * k7 - r3;
+        r5 = hs * (d1 * f + d3 * k3 + d4 * k4 + d5 * k5 + d6 * k6 + d7 * k7);
+      }
+
+      Eigen::VectorXd k2, k3, k4, k5, k6, k7, tmp, err, r2, r3, r4, r5;
     };
   } // namespace
 
@@ -311,6 +253,8 @@ namespace wearlink::mbs
           return std::make_unique<RK4>(system, settings);
         case IntegratorType::dopri5:
           return std::make_unique<DormandPrince>(system, settings);
+        case IntegratorType::dop853:
+          return make_dop853(system, settings);
       }
     throw InputError("Unknown integrator type.");
   }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace wearlink::mbs
 {
@@ -45,7 +46,7 @@ namespace wearlink::mbs
           }
       }
     integrator    = make_integrator(system, s);
-    locate_events = s.type == IntegratorType::dopri5;
+    locate_events = s.type != IntegratorType::rk4;
     scratch.setZero(system.size());
   }
 
@@ -69,6 +70,8 @@ namespace wearlink::mbs
       if (e->has_event() && (e->event_value(s) > 0) != e->mode())
         e->on_event(t0, s, e->event_value(s) > 0);
     integrator->reset(t0, y0);
+    budget_start_time  = t0;
+    budget_start_steps = integrator->n_accepted + integrator->n_rejected;
   }
 
   void
@@ -83,6 +86,26 @@ namespace wearlink::mbs
   {
     dydt.resize(system.size());
     system.rhs(t, y.data(), dydt.data());
+  }
+
+  void
+  Simulation::check_step_budget() const
+  {
+    if (!(settings.max_steps_per_second > 0))
+      return;
+    const long   steps   = integrator->n_accepted + integrator->n_rejected - budget_start_steps;
+    const double elapsed = integrator->time() - budget_start_time;
+    if (steps <= settings.step_budget_grace + settings.max_steps_per_second * elapsed)
+      return;
+    std::ostringstream os;
+    os << "The integrator took " << steps << " steps for " << elapsed << " s of motion (t = " << integrator->time()
+       << " s, mean step " << elapsed / static_cast<double>(steps)
+       << " s), beyond the step budget of Integrator/Maximum steps per second = " << settings.max_steps_per_second
+       << " (plus " << settings.step_budget_grace
+       << "). Contact or constraints this stiff lie far outside the scene's model: check the joint "
+          "geometry (attachment points), the elastic moduli and the loads; set Maximum steps per second = 0 "
+          "to run on regardless.";
+    throw NumericalError(os.str());
   }
 
   double
@@ -194,6 +217,7 @@ namespace wearlink::mbs
             roots.swap(now_roots);
           }
 
+        check_step_budget();
         if (!integrator->state().allFinite())
           throw NumericalError("The state became non-finite at t = " + std::to_string(integrator->time()) + " s.");
         {

@@ -75,6 +75,12 @@ namespace wearlink::mbs
     IntegratorSettings integrator;
     /** Time resolution of located events [s]. */
     double event_time_tolerance = 1e-12;
+    /**
+     * Step budget [1/s]: more than step_budget_grace + this × the simulated time steps
+     * (rejected ones included) since initialize() is a NumericalError; 0: no budget.
+     */
+    double max_steps_per_second = 1e7;
+    double step_budget_grace    = 2e5;
   };
 
   class Simulation;
@@ -168,6 +174,10 @@ namespace wearlink::mbs
     }
 
   private:
+    /** NumericalError when the steps since initialize() exceed the budget. */
+    void
+    check_step_budget() const;
+
     /** Locate the root of element @p e's event function in the last step. */
     double
     locate(const ForceElement &e, bool onset) const;
@@ -177,8 +187,10 @@ namespace wearlink::mbs
     MechanismOde                system;
     std::unique_ptr<Integrator> integrator;
     bool                        locate_events;
-    long                        events   = 0;
-    long                        restarts = 0;
+    long                        events             = 0;
+    long                        restarts           = 0;
+    double                      budget_start_time  = 0; ///< time of initialize() [s]
+    long                        budget_start_steps = 0; ///< steps taken before it
     mutable Eigen::VectorXd     scratch;
   };
 } // namespace wearlink::mbs

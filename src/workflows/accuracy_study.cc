@@ -88,6 +88,8 @@ namespace wearlink::workflows
     {
       static const std::vector<std::pair<std::string, std::string>> c = {
         {"integrator-tolerance", "dopri5 Relative tolerance (Position tolerance = 1e-3 m × it, Velocity = it m/s)"},
+        {"integrator-method",
+         "Integrator/Method dopri5 | dop853 at the scene's tolerances, against dopri5 at a tenth of them"},
         {"integrator-step", "rk4 Time step"},
         {"baumgarte", "Baumgarte alpha = beta"},
         {"contact-law", "Normal force law of every clearance joint"},
@@ -463,6 +465,27 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       }
     };
 
+    /**
+     * The embedded pairs at the scene's tolerance @p rel; the reference is dopri5 at a
+     * tenth of it (the integrator-tolerance knob's tightest run, so measured once).
+     */
+    Knob
+    method_knob(const double rel)
+    {
+      Knob k;
+      k.name        = "integrator-method";
+      k.description = description_of(k.name);
+      k.targets     = {{"Integrator/Method"},
+                       {"Integrator/Relative tolerance"},
+                       {"Integrator/Position tolerance"},
+                       {"Integrator/Velocity tolerance"}};
+      for (const auto &[method, f] :
+           std::vector<std::pair<std::string, double>>{{"dop853", 1}, {"dopri5", 1}, {"dopri5", 0.1}})
+        k.values.push_back({method, label(rel * f), label(rel * f * 1e-3), label(rel * f)});
+      k.reference = "dopri5 at a tenth of the tolerances";
+      return k;
+    }
+
     /** The integrator's tolerance (dopri5) or step (rk4), and the Baumgarte factors. */
     void
     integrator_knobs(const KnobContext &c, std::vector<Knob> &knobs)
@@ -471,7 +494,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       const bool  quick = c.quick;
       // Integrator: tolerance (dopri5) or step (rk4).
       const auto &in = scene.simulation.integrator;
-      if (in.type == mbs::IntegratorType::dopri5)
+      if (in.type != mbs::IntegratorType::rk4)
         {
           Knob k;
           k.name           = "integrator-tolerance";
@@ -487,6 +510,8 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
             }
           k.reference = "tightest tolerance";
           knobs.push_back(k);
+          if (!quick)
+            knobs.push_back(method_knob(rel));
         }
       else
         knobs.push_back(

@@ -151,17 +151,17 @@ namespace wearlink::workflows
       Json
       summary(const mbs::Simulation &sim, double wall_time) const
       {
-        Json s                = Json::object();
-        s["scene"]            = scene.file;
-        s["title"]            = scene.title;
-        s["wall_time_s"]      = wall_time;
-        s["simulated_time_s"] = sim.time() - t_start;
-        s["integrator"]       = scene.simulation.integrator.type == mbs::IntegratorType::rk4 ? "rk4" : "dopri5";
-        s["steps"]            = sim.get_integrator().n_accepted;
-        s["rejected_steps"]   = sim.get_integrator().n_rejected;
-        s["rhs_evaluations"]  = rhs_evaluations();
-        s["contact_events"]   = sim.n_events();
-        s["event_restarts"]   = sim.n_event_restarts();
+        Json s                          = Json::object();
+        s["scene"]                      = scene.file;
+        s["title"]                      = scene.title;
+        s["wall_time_s"]                = wall_time;
+        s["simulated_time_s"]           = sim.time() - t_start;
+        s["integrator"]                 = mbs::integrator_name(scene.simulation.integrator.type);
+        s["steps"]                      = sim.get_integrator().n_accepted;
+        s["rejected_steps"]             = sim.get_integrator().n_rejected;
+        s["rhs_evaluations"]            = rhs_evaluations();
+        s["contact_events"]             = sim.n_events();
+        s["event_restarts"]             = sim.n_event_restarts();
         s["max_constraint_violation_m"] = max_violation;
 
         // Energy balance: ΔT + ΔV = W_reactions − D_damping − D_friction, with the

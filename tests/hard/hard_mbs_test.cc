@@ -3,6 +3,7 @@
 // tests/hard/pendulum_clearance.prm (a 1 kg bob hanging on one clearance joint, steel
 // pin R2 = 9.5 mm in a steel bore R1 = 10 mm, L = 40 mm, c = 0.5 mm; no ideal joint)
 // gives cases with analytic answers; the nine-bar scenes give the extreme clearances.
+#include "base/exceptions.h"
 #include "base/parameters.h"
 #include "scene_support.h"
 
@@ -355,4 +356,43 @@ TEST(HardCases, PinOnTheGroundIsTheMirrorOfABushingOnTheGround)
   const double ca = json_number(runs[0].at("bodies").at("coupler").at("max_abs_ax_m_s2"));
   const double cb = json_number(runs[1].at("bodies").at("coupler").at("max_abs_ax_m_s2"));
   EXPECT_NEAR(ca, cb, 1e-3 * cb);
+}
+
+// A legal but degenerate nine-bar (the fuzzer's mutant 363: two attachment points deleted,
+// so joint D holds the plate at its centre of mass and the crank O1 at its own): the
+// mechanism assembles, but its joints then carry loads that press pin B 0.15 mm into its
+// bore, and the integrator needs ~4e7 steps per simulated second (mean step 2e-8 s).
+// Before the step budget this crawled on for hours; now it ends as a numerical failure
+// whose message names the budget, the steps and the mean step — and so does any scene
+// run with a budget below what it needs.
+TEST(HardCases, AStepBudgetEndsARunThatCrawls)
+{
+  const std::vector<std::string> degenerate = {"Joint D/Point on body 1=0, 0",
+                                               "Joint O1/Point on body 2=0, 0",
+                                               "Output/Time series=false"};
+  auto                           scene      = wearlink::testing::scene("params/nine_bar_clearance.prm", degenerate);
+  try
+    {
+      wearlink::testing::run(scene);
+      ADD_FAILURE() << "the degenerate nine-bar ran to its end";
+    }
+  catch (const NumericalError &e)
+    {
+      const std::string what = e.what();
+      std::cout << what << "\n";
+      EXPECT_NE(what.find("Maximum steps per second"), std::string::npos);
+      EXPECT_NE(what.find("mean step"), std::string::npos);
+    }
+  // The shipped scene passes a budget 100 × above its needs and fails one 100 × below.
+  auto ok = wearlink::testing::scene("params/nine_bar_clearance.prm",
+                                     {"Simulation/End time=0.5",
+                                      "Integrator/Maximum steps per second=1.5e6",
+                                      "Output/Time series=false"});
+  EXPECT_NO_THROW(wearlink::testing::run(ok));
+  auto tight                         = wearlink::testing::scene("params/nine_bar_clearance.prm",
+                                        {"Simulation/End time=0.5",
+                                                                 "Integrator/Maximum steps per second=150",
+                                                                 "Output/Time series=false"});
+  tight.simulation.step_budget_grace = 100;
+  EXPECT_THROW(wearlink::testing::run(tight), NumericalError);
 }

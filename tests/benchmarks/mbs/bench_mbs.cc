@@ -4,7 +4,8 @@
 // with ideal joints (params/nine_bar_ideal.prm at the clearance scene's tolerances), in
 // one process. Prints wall time, process CPU time (the one-core figure, insensitive to
 // other load on the machine), accepted/rejected steps, right-hand-side evaluations,
-// contact events, and the clearance/ideal ratios. No time is asserted.
+// contact events, and the clearance/ideal ratios; the clearance scene also with dop853.
+// No time is asserted. Instructions per step: instructions_per_step.sh (callgrind).
 //   usage: bench_mbs [cycles]
 #include "base/effect_ledger.h"
 #include "base/parameters.h"
@@ -49,7 +50,10 @@ main(int argc, char **argv)
                         "Integrator/Velocity tolerance=1e-6"})
     ideal_overrides.push_back(o);
 
-  const Json c = run("params/nine_bar_clearance.prm", common);
+  const Json c                = run("params/nine_bar_clearance.prm", common);
+  auto       dop853_overrides = common;
+  dop853_overrides.push_back("Integrator/Method=dop853");
+  const Json d = run("params/nine_bar_clearance.prm", dop853_overrides);
   const Json i = run("params/nine_bar_ideal.prm", ideal_overrides);
 
   auto row = [](const char *name, const Json &s) {
@@ -75,6 +79,7 @@ main(int argc, char **argv)
               "events",
               "cpu/rhs [s]");
   row("clearance A and B", c);
+  row("  the same, dop853", d);
   row("ideal joints", i);
   std::printf("ratio clearance/ideal: wall time %.1f, cpu time %.1f, rhs evaluations %.1f\n",
               json_number(c.at("wall_time_s")) / json_number(i.at("wall_time_s")),
@@ -85,8 +90,13 @@ main(int argc, char **argv)
               100 * json_number(c.at("clearance_joints").at("A").at("fraction_in_contact")),
               json_number(c.at("clearance_joints").at("B").at("impacts")),
               100 * json_number(c.at("clearance_joints").at("B").at("fraction_in_contact")));
-  std::printf("energy balance relative error: clearance %.2e, ideal %.2e\n",
+  std::printf("energy balance relative error: clearance %.2e (dop853 %.2e), ideal %.2e\n",
               json_number(c.at("energy_balance_relative_error")),
+              json_number(d.at("energy_balance_relative_error")),
               json_number(i.at("energy_balance_relative_error")));
+  std::printf("dop853/dopri5: cpu time %.2f, steps %.2f, rhs evaluations %.2f\n",
+              json_number(d.at("cpu_time_s")) / json_number(c.at("cpu_time_s")),
+              json_number(d.at("steps")) / json_number(c.at("steps")),
+              json_number(d.at("rhs_evaluations")) / json_number(c.at("rhs_evaluations")));
   return 0;
 }

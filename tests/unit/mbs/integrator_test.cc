@@ -5,13 +5,20 @@
 //  - dopri5 meets its tolerance: the global error at t = 2π follows the tolerance
 //    (ratio of errors for tolerances 1e-6 and 1e-9 at least 100, i.e. error ∝ tol^≥⅔);
 //  - the dense outputs are accurate between steps: rk4's cubic Hermite to O(h⁴) and
-//    dopri5's 4th-order continuous extension to within 10× the step tolerance.
+//    dopri5's 4th-order continuous extension to within 10× the step tolerance;
+//  - dop853 is 8th order: at a fixed step (tolerance so loose that every step is
+//    accepted at the maximum step) halving the step divides the error by 2⁸ = 256
+//    (accepted 180 … 360), it meets its tolerance like dopri5, its 7th-order dense output
+//    is as accurate as its steps, and after a dense output the system was last evaluated
+//    at the accepted state (observers read the system's workspace after a step).
 #include "base/exceptions.h"
 #include "mbs/integrator.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <iostream>
 
 using namespace wearlink::mbs;
 
@@ -34,6 +41,21 @@ namespace
   };
 
   constexpr double two_pi = 6.283185307179586;
+
+  /** The oscillator that remembers the last point it was evaluated at. */
+  class RecordingOscillator : public Oscillator
+  {
+  public:
+    void
+    rhs(double t, const double *y, double *f) override
+    {
+      last_t = t;
+      last_y = {y[0], y[1]};
+      Oscillator::rhs(t, y, f);
+    }
+    double                last_t = -1;
+    std::array<double, 2> last_y{0, 0};
+  };
 
   /** Integrate to 2π; return the final error and the worst dense-output error. */
   std::pair<double, double>
@@ -88,6 +110,60 @@ TEST(Integrators, Dopri5FollowsItsTolerance)
   EXPECT_LT(tight.first, 1e-7);
   EXPECT_GT(loose.first / tight.first, 100.0);
   EXPECT_LT(tight.second, 1e-8);
+}
+
+TEST(Integrators, Dop853IsEighthOrder)
+{
+  IntegratorSettings s;
+  s.type               = IntegratorType::dop853;
+  s.relative_tolerance = 1.0; // every step accepted at the maximum step
+  s.max_step           = two_pi / 12;
+  const auto coarse    = run(s);
+  s.max_step           = two_pi / 24;
+  const auto   fine    = run(s);
+  const double ratio   = coarse.first / fine.first;
+  std::cout << "dop853 at h = 2π/12: error " << coarse.first << ", at 2π/24: " << fine.first << ", ratio " << ratio
+            << " (8th order: 256)\n";
+  EXPECT_GT(ratio, 180.0);
+  EXPECT_LT(ratio, 360.0);
+  // The 7th-order continuous extension stays near the step's own accuracy.
+  EXPECT_LT(fine.second, 1e-7);
+}
+
+TEST(Integrators, Dop853FollowsItsTolerance)
+{
+  IntegratorSettings s;
+  s.type               = IntegratorType::dop853;
+  s.max_step           = 1.0;
+  s.relative_tolerance = 1e-6;
+  const auto loose     = run(s);
+  s.relative_tolerance = 1e-10;
+  const auto tight     = run(s);
+  EXPECT_LT(tight.first, 1e-8);
+  EXPECT_GT(loose.first / tight.first, 100.0);
+  EXPECT_LT(tight.second, 1e-8);
+}
+
+TEST(Integrators, Dop853LeavesTheSystemAtTheAcceptedStateAfterDenseOutput)
+{
+  RecordingOscillator osc;
+  IntegratorSettings  s;
+  s.type               = IntegratorType::dop853;
+  s.relative_tolerance = 1e-8;
+  s.absolute_tolerance = {1e-8, 1e-8};
+  auto integ           = make_integrator(osc, s);
+  integ->reset(0, Eigen::Vector2d(1, 0));
+  integ->step(1.0);
+  const long before = integ->n_evaluations;
+  double     y[2];
+  integ->dense_output(0.5 * (integ->previous_time() + integ->time()), y);
+  // Three extra stages, then the accepted state again; a second read costs nothing.
+  EXPECT_EQ(integ->n_evaluations - before, 4);
+  integ->dense_output(integ->previous_time() + 0.25 * (integ->time() - integ->previous_time()), y);
+  EXPECT_EQ(integ->n_evaluations - before, 4);
+  EXPECT_EQ(osc.last_t, integ->time());
+  EXPECT_EQ(osc.last_y[0], integ->state()[0]);
+  EXPECT_EQ(osc.last_y[1], integ->state()[1]);
 }
 
 TEST(Integrators, UnknownNameIsAnInputError)

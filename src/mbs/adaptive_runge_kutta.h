@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// What the embedded Runge–Kutta pairs (dopri5, dop853) share: the weighted error norm,
+// the step-size controller (Hairer, Nørsett & Wanner, Solving ODE I, §II.4), the
+// starting-step heuristic and the checks of the proposed step. Each pair supplies its
+// stages, its error estimate and its dense output.
+#pragma once
+
+#include "mbs/integrator.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+namespace wearlink::mbs
+{
+  class AdaptiveRungeKutta : public Integrator
+  {
+  protected:
+    /** Constants of the controller h_new = h / clamp(err^expo / err_old^beta / safe). */
+    struct Controller
+    {
+      double expo;    ///< 1/(q+1) − (share of) beta for an error estimate of order q
+      double beta;    ///< the PI memory (0: a plain I controller)
+      double fac_min; ///< largest shrink per step, as the reciprocal
+      double fac_max; ///< largest growth per step
+      double safe = 0.9;
+    };
+
+    AdaptiveRungeKutta(OdeSystem &system, const IntegratorSettings &settings, const Controller &controller, int order);
+
+    /**
+     * The step to try from t towards @p t_limit (the current proposal, capped by the
+     * maximum step and the limit); NumericalError below the minimum step.
+     */
+    double
+    trial_step(double t_limit, const char *method) const;
+
+    /** √(mean over controlled components of (e_i / (atol_i + rtol·max|y_i|,|ŷ_i|))²). */
+    double
+    error_norm(const Eigen::VectorXd &e, const Eigen::VectorXd &y_new) const;
+    /** The sum of squares inside error_norm, and how many components it counts. */
+    double
+    error_sum(const Eigen::VectorXd &e, const Eigen::VectorXd &y_new, unsigned int &n_controlled) const;
+
+    /**
+     * Accept or reject a trial step @p hs with error @p err (≤ 1 accepts); updates the
+     * proposal h for the next try. @p truncated: the step was shortened to land on a
+     * limit, so a larger earlier proposal is kept.
+     */
+    bool
+    control(double err, double hs, bool &last_rejected);
+
+    /** Hairer's starting step (Solving ODE I, §II.4) for a method of order @p order. */
+    double
+    initial_step_size(Eigen::VectorXd &scratch_y, Eigen::VectorXd &scratch_f);
+
+    /** Make the accepted step's end the current point. */
+    void
+    advance(double t_new, const Eigen::VectorXd &y_new, const Eigen::VectorXd &f_new);
+
+    std::vector<double> tolerance;
+    double              h = 0;
+    Controller          controller;
+    int                 order;
+
+  private:
+    double fac_old = 1e-4;
+  };
+
+  /** The Dormand–Prince 8(5,3) pair (Hairer's DOP853) with its 7th-order dense output. */
+  std::unique_ptr<Integrator>
+  make_dop853(OdeSystem &system, const IntegratorSettings &settings);
+} // namespace wearlink::mbs
