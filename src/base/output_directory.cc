@@ -79,6 +79,8 @@ namespace wearlink
     : directory(dir)
     , lock_path((fs::path(dir) / lock_file_name).string())
   {
+    std::error_code ec;
+    created = !fs::exists(dir, ec);
     make_output_directory(dir);
     lock();
     try
@@ -138,6 +140,11 @@ namespace wearlink
     for (int attempt = 0; attempt < 10; ++attempt)
       {
         fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd < 0 && errno == ENOENT) // an empty directory removed by its releasing holder
+          {
+            make_output_directory(directory);
+            continue;
+          }
         if (fd < 0)
           throw IoError("Cannot create the lock file '" + lock_path + "': " + std::strerror(errno) +
                         ". Choose another --output directory.");
@@ -176,6 +183,9 @@ namespace wearlink
       ::unlink(lock_path.c_str());
     ::close(fd);
     fd = -1;
+    std::error_code ec;
+    if (created && fs::is_empty(directory, ec))
+      fs::remove(directory, ec);
   }
 
   OutputDirectory::~OutputDirectory()

@@ -9,7 +9,9 @@
 //    run never silently mixes its files with another's. Only the file names a run
 //    writes (glob patterns given by the caller) are ever removed, never other files.
 // The lock file is removed when the directory is released (after the lock is
-// released a new holder checks that it locked the file that is still there).
+// released a new holder checks that it locked the file that is still there), and so is
+// the directory itself if it was created by this claim and is left empty (a command
+// refused for bad input leaves no trace).
 #pragma once
 
 #include <string>
@@ -74,7 +76,8 @@ namespace wearlink
 
     std::string              directory;
     std::string              lock_path;
-    int                      fd = -1;
+    int                      fd      = -1;
+    bool                     created = false; ///< the directory did not exist before
     std::vector<std::string> partials, removed;
   };
 

@@ -14,6 +14,7 @@
 #include "base/profile.h"
 #include "base/registry.h"
 #include "base/timings.h"
+#include "base/validity_warnings.h"
 
 #include <array>
 #include <map>
@@ -152,6 +153,16 @@ namespace wearlink::contact
     {
       update_geometry(current);
     }
+    /**
+     * Warnings, under joint @p joint's name, about the evaluations so far that left the
+     * model's validity, into @p w (which keeps the worst value of each: one warning per
+     * joint and kind). hertz-strip: a Hertz half-angle past 90°. Default: none.
+     */
+    virtual void
+    check_validity(const std::string & /*joint*/, ValidityWarnings & /*w*/) const
+    {
+    }
+
     /** True for models that mesh and solve the actual geometry (gmsh + deal.II). */
     virtual bool
     requires_fe_geometry() const

@@ -219,6 +219,7 @@ namespace wearlink::io
       reader.fail("Pin radius",
                   "the pin must be smaller than the bore ('Bore radius' = " + format_number(R1, 4) + " m)",
                   "Set a pin radius below the bore radius (the radial clearance is their difference).");
+    io::check_pin_inside_bore(reader, geometry.bore, geometry.pin);
     if (!(outer_radius > R1))
       reader.fail("Bushing outer radius", "it must exceed the bore radius (" + format_number(R1, 4) + " m)");
     reader.leave();

@@ -3,6 +3,8 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/parameters.h"
+#include "base/text.h"
 #include "io/csv.h"
 
 #include <iomanip>
@@ -41,5 +43,14 @@ namespace wearlink::io
     for (unsigned int k = 0; k < profile.n_points(); ++k)
       os << profile.angle(k) << ',' << profile[k] << '\n';
     f.commit();
+  }
+  void
+  check_pin_inside_bore(const ParameterReader &r, const Profile &bore, const Profile &pin)
+  {
+    if (!(pin.max_radius() < bore.min_radius()))
+      r.fail_section("the pin profile reaches out to " + format_number(pin.max_radius(), 6) +
+                     " m, beyond the narrowest radius of the bore profile (" + format_number(bore.min_radius(), 6) +
+                     " m): the pin would cut through the bushing. Check the profile files (a radius of the "
+                     "wrong unit or a damaged line).");
   }
 } // namespace wearlink::io

@@ -8,6 +8,11 @@
 
 #include <string>
 
+namespace wearlink
+{
+  class ParameterReader;
+}
+
 namespace wearlink::io
 {
   /**
@@ -18,6 +23,15 @@ namespace wearlink::io
    */
   Profile
   read_profile_csv(const std::string &file, unsigned int n_points = 0);
+
+  /**
+   * Wear only opens a bore and thins a pin: a pin profile whose largest radius reaches the
+   * bore profile's narrowest one is a damaged file (a radius of the wrong unit, a damaged
+   * line), not a worn pair. ParameterReader::fail_section of @p r (the section that names
+   * the profile files) unless the pin fits inside the bore everywhere.
+   */
+  void
+  check_pin_inside_bore(const ParameterReader &r, const Profile &bore, const Profile &pin);
 
   /** Write @p profile as "angle_rad,radius_m" rows (17 digits, atomically), after a '#' comment. */
   void

@@ -529,14 +529,7 @@ namespace wearlink::io
         r.fail_section("the pin profile (mean radius " + format_number(d.geometry.pin.mean_radius()) +
                        " m) is not smaller than the bore profile (mean radius " +
                        format_number(d.geometry.bore.mean_radius()) + " m): the pin does not fit in the bore.");
-      // Wear only opens a bore and thins a pin: a profile whose pin reaches beyond the
-      // bore's narrowest point is a damaged file, not a worn pair.
-      if (!(d.geometry.pin.max_radius() < d.geometry.bore.min_radius()))
-        r.fail_section("the pin profile reaches out to " + format_number(d.geometry.pin.max_radius(), 6) +
-                       " m, beyond the narrowest radius of the bore profile (" +
-                       format_number(d.geometry.bore.min_radius(), 6) +
-                       " m): the pin would cut through the bushing. Check the profile files (a radius of the "
-                       "wrong unit or a damaged line).");
+      io::check_pin_inside_bore(r, d.geometry.bore, d.geometry.pin);
       return clearance;
     }
 

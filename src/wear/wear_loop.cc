@@ -106,6 +106,8 @@ namespace wearlink::wear
     own_timings.total = 0;
     process_time.restart();
     EffectLedger::instance().restore(st.ledger);
+    if (warnings)
+      warnings->merge(st.warnings);
     // A pressure model that keeps its mesh across small updates (fe, 'Remesh depth')
     // meshes the geometry it had meshed before, then takes the current profiles.
     for (unsigned int i = 0; i < wearing.size(); ++i)
@@ -190,6 +192,8 @@ namespace wearlink::wear
                                    period / settings.samples_per_cycle,
                                    t_start);
         own_timings.pressure_evaluation += evaluation.seconds();
+        if (warnings)
+          w.model->check_validity(wearing[i].joint->name(), *warnings);
       }
     return increments;
   }
@@ -275,6 +279,8 @@ namespace wearlink::wear
     st.ledger        = EffectLedger::instance().snapshot();
     st.timings       = timings();
     st.timings.total = earlier_total + process_time.seconds();
+    if (warnings)
+      st.warnings = *warnings;
     if (!checkpoint_path.empty())
       st.write(checkpoint_path);
   }

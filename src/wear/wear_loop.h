@@ -14,18 +14,22 @@
 //                             give the pressure models the new geometry (the fe model
 //                             re-meshes only beyond its 'Remesh depth');
 //   6. checkpoint             write the iteration's files (set_iteration_outputs), count
-//                             the iteration in the effect ledger, keep the ledger
-//                             and the phase timings in the state, and write the state
-//                             (wear/wear_state.h), if a path is set.
+//                             the iteration in the effect ledger, keep the ledger,
+//                             the phase timings and the validity warnings in the
+//                             state, and write the state (wear/wear_state.h), if a
+//                             path is set.
 // The loop knows the mechanism only through the joints it wears and a function that
 // advances the dynamics (the workflow's run of the scene), so it sits below the scene
 // reader and the workflows. A resumed loop starts from a checkpoint: everything the next
 // iteration depends on is in it, so it ends with the same profiles as an uninterrupted
-// loop; it also continues the checkpoint's effect ledger and timings, so that the
-// resumed run reports the whole run, not only its own part.
+// loop; it also continues the checkpoint's effect ledger, timings and validity warnings,
+// so that the resumed run reports the whole run, not only its own part. The warnings of
+// step 2 (a pressure model outside its validity, PressureModel::check_validity) and
+// those the dynamics raise go into the list given to set_warnings().
 #pragma once
 
 #include "base/timings.h"
+#include "base/validity_warnings.h"
 #include "contact/clearance_joint.h"
 #include "mbs/simulation.h"
 #include "wear/archard.h"
@@ -121,6 +125,18 @@ namespace wearlink::wear
     }
 
     /**
+     * The run's validity warnings, not owned: the loop adds the pressure models' (step 2),
+     * keeps the list in every checkpoint, and on resume() merges the checkpoint's into it
+     * (so they precede the resumed part's, as in an uninterrupted run). Call before
+     * start() or resume().
+     */
+    void
+    set_warnings(ValidityWarnings *list)
+    {
+      warnings = list;
+    }
+
+    /**
      * Called at the end of every iteration, before its checkpoint: the workflow writes
      * the iteration's files there, so that a checkpoint never stands for an iteration
      * whose files are missing (a run killed in between redoes the iteration).
@@ -209,8 +225,9 @@ namespace wearlink::wear
     std::string                            checkpoint_path;
     std::function<void()>                  iteration_outputs; ///< see set_iteration_outputs()
     PhaseTimings                           own_timings;
-    double                                 earlier_total = 0; ///< see earlier_wall_time()
-    Stopwatch                              process_time;      ///< since start() or resume()
-    std::vector<contact::ContactLoad>      peaks;             ///< see peak_loads()
+    double                                 earlier_total = 0;  ///< see earlier_wall_time()
+    Stopwatch                              process_time;       ///< since start() or resume()
+    std::vector<contact::ContactLoad>      peaks;              ///< see peak_loads()
+    ValidityWarnings                      *warnings = nullptr; ///< see set_warnings()
   };
 } // namespace wearlink::wear

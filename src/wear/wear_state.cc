@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <zlib.h>
 
@@ -16,7 +17,7 @@ namespace wearlink::wear
   namespace
   {
     constexpr const char *format_name    = "wearlink wear checkpoint";
-    constexpr int         format_version = 3;
+    constexpr int         format_version = 4;
     constexpr const char *payload_key    = "\"payload\": ";
     constexpr const char *refused =
       " Resume is refused; start the run afresh (`--overwrite`) or restore an intact copy of the checkpoint.";
@@ -313,6 +314,62 @@ namespace wearlink::wear
       return out;
     }
 
+    /** A warning's value or limit: a number, or "inf" / "-inf" (JSON has no infinity). */
+    Json
+    warning_number(const double x)
+    {
+      return std::isfinite(x) ? Json(x) : Json(x > 0 ? "inf" : "-inf");
+    }
+
+    double
+    read_warning_number(const Reader &r, const Json &j, const std::string &key, const std::string &where)
+    {
+      const Json &v = r.entry(j, key, where);
+      if (v.is_string() && (v == "inf" || v == "-inf"))
+        return (v == "inf" ? 1 : -1) * std::numeric_limits<double>::infinity();
+      return r.number(j, key, where);
+    }
+
+    Json
+    warnings_to_json(const ValidityWarnings &warnings)
+    {
+      Json list = Json::array();
+      for (const auto &w : warnings.warnings())
+        {
+          Json j         = Json::object();
+          j["quantity"]  = w.quantity;
+          j["value"]     = warning_number(w.value);
+          j["limit"]     = warning_number(w.limit);
+          j["unit"]      = w.unit;
+          j["why_limit"] = w.why_limit;
+          j["meaning"]   = w.meaning;
+          list.push_back(j);
+        }
+      return list;
+    }
+
+    ValidityWarnings
+    read_warnings(const Reader &r, const Json &j)
+    {
+      ValidityWarnings out;
+      const Json      &list = r.list(j, "warnings");
+      for (std::size_t k = 0; k < list.size(); ++k)
+        {
+          const std::string where = "warnings[" + std::to_string(k) + "].";
+          ValidityWarning   w;
+          w.quantity  = r.text(list[k], "quantity", where);
+          w.value     = read_warning_number(r, list[k], "value", where);
+          w.limit     = read_warning_number(r, list[k], "limit", where);
+          w.unit      = r.text(list[k], "unit", where);
+          w.why_limit = r.text(list[k], "why_limit", where);
+          w.meaning   = r.text(list[k], "meaning", where);
+          if (!(w.value > w.limit))
+            r.fail("'" + where + "value' does not exceed its limit");
+          out.check(w);
+        }
+      return out;
+    }
+
     std::map<std::string, std::string>
     read_scene_entries(const Reader &r, const Json &j)
     {
@@ -373,6 +430,7 @@ namespace wearlink::wear
     j["modes"]       = to_json(modes);
     j["ledger"]      = ledger_to_json(ledger);
     j["timings_s"]   = timings.to_json();
+    j["warnings"]    = warnings_to_json(warnings);
     j["joints"]      = Json::array();
     for (const auto &js : joints)
       j["joints"].push_back(to_json(js));
@@ -412,6 +470,7 @@ namespace wearlink::wear
       s.joints.push_back(read_joint(r, joints[i], "joints[" + std::to_string(i) + "]."));
     if (!PhaseTimings::from_json(r.entry(j, "timings_s", ""), s.timings))
       r.fail("'timings_s' is not the phases' wall times");
+    s.warnings = read_warnings(r, j);
     check_consistency(r, s);
     return s;
   }

@@ -5,10 +5,12 @@
 // iteration, each joint's contact mode and captured impact velocity, the worn profiles
 // (and those the fe model was last meshed with), the cumulative volumes and the
 // per-iteration history used by the outputs; and, so that a resumed run reports the
-// whole run, the effect ledger and the phase timings up to the checkpoint.
+// whole run, the effect ledger, the phase timings and the validity warnings up to the
+// checkpoint.
 //
-// The checkpoint (format version 3) is JSON in two parts: a header line
-//   {"format": "wearlink wear checkpoint", "version": 3, "payload_bytes": N,
+// The checkpoint (format version 4; 4 added the warnings) is JSON in two parts: a
+// header line
+//   {"format": "wearlink wear checkpoint", "version": 4, "payload_bytes": N,
 //    "payload_crc32": "89abcdef",
 // and the payload, `"payload": {...}}`, whose N bytes carry zlib's CRC-32. Reading
 // checks, before anything is used: the header, the version, the length (a truncated
@@ -23,6 +25,7 @@
 
 #include "base/profile.h"
 #include "base/timings.h"
+#include "base/validity_warnings.h"
 
 #include <Eigen/Core>
 
@@ -87,6 +90,8 @@ namespace wearlink::wear
     std::map<std::string, std::map<std::string, long>> ledger;
     /** Wall time of the run's phases up to the checkpoint [s], all processes of the run. */
     PhaseTimings timings;
+    /** The validity warnings raised up to the checkpoint (base/validity_warnings.h). */
+    ValidityWarnings warnings;
 
     /** Write to @p path atomically. */
     void

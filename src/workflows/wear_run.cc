@@ -404,6 +404,7 @@ namespace wearlink::workflows
     std::vector<std::string>              fe_meshes_copied;
     WearRunResult                         result;
     wear::WearLoop loop(scene.wear_loop, wearing, scene.clearance_joints, period, dynamics_of(scene, result.warnings));
+    loop.set_warnings(&result.warnings); // kept in the checkpoints: a resumed run reports them all
     start_or_resume(loop, scene, options, checkpoint);
     if (write)
       loop.set_checkpoint(checkpoint);

@@ -3,7 +3,7 @@
 // at WEARLINK_KILL_INSTANTS seeded random instants (reproducible: the seed is fixed), each
 // time resumed from what the killed process left (--resume if a checkpoint exists, else
 // a fresh start), and finally run to its end. Its outputs must equal an uninterrupted
-// run's: the summary's wear figures and effect ledger, wear_history.csv byte for byte,
+// run's: the summary's wear figures, effect ledger and warnings, wear_history.csv byte for byte,
 // and no temporary file left anywhere. Built twice (tests/scenes/CMakeLists.txt): three
 // instants in the default suite, twenty under the label `fuzz` (WEARLINK_LONG_TESTS).
 #include "io/json_file.h"
@@ -53,6 +53,7 @@ namespace
     out["wear_iterations"]  = s.at("wear_iterations");
     out["wear_revolutions"] = s.at("wear_revolutions");
     out["effect_ledger"]    = s.at("effect_ledger");
+    out["warnings"]         = s.at("warnings");
     return out;
   }
 

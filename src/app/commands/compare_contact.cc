@@ -3,6 +3,7 @@
 // (workflows/contact_comparison.h); prints the deviations and the effects, writes the
 // curves, tables and the plot.
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/text.h"
 #include "workflows/contact_comparison.h"
@@ -14,9 +15,9 @@ namespace wearlink::app
 {
   namespace
   {
-    const char *help_text =
-      R"(wearlink compare-contact SCENE.prm [--output DIR] [--worn DIR] [--cycles N] [--no-effects]
-                                  [--set "Section/Entry=value" ...]
+    const std::string help_text =
+      std::string(R"(wearlink compare-contact SCENE.prm [--output DIR] [--worn DIR] [--cycles N] [--no-effects]
+                                  [--overwrite] [--set "Section/Entry=value" ...]
 
 The validation of simplified contact against the FE model, for every clearance joint
 of the scene:
@@ -48,18 +49,38 @@ then force_N_<law>_<state>_<joint>), force_approach.png, deviations.csv, effects
 pressure.csv (bore_angle_rad, then pressure_Pa_<model>_<state>_<joint>_<load>N),
 pressure.png, compare_contact.txt. The FE tables are cached like the fe law's (see
 --help of run).
-
-Exit status: 0 success, 2 bad input, 3 numerical failure, 4 an output that cannot
-be written or memory that ran out, 1 an internal error (see `wearlink --help`).
+)") + output_folder_help +
+      R"(
+Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
+3 numerical failure, 4 an output that cannot be written or memory that ran out, 1 an
+internal error (see `wearlink --help`).
 )";
+
+    /** The file names compare-contact writes (see the help text), for --overwrite. */
+    RunFiles
+    comparison_files()
+    {
+      return {{"force_approach.csv",
+               "force_approach.png",
+               "deviations.csv",
+               "effects.csv",
+               "pressure.csv",
+               "pressure.png",
+               "compare_contact.txt"},
+              {}};
+    }
 
     int
     run(const std::vector<std::string> &args)
     {
-      const auto a = parse_arguments(
-        args,
-        {{"--output", true}, {"--set", true, true}, {"--worn", true}, {"--cycles", true}, {"--no-effects", false}},
-        "compare-contact");
+      const auto a = parse_arguments(args,
+                                     {{"--output", true},
+                                      {"--set", true, true},
+                                      {"--worn", true},
+                                      {"--cycles", true},
+                                      {"--no-effects", false},
+                                      {"--overwrite", false}},
+                                     "compare-contact");
       if (a.positional.size() != 1)
         throw InputError("`wearlink compare-contact` needs exactly one scene file. See --help.");
       workflows::ContactComparisonRequest r;
@@ -77,7 +98,8 @@ be written or memory that ran out, 1 an internal error (see `wearlink --help`).
                          "and pin_<J>.csv).");
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(r.scene_file).stem().string() + "_contact");
-      const auto c = workflows::compare_contact(r);
+      const auto claimed = claim_output_directory(output_claim(out, comparison_files(), a));
+      const auto c       = workflows::compare_contact(r);
       std::cout << c.table();
       workflows::write_contact_comparison(out, c);
       std::cout << "\nwrote " << out
@@ -91,6 +113,6 @@ be written or memory that ran out, 1 an internal error (see `wearlink --help`).
   const Command        compare_contact_command = {"compare-contact",
                                                   "compare-contact SCENE.prm [--worn DIR]  simplified contact laws "
                                                          "against the FE model: curves, deviations, effects, pressures",
-                                                  help_text,
+                                                  help_text.c_str(),
                                                   run};
 } // namespace wearlink::app

@@ -4,6 +4,7 @@
 // directory with analyses), e.g. a clearance scene run once with fresh and once with
 // worn profile files. A wear scene with analyses does the same by itself.
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "io/analyses_parameters.h"
 #include "io/json_file.h"
@@ -17,8 +18,9 @@ namespace wearlink::app
 {
   namespace
   {
-    const char *help_text =
-      R"(wearlink compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR] [--delay S] [--embedding M]
+    const std::string help_text =
+      std::string(
+        R"(wearlink compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR] [--overwrite] [--delay S] [--embedding M]
         [--methods wolf,rosenstein] [--directions x,y] [--scan S1,S2,...] [--bodies B1,B2]
         [--published "A_ex_m: 0.041 0.076, ..."] [--published-note TEXT]
 
@@ -36,7 +38,9 @@ Writes into DIR (default output/compare_dynamics), each file atomically:
   before_after.md                   the tables, also printed: impacts per period,
                                     contact fraction, peak force, Poincaré spread,
                                     peak accelerations of --bodies, exponents
-
+)") + output_folder_help +
+      R"(
+  --overwrite        replace the files of an earlier comparison in DIR
   --delay S          common embedding delay [s] (default 0.005; 0: the before run's
                      mutual-information choice). Exponents of these series fall
                      roughly like 1/delay, so only equal delays are comparable.
@@ -51,8 +55,9 @@ Writes into DIR (default output/compare_dynamics), each file atomically:
   --published-note TEXT   their source and units
 
 Exit status: 0 success, 2 bad input (missing directory, a run without analyses, a
-channel not recorded in both, a delay below the sample interval), 4 an output that
-cannot be written or memory that ran out, 1 an internal error (see `wearlink --help`).
+channel not recorded in both, a delay below the sample interval; also: output directory
+in use, earlier comparison's files), 4 an output that cannot be written or memory that
+ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     workflows::ComparedRun
@@ -76,13 +81,19 @@ cannot be written or memory that ran out, 1 an internal error (see `wearlink --h
                                       {"--scan", true},
                                       {"--bodies", true},
                                       {"--published", true},
-                                      {"--published-note", true}},
+                                      {"--published-note", true},
+                                      {"--overwrite", false}},
                                      "compare-dynamics");
       if (a.positional.size() != 2)
         throw InputError("`wearlink compare-dynamics` needs two run directories, BEFORE and AFTER (given " +
                          std::to_string(a.positional.size()) + "). See --help.");
-      workflows::ComparedRun before = read_run(a.positional[0], "before: " + a.positional[0]);
-      workflows::ComparedRun after  = read_run(a.positional[1], "after: " + a.positional[1]);
+      const std::string      out     = a.value("--output", "output/compare_dynamics");
+      const auto             claimed = claim_output_directory(output_claim(
+        out,
+        {{"before_after_phase_*.png", "before_after_lyapunov.csv", "before_after_delay_scan.*", "before_after.md"}, {}},
+        a));
+      workflows::ComparedRun before  = read_run(a.positional[0], "before: " + a.positional[0]);
+      workflows::ComparedRun after   = read_run(a.positional[1], "after: " + a.positional[1]);
 
       workflows::DynamicsComparisonSettings s;
       // Joints: the clearance joints whose journal-centre channels both runs recorded.
@@ -135,8 +146,7 @@ cannot be written or memory that ran out, 1 an internal error (see `wearlink --h
       s.published      = io::parse_published_exponents(a.value("--published", ""), "--published");
       s.published_note = a.value("--published-note", "");
 
-      const std::string out = a.value("--output", "output/compare_dynamics");
-      const auto        c   = workflows::compare_dynamics(before, after, s, out);
+      const auto c = workflows::compare_dynamics(before, after, s, out);
       std::cout << c.report << "\nwrote " << out << "/before_after.md\n";
       return 0;
     }
@@ -146,6 +156,6 @@ cannot be written or memory that ran out, 1 an internal error (see `wearlink --h
   const Command        compare_dynamics_command = {"compare-dynamics",
                                                    "compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR]  "
                                                           "dynamics before vs after wear",
-                                                   help_text,
+                                                   help_text.c_str(),
                                                    run};
 } // namespace wearlink::app

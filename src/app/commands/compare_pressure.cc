@@ -3,6 +3,7 @@
 // through several pressure models (workflows/pressure_comparison.h); prints the table and
 // writes compare_pressure.csv, compare_depth_<J>.csv/.png.
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/text.h"
 #include "io/scene.h"
@@ -15,9 +16,9 @@ namespace wearlink::app
 {
   namespace
   {
-    const char *help_text =
-      R"(wearlink compare-pressure SCENE.prm [--models a,b,c] [--cycles N] [--output DIR]
-                                   [--set "Section/Entry=value" ...]
+    const std::string help_text = std::string(
+                                    R"(wearlink compare-pressure SCENE.prm [--models a,b,c] [--cycles N] [--output DIR]
+                                   [--overwrite] [--set "Section/Entry=value" ...]
 
 Simulates N cycles (default: Wear/Cycles per iteration) of a wear scene once, records
 the load history of every joint with a Wear law, and feeds that same history through
@@ -30,18 +31,19 @@ pressure evaluations and the wall time. The load sampling follows Wear/Pressure
 evaluation (with fe, 'samples per cycle' keeps it affordable).
 Writes into DIR (default: output/<scene name>_compare): compare_pressure.csv,
 compare_depth_<J>.csv and compare_depth_<J>.png.
-
-Exit status: 0 success, 2 bad input, 3 numerical failure, 4 an output that cannot
-be written or memory that ran out, 1 an internal error (see `wearlink --help`).
+)") + output_folder_help + R"(
+Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
+3 numerical failure, 4 an output that cannot be written or memory that ran out, 1 an
+internal error (see `wearlink --help`).
 )";
 
     int
     run(const std::vector<std::string> &args)
     {
-      const auto a =
-        parse_arguments(args,
-                        {{"--output", true}, {"--set", true, true}, {"--models", true}, {"--cycles", true}},
-                        "compare-pressure");
+      const auto a = parse_arguments(
+        args,
+        {{"--output", true}, {"--set", true, true}, {"--models", true}, {"--cycles", true}, {"--overwrite", false}},
+        "compare-pressure");
       if (a.positional.size() != 1)
         throw InputError("`wearlink compare-pressure` needs exactly one scene file. See --help.");
       const std::string              file   = a.positional[0];
@@ -51,9 +53,11 @@ be written or memory that ran out, 1 an internal error (see `wearlink --help`).
       if (!(cycles > 0 && cycles <= 1e4))
         throw InputError("--cycles is " + format_number(cycles) +
                          "; it must be > 0 and at most 1e4 (the load history of the cycles is kept in memory).");
+      const std::string out = a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_compare");
+      const auto        claimed = claim_output_directory(
+        output_claim(out, {{"compare_pressure.csv", "compare_depth_*.csv", "compare_depth_*.png"}, {}}, a));
       const auto c = workflows::compare_pressure_models(scene, models, cycles);
       std::cout << c.table();
-      const std::string out = a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_compare");
       workflows::write_pressure_comparison(out, c);
       std::cout << "\nwrote " << out << "/compare_pressure.csv\n";
       return 0;
@@ -64,6 +68,6 @@ be written or memory that ran out, 1 an internal error (see `wearlink --help`).
   const Command        compare_pressure_command = {"compare-pressure",
                                                    "compare-pressure SCENE.prm [--models a,b,c]  same load history "
                                                           "through several pressure models (wear volumes and profiles)",
-                                                   help_text,
+                                                   help_text.c_str(),
                                                    run};
 } // namespace wearlink::app

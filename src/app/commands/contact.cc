@@ -5,6 +5,7 @@
 // the output directory: summary.json, pressure_<k>_<solver>.csv per load state,
 // fields_<k>.vtu (displacement and stress for ParaView) and the gmsh mesh.
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "io/contact_case.h"
@@ -22,8 +23,8 @@ namespace wearlink::app
 {
   namespace
   {
-    const char *help_text =
-      R"(wearlink contact CASE.prm [--output DIR] [--set "Section/Entry=value" ...]
+    const std::string help_text =
+      std::string(R"(wearlink contact CASE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...]
 wearlink contact --print-parameters
 
 Solves the 2D plane-strain frictionless contact of one pin in its bushing (gmsh mesh of
@@ -41,9 +42,11 @@ Example: params/pin_bushing.prm. Writes into DIR (default: output/<case name>):
   fields_<k>.vtu             displacement and stress of both bodies (ParaView)
   pin_bushing.msh            the gmsh mesh
   parameters.prm             the effective case (with --set overrides applied)
-
+)") + output_folder_help +
+      R"(
 Options:
   --output DIR        output directory
+  --overwrite         replace the files of an earlier contact run in DIR
   --set S/E=V         override an entry, e.g. --set "FE model/Surface element size=2e-5"
   --print-parameters  print every entry with its unit, default and meaning
 
@@ -52,9 +55,17 @@ ranks (METIS partitions of the mesh, a PETSc matrix factored by MUMPS); the cond
 solver runs on every rank (it is small and serial) and rank 0 writes all outputs. The
 answer is the serial one.
 
-Exit status: 0 success, 2 bad input, 3 numerical failure, 4 an output that cannot
-be written or memory that ran out, 1 an internal error (see `wearlink --help`).
+Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
+3 numerical failure, 4 an output that cannot be written or memory that ran out, 1 an
+internal error (see `wearlink --help`).
 )";
+
+    /** The file names `wearlink contact` writes (see the help text), for --overwrite. */
+    RunFiles
+    contact_files()
+    {
+      return {{"summary.json", "parameters.prm", "pressure_*_*.csv", "fields_*.vtu", "pin_bushing.msh"}, {}};
+    }
 
     int
     run(const std::vector<std::string> &args)
@@ -68,8 +79,10 @@ be written or memory that ran out, 1 an internal error (see `wearlink --help`).
       const unsigned int                       n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       const bool                               root    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
-      const auto a =
-        parse_arguments(args, {{"--output", true}, {"--set", true, true}, {"--print-parameters", false}}, "contact");
+      const auto a = parse_arguments(
+        args,
+        {{"--output", true}, {"--set", true, true}, {"--print-parameters", false}, {"--overwrite", false}},
+        "contact");
       dealii::ParameterHandler prm;
       io::declare_contact_case(prm);
       if (a.has("--print-parameters"))
@@ -91,11 +104,15 @@ be written or memory that ran out, 1 an internal error (see `wearlink --help`).
       run.log              = root ? &std::cout : nullptr;
       run.root             = root;
       run.n_ranks          = n_ranks;
+      const auto claimed   = claim_output_directory_on_root(output_claim(run.output_directory, contact_files(), a));
       workflows::run_contact_case(contact_case, prm, run);
       return 0;
     }
   } // namespace
 
   extern const Command contact_command;
-  const Command contact_command = {"contact", "contact CASE.prm [--output DIR] [--set S/E=V ...]", help_text, run};
+  const Command        contact_command = {"contact",
+                                          "contact CASE.prm [--output DIR] [--set S/E=V ...]",
+                                          help_text.c_str(),
+                                          run};
 } // namespace wearlink::app

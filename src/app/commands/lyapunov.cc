@@ -8,6 +8,7 @@
 #include "analysis/lyapunov.h"
 
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "workflows/lyapunov_series.h"
 
@@ -68,10 +69,13 @@ and in bits), the delay, dimension and Theiler window with how they were chosen,
 DIR: lyapunov_<column>_<method>.png (Wolf: running estimate vs evolution time;
 Rosenstein: mean log divergence vs time with the fitted line), .csv (the plotted data)
 and .json (the summary).
+DIR is locked while the command runs (a second command into it is refused with the
+first one's pid). Files of an earlier analysis are kept, and those of the same column
+and method replaced (each name says what it holds, and DIR is often a run's folder).
 
 Exit status: 0 success, 2 bad input (missing file, unknown column, NaN or too short
-series, bad option value), 4 an output that cannot be written or memory that ran
-out, 1 an internal error (see `wearlink --help`).
+series, bad option value, DIR in use), 4 an output that cannot be written or memory
+that ran out, 1 an internal error (see `wearlink --help`).
 )";
 
     /** A non-negative integer option (at least @p min), or unset. */
@@ -148,6 +152,9 @@ out, 1 an internal error (see `wearlink --help`).
       request.column           = column;
       request.settings         = settings;
       request.output_directory = args.value("--output", ".");
+      OutputClaim claim        = output_claim(request.output_directory, {}, args);
+      claim.earlier            = EarlierRun::resume; // see the help: earlier files are kept
+      const auto claimed       = claim_output_directory(claim);
       std::cout << workflows::analyse_lyapunov_series(request);
       return 0;
     }

@@ -8,6 +8,7 @@
 #include "workflows/run.h"
 
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/output_directory.h"
 #include "io/scene.h"
@@ -129,21 +130,13 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
       if (a.has("--overwrite") && a.has("--resume"))
         throw InputError("--overwrite and --resume exclude each other: --resume continues the run in " +
                          a.value("--resume") + ", --overwrite removes its files.");
-      const EarlierRun  earlier = a.has("--resume")    ? EarlierRun::resume :
-                                  a.has("--overwrite") ? EarlierRun::overwrite :
-                                                         EarlierRun::refuse;
-      const std::string advice  = wear ? "Add --overwrite to replace them, --resume " + dir +
-                                          " (instead of --output) to continue that wear run, or choose "
-                                           "another --output directory." :
-                                         "Add --overwrite to replace them, or choose another --output directory.";
-      auto              claimed = std::make_unique<OutputDirectory>(dir, earlier, run_files(), advice);
-      if (!a.has("--quiet") && !claimed->removed_partials().empty())
-        std::cerr << "[wearlink] removed " << claimed->removed_partials().size() << " temporary file(s) left in " << dir
-                  << " by a run that was killed\n";
-      if (!a.has("--quiet") && !claimed->removed_files().empty())
-        std::cerr << "[wearlink] --overwrite: removed " << claimed->removed_files().size()
-                  << " file(s) of the earlier run in " << dir << "\n";
-      return claimed;
+      OutputClaim claim = output_claim(dir, run_files(), a);
+      if (a.has("--resume"))
+        claim.earlier = EarlierRun::resume;
+      if (wear)
+        claim.advice = "Add --overwrite to replace them, --resume " + dir +
+                       " (instead of --output) to continue that wear run, or choose another --output directory.";
+      return app::claim_output_directory(claim);
     }
 
     /** `wearlink run` of a wear scene (or --resume): the wear loop and its outputs. */

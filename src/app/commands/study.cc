@@ -4,6 +4,7 @@
 // quantities that matter against the knob's reference and the wall time of every run
 // go into accuracy.csv, accuracy.md and accuracy_pareto.png.
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "workflows/accuracy_study.h"
 
@@ -17,7 +18,7 @@ namespace wearlink::app
   {
     const std::string help_text =
       std::string(R"(wearlink study accuracy SCENE.prm [--output DIR] [--set "Section/Entry=value" ...]
-                     [--quick] [--knobs a,b,...] [--study STUDY.prm] [--quiet]
+                     [--quick] [--knobs a,b,...] [--study STUDY.prm] [--overwrite] [--quiet]
 
 Shows what accuracy costs in time. Each accuracy knob that applies to the scene
 (integrator tolerance or step, Baumgarte factors, contact law, discrete areas per
@@ -35,7 +36,8 @@ One progress line per run. Writes into DIR (default: output/<scene name>_accurac
 each file atomically: accuracy.csv (every quantity and error), accuracy.md (the table),
 accuracy_pareto.png (worst error vs wall time, log-log, one series per knob) and, for
 wear scenes, accuracy_pareto_volume.png (the worn volume's error vs wall time).
-
+)") + output_folder_help +
+      R"(
 Options:
   --quick             fewer values and, for wear scenes, Wear/Cycles per iteration = 1,
                       Wear/Number of iterations = 2 (other scenes: at most 1 s
@@ -43,14 +45,23 @@ Options:
   --knobs a,b         only these knobs
   --study FILE        a study file (below); --knobs wins over its Knobs
   --set S/E=V         override a scene entry in every run (repeatable)
+  --overwrite         replace the files of an earlier study in DIR
   --quiet             no progress lines
 
-)") + workflows::study_file_help() +
+)" + workflows::study_file_help() +
       R"(
 Exit status: 0 success (a run that fails is a row of the table), 2 bad input (nothing
-is written), 3 numerical failure, 4 an output that cannot be written or memory that
-ran out, 1 an internal error (see `wearlink --help`).
+is written; also: directory in use, earlier study's files), 3 numerical failure, 4 an
+output that cannot be written or memory that ran out, 1 an internal error (see
+`wearlink --help`).
 )";
+
+    /** The file names a study writes (see the help text), for --overwrite. */
+    RunFiles
+    study_files()
+    {
+      return {{"accuracy.csv", "accuracy.md", "accuracy_pareto.png", "accuracy_pareto_volume.png"}, {}};
+    }
 
     int
     run(const std::vector<std::string> &args)
@@ -65,7 +76,8 @@ ran out, 1 an internal error (see `wearlink --help`).
                                                           {"--quick", false},
                                                           {"--knobs", true},
                                                           {"--study", true},
-                                                          {"--quiet", false}},
+                                                          {"--quiet", false},
+                                                          {"--overwrite", false}},
                                      "study accuracy");
       if (a.positional.size() != 1)
         throw InputError("`wearlink study accuracy` needs exactly one scene file (given " +
@@ -85,9 +97,10 @@ ran out, 1 an internal error (see `wearlink --help`).
             if (!k.empty())
               request.knobs.push_back(k);
         }
-      const auto        study = workflows::run_accuracy_study(file, request);
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_accuracy");
+      const auto claimed = claim_output_directory(output_claim(out, study_files(), a));
+      const auto study   = workflows::run_accuracy_study(file, request);
       workflows::write_accuracy_study(out, study);
       std::cout << study.markdown() << "\nwrote " << out << "/accuracy.csv, accuracy.md, accuracy_pareto.png\n";
       return 0;

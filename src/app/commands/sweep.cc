@@ -4,6 +4,7 @@
 #include "workflows/sweep.h"
 
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
 
 #include <deal.II/base/mpi.h>
@@ -16,8 +17,8 @@ namespace wearlink::app
 {
   namespace
   {
-    const char *const help_text =
-      R"(wearlink sweep SCENE.prm --parameter "Section/Entry" --values FROM:TO:COUNT
+    const std::string help_text =
+      std::string(R"(wearlink sweep SCENE.prm --parameter "Section/Entry" --values FROM:TO:COUNT
                [--channel NAME] [--output DIR] [--set "Section/Entry=value" ...]
 mpirun -np N wearlink sweep ...   (the same, members spread over N MPI ranks)
 
@@ -41,17 +42,19 @@ Options:
                      clearance joint J J_ex_m, J_ey_m, J_vex_m_s, J_vey_m_s.
   --output DIR       output directory (default output/<scene name>_sweep)
   --set S/E=V        override another entry for every member (repeatable)
+  --overwrite        replace the files of an earlier sweep in DIR
   --quiet            no per-member lines
 
 A member whose value is invalid or whose run fails (e.g. a mechanism that cannot be
 assembled) is reported in members.csv, sweep.json and on the screen; the other members
 still run. Exit status: 0 if the sweep ran (even with failed members), 2 bad input
-(scene, option or channel), 3 if every member failed, 4 an output that cannot be
-written or memory that ran out, 1 an internal error (see `wearlink --help`).
+(scene, option or channel; also: directory in use, earlier sweep's files), 3 if every
+member failed, 4 an output that cannot be written or memory that ran out, 1 an internal
+error (see `wearlink --help`).
 
 Outputs in DIR (written by rank 0 only, each atomically): bifurcation.csv,
 members.csv, bifurcation.png, sweep.json.
-)";
+)") + output_folder_help;
 
     /** The swept values FROM:TO:COUNT. */
     std::vector<double>
@@ -106,7 +109,13 @@ members.csv, bifurcation.png, sweep.json.
       return values;
     }
 
-    /** InputError unless @p path names a declared entry of @p prm. */
+    /** The file names a sweep writes (see the help text), for --overwrite. */
+    RunFiles
+    sweep_files()
+    {
+      return {{"bifurcation.csv", "members.csv", "bifurcation.png", "sweep.json"}, {}};
+    }
+
     int
     run(const std::vector<std::string> &args)
     {
@@ -116,7 +125,8 @@ members.csv, bifurcation.png, sweep.json.
                                       {"--channel", true},
                                       {"--output", true},
                                       {"--set", true, true},
-                                      {"--quiet", false}},
+                                      {"--quiet", false},
+                                      {"--overwrite", false}},
                                      "sweep");
       // MPI for this command only. One thread per rank: the ranks are the parallelism.
       int                                      argc           = 1;
@@ -138,6 +148,7 @@ members.csv, bifurcation.png, sweep.json.
       r.overrides        = a.all("--set");
       r.output_directory = a.value("--output", "output/" + std::filesystem::path(r.file).stem().string() + "_sweep");
       r.quiet            = a.has("--quiet");
+      const auto claimed = claim_output_directory_on_root(output_claim(r.output_directory, sweep_files(), a));
       return workflows::run_sweep(r);
     }
   } // namespace
@@ -146,6 +157,6 @@ members.csv, bifurcation.png, sweep.json.
   const Command        sweep_command = {"sweep",
                                         "sweep SCENE.prm --parameter \"S/E\" --values FROM:TO:COUNT [--channel NAME] "
                                                "[--output DIR]  bifurcation diagram (MPI: mpirun -np N wearlink sweep ...)",
-                                        help_text,
+                                        help_text.c_str(),
                                         run};
 } // namespace wearlink::app

@@ -11,8 +11,12 @@
 // so Σ p̄_k L R Δψ = F_n exactly even when the strip is narrower than one area (a fresh
 // joint: b ≈ 0.1 mm against 0.2 mm areas at 360 areas). The worn shape enters only
 // through the local radii: that is this model's limitation (Mukras et al. 2010).
+// Hertz's theory assumes a contact narrow against the radii; a half-angle b/R2 past 90°
+// (a strip wider than half the pin: soft materials, high loads, a conforming worn pair)
+// is far outside it, and check_validity() warns with the worst half-angle evaluated.
 #include "base/numbers.h"
 #include "base/parameters.h"
+#include "base/text.h"
 #include "contact/hertz.h"
 #include "contact/pressure_model.h"
 
@@ -74,8 +78,24 @@ namespace wearlink::contact
         const auto   hertz     = hertz_line_contact(line_load, r_star, e_star);
         const double b         = hertz.half_width;
         const double p0        = hertz.peak_pressure;
+        if (b / r2 > worst.half_angle)
+          worst = {b / r2, load.normal_force};
         spread(bore, load.bushing_angle, r1, phi, b, p0, out.bore);
         spread(pin, load.pin_angle, r2, phi, b, p0, out.pin);
+      }
+
+      void
+      check_validity(const std::string &joint, ValidityWarnings &w) const override
+      {
+        w.check({"joint " + joint + ": hertz-strip contact half-angle",
+                 worst.half_angle * 180 / pi,
+                 90,
+                 "deg",
+                 "a contact wider than half the pin; the worst at the normal force " +
+                   format_number(worst.normal_force, 4) + " N",
+                 "the hertz-strip pressure model assumes a contact narrow against the radii (Hertz line "
+                 "contact), so its pressures and the wear computed from them are outside its validity; check "
+                 "the elastic moduli and the loads, or use Pressure model = winkler or fe"});
       }
 
     private:
@@ -105,6 +125,13 @@ namespace wearlink::contact
       }
 
       JointGeometry geometry;
+      /** The widest strip evaluated so far: half-angle b / R2 [rad], and its F_n [N]. */
+      struct WidestStrip
+      {
+        double half_angle   = 0;
+        double normal_force = 0;
+      };
+      WidestStrip worst;
     };
   } // namespace
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The wear checkpoint round-trips exactly (JSON, shortest round-trip doubles), and a damaged
 // or missing checkpoint is an InputError naming the file: a changed byte (checksum), a
-// cut file (length), an older format version, entries of the wrong type, sizes that do
-// not agree with each other, and (check_shape) sizes that do not fit the scene.
+// cut file (length), an older format version (3: no warnings), entries of the wrong type,
+// sizes that do not agree with each other, and (check_shape) sizes that do not fit the
+// scene. The validity warnings round-trip too (format version 4), an infinite value as well.
 #include "base/exceptions.h"
 #include "support/test_support.h"
 #include "wear/wear_state.h"
@@ -34,6 +35,8 @@ namespace
     s.state            = Eigen::VectorXd::LinSpaced(7, -1.0 / 3, 5.0 / 7);
     s.factors          = {500, 1.0 / 7};
     s.modes            = {1, 0.123456789012345678, 0, 0};
+    s.warnings.check({"joint A: largest penetration", 1.0 / 3e4, 1e-5 / 3, "m", "20 % of c", "check the moduli"});
+    s.warnings.check({"energy balance relative error", HUGE_VAL, 0.01, "", "", ""});
     wear::JointWearState j;
     j.name = "A";
     std::vector<double> r(16);
@@ -76,6 +79,15 @@ TEST(Checkpoint, RoundTripIsExact)
   EXPECT_EQ(r.ledger, s.ledger);
   EXPECT_EQ(r.timings.dynamics, s.timings.dynamics);
   EXPECT_EQ(r.timings.total, s.timings.total);
+  ASSERT_EQ(r.warnings.warnings().size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    {
+      const auto &a = r.warnings.warnings()[k], &b = s.warnings.warnings()[k];
+      EXPECT_EQ(a.quantity, b.quantity);
+      EXPECT_EQ(a.value, b.value);
+      EXPECT_EQ(a.limit, b.limit);
+      EXPECT_EQ(a.text(), b.text());
+    }
 }
 
 TEST(Checkpoint, TruncatedOrMissingIsAnInputError)
@@ -105,7 +117,11 @@ TEST(Checkpoint, DamagedEntriesAreRefusedNamingTheEntry)
   std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // Each edit of the valid text, and the words the message must contain.
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
-    {{"\"version\":3", "\"version\":4"}, "format version 4"},
+    {{"\"version\":4", "\"version\":5"}, "format version 5, this wearlink reads version 4"},
+    {{"\"version\":4", "\"version\":3"}, "format version 3, this wearlink reads version 4"},
+    {{"\"quantity\": \"joint A", "\"quantity\": 4, \"x\": \"joint A"}, "'warnings[0].quantity' is not text"},
+    {{"\"warnings\": [", "\"warnings\": 3, \"w\": ["}, "'warnings' is not a list"},
+    {{"\"value\": \"inf\"", "\"value\": 0.001"}, "'warnings[1].value' does not exceed its limit"},
     {{"\"name\": \"A\"", "\"name\": 7"}, "joints[0].name"},
     {{"\"iterations\": 2", "\"iterations\": -4"}, "'iterations' is not a count"},
     {{"\"fingerprint\"", "\"fingerprints\""}, "no entry 'fingerprint'"},
@@ -176,7 +192,7 @@ TEST(Checkpoint, ChangedByteTruncationAndOldVersionAreRefused)
       EXPECT_NE(m.find(path), std::string::npos) << m;
     }
   std::ofstream(path, std::ios::binary) << "{\n \"format\": \"wearlink wear checkpoint\",\n \"version\": 2\n}\n";
-  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 3"), std::string::npos) << refusal(path);
+  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 4"), std::string::npos) << refusal(path);
 }
 
 // check_shape: each size that differs from the scene's is named with both values.

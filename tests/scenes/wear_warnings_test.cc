@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Validity warnings of wear runs (issue 14, base/validity_warnings.h):
+//  - the hertz-strip pressure model warns, once per joint with the worst value and the
+//    limit, when its Hertz strip is wider than half the pin (half-angle past 90°). Here
+//    provoked by an axial length of 1 µm on the nine-bar (the line load of a ~100 N
+//    contact is then ~1e8 N/m and b = √(4 P R*/(π E*)) ≈ 18 mm > π/2 · 11.5 mm); the
+//    shipped params/nine_bar_wear.prm (10 mm, b ≈ 0.2 mm, half-angle ≈ 1°) does not warn;
+//  - a wear run stopped after its first iteration and resumed from the checkpoint
+//    reports the same `warnings` list as an uninterrupted run: the warnings raised
+//    before the checkpoint are kept in it (format version 4).
+#include "io/json_file.h"
+#include "scene_support.h"
+#include "wear/wear_state.h"
+#include "workflows/wear_run.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace wearlink;
+
+namespace
+{
+  const std::vector<std::string> short_wear = {"Wear/Cycles per iteration=0.5",
+                                               "Wear/Response cycles=0.1",
+                                               "Wear/Number of iterations=3",
+                                               "Wear/Extrapolation factor=2000"};
+
+  /** Joints A and B 1 µm long: the Hertz strip of every contact is wider than half the pin. */
+  const std::vector<std::string> knife_edge_joints = {"Joint A/Clearance/Axial length=1e-6",
+                                                      "Joint B/Clearance/Axial length=1e-6",
+                                                      "Wear/Cycles per iteration=0.5",
+                                                      "Wear/Response cycles=0.1",
+                                                      "Wear/Number of iterations=3",
+                                                      "Wear/Extrapolation factor=1"};
+
+  std::vector<std::string>
+  warnings_of(const Json &summary)
+  {
+    std::vector<std::string> out;
+    for (const auto &w : summary.at("warnings"))
+      out.push_back(w.get<std::string>());
+    return out;
+  }
+
+  std::vector<std::string>
+  containing(const std::vector<std::string> &list, const std::string &text)
+  {
+    std::vector<std::string> out;
+    std::copy_if(list.begin(), list.end(), std::back_inserter(out), [&](const std::string &w) {
+      return w.find(text) != std::string::npos;
+    });
+    return out;
+  }
+
+  workflows::WearRunResult
+  run_wear(const std::vector<std::string> &overrides, workflows::WearRunOptions o)
+  {
+    auto s = wearlink::testing::scene("params/nine_bar_wear.prm", overrides);
+    return workflows::run_wear(s, o);
+  }
+} // namespace
+
+TEST(WearWarnings, HertzStripHalfAnglePast90IsWarnedOncePerJoint)
+{
+  workflows::WearRunOptions o;
+  o.progress         = false;
+  o.output_directory = wearlink::testing::fresh_directory("wear_knife_edge");
+  ::testing::internal::CaptureStderr();
+  const auto        r   = run_wear(knife_edge_joints, o);
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  const auto        all = warnings_of(r.summary);
+  for (const std::string joint : {"A", "B"})
+    {
+      const auto w = containing(all, "joint " + joint + ": hertz-strip contact half-angle ");
+      ASSERT_EQ(w.size(), 1u) << r.summary.at("warnings").dump(1);
+      EXPECT_NE(w[0].find(" deg exceeds its limit 90 deg (a contact wider than half the pin; the worst at the "
+                          "normal force "),
+                std::string::npos)
+        << w[0];
+      EXPECT_NE(w[0].find("outside its validity"), std::string::npos) << w[0];
+      EXPECT_NE(log.find("[wearlink] warning: " + w[0]), std::string::npos) << log;
+    }
+  const auto on_disk = warnings_of(io::read_json_file(o.output_directory + "/summary.json"));
+  EXPECT_EQ(on_disk, all);
+}
+
+TEST(WearWarnings, ShippedNineBarWearHasNoHertzHalfAngleWarning)
+{
+  workflows::WearRunOptions o;
+  o.progress      = false;
+  o.final_outputs = true;
+  const auto r    = run_wear(short_wear, o);
+  EXPECT_TRUE(containing(warnings_of(r.summary), "half-angle").empty()) << r.summary.at("warnings").dump(1);
+}
+
+TEST(WearWarnings, WarningsSurviveAResume)
+{
+  workflows::WearRunOptions o;
+  o.progress          = false;
+  o.output_directory  = wearlink::testing::fresh_directory("wear_warnings_straight");
+  const auto straight = warnings_of(run_wear(knife_edge_joints, o).summary);
+  ASSERT_FALSE(straight.empty());
+
+  o.output_directory = wearlink::testing::fresh_directory("wear_warnings_resumed");
+  o.stop_after       = 1; // the process ends after iteration 1 and its checkpoint
+  run_wear(knife_edge_joints, o);
+  const auto at_checkpoint = wear::WearState::read(o.output_directory + "/checkpoint.json").warnings;
+  ASSERT_FALSE(at_checkpoint.empty()) << "the checkpoint keeps the warnings of iteration 1";
+  for (const auto &w : at_checkpoint.warnings())
+    EXPECT_FALSE(containing(straight, w.quantity + " ").empty()) << w.text();
+
+  o.stop_after       = 0;
+  o.resume           = true;
+  const auto resumed = warnings_of(run_wear(knife_edge_joints, o).summary);
+  EXPECT_EQ(resumed, straight);
+}
