@@ -12,6 +12,7 @@ namespace wearlink::app
   extern const Command compare_contact_command;
   extern const Command study_command;
   extern const Command compare_dynamics_command;
+  extern const Command compare_signal_command;
 
   const std::vector<Command> &
   commands()
@@ -25,6 +26,7 @@ namespace wearlink::app
       compare_contact_command,
       study_command,
       compare_dynamics_command,
+      compare_signal_command,
     };
     return table;
   }

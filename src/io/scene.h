@@ -46,6 +46,14 @@ namespace wearlink::io
 
     double output_interval   = 1e-3; ///< time-series sampling [s]; 0: every step
     bool   write_time_series = true;
+    /** Output/Plots: the first-look PNGs of a run (workflows/first_look.h). */
+    bool plots = true;
+    /**
+     * The bodies whose acceleration the first look plots: Output/Plot bodies if given,
+     * else the bodies that slide on a translational joint; if none, empty (the first
+     * look then takes the body with the largest peak acceleration).
+     */
+    std::vector<std::string> plot_bodies;
 
     /** The nonlinear-dynamics analyses the scene lists (analysis/analyses_settings.h). */
     analysis::AnalysesSettings analyses;

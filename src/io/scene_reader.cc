@@ -372,6 +372,26 @@ namespace wearlink::io
               "Sampling interval of time_series.csv (dense output); 0 writes every "
               "accepted step.",
               "s");
+      declare(prm,
+              "Plots",
+              "true",
+              P::Bool(),
+              "Write the first-look PNGs of `wearlink run` (read back from time_series.csv, "
+              "so only with Time series = true): orbit_<J>.png, the journal-centre orbit of "
+              "each clearance joint in its bushing's frame inside the clearance circle; "
+              "contact_forces.png, the normal and friction force of each clearance joint "
+              "against time; accelerations.png, the acceleration of the Plot bodies. false "
+              "writes none (tests, benchmarks, sweeps).",
+              "none");
+      declare(prm,
+              "Plot bodies",
+              "",
+              P::Anything(),
+              "Comma-separated bodies whose acceleration accelerations.png shows and the "
+              "printed summary reports. Empty: the bodies that slide on a translational "
+              "joint (Body 2 of it, e.g. the slider of a press); if there is none, the body "
+              "with the largest peak acceleration component of the run.",
+              "none");
       prm.leave_subsection();
     }
 
@@ -606,6 +626,24 @@ namespace wearlink::io
       scene.mechanism->add_force_element(std::move(joint_element));
     }
 
+    /** Output/Plots and Output/Plot bodies (the sliders are already in plot_bodies). */
+    void
+    read_plot_settings(ParameterReader &r, Scene &scene, const mbs::Mechanism &mech)
+    {
+      scene.plots       = r.get_bool("Plots");
+      const auto chosen = r.get_list("Plot bodies");
+      for (const auto &b : chosen)
+        if (mech.body_index(b) < 0)
+          {
+            std::vector<std::string> names;
+            for (const auto &body : mech.get_bodies())
+              names.push_back(body.name);
+            r.fail("Plot bodies", "'" + b + "' is not a moving body; the bodies are " + join(names, ", "));
+          }
+      if (!chosen.empty())
+        scene.plot_bodies = chosen;
+    }
+
     /** Integrator, simulated interval and time-series output of @p scene. */
     void
     read_numerics(ParameterReader &r, Scene &scene, mbs::Mechanism &mech)
@@ -641,6 +679,7 @@ namespace wearlink::io
                  format_number(scene.end_time - scene.start_time) + " s; at most " +
                  format_number(max_time_series_rows, 3) + " are allowed",
                "Choose a longer interval, or set Time series = false.");
+      read_plot_settings(r, scene, mech);
       r.leave();
     }
 
@@ -706,6 +745,7 @@ namespace wearlink::io
               if (!(axis.norm() > 0))
                 r.fail("Axis on body 1", "it must be a non-zero direction");
               mech.add_constraint(mbs::make_translational(name, b1, p1, axis, b2, p2, r.get_double("Angle offset")));
+              scene.plot_bodies.push_back(r.get("Body 2")); // a slider (Output/Plot bodies)
             }
           else if (type == "fixed-angle")
             mech.add_constraint(mbs::make_fixed_angle(name, b1, b2, r.get_double("Angle offset")));

@@ -9,6 +9,7 @@
 #include "io/analyses_parameters.h"
 #include "mbs/assembly.h"
 #include "workflows/analyses.h"
+#include "workflows/first_look.h"
 
 #include <algorithm>
 #include <chrono>
@@ -88,7 +89,8 @@ namespace wearlink::workflows
           {
             write_header();
             sample(c.t, c.y, c.dydt, mech.multipliers());
-            next_sample = c.t + interval;
+            n_samples   = 1; // the next sample is t_start + interval (it was written twice)
+            next_sample = t_start + interval * n_samples;
           }
       }
 
@@ -270,34 +272,15 @@ namespace wearlink::workflows
       void
       write_header()
       {
-        auto &os = *csv;
-        os << "time_s";
-        for (const auto &b : mech.get_bodies())
-          for (const char *q : {"_x_m",
-                                "_y_m",
-                                "_theta_rad",
-                                "_vx_m_s",
-                                "_vy_m_s",
-                                "_omega_rad_s",
-                                "_ax_m_s2",
-                                "_ay_m_s2",
-                                "_alpha_rad_s2"})
-            os << ',' << b.name << q;
-        for (const auto *j : scene.clearance_joints)
-          for (const char *q : {"_ex_m",
-                                "_ey_m",
-                                "_ex_local_m",
-                                "_ey_local_m",
-                                "_penetration_m",
-                                "_normal_force_N",
-                                "_friction_force_N",
-                                "_sliding_velocity_m_s",
-                                "_contact_angle_rad"})
-            os << ',' << j->name() << q;
-        for (const auto d : scene.drivers)
-          os << ',' << mech.get_constraints()[d]->name << "_torque_N_m";
-        os << ",kinetic_energy_J,potential_energy_J,reaction_work_J,dissipated_J\n";
-        os << std::setprecision(10);
+        auto       &os      = *csv;
+        const auto  columns = time_series_columns(scene);
+        const char *sep     = "";
+        for (const auto &c : columns)
+          {
+            os << sep << c;
+            sep = ",";
+          }
+        os << '\n' << std::setprecision(10);
       }
 
       void
@@ -388,6 +371,40 @@ namespace wearlink::workflows
     }
   } // namespace
 
+  std::vector<std::string>
+  time_series_columns(const io::Scene &scene)
+  {
+    std::vector<std::string> c{"time_s"};
+    const auto              &mech = *scene.mechanism;
+    for (const auto &b : mech.get_bodies())
+      for (const char *q : {"_x_m",
+                            "_y_m",
+                            "_theta_rad",
+                            "_vx_m_s",
+                            "_vy_m_s",
+                            "_omega_rad_s",
+                            "_ax_m_s2",
+                            "_ay_m_s2",
+                            "_alpha_rad_s2"})
+        c.push_back(b.name + q);
+    for (const auto *j : scene.clearance_joints)
+      for (const char *q : {"_ex_m",
+                            "_ey_m",
+                            "_ex_local_m",
+                            "_ey_local_m",
+                            "_penetration_m",
+                            "_normal_force_N",
+                            "_friction_force_N",
+                            "_sliding_velocity_m_s",
+                            "_contact_angle_rad"})
+        c.push_back(j->name() + q);
+    for (const auto d : scene.drivers)
+      c.push_back(mech.get_constraints()[d]->name + "_torque_N_m");
+    for (const char *e : {"kinetic_energy_J", "potential_energy_J", "reaction_work_J", "dissipated_J"})
+      c.push_back(e);
+    return c;
+  }
+
   ValidityWarnings
   run_validity_warnings(const io::Scene &scene, const Json &summary)
   {
@@ -422,10 +439,40 @@ namespace wearlink::workflows
     mbs::assemble(*scene.mechanism, scene.start_time, scene.assembly_constraints, {}, q, v);
   }
 
+  namespace
+  {
+    /**
+     * The files of a finished run: time_series.csv committed, parameters.prm, summary.json
+     * (and its warnings on stderr), then the first look if asked for.
+     */
+    void
+    write_run_files(const io::Scene                      &scene,
+                    const RunOptions                     &options,
+                    const Json                           &summary,
+                    const ValidityWarnings               &warnings,
+                    AtomicFile                           *csv,
+                    const std::filesystem::file_time_type start)
+    {
+      if (csv)
+        csv->commit();
+      std::ostringstream prm;
+      scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
+      write_file_atomically(options.output_directory + "/parameters.prm", prm.str());
+      write_file_atomically(options.output_directory + "/summary.json", summary.dump(2));
+      warnings.print(std::cerr);
+      if (options.first_look != nullptr)
+        {
+          *options.first_look         = write_first_look(scene, summary, options.output_directory);
+          options.first_look->written = files_written_since(options.output_directory, start);
+        }
+    }
+  } // namespace
+
   Json
   run_scene(io::Scene &scene, const RunOptions &options)
   {
-    const auto      wall_start = std::chrono::steady_clock::now();
+    const auto      wall_start  = std::chrono::steady_clock::now();
+    const auto      files_start = std::filesystem::file_time_type::clock::now();
     Eigen::VectorXd q0, v0;
     if (options.initial_state == nullptr)
       assemble_scene(scene, q0, v0);
@@ -484,15 +531,7 @@ namespace wearlink::workflows
       options.warnings->merge(warnings);
 
     if (write)
-      {
-        if (csv)
-          csv->commit();
-        std::ostringstream prm;
-        scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
-        write_file_atomically(options.output_directory + "/parameters.prm", prm.str());
-        write_file_atomically(options.output_directory + "/summary.json", summary.dump(2));
-        warnings.print(std::cerr);
-      }
+      write_run_files(scene, options, summary, warnings, csv.get(), files_start);
     return summary;
   }
 } // namespace wearlink::workflows

@@ -18,6 +18,8 @@
 
 namespace wearlink::workflows
 {
+  struct FirstLook;
+
   struct RunOptions
   {
     /** Where to write; empty: write nothing (library use, tests). */
@@ -51,7 +53,17 @@ namespace wearlink::workflows
      * to stderr when the run writes its summary.json.
      */
     ValidityWarnings *warnings = nullptr;
+    /**
+     * If set (and the run writes its files, and Output/Plots is true), the run also
+     * writes the first-look PNGs of its clearance joints and bodies and fills this with
+     * their names and a short summary (workflows/first_look.h).
+     */
+    FirstLook *first_look = nullptr;
   };
+
+  /** The columns of the time_series.csv a run of @p scene writes, in order. */
+  std::vector<std::string>
+  time_series_columns(const io::Scene &scene);
 
   /**
    * Assemble and integrate @p scene from its start to its end time. Returns the run

@@ -12,6 +12,7 @@
 #include "base/exceptions.h"
 #include "base/output_directory.h"
 #include "io/scene.h"
+#include "workflows/first_look.h"
 #include "workflows/wear_run.h"
 
 #include <filesystem>
@@ -36,7 +37,17 @@ examples) and writes into DIR (default: output/<scene name>):
                     and the effect ledger (what was constructed and called)
   time_series.csv   sampled every 'Output/Time series interval' seconds
   parameters.prm    the effective scene (with --set overrides applied)
-and, for the analyses listed in 'Analyses/List of analyses' (phase-portrait, poincare,
+  orbit_<J>.png     the journal-centre orbit of clearance joint J (eccentricity in
+                    the bushing frame) inside its clearance circle
+  contact_forces.png  normal and friction force of each clearance joint vs time
+  accelerations.png the acceleration of the 'Output/Plot bodies' (default: the
+                    sliders, else the body with the largest peak acceleration)
+                    (the PNGs unless 'Output/Plots = false'; drawn from
+                    time_series.csv by gnuplot: without either, a note, no failure)
+and prints a short summary (contact fraction, peak forces and impacts per clearance
+joint, peak acceleration per plot body; the numbers of summary.json) and the files
+written.
+For the analyses listed in 'Analyses/List of analyses' (phase-portrait, poincare,
 lyapunov; see --print-parameters): analysis_series.csv and phase_portrait_*.png,
 poincare_section.csv and poincare_*.png, lyapunov_<channel>_<method>.csv/.png, with
 their results (Poincaré spread, exponents in 1/s, natural log) in summary.json
@@ -118,7 +129,10 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
                           "before_after_*.csv",
                           "mesh_*.msh",
                           "fields_*.vtu",
-                          "fields_*_pressure.csv"};
+                          "fields_*_pressure.csv",
+                          "orbit_*.png",
+                          "contact_forces.png",
+                          "accelerations.png"};
       f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe"};
       return f;
     }
@@ -160,6 +174,19 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
       return 0;
     }
 
+    /** The short summary and the files of a run (workflows/first_look.h). */
+    void
+    print_first_look(const workflows::FirstLook &look)
+    {
+      for (const auto &note : look.notes)
+        std::cerr << "[wearlink] " << note << "\n";
+      std::cout << "summary (summary.json; peaks over every integrator step, the time series and its plots "
+                   "sample them):\n"
+                << look.summary << "files written:\n";
+      for (const auto &f : look.written)
+        std::cout << "  " << f << "\n";
+    }
+
     /** `wearlink run` of a scene without wear: one simulation and its analyses. */
     int
     run_plain_scene(io::Scene &scene, const std::string &file, const ParsedArguments &a)
@@ -169,7 +196,9 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
       workflows::RunOptions options;
       options.output_directory = out;
       options.progress         = !a.has("--quiet");
-      const Json summary       = workflows::run_scene(scene, options);
+      workflows::FirstLook look;
+      options.first_look = &look;
+      const Json summary = workflows::run_scene(scene, options);
       std::cout << "wrote " << out << "/summary.json (" << json_number(summary.at("steps")) << " steps, "
                 << json_number(summary.at("wall_time_s")) << " s wall)\n";
       if (summary.contains("analyses") && summary.at("analyses").contains("lyapunov"))
@@ -186,6 +215,7 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
               std::cout << "\n";
             }
         }
+      print_first_look(look);
       return 0;
     }
 

@@ -185,6 +185,7 @@ TEST(CommandLine, EmptyOutputIsRefusedByEveryCommand)
                                                           {"compare-pressure", scene},
                                                           {"compare-contact", scene},
                                                           {"compare-dynamics", "before", "after"},
+                                                          {"compare-signal", scene, "measured.csv"},
                                                           {"study", "accuracy", scene},
                                                           {"sweep", scene},
                                                           {"lyapunov", "series.csv"}};
