@@ -24,6 +24,24 @@ namespace wearlink::mbs
       tolerance[i] = i < settings.absolute_tolerance.size() ? settings.absolute_tolerance[i] : 1e-9;
   }
 
+  void
+  AdaptiveRungeKutta::step(const double t_limit)
+  {
+    if (!(h > 0))
+      h = initial_step_size();
+    bool last_rejected = false;
+    while (true)
+      {
+        const double hs    = trial_step(t_limit, method_name());
+        const double t_new = (hs >= t_limit - t) ? t_limit : t + hs;
+        if (control(attempt(hs, t_new), hs, last_rejected))
+          {
+            accept(hs, t_new);
+            return;
+          }
+      }
+  }
+
   double
   AdaptiveRungeKutta::trial_step(const double t_limit, const char *method) const
   {
@@ -107,11 +125,12 @@ namespace wearlink::mbs
   }
 
   double
-  AdaptiveRungeKutta::initial_step_size(Eigen::VectorXd &scratch_y, Eigen::VectorXd &scratch_f)
+  AdaptiveRungeKutta::initial_step_size()
   {
-    const double rtol = settings.relative_tolerance;
-    double       d0 = 0, d1 = 0;
-    unsigned int n_controlled = 0;
+    Eigen::VectorXd scratch_y(y.size()), scratch_f(y.size());
+    const double    rtol = settings.relative_tolerance;
+    double          d0 = 0, d1 = 0;
+    unsigned int    n_controlled = 0;
     for (Eigen::Index i = 0; i < y.size(); ++i)
       if (tolerance[i] > 0)
         {

@@ -16,7 +16,22 @@ namespace wearlink::mbs
 {
   class AdaptiveRungeKutta : public Integrator
   {
+  public:
+    /** Trial steps until one meets the tolerance; that one becomes the current point. */
+    void
+    step(double t_limit) override;
+
   protected:
+    /** The pair's stages for a trial step to @p t_new; returns the normalized error. */
+    virtual double
+    attempt(double hs, double t_new) = 0;
+    /** Make the accepted trial step the current point (dense output, advance()). */
+    virtual void
+    accept(double hs, double t_new) = 0;
+    /** The name in messages ("dopri5"). */
+    virtual const char *
+    method_name() const = 0;
+
     /** Constants of the controller h_new = h / clamp(err^expo / err_old^beta / safe). */
     struct Controller
     {
@@ -53,7 +68,7 @@ namespace wearlink::mbs
 
     /** Hairer's starting step (Solving ODE I, §II.4) for a method of order @p order. */
     double
-    initial_step_size(Eigen::VectorXd &scratch_y, Eigen::VectorXd &scratch_f);
+    initial_step_size();
 
     /** Make the accepted step's end the current point. */
     void

@@ -116,30 +116,32 @@ namespace wearlink::mbs
           v->setZero(n);
       }
 
-      void
-      step(double t_limit) override
+    protected:
+      double
+      attempt(const double hs, const double t_new) override
       {
-        if (!(h > 0))
-          h = initial_step_size(tmp, k2);
-        bool last_rejected = false;
-        while (true)
-          {
-            const double hs    = trial_step(t_limit, "dop853");
-            const double t_new = (hs >= t_limit - t) ? t_limit : t + hs;
-            stages(hs, t_new);
-            if (control(error_estimate(hs), hs, last_rejected))
-              {
-                evaluate(t_new, y_new, f_new);
-                // Keep this step's stages for a dense output asked for later.
-                s_f0 = f;
-                s_h  = hs;
-                advance(t_new, y_new, f_new);
-                dense_ready = false;
-                return;
-              }
-          }
+        stages(hs, t_new);
+        return error_estimate(hs);
       }
 
+      void
+      accept(const double hs, const double t_new) override
+      {
+        evaluate(t_new, y_new, f_new);
+        // Keep this step's stages for a dense output asked for later.
+        s_f0 = f;
+        s_h  = hs;
+        advance(t_new, y_new, f_new);
+        dense_ready = false;
+      }
+
+      const char *
+      method_name() const override
+      {
+        return "dop853";
+      }
+
+    public:
       void
       dense_output(double time, double *out) const override
       {

@@ -172,27 +172,29 @@ namespace wearlink::mbs
           v->setZero(n);
       }
 
-      void
-      step(double t_limit) override
+    protected:
+      double
+      attempt(const double hs, const double t_new) override
       {
-        if (!(h > 0))
-          h = initial_step_size(tmp, k2);
-        bool last_rejected = false;
-        while (true)
-          {
-            const double hs    = trial_step(t_limit, "dopri5");
-            const double t_new = (hs >= t_limit - t) ? t_limit : t + hs;
-            stages(hs, t_new);
-            err = hs * (dp::e1 * f + dp::e3 * k3 + dp::e4 * k4 + dp::e5 * k5 + dp::e6 * k6 + dp::e7 * k7);
-            if (control(error_norm(err, tmp), hs, last_rejected))
-              {
-                prepare_dense_output(hs);
-                advance(t_new, tmp, k7);
-                return;
-              }
-          }
+        stages(hs, t_new);
+        err = hs * (dp::e1 * f + dp::e3 * k3 + dp::e4 * k4 + dp::e5 * k5 + dp::e6 * k6 + dp::e7 * k7);
+        return error_norm(err, tmp);
       }
 
+      void
+      accept(const double hs, const double t_new) override
+      {
+        prepare_dense_output(hs);
+        advance(t_new, tmp, k7);
+      }
+
+      const char *
+      method_name() const override
+      {
+        return "dopri5";
+      }
+
+    public:
       void
       dense_output(double time, double *out) const override
       {

@@ -206,22 +206,30 @@ TEST(HardCases, StickSlipNearZeroSlidingSpeed)
 // and convergence when the tolerance is halved: at 2 mm the peak contact force of each
 // joint to 1 % (the first, largest impacts of a cycle; measured 1e-4); at 1 µm the pin
 // rattles in a bore only 1 µm larger, the individual peaks are sensitive to every
-// perturbation (measured 10–20 % apart), and the converging quantity is the friction
-// work over the cycle, asserted to 1 % (measured 1e-4).
+// perturbation (measured 10–20 % apart). The friction work over the 0.5 s is chaotic
+// too: a position tolerance changed by 0.1 % moves it by 3.5 %, by 1 % by 11 % (at 2 mm,
+// measured), and round-off alone (the order of a sum) by a few per cent. So it is not
+// compared with a fixed 1 %, but with its chaos floor measured here: three equivalent
+// runs (position tolerance × 0.999, 1.001, 1.01); halving the tolerance must not move it
+// farther than twice their spread plus 1 %.
 TEST(HardCases, ExtremeClearancesOnTheNineBar)
 {
   for (const double clearance : {1e-6, 2e-3})
     {
       std::vector<double> peaks, friction;
+      auto                scene_at = [&](double rtol, double position_factor) {
+        return wearlink::testing::scene("params/nine_bar_clearance.prm",
+                                        {"Simulation/End time=0.5",
+                                         "Joint A/Clearance/Radial clearance=" + format_number(clearance),
+                                         "Joint B/Clearance/Radial clearance=" + format_number(clearance),
+                                         "Integrator/Relative tolerance=" + format_number(rtol),
+                                         "Integrator/Position tolerance=" +
+                                           format_number(1e-3 * rtol * position_factor),
+                                         "Output/Time series=false"});
+      };
       for (const double rtol : {1e-6, 5e-7})
         {
-          auto         scene = wearlink::testing::scene("params/nine_bar_clearance.prm",
-                                                {"Simulation/End time=0.5",
-                                                         "Joint A/Clearance/Radial clearance=" + format_number(clearance),
-                                                         "Joint B/Clearance/Radial clearance=" + format_number(clearance),
-                                                         "Integrator/Relative tolerance=" + format_number(rtol),
-                                                         "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
-                                                         "Output/Time series=false"});
+          auto         scene = scene_at(rtol, 1.0);
           const double K     = scene.clearance_joints.at(0)->stiffness();
           const Json   s     = wearlink::testing::run(scene);
           std::cout << "c = " << clearance << " m, rtol " << rtol << ": friction dissipation "
@@ -251,7 +259,17 @@ TEST(HardCases, ExtremeClearancesOnTheNineBar)
           EXPECT_NEAR(peaks[0], peaks[2], 0.01 * peaks[2]) << "joint A, c = " << clearance;
           EXPECT_NEAR(peaks[1], peaks[3], 0.01 * peaks[3]) << "joint B, c = " << clearance;
         }
-      EXPECT_NEAR(friction[0], friction[1], 0.01 * friction[1]) << "c = " << clearance;
+      double low = friction[0], high = friction[0];
+      for (const double factor : {0.999, 1.001, 1.01})
+        {
+          auto         twin = scene_at(1e-6, factor);
+          const double f    = json_number(wearlink::testing::run(twin).at("energy").at("friction_dissipation_J"));
+          low               = std::min(low, f);
+          high              = std::max(high, f);
+        }
+      std::cout << "c = " << clearance << " m: friction work " << friction[0] << " J (rtol 1e-6), " << friction[1]
+                << " J (5e-7); equivalent runs span " << low << " … " << high << " J\n";
+      EXPECT_NEAR(friction[0], friction[1], 2 * (high - low) + 0.01 * friction[1]) << "c = " << clearance;
     }
 }
 

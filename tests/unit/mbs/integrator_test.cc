@@ -81,6 +81,24 @@ namespace
     // error, the velocity error (−sin) first order.
     return {std::hypot(integ->state()[0] - 1.0, integ->state()[1]), dense_error};
   }
+  /**
+   * Global error at 1e-6 and at @p tight: the tight one below @p max_error (dense
+   * output below @p max_dense_error), and at least 100 × smaller than the loose one.
+   */
+  void
+  expect_follows_tolerance(IntegratorType type, double tight, double max_error, double max_dense_error)
+  {
+    IntegratorSettings s;
+    s.type               = type;
+    s.max_step           = 1.0;
+    s.relative_tolerance = 1e-6;
+    const auto loose     = run(s);
+    s.relative_tolerance = tight;
+    const auto fine      = run(s);
+    EXPECT_LT(fine.first, max_error);
+    EXPECT_GT(loose.first / fine.first, 100.0);
+    EXPECT_LT(fine.second, max_dense_error);
+  }
 } // namespace
 
 TEST(Integrators, Rk4IsFourthOrder)
@@ -100,16 +118,7 @@ TEST(Integrators, Rk4IsFourthOrder)
 
 TEST(Integrators, Dopri5FollowsItsTolerance)
 {
-  IntegratorSettings s;
-  s.type               = IntegratorType::dopri5;
-  s.max_step           = 1.0;
-  s.relative_tolerance = 1e-6;
-  const auto loose     = run(s);
-  s.relative_tolerance = 1e-9;
-  const auto tight     = run(s);
-  EXPECT_LT(tight.first, 1e-7);
-  EXPECT_GT(loose.first / tight.first, 100.0);
-  EXPECT_LT(tight.second, 1e-8);
+  expect_follows_tolerance(IntegratorType::dopri5, 1e-9, 1e-7, 1e-8);
 }
 
 TEST(Integrators, Dop853IsEighthOrder)
@@ -132,16 +141,7 @@ TEST(Integrators, Dop853IsEighthOrder)
 
 TEST(Integrators, Dop853FollowsItsTolerance)
 {
-  IntegratorSettings s;
-  s.type               = IntegratorType::dop853;
-  s.max_step           = 1.0;
-  s.relative_tolerance = 1e-6;
-  const auto loose     = run(s);
-  s.relative_tolerance = 1e-10;
-  const auto tight     = run(s);
-  EXPECT_LT(tight.first, 1e-8);
-  EXPECT_GT(loose.first / tight.first, 100.0);
-  EXPECT_LT(tight.second, 1e-8);
+  expect_follows_tolerance(IntegratorType::dop853, 1e-10, 1e-8, 1e-8);
 }
 
 TEST(Integrators, Dop853LeavesTheSystemAtTheAcceptedStateAfterDenseOutput)
