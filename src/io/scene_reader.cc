@@ -325,7 +325,7 @@ namespace wearlink::io
               "Maximum steps per second",
               "1e7",
               P::Double(0),
-              "Step budget: more than 200,000 + this × the simulated time (s) steps, rejected ones "
+              "Step budget: more than 50,000 + this × the simulated time (s) steps, rejected ones "
               "included, end the run as a numerical failure (exit 3) instead of crawling on for "
               "hours; 0: no budget. The shipped scenes need 1.2e4 (nine-bar) to 1.3e5 (slider-crank "
               "at 5000 rpm) steps per second; a scene that needs 1e7 has contact or constraint "

@@ -80,7 +80,7 @@ namespace wearlink::mbs
      * (rejected ones included) since initialize() is a NumericalError; 0: no budget.
      */
     double max_steps_per_second = 1e7;
-    double step_budget_grace    = 2e5;
+    double step_budget_grace    = 5e4;
   };
 
   class Simulation;
