@@ -268,8 +268,9 @@ namespace wearlink::io
       prm.leave_subsection();
     }
 
+    /** Integrator: method, tolerances, step limits and budget, Baumgarte factors. */
     void
-    declare_numerics(ParameterHandler &prm)
+    declare_integrator(ParameterHandler &prm)
     {
       prm.enter_subsection("Integrator");
       declare(prm,
@@ -340,7 +341,12 @@ namespace wearlink::io
               "1/s");
       declare(prm, "Baumgarte beta", "5", P::Double(0, 1e6), "β of the Baumgarte stabilization, 0 … 1e6 1/s.", "1/s");
       prm.leave_subsection();
+    }
 
+    /** Simulation: the simulated interval. */
+    void
+    declare_simulation(ParameterHandler &prm)
+    {
       prm.enter_subsection("Simulation");
       declare(prm,
               "Start time",
@@ -356,7 +362,12 @@ namespace wearlink::io
                        "extrapolation instead).",
                        "s");
       prm.leave_subsection();
+    }
 
+    /** Output: time series and plots. */
+    void
+    declare_output(ParameterHandler &prm)
+    {
       prm.enter_subsection("Output");
       declare(prm,
               "Time series",
@@ -393,6 +404,14 @@ namespace wearlink::io
               "with the largest peak acceleration component of the run.",
               "none");
       prm.leave_subsection();
+    }
+
+    void
+    declare_numerics(ParameterHandler &prm)
+    {
+      declare_integrator(prm);
+      declare_simulation(prm);
+      declare_output(prm);
     }
 
     void

@@ -42,6 +42,19 @@ namespace wearlink::mbs
       }
   }
 
+  void
+  AdaptiveRungeKutta::dense_output(const double time, double *out) const
+  {
+    const double hs = t - t_prev;
+    if (hs <= 0)
+      {
+        for (Eigen::Index i = 0; i < y.size(); ++i)
+          out[i] = y[i];
+        return;
+      }
+    interpolate((time - t_prev) / hs, out);
+  }
+
   double
   AdaptiveRungeKutta::trial_step(const double t_limit, const char *method) const
   {

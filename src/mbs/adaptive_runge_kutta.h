@@ -21,6 +21,10 @@ namespace wearlink::mbs
     void
     step(double t_limit) override;
 
+    /** The pair's continuous extension of the last step; its start point before any step. */
+    void
+    dense_output(double time, double *out) const final;
+
   protected:
     /** The pair's stages for a trial step to @p t_new; returns the normalized error. */
     virtual double
@@ -28,6 +32,9 @@ namespace wearlink::mbs
     /** Make the accepted trial step the current point (dense output, advance()). */
     virtual void
     accept(double hs, double t_new) = 0;
+    /** The continuous extension of the last step at s = (time − t_prev)/(t − t_prev). */
+    virtual void
+    interpolate(double s, double *out) const = 0;
     /** The name in messages ("dopri5"). */
     virtual const char *
     method_name() const = 0;

@@ -141,20 +141,11 @@ namespace wearlink::mbs
         return "dop853";
       }
 
-    public:
       void
-      dense_output(double time, double *out) const override
+      interpolate(const double s, double *out) const override
       {
-        const double hs = t - t_prev;
-        if (hs <= 0)
-          {
-            for (Eigen::Index i = 0; i < y.size(); ++i)
-              out[i] = y[i];
-            return;
-          }
         if (!dense_ready)
           const_cast<DormandPrince853 *>(this)->prepare_dense_output();
-        const double s  = (time - t_prev) / hs;
         const double s1 = 1 - s;
         for (Eigen::Index i = 0; i < y.size(); ++i)
           out[i] = y_prev[i] +

@@ -194,18 +194,9 @@ namespace wearlink::mbs
         return "dopri5";
       }
 
-    public:
       void
-      dense_output(double time, double *out) const override
+      interpolate(const double s, double *out) const override
       {
-        const double hs = t - t_prev;
-        if (hs <= 0)
-          {
-            for (Eigen::Index i = 0; i < y.size(); ++i)
-              out[i] = y[i];
-            return;
-          }
-        const double s  = (time - t_prev) / hs;
         const double s1 = 1 - s;
         for (Eigen::Index i = 0; i < y.size(); ++i)
           out[i] = y_prev[i] + s * (r2[i] + s1 * (r3[i] + s * (r4[i] + s1 * r5[i])));
