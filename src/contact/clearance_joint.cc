@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "contact/clearance_joint.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace wearlink::contact
 {
@@ -98,6 +100,53 @@ namespace wearlink::contact
     out.add_force(description.bushing_body, s, -f_pin, c.q_bore);
     out.damping_power += (fn - fel) * c.rate;
     out.friction_power += -ft * c.slide;
+  }
+
+  namespace
+  {
+    /** Finite-difference steps of the stiff directions: far inside the laws' bands. */
+    constexpr double penetration_step_fraction = 1e-3;  ///< of the current δ
+    constexpr double velocity_step             = 1e-9;  ///< [m/s]; the ramps are 1e-4 m/s wide
+    constexpr double min_penetration_step      = 1e-13; ///< [m]
+  }                                                     // namespace
+
+  void
+  ClearanceJoint::stiff_directions(const mbs::StateView             &s,
+                                   const unsigned int                n_coordinates,
+                                   std::vector<mbs::StiffDirection> &out) const
+  {
+    Contact c;
+    contact_kinematics(s, c);
+    if (!(c.gap.penetration > 0))
+      return;
+    // The gradient of the relative velocity of the contact points along @p dir.
+    auto gradient = [&](const mbs::Vec2 &dir) {
+      Eigen::VectorXd w   = Eigen::VectorXd::Zero(n_coordinates);
+      auto            add = [&](int body, const mbs::Vec2 &point, double sign) {
+        if (body == mbs::ground)
+          return;
+        w[3 * body] += sign * dir.x();
+        w[3 * body + 1] += sign * dir.y();
+        w[3 * body + 2] += sign * mbs::cross(point - s.position(body), dir);
+      };
+      add(description.pin_body, c.q_pin, 1);
+      add(description.bushing_body, c.q_bore, -1);
+      return w;
+    };
+    mbs::StiffDirection normal;
+    normal.w             = gradient(c.gap.normal);
+    normal.position      = true;
+    normal.velocity      = true;
+    normal.position_step = std::max(min_penetration_step, penetration_step_fraction * c.gap.penetration);
+    normal.velocity_step = velocity_step;
+    out.push_back(std::move(normal));
+    if (!friction_law)
+      return;
+    mbs::StiffDirection sliding;
+    sliding.w             = gradient(c.t);
+    sliding.velocity      = true;
+    sliding.velocity_step = velocity_step;
+    out.push_back(std::move(sliding));
   }
 
   double

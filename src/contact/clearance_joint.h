@@ -94,6 +94,16 @@ namespace wearlink::contact
     double
     potential_energy(const mbs::StateView &s) const override;
 
+    /**
+     * In contact: the penetration δ (position and velocity: the normal law's stiffness
+     * and damping) and, with a friction law, the sliding velocity v_t (the friction
+     * ramp), as gradients over the coordinates.
+     */
+    void
+    stiff_directions(const mbs::StateView             &s,
+                     unsigned int                      n_coordinates,
+                     std::vector<mbs::StiffDirection> &out) const override;
+
     bool
     has_event() const override
     {

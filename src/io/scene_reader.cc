@@ -281,7 +281,13 @@ namespace wearlink::io
               "dopri5: adaptive Dormand–Prince 5(4) with error control, dense output and "
               "contact onset/separation located in time (recommended); "
               "dop853: adaptive Dormand–Prince 8(5,3), the same with a higher order (fewer, "
-              "dearer steps: 12 evaluations each, 3 more where dense output is read).",
+              "dearer steps: 12 evaluations each, 3 more where dense output is read); "
+              "ros34pw2: the linearly implicit Rosenbrock-W method ROS34PW2 (order 3), its "
+              "Jacobian from the contacts' stiff directions only, events as dopri5 (for "
+              "studies: on its own it is slower than dopri5 wherever the motion is not "
+              "stiff); dopri5-stiff: dopri5 that hands over to ros34pw2 while its steps are "
+              "limited by stability (a pin sticking in its bushing during an impact, where "
+              "the friction ramp is a damper of ~1e6 N s/m) and back when they are not.",
               "none");
       declare(prm,
               "Time step",

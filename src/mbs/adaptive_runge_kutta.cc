@@ -43,6 +43,22 @@ namespace wearlink::mbs
   }
 
   void
+  AdaptiveRungeKutta::take_over(const double           t_now,
+                                const Eigen::VectorXd &y_now,
+                                const Eigen::VectorXd &f_now,
+                                const double           h_proposal)
+  {
+    t      = t_now;
+    t_prev = t_now;
+    y      = y_now;
+    y_prev = y_now;
+    f      = f_now;
+    f_prev = f_now;
+    h      = h_proposal;
+    restarted();
+  }
+
+  void
   AdaptiveRungeKutta::dense_output(const double time, double *out) const
   {
     const double hs = t - t_prev;

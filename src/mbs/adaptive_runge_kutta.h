@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -20,6 +21,42 @@ namespace wearlink::mbs
     /** Trial steps until one meets the tolerance; that one becomes the current point. */
     void
     step(double t_limit) override;
+
+    double
+    proposed_step() const override
+    {
+      return h > 0 ? std::min(h, settings.max_step) : 0.0;
+    }
+
+    /**
+     * h·ρ of the last accepted step: the step times an estimate of the largest
+     * eigenvalue magnitude of the Jacobian that matters for stability (0: the method
+     * has no estimate). Against the method's stability boundary it tells whether the
+     * step was limited by stability rather than accuracy.
+     */
+    virtual double
+    stiffness_indicator() const
+    {
+      return 0;
+    }
+
+    /**
+     * The fastest rate ρ [1/s] of the method's own model of the stiffness, built at its
+     * current point (a Rosenbrock-W method builds W there and keeps it for its next
+     * step); 0 for methods without one.
+     */
+    virtual double
+    probe_stiff_rate()
+    {
+      return 0;
+    }
+
+    /**
+     * Continue from another method's current point (t, y, f) with the step proposal
+     * @p h_proposal, without evaluating f (stiff switching).
+     */
+    void
+    take_over(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, double h_proposal);
 
     /** The pair's continuous extension of the last step; its start point before any step. */
     void
@@ -73,6 +110,12 @@ namespace wearlink::mbs
     bool
     control(double err, double hs, bool &last_rejected);
 
+    /** The point was replaced from outside (take_over()): drop what depends on the old one. */
+    virtual void
+    restarted()
+    {
+    }
+
     /** Hairer's starting step (Solving ODE I, §II.4) for a method of order @p order. */
     double
     initial_step_size();
@@ -90,7 +133,19 @@ namespace wearlink::mbs
     double fac_old = 1e-4;
   };
 
+  /** The Dormand–Prince 5(4) pair (Hairer's dopri5) with its 4th-order dense output. */
+  std::unique_ptr<AdaptiveRungeKutta>
+  make_dopri5(OdeSystem &system, const IntegratorSettings &settings);
+
   /** The Dormand–Prince 8(5,3) pair (Hairer's DOP853) with its 7th-order dense output. */
   std::unique_ptr<Integrator>
   make_dop853(OdeSystem &system, const IntegratorSettings &settings);
+
+  /** The Rosenbrock-W method ROS34PW2 (rosenbrock_w.cc); needs a second-order system. */
+  std::unique_ptr<AdaptiveRungeKutta>
+  make_ros34pw2(OdeSystem &system, const IntegratorSettings &settings);
+
+  /** dopri5 switching to ROS34PW2 in stiff phases (stiff_switching.cc). */
+  std::unique_ptr<Integrator>
+  make_dopri5_stiff(OdeSystem &system, const IntegratorSettings &settings);
 } // namespace wearlink::mbs

@@ -11,6 +11,7 @@
 // right-hand side is a pure function of (t, q, v) within a step.
 #pragma once
 
+#include "mbs/integrator.h"
 #include "mbs/types.h"
 
 #include <string>
@@ -52,6 +53,19 @@ namespace wearlink::mbs
     /** Stored (elastic) energy [J], for the energy balance. */
     virtual double
     potential_energy(const StateView &s) const = 0;
+
+    /**
+     * Append the directions in which the element's forces change steeply at state @p s,
+     * as gradients over the mechanism's @p n_coordinates coordinates (StiffDirection,
+     * mbs/integrator.h): what a linearly implicit integrator builds its Jacobian from.
+     * Default: none.
+     */
+    virtual void
+    stiff_directions(const StateView & /*s*/,
+                     unsigned int /*n_coordinates*/,
+                     std::vector<StiffDirection> & /*out*/) const
+    {
+    }
 
     /** True if the element has a mode switched at located events. */
     virtual bool

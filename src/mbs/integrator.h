@@ -10,6 +10,14 @@
 //           blends the 5th- and 3rd-order embedded solutions, I control) with the
 //           7th-order dense output, whose three extra stages are evaluated only for the
 //           steps in which dense output is asked for.
+//   ros34pw2 the linearly implicit Rosenbrock-W method ROS34PW2 (Rang & Angermann 2005:
+//           4 stages, order 3, embedded order 2, L-stable, order kept with any
+//           approximate Jacobian), its Jacobian built from the system's stiff
+//           directions only (rosenbrock_w.cc); cubic Hermite dense output.
+//   dopri5-stiff dopri5 that hands over to ros34pw2 while the steps are limited by
+//           stability rather than accuracy (stiff contact phases: a sticking
+//           friction ramp, a heavily damped contact), and back when they are not
+//           (stiff_switching.cc).
 // All finish every step with f evaluated at the new point (FSAL for dopri5, the next
 // step's first stage for rk4), so an observer reading the system after step() sees the
 // accelerations and reactions of the accepted state.
@@ -23,6 +31,22 @@
 
 namespace wearlink::mbs
 {
+  /**
+   * A direction in which the right-hand side of a second-order system (below) changes
+   * steeply: the gradient w of a scalar s = w·q (for positions) or ṡ = w·q̇ (for
+   * velocities) on which a force depends stiffly, e.g. a contact's penetration and its
+   * relative sliding velocity. A linearly implicit method builds its Jacobian from the
+   * change of f along these directions only (rosenbrock_w.cc).
+   */
+  struct StiffDirection
+  {
+    Eigen::VectorXd w;                     ///< gradient over the n coordinates q
+    bool            position      = false; ///< f depends steeply on w·q
+    bool            velocity      = false; ///< f depends steeply on w·q̇
+    double          position_step = 0;     ///< finite-difference step of w·q [its unit]
+    double          velocity_step = 0;     ///< finite-difference step of w·q̇ [its unit / s]
+  };
+
   class OdeSystem
   {
   public:
@@ -31,16 +55,33 @@ namespace wearlink::mbs
     size() const = 0;
     virtual void
     rhs(double t, const double *y, double *dydt) = 0;
+    /**
+     * For systems y = [q | q̇ | rest] whose first n components satisfy q' = q̇ exactly:
+     * n. 0 (default): not of this form (no linearly implicit method applies).
+     */
+    virtual unsigned int
+    n_second_order() const
+    {
+      return 0;
+    }
+    /** The stiff directions at (t, y) (second-order systems; default none). */
+    virtual void
+    stiff_directions(double /*t*/, const double * /*y*/, std::vector<StiffDirection> &out)
+    {
+      out.clear();
+    }
   };
 
   enum class IntegratorType
   {
     rk4,
     dopri5,
-    dop853
+    dop853,
+    ros34pw2,
+    dopri5_stiff
   };
 
-  /** "rk4" / "dopri5" / "dop853" → type; throws InputError on anything else. */
+  /** A scene's method name ("rk4", "dopri5", …) → type; throws InputError on anything else. */
   IntegratorType
   parse_integrator_type(const std::string &name);
   std::string
@@ -67,12 +108,22 @@ namespace wearlink::mbs
     virtual ~Integrator() = default;
 
     /** Start (or restart after an event) at (t, y): evaluates f(t, y). */
-    void
+    virtual void
     reset(double t, const Eigen::VectorXd &y);
 
     /** Take one accepted step that does not pass @p t_limit. */
     virtual void
     step(double t_limit) = 0;
+
+    /**
+     * The size the next step would try [s] (before the limit passed to step()); 0 if
+     * the method has no proposal yet.
+     */
+    virtual double
+    proposed_step() const
+    {
+      return settings.time_step;
+    }
 
     /** Dense output of the last step at @p t ∈ [previous_time(), time()]. */
     virtual void
@@ -123,4 +174,17 @@ namespace wearlink::mbs
 
   std::unique_ptr<Integrator>
   make_integrator(OdeSystem &system, const IntegratorSettings &settings);
+
+  /**
+   * The cubic Hermite interpolant at s ∈ [0, 1] of a step of length @p h from (y0, f0)
+   * to (y1, f1), into @p out (dense output of rk4 and of the Rosenbrock-W method).
+   */
+  void
+  hermite_interpolate(double                 s,
+                      double                 h,
+                      const Eigen::VectorXd &y0,
+                      const Eigen::VectorXd &f0,
+                      const Eigen::VectorXd &y1,
+                      const Eigen::VectorXd &f1,
+                      double                *out);
 } // namespace wearlink::mbs

@@ -18,13 +18,17 @@ namespace wearlink::mbs
       return IntegratorType::dopri5;
     if (name == "dop853")
       return IntegratorType::dop853;
+    if (name == "ros34pw2")
+      return IntegratorType::ros34pw2;
+    if (name == "dopri5-stiff")
+      return IntegratorType::dopri5_stiff;
     throw InputError("Unknown integrator '" + name + "'; valid are " + integrator_names() + ".");
   }
 
   std::string
   integrator_names()
   {
-    return "rk4|dopri5|dop853";
+    return "rk4|dopri5|dop853|ros34pw2|dopri5-stiff";
   }
 
   std::string
@@ -38,8 +42,29 @@ namespace wearlink::mbs
           return "dopri5";
         case IntegratorType::dop853:
           return "dop853";
+        case IntegratorType::ros34pw2:
+          return "ros34pw2";
+        case IntegratorType::dopri5_stiff:
+          return "dopri5-stiff";
       }
     throw InputError("Unknown integrator type.");
+  }
+
+  void
+  hermite_interpolate(const double           s,
+                      const double           h,
+                      const Eigen::VectorXd &y0,
+                      const Eigen::VectorXd &f0,
+                      const Eigen::VectorXd &y1,
+                      const Eigen::VectorXd &f1,
+                      double                *out)
+  {
+    const double h00 = (1 + 2 * s) * (1 - s) * (1 - s);
+    const double h10 = s * (1 - s) * (1 - s);
+    const double h01 = s * s * (3 - 2 * s);
+    const double h11 = s * s * (s - 1);
+    for (Eigen::Index i = 0; i < y0.size(); ++i)
+      out[i] = h00 * y0[i] + h10 * h * f0[i] + h01 * y1[i] + h11 * h * f1[i];
   }
 
   Integrator::Integrator(OdeSystem &system, const IntegratorSettings &settings)
@@ -128,13 +153,7 @@ namespace wearlink::mbs
               out[i] = y[i];
             return;
           }
-        const double s   = (time - t_prev) / h;
-        const double h00 = (1 + 2 * s) * (1 - s) * (1 - s);
-        const double h10 = s * (1 - s) * (1 - s);
-        const double h01 = s * s * (3 - 2 * s);
-        const double h11 = s * s * (s - 1);
-        for (Eigen::Index i = 0; i < y.size(); ++i)
-          out[i] = h00 * y_prev[i] + h10 * h * f_prev[i] + h01 * y[i] + h11 * h * f[i];
+        hermite_interpolate((time - t_prev) / h, h, y_prev, f_prev, y, f, out);
       }
 
     private:
@@ -168,8 +187,20 @@ namespace wearlink::mbs
         : AdaptiveRungeKutta(system, settings, Controller{0.2 - 0.75 * 0.04, 0.04, 0.2, 10.0}, 5)
       {
         const unsigned int n = system.size();
-        for (auto *v : {&k2, &k3, &k4, &k5, &k6, &k7, &tmp, &err, &r2, &r3, &r4, &r5})
+        for (auto *v : {&k2, &k3, &k4, &k5, &k6, &k7, &tmp, &y6, &err, &r2, &r3, &r4, &r5})
           v->setZero(n);
+      }
+
+      /**
+       * Hairer's estimate (dopri5 code, Solving ODE I §IV.2): stages 6 and 7 are both
+       * at t + h, so ρ ≈ ‖k7 − k6‖ / ‖y7 − y6‖ approximates the Jacobian's dominant
+       * eigenvalue magnitude; dopri5's stability boundary on the negative real axis is
+       * near h·ρ = 3.3.
+       */
+      double
+      stiffness_indicator() const override
+      {
+        return last_stiffness;
       }
 
     protected:
@@ -185,6 +216,7 @@ namespace wearlink::mbs
       accept(const double hs, const double t_new) override
       {
         prepare_dense_output(hs);
+        last_stiffness = stiffness_estimate(hs);
         advance(t_new, tmp, k7);
       }
 
@@ -216,10 +248,24 @@ namespace wearlink::mbs
         evaluate(t + c4 * hs, tmp, k4);
         tmp = y + hs * (a51 * f + a52 * k2 + a53 * k3 + a54 * k4);
         evaluate(t + c5 * hs, tmp, k5);
-        tmp = y + hs * (a61 * f + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
-        evaluate(t + hs, tmp, k6);
+        y6 = y + hs * (a61 * f + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
+        evaluate(t + hs, y6, k6);
         tmp = y + hs * (a71 * f + a73 * k3 + a74 * k4 + a75 * k5 + a76 * k6);
         evaluate(t_new, tmp, k7);
+      }
+
+      /** h‖k7 − k6‖/‖y7 − y6‖ over the error-controlled components (not the accumulators). */
+      double
+      stiffness_estimate(const double hs) const
+      {
+        double df = 0, dy = 0;
+        for (Eigen::Index i = 0; i < y.size(); ++i)
+          if (tolerance[i] > 0)
+            {
+              df += (k7[i] - k6[i]) * (k7[i] - k6[i]);
+              dy += (tmp[i] - y6[i]) * (tmp[i] - y6[i]);
+            }
+        return dy > 0 ? hs * std::sqrt(df / dy) : 0.0;
       }
 
       /** Coefficients of the continuous extension of order 4 (before advance()). */
@@ -233,9 +279,16 @@ namespace wearlink::mbs
         r5 = hs * (d1 * f + d3 * k3 + d4 * k4 + d5 * k5 + d6 * k6 + d7 * k7);
       }
 
-      Eigen::VectorXd k2, k3, k4, k5, k6, k7, tmp, err, r2, r3, r4, r5;
+      Eigen::VectorXd k2, k3, k4, k5, k6, k7, tmp, y6, err, r2, r3, r4, r5;
+      double          last_stiffness = 0;
     };
   } // namespace
+
+  std::unique_ptr<AdaptiveRungeKutta>
+  make_dopri5(OdeSystem &system, const IntegratorSettings &settings)
+  {
+    return std::make_unique<DormandPrince>(system, settings);
+  }
 
   std::unique_ptr<Integrator>
   make_integrator(OdeSystem &system, const IntegratorSettings &settings)
@@ -248,6 +301,10 @@ namespace wearlink::mbs
           return std::make_unique<DormandPrince>(system, settings);
         case IntegratorType::dop853:
           return make_dop853(system, settings);
+        case IntegratorType::ros34pw2:
+          return make_ros34pw2(system, settings);
+        case IntegratorType::dopri5_stiff:
+          return make_dopri5_stiff(system, settings);
       }
     throw InputError("Unknown integrator type.");
   }

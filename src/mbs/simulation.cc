@@ -9,6 +9,7 @@
 
 namespace wearlink::mbs
 {
+
   void
   MechanismOde::rhs(double t, const double *y, double *dydt)
   {
@@ -24,6 +25,16 @@ namespace wearlink::mbs
     z[reaction_work_abs]    = std::abs(power.constraint);
     z[damping_dissipation]  = power.damping;
     z[friction_dissipation] = power.friction;
+  }
+
+  void
+  MechanismOde::stiff_directions(double, const double *y, std::vector<StiffDirection> &out)
+  {
+    out.clear();
+    const unsigned int n = mechanism.n_coordinates();
+    const StateView    s(y, y + n);
+    for (const auto &e : mechanism.get_force_elements())
+      e->stiff_directions(s, n, out);
   }
 
   Simulation::Simulation(Mechanism &mechanism, const SimulationSettings &settings)
@@ -45,8 +56,9 @@ namespace wearlink::mbs
             s.absolute_tolerance[n + i] = vel;
           }
       }
-    integrator    = make_integrator(system, s);
-    locate_events = s.type != IntegratorType::rk4;
+    position_tolerance = s.absolute_tolerance[0];
+    integrator         = make_integrator(system, s);
+    locate_events      = s.type != IntegratorType::rk4;
     scratch.setZero(system.size());
   }
 
@@ -154,6 +166,55 @@ namespace wearlink::mbs
     return hi;
   }
 
+  double
+  Simulation::step_limit(const double t_end, const std::vector<ForceElement *> &elements) const
+  {
+    const double t    = integrator->time();
+    const double span = std::min(integrator->proposed_step(), t_end - t);
+    if (!locate_events || !settings.predict_onsets || !(span > 0))
+      return t_end;
+    // Penetration of element e at the predicted positions after τ (velocities unused).
+    const unsigned int     n         = mechanism.n_coordinates();
+    const Eigen::VectorXd &y         = integrator->state();
+    const Eigen::VectorXd &f         = integrator->derivative();
+    auto                   predicted = [&](const ForceElement &e, const double tau) {
+      for (unsigned int i = 0; i < n; ++i)
+        scratch[i] = y[i] + tau * (y[n + i] + 0.5 * tau * f[n + i]);
+      return e.event_value(StateView(scratch.data(), y.data() + n));
+    };
+    // Each free element's predicted time to a penetration of onset_penetration; the
+    // step ends at the earliest one.
+    const double depth = onset_penetration();
+    double       first = span;
+    for (const auto *e : elements)
+      {
+        if (e->mode())
+          continue;
+        // A crossing inside the first half is looked for first, so that a grazing
+        // approach that leaves again before the step's end is not missed.
+        double hi = 0.5 * first;
+        if (!(predicted(*e, hi) > depth))
+          {
+            hi = first;
+            if (!(predicted(*e, hi) > depth))
+              continue;
+          }
+        double lo = 0; // free at lo (the element's mode says so), deeper than depth at hi
+        for (int it = 0; it < 30 && hi - lo > 1e-3 * hi; ++it)
+          {
+            const double mid                       = 0.5 * (lo + hi);
+            (predicted(*e, mid) > depth ? hi : lo) = mid;
+          }
+        // Already at the depth (a state on the contact surface): nothing to predict.
+        if (lo > 0)
+          first = lo;
+      }
+    if (first >= span)
+      return t_end;
+    ++predicted_onsets;
+    return std::min(t_end, t + first);
+  }
+
   void
   Simulation::run(double t_end, const std::vector<StepObserver *> &observers)
   {
@@ -175,7 +236,7 @@ namespace wearlink::mbs
       {
         const double t_start = integrator->time();
         y_start              = integrator->state();
-        integrator->step(t_end);
+        integrator->step(step_limit(t_end, event_elements));
 
         // Which elements' modes no longer match the state at the end of the step?
         double t_first = std::numeric_limits<double>::infinity();

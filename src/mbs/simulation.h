@@ -52,6 +52,16 @@ namespace wearlink::mbs
     rhs(double t, const double *y, double *dydt) override;
 
     unsigned int
+    n_second_order() const override
+    {
+      return mechanism.n_coordinates();
+    }
+
+    /** The force elements' stiff directions (contacts) at (t, y). */
+    void
+    stiff_directions(double t, const double *y, std::vector<StiffDirection> &out) override;
+
+    unsigned int
     q_offset() const
     {
       return 0;
@@ -81,6 +91,13 @@ namespace wearlink::mbs
      */
     double max_steps_per_second = 1e7;
     double step_budget_grace    = 5e4;
+    /**
+     * Shorten a step that the ballistic prediction q(τ) = q + τ q̇ + ½ τ² q̈ from its
+     * start puts across a contact onset, so that it ends just past the onset instead of
+     * being rejected after its late stages met the contact stiffness (needs event
+     * location).
+     */
+    bool predict_onsets = true;
   };
 
   class Simulation;
@@ -166,6 +183,12 @@ namespace wearlink::mbs
     {
       return events;
     }
+    /** Steps shortened because the ballistic prediction put a contact onset inside them. */
+    long
+    n_predicted_onsets() const
+    {
+      return predicted_onsets;
+    }
     /** Steps re-taken to land on an event. */
     long
     n_event_restarts() const
@@ -178,6 +201,26 @@ namespace wearlink::mbs
     void
     check_step_budget() const;
 
+    /**
+     * The end of the next step: @p t_end, or just past the earliest contact onset among
+     * the free elements of @p elements that the ballistic prediction puts inside the
+     * integrator's proposed step.
+     */
+    double
+    step_limit(double t_end, const std::vector<ForceElement *> &elements) const;
+
+    /**
+     * How deep a predicted onset may be crossed by the step that meets it: the
+     * integrator's absolute position tolerance [m] (the event functions of contact
+     * elements are penetrations). Small enough that the contact's stiffness barely acts
+     * within the step, which then ends just past the onset, where it is located as usual.
+     */
+    double
+    onset_penetration() const
+    {
+      return position_tolerance;
+    }
+
     /** Locate the root of element @p e's event function in the last step. */
     double
     locate(const ForceElement &e, bool onset) const;
@@ -189,8 +232,10 @@ namespace wearlink::mbs
     bool                        locate_events;
     long                        events             = 0;
     long                        restarts           = 0;
-    double                      budget_start_time  = 0; ///< time of initialize() [s]
-    long                        budget_start_steps = 0; ///< steps taken before it
+    mutable long                predicted_onsets   = 0;
+    double                      position_tolerance = 1e-9; ///< absolute, of the coordinates q [m]
+    double                      budget_start_time  = 0;    ///< time of initialize() [s]
+    long                        budget_start_steps = 0;    ///< steps taken before it
     mutable Eigen::VectorXd     scratch;
   };
 } // namespace wearlink::mbs
