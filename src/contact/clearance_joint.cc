@@ -215,7 +215,7 @@ namespace wearlink::contact
     d.local_eccentricity = mbs::rotate(d.eccentricity, -d.bushing_angle);
     d.penetration        = c.gap.penetration;
     d.normal             = c.gap.normal;
-    d.contact_angle      = c.gap.angle;
+    d.contact_angle      = c.gap.angle();
     if (c.gap.penetration > 0)
       {
         double fel;

@@ -33,7 +33,6 @@ namespace wearlink::contact
       {
         r.penetration = ne - (r1 - r2);
         r.normal      = ne > 0 ? mbs::Vec2(e / ne) : mbs::Vec2(1, 0);
-        r.angle       = std::atan2(r.normal.y(), r.normal.x());
         r.bore_radius = r1;
         r.pin_radius  = r2;
         return r;
@@ -43,7 +42,6 @@ namespace wearlink::contact
       {
         // No direction can touch: a continuous lower bound of −δ, exact in sign.
         r.penetration = ne - min_clearance;
-        r.angle       = phi_e;
         r.normal      = mbs::Vec2(std::cos(phi_e), std::sin(phi_e));
         r.bore_radius = bore.radius(phi_e - tb);
         r.pin_radius  = pin.radius(phi_e - tp);
@@ -98,7 +96,6 @@ namespace wearlink::contact
       }
     const double g = best;
     r.penetration  = -g;
-    r.angle        = phi;
     r.normal       = mbs::Vec2(std::cos(phi), std::sin(phi));
     r.bore_radius  = bore.radius(phi - tb);
     r.pin_radius   = pin.radius(phi - tp);
@@ -113,7 +110,6 @@ namespace wearlink::contact
     GapResult    r;
     const double ne  = e.norm();
     const double phi = ne > 0 ? std::atan2(e.y(), e.x()) : 0.0;
-    r.angle          = phi;
     r.normal         = mbs::Vec2(std::cos(phi), std::sin(phi));
     r.bore_radius    = bore.radius(phi - tb);
     r.pin_radius     = pin.radius(phi - tp);

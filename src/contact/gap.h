@@ -21,15 +21,23 @@
 #include "base/profile.h"
 #include "mbs/types.h"
 
+#include <cmath>
+
 namespace wearlink::contact
 {
   struct GapResult
   {
     double    penetration = 0; ///< δ = −min g [m]; < 0 means free flight
-    double    angle       = 0; ///< global contact direction φ* [rad]
     mbs::Vec2 normal{1, 0};    ///< u(φ*): from the bore centre towards the contact
     double    bore_radius = 0; ///< R1*(φ* − θ_bushing) [m]
     double    pin_radius  = 0; ///< R2*(φ* − θ_pin) [m]
+
+    /** The global contact direction φ* ∈ (−π, π] [rad] (not needed by the forces, so not kept). */
+    double
+    angle() const
+    {
+      return std::atan2(normal.y(), normal.x());
+    }
   };
 
   class Gap

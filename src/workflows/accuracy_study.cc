@@ -89,7 +89,8 @@ namespace wearlink::workflows
       static const std::vector<std::pair<std::string, std::string>> c = {
         {"integrator-tolerance", "dopri5 Relative tolerance (Position tolerance = 1e-3 m × it, Velocity = it m/s)"},
         {"integrator-method",
-         "Integrator/Method dopri5 | dop853 at the scene's tolerances, against dopri5 at a tenth of them"},
+         "Integrator/Method dopri5 | dopri5-stiff | dop853 at the scene's tolerances, against dopri5 at a tenth of "
+         "them"},
         {"integrator-step", "rk4 Time step"},
         {"baumgarte", "Baumgarte alpha = beta"},
         {"contact-law", "Normal force law of every clearance joint"},
@@ -479,8 +480,10 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                        {"Integrator/Relative tolerance"},
                        {"Integrator/Position tolerance"},
                        {"Integrator/Velocity tolerance"}};
-      for (const auto &[method, f] :
-           std::vector<std::pair<std::string, double>>{{"dop853", 1}, {"dopri5", 1}, {"dopri5", 0.1}})
+      for (const auto &[method, f] : std::vector<std::pair<std::string, double>>{{"dop853", 1},
+                                                                                 {"dopri5-stiff", 1},
+                                                                                 {"dopri5", 1},
+                                                                                 {"dopri5", 0.1}})
         k.values.push_back({method, label(rel * f), label(rel * f * 1e-3), label(rel * f)});
       k.reference = "dopri5 at a tenth of the tolerances";
       return k;

@@ -120,7 +120,7 @@ TEST(Gap, PerAreaFormReadsTheFacingArea)
   const double    r1       = Profile::from_samples(bore).radius(1.0 - tb);
   const double    r2       = Profile::from_samples(pin).radius(1.0 - tp);
   EXPECT_NEAR(per_area.penetration, e2.norm() - (r1 - r2), 1e-15);
-  EXPECT_NEAR(per_area.angle, 1.0, 1e-14);
+  EXPECT_NEAR(per_area.angle(), 1.0, 1e-14);
   // The bump at pin angle 80° sits at global 80° + tp ≈ 51.4°, 5.7° from e: the exact
   // minimum over φ finds it, so the exact penetration is larger.
   EXPECT_GT(worn.evaluate(e2, tb, tp).penetration, per_area.penetration + 1e-6);
