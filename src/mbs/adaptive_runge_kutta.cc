@@ -48,13 +48,8 @@ namespace wearlink::mbs
                                 const Eigen::VectorXd &f_now,
                                 const double           h_proposal)
   {
-    t      = t_now;
-    t_prev = t_now;
-    y      = y_now;
-    y_prev = y_now;
-    f      = f_now;
-    f_prev = f_now;
-    h      = h_proposal;
+    start_at(t_now, y_now, f_now);
+    h = h_proposal;
     restarted();
   }
 

@@ -165,6 +165,9 @@ namespace wearlink::mbs
 
     void
     evaluate(double time, const Eigen::VectorXd &state, Eigen::VectorXd &derivative);
+    /** Make (time, state) with f = @p derivative the current point, with no step behind it. */
+    void
+    start_at(double time, const Eigen::VectorXd &state, const Eigen::VectorXd &derivative);
 
     OdeSystem         &system;
     IntegratorSettings settings;

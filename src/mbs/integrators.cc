@@ -88,12 +88,19 @@ namespace wearlink::mbs
   void
   Integrator::reset(double time, const Eigen::VectorXd &state)
   {
+    evaluate(time, state, f);
+    start_at(time, state, f);
+  }
+
+  void
+  Integrator::start_at(const double time, const Eigen::VectorXd &state, const Eigen::VectorXd &derivative)
+  {
     t      = time;
     t_prev = time;
     y      = state;
     y_prev = state;
-    evaluate(t, y, f);
-    f_prev = f;
+    f      = derivative;
+    f_prev = derivative;
   }
 
   namespace
