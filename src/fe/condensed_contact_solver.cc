@@ -8,9 +8,11 @@
 #include "fe/boundary_ids.h"
 #include "fe/contact_solver.h"
 
+#include <Eigen/Core>
 #include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -26,102 +28,205 @@ namespace wearlink::fe
     using blas_int = types::blas_int;
 
 
+    /** Memory that the window solves keep from one load state to the next. */
+    struct Workspace
+    {
+      std::vector<double> columns; ///< the gathered columns of A, w entries each
+      std::vector<double> factor;  ///< the Cholesky factor of the active block
+    };
+
+    using ArrayMap      = Eigen::Map<Eigen::ArrayXd>;
+    using ConstArrayMap = Eigen::Map<const Eigen::ArrayXd>;
+
     /**
      * The compliance between the positions of one window, A(q, p) = ∂g_q/∂λ_p: the pin
      * part read from the pin columns, the bore part from the bore columns of the bore
      * nodes that the window's rays meet (the force +n_p interpolated onto the nodes of
      * the face p meets, its displacement read at the face q meets). A column is gathered
-     * on its first use and kept for the state.
+     * on its first use into the next slot of a column-major w × slots matrix and kept
+     * for the state.
+     *
+     * The bore part in the sector frames of BoundaryCompliance::BoreColumn: with
+     * v_pa = w_pa R_aᵀ n_p (weight of bore node a in p's face, R_a the rotation of a's
+     * frame), A_bore(q, p) = Σ_b Σ_a v_qbᵀ K(b, a) v_pa. Column p is two passes over
+     * contiguous arrays: the field f(b) = Σ_a K(b, a) v_pa over the window's bore nodes,
+     * then A(q, p) = pin(q, p) + Σ_b v_qb · f(b) over segments of positions whose face
+     * nodes advance with them (one array offset per face node), so that both passes are
+     * vector operations.
      */
     class WindowCompliance
     {
     public:
-      WindowCompliance(const ElasticityProblem &problem, BoundaryCompliance &compliance, const ContactKinematics &kin)
+      WindowCompliance(const ElasticityProblem &problem,
+                       BoundaryCompliance      &compliance,
+                       const ContactKinematics &kin,
+                       Workspace               &work)
         : kin(kin)
         , compliance(compliance)
+        , w(kin.candidates.size())
         , n_pin(problem.pin_nodes.size())
         , n_bore(problem.bore_nodes.size())
-        , local(problem.bore_nodes.size(), -1)
-        , columns(kin.candidates.size())
+        , slot(w, -1)
+        , work(work)
       {
-        for (unsigned int p = 0; p < kin.candidates.size(); ++p)
-          for (unsigned int a = 0; a < kin.n_masters[p]; ++a)
-            if (local[kin.masters[p][a]] < 0)
-              {
-                local[kin.masters[p][a]] = 0;
-                rows.push_back(kin.masters[p][a]);
-              }
-        std::sort(rows.begin(), rows.end());
-        for (unsigned int r = 0; r < rows.size(); ++r)
-          {
-            local[rows[r]] = static_cast<int>(r);
-            if (runs.empty() || rows[r] != std::get<1>(runs.back()) + std::get<2>(runs.back()))
-              runs.emplace_back(r, rows[r], 0);
-            ++std::get<2>(runs.back());
-          }
-        field.resize(2 * rows.size());
-        // How each position reads the field: its faces' rows with weight × normal.
-        readers.resize(kin.candidates.size());
-        for (unsigned int q = 0; q < kin.candidates.size(); ++q)
-          for (unsigned int a = 0; a < kin.n_masters[q]; ++a)
-            readers[q].push_back({2 * static_cast<unsigned int>(local[kin.masters[q][a]]),
-                                  kin.weights[q][a] * kin.normal[q][0],
-                                  kin.weights[q][a] * kin.normal[q][1]});
+        find_rows();
+        find_readers();
+        find_segments();
       }
 
       unsigned int
       size() const
       {
-        return columns.size();
+        return w;
       }
 
-      /** A(·, p) over the window. */
-      const std::vector<double> &
-      column(const unsigned int p)
+      /** Gather A(·, p) unless it is gathered (this may move every column in memory). */
+      void
+      ensure(const unsigned int p)
       {
-        if (columns[p].empty())
+        if (slot[p] < 0)
           gather(p);
-        return columns[p];
       }
 
-      /** ½ (A(q, p) + A(p, q)): the symmetric part (A is symmetric up to round-off). */
-      double
-      entry(const unsigned int q, const unsigned int p)
+      /** A(·, p) over the window; ensure(p) first. */
+      const double *
+      column(const unsigned int p) const
       {
-        return 0.5 * (column(p)[q] + column(q)[p]);
+        return work.columns.data() + static_cast<std::size_t>(slot[p]) * w;
+      }
+
+      /** The gathered columns: a w × n_slots() column-major matrix. */
+      const double *
+      data() const
+      {
+        return work.columns.data();
+      }
+      unsigned int
+      n_slots() const
+      {
+        return owner.size();
+      }
+      /** The slot of position p's column, −1 if it is not gathered. */
+      int
+      slot_of(const unsigned int p) const
+      {
+        return slot[p];
       }
 
     private:
-      /**
-       * field += the displacement of the window's bore nodes for the force (fx, fy) at
-       * @p column's node (rotated into the column's sector and back; contiguous runs,
-       * so that the loops vectorize).
-       */
-      void
-      add_bore_response(const BoundaryCompliance::BoreColumn &column, const double fx, const double fy)
+      /** One segment of positions q0 … q0 + length − 1 (see the class). */
+      struct Segment
       {
-        const double  c = column.cos, s = column.sin;
-        const double  gx = c * fx + s * fy, gy = c * fy - s * fx; // Rᵀ f
-        const double *X = column.base, *Y = column.base + 2 * n_bore;
-        for (const auto &[r0, b0, n] : runs)
+        unsigned int       q0 = 0, length = 0, n_masters = 0;
+        std::array<int, 3> offset{}; ///< row of face node m − position, per m
+      };
+
+      /** The window's bore nodes (increasing) in runs of consecutive nodes. */
+      void
+      find_rows()
+      {
+        std::vector<int> local(n_bore, -1);
+        for (unsigned int p = 0; p < w; ++p)
+          for (unsigned int a = 0; a < kin.n_masters[p]; ++a)
+            local[kin.masters[p][a]] = 0;
+        n_rows = 0;
+        for (unsigned int b = 0; b < n_bore; ++b)
+          if (local[b] == 0)
+            {
+              local[b] = static_cast<int>(n_rows);
+              if (runs.empty() || b != std::get<1>(runs.back()) + std::get<2>(runs.back()))
+                runs.emplace_back(n_rows, b, 0);
+              ++std::get<2>(runs.back());
+              ++n_rows;
+            }
+        row_of = std::move(local);
+        field_x.resize(n_rows);
+        field_y.resize(n_rows);
+      }
+
+      /** Per position and face node m: its row and v = weight × R_bᵀ n (see the class). */
+      void
+      find_readers()
+      {
+        for (unsigned int m = 0; m < 3; ++m)
           {
-            unsigned int r = r0, left = n;
-            unsigned int b = (b0 + n_bore - column.shift) % n_bore;
-            while (left > 0)
+            row[m].assign(w, 0);
+            vx[m].assign(w, 0.0);
+            vy[m].assign(w, 0.0);
+          }
+        for (unsigned int q = 0; q < w; ++q)
+          for (unsigned int m = 0; m < kin.n_masters[q]; ++m)
+            {
+              const unsigned int b = kin.masters[q][m];
+              const auto         r = compliance.sector_rotation(b);
+              const double       c = kin.weights[q][m];
+              row[m][q]            = row_of[b];
+              vx[m][q]             = c * (r[0] * kin.normal[q][0] + r[1] * kin.normal[q][1]);
+              vy[m][q]             = c * (r[0] * kin.normal[q][1] - r[1] * kin.normal[q][0]);
+            }
+      }
+
+      /** Segments: consecutive candidates with the same face-node count, each face node's row one further. */
+      void
+      find_segments()
+      {
+        for (unsigned int q = 0; q < w; ++q)
+          {
+            bool extends = !segments.empty() && q > 0 && kin.candidates[q] == kin.candidates[q - 1] + 1 &&
+                           kin.n_masters[q] == kin.n_masters[q - 1];
+            for (unsigned int m = 0; extends && m < kin.n_masters[q]; ++m)
+              extends = row[m][q] == row[m][q - 1] + 1;
+            if (extends)
               {
-                const unsigned int len = std::min(left, n_bore - b);
-                double            *f   = field.data() + 2 * r;
-                const double      *x = X + 2 * b, *y = Y + 2 * b;
-                for (unsigned int t = 0; t < len; ++t)
+                ++segments.back().length;
+                continue;
+              }
+            Segment s;
+            s.q0        = q;
+            s.length    = 1;
+            s.n_masters = kin.n_masters[q];
+            for (unsigned int m = 0; m < s.n_masters; ++m)
+              s.offset[m] = static_cast<int>(row[m][q]) - static_cast<int>(q);
+            segments.push_back(s);
+          }
+      }
+
+      /** The bore field f over the window's rows for the force n_p at p's face (see the class). */
+      void
+      bore_field(const unsigned int p)
+      {
+        if (kin.n_masters[p] == 0)
+          {
+            std::fill(field_x.begin(), field_x.end(), 0.0);
+            std::fill(field_y.begin(), field_y.end(), 0.0);
+          }
+        for (unsigned int m = 0; m < kin.n_masters[p]; ++m)
+          {
+            const auto    column = compliance.bore_column(kin.masters[p][m]);
+            const double  gx = vx[m][p], gy = vy[m][p];
+            const double *xx = column.base, *yx = xx + n_bore, *xy = yx + n_bore, *yy = xy + n_bore;
+            for (const auto &[r0, b0, n] : runs)
+              {
+                unsigned int r = r0, left = n;
+                unsigned int b = (b0 + n_bore - column.shift) % n_bore;
+                while (left > 0)
                   {
-                    const double ux = gx * x[2 * t] + gy * y[2 * t];
-                    const double uy = gx * x[2 * t + 1] + gy * y[2 * t + 1];
-                    f[2 * t] += c * ux - s * uy;
-                    f[2 * t + 1] += s * ux + c * uy;
+                    const unsigned int len = std::min(left, n_bore - b);
+                    ArrayMap           fx(field_x.data() + r, len), fy(field_y.data() + r, len);
+                    if (m == 0)
+                      {
+                        fx = gx * ConstArrayMap(xx + b, len) + gy * ConstArrayMap(xy + b, len);
+                        fy = gx * ConstArrayMap(yx + b, len) + gy * ConstArrayMap(yy + b, len);
+                      }
+                    else
+                      {
+                        fx += gx * ConstArrayMap(xx + b, len) + gy * ConstArrayMap(xy + b, len);
+                        fy += gx * ConstArrayMap(yx + b, len) + gy * ConstArrayMap(yy + b, len);
+                      }
+                    r += len;
+                    left -= len;
+                    b = 0;
                   }
-                r += len;
-                left -= len;
-                b = 0;
               }
           }
       }
@@ -129,42 +234,48 @@ namespace wearlink::fe
       void
       gather(const unsigned int p)
       {
-        const unsigned int w   = kin.candidates.size();
-        auto              &col = columns[p];
-        col.resize(w);
+        const std::size_t needed = static_cast<std::size_t>(owner.size() + 1) * w;
+        if (work.columns.size() < needed)
+          work.columns.resize(std::max(needed, 2 * work.columns.size()));
+        slot[p] = static_cast<int>(owner.size());
+        owner.push_back(p);
+        bore_field(p);
+        double    *col = work.columns.data() + static_cast<std::size_t>(slot[p]) * w;
         const auto pin = compliance.pin_column(kin.candidates[p]);
-        for (unsigned int q = 0; q < w;) // runs of consecutive candidates: contiguous copies
+        for (const auto &s : segments)
           {
-            unsigned int i   = kin.candidates[q] + n_pin - pin.shift;
-            i                = i >= n_pin ? i - n_pin : i;
-            unsigned int len = 1;
-            while (q + len < w && kin.candidates[q + len] == kin.candidates[q] + len && i + len < n_pin)
-              ++len;
-            std::copy(pin.base + i, pin.base + i + len, col.begin() + q);
-            q += len;
+            unsigned int q = s.q0, left = s.length;
+            unsigned int i = kin.candidates[q] + n_pin - pin.shift;
+            i              = i >= n_pin ? i - n_pin : i;
+            while (left > 0) // the pin column wraps at most once
+              {
+                const unsigned int len = std::min(left, n_pin - i);
+                ArrayMap           out(col + q, len);
+                out = ConstArrayMap(pin.base + i, len);
+                for (unsigned int m = 0; m < s.n_masters; ++m)
+                  out += ConstArrayMap(vx[m].data() + q, len) * ConstArrayMap(field_x.data() + q + s.offset[m], len) +
+                         ConstArrayMap(vy[m].data() + q, len) * ConstArrayMap(field_y.data() + q + s.offset[m], len);
+                q += len;
+                left -= len;
+                i = 0;
+              }
           }
-        // The bore displacement of a unit λ_p at the window's bore nodes.
-        std::fill(field.begin(), field.end(), 0.0);
-        for (unsigned int a = 0; a < kin.n_masters[p]; ++a)
-          add_bore_response(compliance.bore_column(kin.masters[p][a]),
-                            kin.weights[p][a] * kin.normal[p][0],
-                            kin.weights[p][a] * kin.normal[p][1]);
-        for (unsigned int q = 0; q < w; ++q)
-          for (const auto &[r, cx, cy] : readers[q])
-            col[q] += cx * field[r] + cy * field[r + 1];
       }
 
-      const ContactKinematics  &kin;
-      BoundaryCompliance       &compliance;
-      const unsigned int        n_pin, n_bore;
-      std::vector<int>          local; ///< row of each bore node in the window's field, −1 outside
-      std::vector<unsigned int> rows;  ///< the window's bore nodes, increasing
-      /** Per position: its face's rows (2 × row index into the field) with weight × normal (x, y). */
-      std::vector<std::vector<std::tuple<unsigned int, double, double>>> readers;
+      const ContactKinematics &kin;
+      BoundaryCompliance      &compliance;
+      const unsigned int       w, n_pin, n_bore;
+      unsigned int             n_rows = 0;
+      std::vector<int>         row_of; ///< row of each bore node in the field, −1 outside the window
       /** Runs of consecutive bore nodes: (first row, first node, length). */
       std::vector<std::tuple<unsigned int, unsigned int, unsigned int>> runs;
-      std::vector<double>                                               field;
-      std::vector<std::vector<double>>                                  columns;
+      std::array<std::vector<unsigned int>, 3>                          row; ///< per face node m: its row, per position
+      std::array<std::vector<double>, 3>                                vx, vy; ///< per face node m: v (see the class)
+      std::vector<Segment>                                              segments;
+      std::vector<double>                                               field_x, field_y;
+      std::vector<int>                                                  slot;
+      std::vector<unsigned int>                                         owner; ///< the position of each slot
+      Workspace                                                        &work;
     };
 
     /**
@@ -177,12 +288,17 @@ namespace wearlink::fe
     class ActiveFactor
     {
     public:
-      ActiveFactor(WindowCompliance &A, const ContactKinematics &kin, const unsigned int m)
+      ActiveFactor(WindowCompliance        &A,
+                   const ContactKinematics &kin,
+                   const unsigned int       m,
+                   std::vector<double>     &storage)
         : A(A)
         , capacity(A.size())
-        , L(new double[static_cast<std::size_t>(capacity) * capacity]) // only what is written is read
         , key(A.size())
       {
+        if (storage.size() < static_cast<std::size_t>(capacity) * capacity) // only what is written is read
+          storage.resize(static_cast<std::size_t>(capacity) * capacity);
+        L                   = storage.data();
         unsigned int centre = 0;
         for (unsigned int p = 1; p < kin.g0.size(); ++p)
           if (kin.g0[p] < kin.g0[centre])
@@ -226,7 +342,7 @@ namespace wearlink::fe
       {
         const blas_int k = order.size(), ld = capacity;
         blas_int       info = 0;
-        potrs("L", &k, &nrhs, L.get(), &ld, B.data(), &k, &info);
+        potrs("L", &k, &nrhs, L, &ld, B.data(), &k, &info);
       }
 
     private:
@@ -236,6 +352,9 @@ namespace wearlink::fe
         return L[r + static_cast<std::size_t>(s) * capacity];
       }
 
+      // The entries come from the gathered columns, lower triangle only (A is symmetric
+      // to 3e-14 of its largest entry, measured at 100 kN): entry (r, s), r after s in
+      // the factor's order, is A(order[r], order[s]), read from column order[s].
       bool
       refactor_from(const unsigned int c)
       {
@@ -243,15 +362,20 @@ namespace wearlink::fe
         blas_int       info = 0;
         if (t == 0)
           return true;
+        for (const auto p : order)
+          A.ensure(p);
         // A21ᵀ (c × t), then L21ᵀ = L11⁻¹ A21ᵀ.
         if (c > 0)
           {
             std::vector<double> X(static_cast<std::size_t>(c) * t);
-            for (blas_int j = 0; j < t; ++j)
-              for (unsigned int s = 0; s < c; ++s)
-                X[s + static_cast<std::size_t>(j) * c] = A.entry(order[c + j], order[s]);
+            for (unsigned int s = 0; s < c; ++s)
+              {
+                const double *column = A.column(order[s]);
+                for (blas_int j = 0; j < t; ++j)
+                  X[s + static_cast<std::size_t>(j) * c] = column[order[c + j]];
+              }
             const blas_int cc = c;
-            trtrs("L", "N", "N", &cc, &t, L.get(), &ld, X.data(), &cc, &info);
+            trtrs("L", "N", "N", &cc, &t, L, &ld, X.data(), &cc, &info);
             if (info != 0)
               return false;
             for (blas_int j = 0; j < t; ++j)
@@ -259,8 +383,11 @@ namespace wearlink::fe
                 at(c + j, s) = X[s + static_cast<std::size_t>(j) * c];
           }
         for (blas_int j = 0; j < t; ++j)
-          for (blas_int i = j; i < t; ++i)
-            at(c + i, c + j) = A.entry(order[c + i], order[c + j]);
+          {
+            const double *column = A.column(order[c + j]);
+            for (blas_int i = j; i < t; ++i)
+              at(c + i, c + j) = column[order[c + i]];
+          }
         if (c > 0)
           {
             const blas_int cc        = c;
@@ -273,7 +400,7 @@ namespace wearlink::fe
 
       WindowCompliance         &A;
       const unsigned int        capacity;
-      std::unique_ptr<double[]> L;
+      double                   *L;   ///< leading dimension capacity, in the solver's workspace
       std::vector<long>         key; ///< sort key of each position (distance from the centre, then index)
       std::vector<unsigned int> order;
       bool                      ok = true;
@@ -364,25 +491,43 @@ namespace wearlink::fe
       return out;
     }
 
-    /** g = g0 − n·U + A λ over the window, for the multipliers @p lambda of @p active. */
+    /**
+     * g = g0 − n·U + A λ over the window, for the multipliers @p lambda (per position)
+     * of @p active: at every position, or (@p inactive_only) only at the positions
+     * outside @p active, the only gaps the active-set rules read (an active one is zero
+     * up to round-off); the others keep their values. One matrix–vector product of the
+     * gathered columns (BLAS) per run of positions.
+     */
     void
     window_gaps(const ContactKinematics         &kin,
                 WindowCompliance                &A,
                 const std::vector<unsigned int> &active,
                 const std::vector<double>       &lambda,
                 const Tensor<1, 2>              &U,
-                std::vector<double>             &gap)
+                std::vector<double>             &gap,
+                const bool                       inactive_only)
     {
       const unsigned int w = kin.g0.size();
       gap.resize(w);
-      for (unsigned int q = 0; q < w; ++q)
-        gap[q] = kin.g0[q] - kin.normal[q] * U;
-      for (unsigned int s = 0; s < active.size(); ++s)
+      for (const auto p : active)
+        A.ensure(p);
+      std::vector<double> x(A.n_slots(), 0.0);
+      std::vector<char>   skip(w, 0);
+      for (const auto p : active)
         {
-          const auto  &col = A.column(active[s]);
-          const double l   = lambda[s];
-          for (unsigned int q = 0; q < w; ++q)
-            gap[q] += col[q] * l;
+          x[A.slot_of(p)] = lambda[p];
+          skip[p]         = inactive_only;
+        }
+      for (unsigned int q0 = 0; q0 < w;)
+        {
+          unsigned int q1 = q0;
+          for (; q1 < w && !skip[q1]; ++q1)
+            gap[q1] = kin.g0[q1] - kin.normal[q1] * U;
+          const blas_int rows = q1 - q0, cols = x.size(), ld = w, one = 1;
+          const double   alpha = 1, beta = 1;
+          if (rows > 0 && cols > 0)
+            gemv("N", &rows, &cols, &alpha, A.data() + q0, &ld, x.data(), &one, &beta, gap.data() + q0, &one);
+          q0 = q1 + 1;
         }
     }
 
@@ -395,15 +540,19 @@ namespace wearlink::fe
       unsigned int              iterations = 0;
     };
 
-    /** Apply an active solution: λ on the window, U, and the gaps. */
+    /** Apply an active solution: λ on the window, U, and the gaps (see window_gaps()). */
     void
-    accept(const ContactKinematics &kin, WindowCompliance &A, const ActiveSolution &x, WindowState &st)
+    accept(const ContactKinematics &kin,
+           WindowCompliance        &A,
+           const ActiveSolution    &x,
+           WindowState             &st,
+           const bool               inactive_only)
     {
       std::fill(st.lambda.begin(), st.lambda.end(), 0.0);
       for (unsigned int s = 0; s < st.active.size(); ++s)
         st.lambda[st.active[s]] = x.lambda[s];
       st.U = x.U;
-      window_gaps(kin, A, st.active, x.lambda, st.U, st.gap);
+      window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, inactive_only);
     }
 
     /**
@@ -426,7 +575,7 @@ namespace wearlink::fe
           const auto x = solve_active(kin, factor, st.active, force_control, P);
           if (!x.ok)
             return false;
-          accept(kin, A, x, st);
+          accept(kin, A, x, st, true);
           auto next = active_set::update(st.active, st.lambda, st.gap, kin.tolerance, history);
           if (force_control)
             active_set::ensure_two_active(next, st.gap, kin.normal, P);
@@ -568,7 +717,7 @@ namespace wearlink::fe
           joined = w;
           if (alpha < 1)
             continue;
-          accept(kin, A, x, st);
+          accept(kin, A, x, st, false);
           double worst_blocked = 0;
           for (const auto i : penetrating(st.lambda, st.gap, kin.tolerance))
             if (!blocked[i])
@@ -656,8 +805,12 @@ namespace wearlink::fe
     , primal_dual_limit(primal_dual_limit)
     , clearance(mean_clearance(problem))
     , pin_radius(smallest_pin_radius(problem))
+    , workspace(std::make_unique<Workspace>())
   {
   }
+
+
+  CondensedContactSolver::~CondensedContactSolver() = default;
 
 
   // The window: every candidate whose initial gap is below T. A candidate outside it
@@ -723,8 +876,8 @@ namespace wearlink::fe
       {
         double threshold = 0;
         kin              = compute_window_kinematics(problem, paired, {T, 1e-3 * spacing, 0.5}, &threshold);
-        WindowCompliance A(problem, compliance, kin);
-        ActiveFactor     factor(A, kin, m);
+        WindowCompliance A(problem, compliance, kin, *workspace);
+        ActiveFactor     factor(A, kin, m, workspace->factor);
         WindowState      st;
         st.lambda.assign(kin.g0.size(), 0.0);
         st.active = starting_set(kin, clearance, warm, force_control, load);
@@ -766,6 +919,7 @@ namespace wearlink::fe
             T = 0.5 * std::max(closure_estimate, 0.0);
             continue;
           }
+        window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
         finish(kin, st, force_control, load, sol);
         sol.pin_translation = paired.eccentricity - pose.eccentricity + U_pair;
         return sol;

@@ -56,6 +56,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace wearlink::fe
@@ -83,6 +84,7 @@ namespace wearlink::fe
     class WindowCompliance;
     class ActiveFactor;
     struct WindowState;
+    struct Workspace;
   } // namespace condensed_detail
 
   /** Linearizations of one load state at most (the last one is accepted). */
@@ -142,6 +144,7 @@ namespace wearlink::fe
                            BoundaryCompliance      &compliance,
                            unsigned int             max_iterations,
                            unsigned int             primal_dual_limit = 30);
+    ~CondensedContactSolver();
 
     /**
      * One load state about @p pose, on its contact window (compute_window_kinematics):
@@ -201,6 +204,8 @@ namespace wearlink::fe
     const double             clearance;  ///< mean radial clearance of the meshed surfaces [m]
     const double             pin_radius; ///< smallest radius of the meshed pin surface [m]
     unsigned long            n_monotone = 0;
+    /** Memory the load states reuse (gathered columns, factor). */
+    std::unique_ptr<condensed_detail::Workspace> workspace;
   };
 
   class ReferenceContactSolver
