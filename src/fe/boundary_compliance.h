@@ -96,7 +96,7 @@ namespace wearlink::fe
     std::array<double, 2>
     sector_rotation(const unsigned int a) const
     {
-      return bore_sector_size > 0 ? sector_rotations[a / bore_sector_size] : std::array<double, 2>{1.0, 0.0};
+      return bore_sector_size > 0 ? sector_rotations[a / bore_sector_size] : std::array<double, 2>{{1.0, 0.0}};
     }
 
     /** True when the pin's (the bore's) columns are rotations of one sector's. */

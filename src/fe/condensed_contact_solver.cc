@@ -321,12 +321,68 @@ namespace wearlink::fe
         while (c < next.size() && c < order.size() && next[c] == order[c])
           ++c;
         order = next;
-        if (c == order.size())
-          return ok;
         if (!ok) // the old factor is unusable: start over
           c = 0;
+        normals_valid = std::min(normals_valid, c);
+        gaps_valid    = std::min(gaps_valid, c);
+        if (c == order.size())
+          return ok;
         ok = refactor_from(c);
         return ok;
+      }
+
+      /**
+       * The forward substitutions in the factor's order, y_d = L⁻¹ n_d (d = x, y) and
+       * z = L⁻¹ g0: row r depends on rows ≤ r only, so after set() only the rows from
+       * the first change are recomputed (and z in full after gaps_changed()).
+       */
+      void
+      forward(const ContactKinematics &kin, const bool with_normals)
+      {
+        const unsigned int k = order.size();
+        for (unsigned int d = 0; with_normals && d < 2; ++d)
+          {
+            y[d].resize(k);
+            for (unsigned int r = normals_valid; r < k; ++r)
+              y[d][r] = kin.normal[order[r]][d];
+            forward_rows(y[d], normals_valid);
+          }
+        if (with_normals)
+          normals_valid = k;
+        z.resize(k);
+        for (unsigned int r = gaps_valid; r < k; ++r)
+          z[r] = kin.g0[order[r]];
+        forward_rows(z, gaps_valid);
+        gaps_valid = k;
+      }
+
+      /** The initial gaps changed (a new linearization): z is recomputed in full. */
+      void
+      gaps_changed()
+      {
+        gaps_valid = 0;
+      }
+
+      /** y_d (d = 0, 1) and z of forward(), in the factor's order. */
+      const std::vector<double> &
+      forward_normal(const unsigned int d) const
+      {
+        return y[d];
+      }
+      const std::vector<double> &
+      forward_gap() const
+      {
+        return z;
+      }
+
+      /** x := L⁻ᵀ x for x in the factor's order. */
+      void
+      backward(std::vector<double> &x) const
+      {
+        const blas_int k = order.size(), ld = capacity, one = 1;
+        blas_int       info = 0;
+        if (k > 0)
+          trtrs("L", "T", "N", &k, &one, L, &ld, x.data(), &k, &info);
       }
 
       /** The active positions in the factor's order. */
@@ -336,20 +392,27 @@ namespace wearlink::fe
         return order;
       }
 
-      /** Solve A X = B in place for @p nrhs columns of length ordered().size(). */
-      void
-      solve(std::vector<double> &B, const blas_int nrhs) const
-      {
-        const blas_int k = order.size(), ld = capacity;
-        blas_int       info = 0;
-        potrs("L", &k, &nrhs, L, &ld, B.data(), &k, &info);
-      }
-
     private:
       double &
       at(const unsigned int r, const unsigned int s)
       {
         return L[r + static_cast<std::size_t>(s) * capacity];
+      }
+
+      /** Rows valid … k − 1 of v := L⁻¹ v, rows before valid being done already. */
+      void
+      forward_rows(std::vector<double> &v, const unsigned int valid)
+      {
+        const blas_int k = order.size(), t = k - valid, c = valid, ld = capacity, one = 1;
+        blas_int       info = 0;
+        if (t == 0)
+          return;
+        if (c > 0)
+          {
+            const double minus_one = -1, plus_one = 1;
+            gemv("N", &t, &c, &minus_one, &at(c, 0), &ld, v.data(), &one, &plus_one, v.data() + c, &one);
+          }
+        trtrs("L", "N", "N", &t, &one, &at(c, c), &ld, v.data() + c, &t, &info);
       }
 
       // The entries come from the gathered columns, lower triangle only (A is symmetric
@@ -398,12 +461,16 @@ namespace wearlink::fe
         return info == 0;
       }
 
-      WindowCompliance         &A;
-      const unsigned int        capacity;
-      double                   *L;   ///< leading dimension capacity, in the solver's workspace
-      std::vector<long>         key; ///< sort key of each position (distance from the centre, then index)
-      std::vector<unsigned int> order;
-      bool                      ok = true;
+      WindowCompliance                  &A;
+      const unsigned int                 capacity;
+      double                            *L;   ///< leading dimension capacity, in the solver's workspace
+      std::vector<long>                  key; ///< sort key of each position (distance from the centre, then index)
+      std::vector<unsigned int>          order;
+      bool                               ok = true;
+      std::array<std::vector<double>, 2> y;                 ///< L⁻¹ n_x, L⁻¹ n_y (factor order)
+      std::vector<double>                z;                 ///< L⁻¹ g0 (factor order)
+      unsigned int                       normals_valid = 0; ///< leading rows of y that are up to date
+      unsigned int                       gaps_valid    = 0; ///< leading rows of z that are up to date
     };
 
     /** The multipliers of the active positions (in the order of @p active) and U. */
@@ -431,59 +498,52 @@ namespace wearlink::fe
           out.ok = false;
           return out;
         }
-      const auto         &order = factor.ordered();
-      const unsigned int  k     = order.size();
-      std::vector<double> B(3 * k);
-      for (unsigned int r = 0; r < k; ++r)
-        {
-          B[r]         = kin.normal[order[r]][0];
-          B[k + r]     = kin.normal[order[r]][1];
-          B[2 * k + r] = kin.g0[order[r]];
-        }
-      factor.solve(B, 3);
+      const auto        &order = factor.ordered();
+      const unsigned int k     = order.size();
+      factor.forward(kin, force_control);
+      const auto         &z = factor.forward_gap();
       std::vector<double> x(k);
       if (force_control)
         {
-          double S[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {P[0], P[1]};
+          // With y_d = L⁻¹ n_d and z = L⁻¹ g0: S = Nᵀ A⁻¹ N = YᵀY, and
+          // U = S⁻¹ (P + Yᵀz), λ = L⁻ᵀ (Y U − z).
+          const auto &y0 = factor.forward_normal(0), &y1 = factor.forward_normal(1);
+          double      S[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {P[0], P[1]};
           for (unsigned int r = 0; r < k; ++r)
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                S[d][0] += kin.normal[order[r]][d] * B[r];
-                S[d][1] += kin.normal[order[r]][d] * B[k + r];
-                rhs[d] += kin.normal[order[r]][d] * B[2 * k + r];
-              }
+            {
+              S[0][0] += y0[r] * y0[r];
+              S[0][1] += y0[r] * y1[r];
+              S[1][1] += y1[r] * y1[r];
+              rhs[0] += y0[r] * z[r];
+              rhs[1] += y1[r] * z[r];
+            }
+          S[1][0]          = S[0][1];
           const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
           if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
             {
               out.ok = false;
               return out;
             }
-          out.U[0] = (S[1][1] * rhs[0] - S[0][1] * rhs[1]) / det;
-          out.U[1] = (S[0][0] * rhs[1] - S[1][0] * rhs[0]) / det;
-          for (unsigned int r = 0; r < k; ++r)
-            x[r] = B[r] * out.U[0] + B[k + r] * out.U[1] - B[2 * k + r];
-          // Two steps of iterative refinement of the balance: with only a few active
-          // candidates of nearly parallel normals, S is near-singular (the pin may slide
-          // sideways almost freely) and U carries round-off of cond(S) ε, which Nᵀλ = P
-          // shows at 1e-7 (measured on worn profiles at small loads). λ = Y U − z keeps
-          // the active gaps closed for any U, so U alone is corrected: δU = S⁻¹ (P − Nᵀλ).
-          for (unsigned int step = 0; step < 2; ++step)
+          // Two steps of iterative refinement of U: with only a few active candidates of
+          // nearly parallel normals, S is near-singular (the pin may slide sideways
+          // almost freely) and the 2 × 2 solve leaves a residual of cond(S) ε, which
+          // the balance Nᵀλ = P would show at 1e-7 (measured on worn profiles at small
+          // loads); Nᵀλ = S U − Yᵀz, so the balance is the residual of S U = rhs.
+          out.U = 0;
+          for (unsigned int step = 0; step < 3; ++step)
             {
-              double defect[2] = {P[0], P[1]};
-              for (unsigned int r = 0; r < k; ++r)
-                for (unsigned int d = 0; d < 2; ++d)
-                  defect[d] -= kin.normal[order[r]][d] * x[r];
-              const double dU0 = (S[1][1] * defect[0] - S[0][1] * defect[1]) / det;
-              const double dU1 = (S[0][0] * defect[1] - S[1][0] * defect[0]) / det;
-              out.U[0] += dU0;
-              out.U[1] += dU1;
-              for (unsigned int r = 0; r < k; ++r)
-                x[r] += B[r] * dU0 + B[k + r] * dU1;
+              const double r0 = rhs[0] - S[0][0] * out.U[0] - S[0][1] * out.U[1];
+              const double r1 = rhs[1] - S[1][0] * out.U[0] - S[1][1] * out.U[1];
+              out.U[0] += (S[1][1] * r0 - S[0][1] * r1) / det;
+              out.U[1] += (S[0][0] * r1 - S[1][0] * r0) / det;
             }
+          for (unsigned int r = 0; r < k; ++r)
+            x[r] = y0[r] * out.U[0] + y1[r] * out.U[1] - z[r];
         }
       else
         for (unsigned int r = 0; r < k; ++r)
-          x[r] = -B[2 * k + r];
+          x[r] = -z[r];
+      factor.backward(x);
       // Back to the order of `active`.
       out.lambda.resize(k);
       for (unsigned int r = 0; r < k; ++r)
@@ -903,6 +963,7 @@ namespace wearlink::fe
               break;
             moved.eccentricity = paired.eccentricity + U_pair;
             refresh_gaps(problem, moved, kin);
+            factor.gaps_changed();
           }
         sol.iterations += st.iterations;
         warm.clear();
