@@ -118,7 +118,7 @@ namespace wearlink::fe
     if (bore_sector_size > 0)
       for (unsigned int k = 0; k < bore_sectors; ++k)
         sector_rotations.push_back(
-          {std::cos(numbers::two_pi * k / bore_sectors), std::sin(numbers::two_pi * k / bore_sectors)});
+          {{std::cos(numbers::two_pi * k / bore_sectors), std::sin(numbers::two_pi * k / bore_sectors)}});
     const auto        n      = problem.dof_handler.n_dofs();
     const auto        is_pin = pin_dofs(problem);
     std::vector<char> clamped(n, 0);
