@@ -7,8 +7,8 @@
 #include "fe/active_set_rules.h"
 #include "fe/boundary_ids.h"
 #include "fe/contact_solver.h"
+#include "fe/window_kernels.h"
 
-#include <Eigen/Core>
 #include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
@@ -35,9 +35,6 @@ namespace wearlink::fe
       std::vector<double> factor;  ///< the Cholesky factor of the active block
     };
 
-    using ArrayMap      = Eigen::Map<Eigen::ArrayXd>;
-    using ConstArrayMap = Eigen::Map<const Eigen::ArrayXd>;
-
     /**
      * The compliance between the positions of one window, A(q, p) = ∂g_q/∂λ_p: the pin
      * part read from the pin columns, the bore part from the bore columns of the bore
@@ -52,7 +49,7 @@ namespace wearlink::fe
      * contiguous arrays: the field f(b) = Σ_a K(b, a) v_pa over the window's bore nodes,
      * then A(q, p) = pin(q, p) + Σ_b v_qb · f(b) over segments of positions whose face
      * nodes advance with them (one array offset per face node), so that both passes are
-     * vector operations.
+     * vector loops (window_kernels.h).
      */
     class WindowCompliance
     {
@@ -212,17 +209,16 @@ namespace wearlink::fe
                 while (left > 0)
                   {
                     const unsigned int len = std::min(left, n_bore - b);
-                    ArrayMap           fx(field_x.data() + r, len), fy(field_y.data() + r, len);
-                    if (m == 0)
-                      {
-                        fx = gx * ConstArrayMap(xx + b, len) + gy * ConstArrayMap(xy + b, len);
-                        fy = gx * ConstArrayMap(yx + b, len) + gy * ConstArrayMap(yy + b, len);
-                      }
-                    else
-                      {
-                        fx += gx * ConstArrayMap(xx + b, len) + gy * ConstArrayMap(xy + b, len);
-                        fy += gx * ConstArrayMap(yx + b, len) + gy * ConstArrayMap(yy + b, len);
-                      }
+                    kernels::field(field_x.data() + r,
+                                   field_y.data() + r,
+                                   xx + b,
+                                   yx + b,
+                                   xy + b,
+                                   yy + b,
+                                   gx,
+                                   gy,
+                                   len,
+                                   m > 0);
                     r += len;
                     left -= len;
                     b = 0;
@@ -250,11 +246,28 @@ namespace wearlink::fe
             while (left > 0) // the pin column wraps at most once
               {
                 const unsigned int len = std::min(left, n_pin - i);
-                ArrayMap           out(col + q, len);
-                out = ConstArrayMap(pin.base + i, len);
-                for (unsigned int m = 0; m < s.n_masters; ++m)
-                  out += ConstArrayMap(vx[m].data() + q, len) * ConstArrayMap(field_x.data() + q + s.offset[m], len) +
-                         ConstArrayMap(vy[m].data() + q, len) * ConstArrayMap(field_y.data() + q + s.offset[m], len);
+                const auto         fx  = [&](unsigned int m) {
+                  return field_x.data() + q + s.offset[m];
+                };
+                const auto fy = [&](unsigned int m) {
+                  return field_y.data() + q + s.offset[m];
+                };
+                if (s.n_masters >= 2)
+                  kernels::read_two(col + q,
+                                    pin.base + i,
+                                    vx[0].data() + q,
+                                    vy[0].data() + q,
+                                    fx(0),
+                                    fy(0),
+                                    vx[1].data() + q,
+                                    vy[1].data() + q,
+                                    fx(1),
+                                    fy(1),
+                                    len);
+                else
+                  std::copy(pin.base + i, pin.base + i + len, col + q);
+                for (unsigned int m = s.n_masters >= 2 ? 2 : 0; m < s.n_masters; ++m)
+                  kernels::read_add(col + q, vx[m].data() + q, vy[m].data() + q, fx(m), fy(m), len);
                 q += len;
                 left -= len;
                 i = 0;
