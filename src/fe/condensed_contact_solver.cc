@@ -28,11 +28,19 @@ namespace wearlink::fe
     using blas_int = types::blas_int;
 
 
+    /**
+     * Active sets from this size on start with a single-precision factor (ActiveFactor,
+     * refine()): below it the factorization is cheap and the refinement would cost
+     * more than the float factor saves.
+     */
+    constexpr unsigned int single_precision_from = 160;
+
     /** Memory that the window solves keep from one load state to the next. */
     struct Workspace
     {
-      std::vector<double> columns; ///< the gathered columns of A, w entries each
-      std::vector<double> factor;  ///< the Cholesky factor of the active block
+      std::vector<double> columns;       ///< the gathered columns of A, w entries each
+      std::vector<double> factor;        ///< the Cholesky factor of the active block
+      std::vector<float>  factor_single; ///< the same in single precision
     };
 
     /**
@@ -292,11 +300,114 @@ namespace wearlink::fe
     };
 
     /**
-     * The lower Cholesky factor of A on the active positions, kept in the order of
-     * increasing distance of the candidates from the window's first point of contact, so
-     * that the edges of the contact arc, where an active-set iteration changes the set,
-     * come last: a new set re-factors only the rows after the longest common prefix with
-     * the previous order (L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ); LAPACK).
+     * A lower Cholesky factor in the precision Number (leading dimension ld, storage in
+     * the solver's workspace), built and used row block by row block: LAPACK/BLAS.
+     */
+    template <typename Number>
+    class Cholesky
+    {
+    public:
+      Cholesky(std::vector<Number> &storage, const unsigned int ld)
+        : ld(ld)
+      {
+        if (storage.size() < static_cast<std::size_t>(ld) * ld) // only what is written is read
+          storage.resize(static_cast<std::size_t>(ld) * ld);
+        L = storage.data();
+      }
+
+      /**
+       * Rows c … k − 1 of the factor of the k × k matrix whose entry (r, s), r ≥ s, is
+       * @p entry(r, s): L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ). False if the matrix
+       * is not positive definite (in this precision).
+       */
+      template <typename Entry>
+      bool
+      refactor_from(const unsigned int c, const unsigned int k, const Entry &entry)
+      {
+        const blas_int t = k - c, ldb = ld;
+        blas_int       info = 0;
+        if (t == 0)
+          return true;
+        // A21ᵀ (c × t), then L21ᵀ = L11⁻¹ A21ᵀ.
+        if (c > 0)
+          {
+            std::vector<Number> X(static_cast<std::size_t>(c) * t);
+            for (unsigned int s = 0; s < c; ++s)
+              for (blas_int j = 0; j < t; ++j)
+                X[s + static_cast<std::size_t>(j) * c] = entry(c + j, s);
+            const blas_int cc = c;
+            trtrs("L", "N", "N", &cc, &t, L, &ldb, X.data(), &cc, &info);
+            if (info != 0)
+              return false;
+            for (blas_int j = 0; j < t; ++j)
+              for (unsigned int s = 0; s < c; ++s)
+                at(c + j, s) = X[s + static_cast<std::size_t>(j) * c];
+          }
+        for (blas_int j = 0; j < t; ++j)
+          for (blas_int i = j; i < t; ++i)
+            at(c + i, c + j) = entry(c + i, c + j);
+        if (c > 0)
+          {
+            const blas_int cc        = c;
+            const Number   minus_one = -1, one = 1;
+            syrk("L", "N", &t, &cc, &minus_one, &at(c, 0), &ldb, &one, &at(c, c), &ldb);
+          }
+        potrf("L", &t, &at(c, c), &ldb, &info);
+        return info == 0;
+      }
+
+      /** Rows valid … k − 1 of v := L⁻¹ v (k entries), the rows before valid being done. */
+      void
+      forward_rows(Number *v, const unsigned int k, const unsigned int valid)
+      {
+        const blas_int t = k - valid, c = valid, ldb = ld, one = 1;
+        blas_int       info = 0;
+        if (t == 0)
+          return;
+        if (c > 0)
+          {
+            const Number minus_one = -1, plus_one = 1;
+            gemv("N", &t, &c, &minus_one, &at(c, 0), &ldb, v, &one, &plus_one, v + c, &one);
+          }
+        trtrs("L", "N", "N", &t, &one, &at(c, c), &ldb, v + c, &t, &info);
+      }
+
+      /** v := L⁻ᵀ v (k entries). */
+      void
+      backward(Number *v, const unsigned int k) const
+      {
+        const blas_int kk = k, ldb = ld, one = 1;
+        blas_int       info = 0;
+        if (k > 0)
+          trtrs("L", "T", "N", &kk, &one, L, &ldb, v, &kk, &info);
+      }
+
+    private:
+      Number &
+      at(const unsigned int r, const unsigned int s)
+      {
+        return L[r + static_cast<std::size_t>(s) * ld];
+      }
+
+      const unsigned int ld;
+      Number            *L = nullptr;
+    };
+
+    /**
+     * The Cholesky factor of A on the active positions, kept in the order of increasing
+     * distance of the candidates from the window's first point of contact, so that the
+     * edges of the contact arc, where an active-set iteration changes the set, come
+     * last: a new set re-factors only the rows after the longest common prefix with the
+     * previous order. The entries come from the gathered columns, lower triangle only
+     * (A is symmetric to 3e-14 of its largest entry, measured at 100 kN): entry (r, s),
+     * r after s in the factor's order, is A(order[r], order[s]), read from column
+     * order[s].
+     *
+     * Single precision (float) for large active sets: the factorization takes half the
+     * time, and a solution to double precision follows from the float factor by
+     * iterative refinement with the double-precision columns (refine(); A is well
+     * conditioned, cond ≈ 570 at 100 kN, so each step gains ~4 digits). A float factor
+     * that fails (not positive definite in float) is replaced by a double one.
      */
     class ActiveFactor
     {
@@ -304,14 +415,14 @@ namespace wearlink::fe
       ActiveFactor(WindowCompliance        &A,
                    const ContactKinematics &kin,
                    const unsigned int       m,
-                   std::vector<double>     &storage)
+                   Workspace               &work,
+                   const bool               single)
         : A(A)
-        , capacity(A.size())
+        , single(single)
+        , factor_single(work.factor_single, A.size())
+        , factor_double(work.factor, A.size())
         , key(A.size())
       {
-        if (storage.size() < static_cast<std::size_t>(capacity) * capacity) // only what is written is read
-          storage.resize(static_cast<std::size_t>(capacity) * capacity);
-        L                   = storage.data();
         unsigned int centre = 0;
         for (unsigned int p = 1; p < kin.g0.size(); ++p)
           if (kin.g0[p] < kin.g0[centre])
@@ -322,6 +433,23 @@ namespace wearlink::fe
             const long d = std::abs(static_cast<long>(kin.candidates[p]) - c);
             key[p]       = std::min<long>(d, static_cast<long>(m) - d) * static_cast<long>(m) + kin.candidates[p];
           }
+      }
+
+      /** From now on in double precision (re-factored at the next set()). */
+      void
+      make_double()
+      {
+        single        = false;
+        ok            = true;
+        normals_valid = gaps_valid = 0;
+        order.clear();
+      }
+
+      /** True while the factor is in single precision (its solutions need refine()). */
+      bool
+      single_precision() const
+      {
+        return single;
       }
 
       /** Factor A on @p active (any order); false if it is not positive definite. */
@@ -340,7 +468,19 @@ namespace wearlink::fe
         gaps_valid    = std::min(gaps_valid, c);
         if (c == order.size())
           return ok;
-        ok = refactor_from(c);
+        for (const auto p : order)
+          A.ensure(p);
+        const auto entry = [&](const unsigned int r, const unsigned int s) {
+          return A.column(order[s])[order[r]];
+        };
+        ok = single ? factor_single.refactor_from(c, order.size(), entry) :
+                      factor_double.refactor_from(c, order.size(), entry);
+        if (!ok && single)
+          {
+            single        = false;
+            normals_valid = gaps_valid = 0;
+            ok                         = factor_double.refactor_from(0, order.size(), entry);
+          }
         return ok;
       }
 
@@ -352,21 +492,12 @@ namespace wearlink::fe
       void
       forward(const ContactKinematics &kin, const bool with_normals)
       {
-        const unsigned int k = order.size();
         for (unsigned int d = 0; with_normals && d < 2; ++d)
-          {
-            y[d].resize(k);
-            for (unsigned int r = normals_valid; r < k; ++r)
-              y[d][r] = kin.normal[order[r]][d];
-            forward_rows(y[d], normals_valid);
-          }
+          forward_rows([&](unsigned int p) { return kin.normal[p][d]; }, normals_valid, yf[d], y[d]);
         if (with_normals)
-          normals_valid = k;
-        z.resize(k);
-        for (unsigned int r = gaps_valid; r < k; ++r)
-          z[r] = kin.g0[order[r]];
-        forward_rows(z, gaps_valid);
-        gaps_valid = k;
+          normals_valid = order.size();
+        forward_rows([&](unsigned int p) { return kin.g0[p]; }, gaps_valid, zf, z);
+        gaps_valid = order.size();
       }
 
       /** The initial gaps changed (a new linearization): z is recomputed in full. */
@@ -388,14 +519,26 @@ namespace wearlink::fe
         return z;
       }
 
+      /** x := L⁻¹ x for x in the factor's order. */
+      void
+      forward_full(std::vector<double> &x)
+      {
+        if (!single)
+          return factor_double.forward_rows(x.data(), order.size(), 0);
+        std::vector<float> v(x.begin(), x.end());
+        factor_single.forward_rows(v.data(), order.size(), 0);
+        std::copy(v.begin(), v.end(), x.begin());
+      }
+
       /** x := L⁻ᵀ x for x in the factor's order. */
       void
       backward(std::vector<double> &x) const
       {
-        const blas_int k = order.size(), ld = capacity, one = 1;
-        blas_int       info = 0;
-        if (k > 0)
-          trtrs("L", "T", "N", &k, &one, L, &ld, x.data(), &k, &info);
+        if (!single)
+          return factor_double.backward(x.data(), order.size());
+        std::vector<float> v(x.begin(), x.end());
+        factor_single.backward(v.data(), order.size());
+        std::copy(v.begin(), v.end(), x.begin());
       }
 
       /** The active positions in the factor's order. */
@@ -406,82 +549,39 @@ namespace wearlink::fe
       }
 
     private:
-      double &
-      at(const unsigned int r, const unsigned int s)
-      {
-        return L[r + static_cast<std::size_t>(s) * capacity];
-      }
-
-      /** Rows valid … k − 1 of v := L⁻¹ v, rows before valid being done already. */
+      /**
+       * Rows valid … k − 1 of the forward substitution of b (the value of each
+       * position) into out, through the single-precision copy vf when the factor is.
+       */
+      template <typename Value>
       void
-      forward_rows(std::vector<double> &v, const unsigned int valid)
+      forward_rows(const Value &b, const unsigned int valid, std::vector<float> &vf, std::vector<double> &out)
       {
-        const blas_int k = order.size(), t = k - valid, c = valid, ld = capacity, one = 1;
-        blas_int       info = 0;
-        if (t == 0)
-          return;
-        if (c > 0)
-          {
-            const double minus_one = -1, plus_one = 1;
-            gemv("N", &t, &c, &minus_one, &at(c, 0), &ld, v.data(), &one, &plus_one, v.data() + c, &one);
-          }
-        trtrs("L", "N", "N", &t, &one, &at(c, c), &ld, v.data() + c, &t, &info);
-      }
-
-      // The entries come from the gathered columns, lower triangle only (A is symmetric
-      // to 3e-14 of its largest entry, measured at 100 kN): entry (r, s), r after s in
-      // the factor's order, is A(order[r], order[s]), read from column order[s].
-      bool
-      refactor_from(const unsigned int c)
-      {
-        const blas_int k = order.size(), t = k - c, ld = capacity;
-        blas_int       info = 0;
-        if (t == 0)
-          return true;
-        for (const auto p : order)
-          A.ensure(p);
-        // A21ᵀ (c × t), then L21ᵀ = L11⁻¹ A21ᵀ.
-        if (c > 0)
-          {
-            std::vector<double> X(static_cast<std::size_t>(c) * t);
-            for (unsigned int s = 0; s < c; ++s)
-              {
-                const double *column = A.column(order[s]);
-                for (blas_int j = 0; j < t; ++j)
-                  X[s + static_cast<std::size_t>(j) * c] = column[order[c + j]];
-              }
-            const blas_int cc = c;
-            trtrs("L", "N", "N", &cc, &t, L, &ld, X.data(), &cc, &info);
-            if (info != 0)
-              return false;
-            for (blas_int j = 0; j < t; ++j)
-              for (unsigned int s = 0; s < c; ++s)
-                at(c + j, s) = X[s + static_cast<std::size_t>(j) * c];
-          }
-        for (blas_int j = 0; j < t; ++j)
-          {
-            const double *column = A.column(order[c + j]);
-            for (blas_int i = j; i < t; ++i)
-              at(c + i, c + j) = column[order[c + i]];
-          }
-        if (c > 0)
-          {
-            const blas_int cc        = c;
-            const double   minus_one = -1, one = 1;
-            syrk("L", "N", &t, &cc, &minus_one, &at(c, 0), &ld, &one, &at(c, c), &ld);
-          }
-        potrf("L", &t, &at(c, c), &ld, &info);
-        return info == 0;
+        const unsigned int k = order.size();
+        out.resize(k);
+        for (unsigned int r = valid; r < k; ++r)
+          out[r] = b(order[r]);
+        if (!single)
+          return factor_double.forward_rows(out.data(), k, valid);
+        vf.resize(k);
+        for (unsigned int r = valid; r < k; ++r)
+          vf[r] = static_cast<float>(out[r]);
+        factor_single.forward_rows(vf.data(), k, valid);
+        for (unsigned int r = valid; r < k; ++r)
+          out[r] = vf[r];
       }
 
       WindowCompliance                  &A;
-      const unsigned int                 capacity;
-      double                            *L;   ///< leading dimension capacity, in the solver's workspace
+      bool                               single;
+      Cholesky<float>                    factor_single;
+      Cholesky<double>                   factor_double;
       std::vector<long>                  key; ///< sort key of each position (distance from the centre, then index)
       std::vector<unsigned int>          order;
       bool                               ok = true;
       std::array<std::vector<double>, 2> y;                 ///< L⁻¹ n_x, L⁻¹ n_y (factor order)
       std::vector<double>                z;                 ///< L⁻¹ g0 (factor order)
+      std::array<std::vector<float>, 2>  yf;                ///< y in single precision
+      std::vector<float>                 zf;                ///< z in single precision
       unsigned int                       normals_valid = 0; ///< leading rows of y that are up to date
       unsigned int                       gaps_valid    = 0; ///< leading rows of z that are up to date
     };
@@ -495,8 +595,51 @@ namespace wearlink::fe
     };
 
     /**
+     * The Schur step of the active system in the factor's variables: for the forward
+     * substitutions y_d = L⁻¹ n_d and w = L⁻¹ a of a right-hand side a, the U of
+     * A λ − N U = a, Nᵀ λ = b is S⁻¹ (b − Yᵀw) with S = Nᵀ A⁻¹ N = YᵀY, and
+     * L⁻ᵀ (w + Y U) is λ; x receives w + Y U. False if S is singular.
+     */
+    bool
+    schur_step(const ActiveFactor &factor, const Tensor<1, 2> &b, std::vector<double> &x, Tensor<1, 2> &U)
+    {
+      const auto &y0 = factor.forward_normal(0), &y1 = factor.forward_normal(1);
+      const auto  k       = x.size();
+      double      S[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {b[0], b[1]};
+      for (unsigned int r = 0; r < k; ++r)
+        {
+          S[0][0] += y0[r] * y0[r];
+          S[0][1] += y0[r] * y1[r];
+          S[1][1] += y1[r] * y1[r];
+          rhs[0] -= y0[r] * x[r];
+          rhs[1] -= y1[r] * x[r];
+        }
+      S[1][0]          = S[0][1];
+      const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
+      if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
+        return false;
+      // Two steps of iterative refinement of U: with only a few active candidates of
+      // nearly parallel normals, S is near-singular (the pin may slide sideways almost
+      // freely) and the 2 × 2 solve leaves a residual of cond(S) ε, which the balance
+      // Nᵀλ = b would show at 1e-7 (measured on worn profiles at small loads);
+      // Nᵀλ = S U + Yᵀw, so the balance is the residual of S U = rhs.
+      U = 0;
+      for (unsigned int step = 0; step < 3; ++step)
+        {
+          const double r0 = rhs[0] - S[0][0] * U[0] - S[0][1] * U[1];
+          const double r1 = rhs[1] - S[1][0] * U[0] - S[1][1] * U[1];
+          U[0] += (S[1][1] * r0 - S[0][1] * r1) / det;
+          U[1] += (S[0][0] * r1 - S[1][0] * r0) / det;
+        }
+      for (unsigned int r = 0; r < k; ++r)
+        x[r] += y0[r] * U[0] + y1[r] * U[1];
+      return true;
+    }
+
+    /**
      * The active system: A λ = N U − g0 with, under force control, Nᵀ λ = P
-     * (S = Nᵀ A⁻¹ N, U = S⁻¹ (P + Nᵀ A⁻¹ g0)), under displacement control λ = −A⁻¹ g0.
+     * (schur_step() with a = −g0, b = P), under displacement control λ = −A⁻¹ g0. To
+     * the precision of the factor (refine() takes a single-precision one further).
      */
     ActiveSolution
     solve_active(const ContactKinematics         &kin,
@@ -514,48 +657,14 @@ namespace wearlink::fe
       const auto        &order = factor.ordered();
       const unsigned int k     = order.size();
       factor.forward(kin, force_control);
-      const auto         &z = factor.forward_gap();
       std::vector<double> x(k);
-      if (force_control)
+      for (unsigned int r = 0; r < k; ++r)
+        x[r] = -factor.forward_gap()[r];
+      if (force_control && !schur_step(factor, P, x, out.U))
         {
-          // With y_d = L⁻¹ n_d and z = L⁻¹ g0: S = Nᵀ A⁻¹ N = YᵀY, and
-          // U = S⁻¹ (P + Yᵀz), λ = L⁻ᵀ (Y U − z).
-          const auto &y0 = factor.forward_normal(0), &y1 = factor.forward_normal(1);
-          double      S[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {P[0], P[1]};
-          for (unsigned int r = 0; r < k; ++r)
-            {
-              S[0][0] += y0[r] * y0[r];
-              S[0][1] += y0[r] * y1[r];
-              S[1][1] += y1[r] * y1[r];
-              rhs[0] += y0[r] * z[r];
-              rhs[1] += y1[r] * z[r];
-            }
-          S[1][0]          = S[0][1];
-          const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
-          if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
-            {
-              out.ok = false;
-              return out;
-            }
-          // Two steps of iterative refinement of U: with only a few active candidates of
-          // nearly parallel normals, S is near-singular (the pin may slide sideways
-          // almost freely) and the 2 × 2 solve leaves a residual of cond(S) ε, which
-          // the balance Nᵀλ = P would show at 1e-7 (measured on worn profiles at small
-          // loads); Nᵀλ = S U − Yᵀz, so the balance is the residual of S U = rhs.
-          out.U = 0;
-          for (unsigned int step = 0; step < 3; ++step)
-            {
-              const double r0 = rhs[0] - S[0][0] * out.U[0] - S[0][1] * out.U[1];
-              const double r1 = rhs[1] - S[1][0] * out.U[0] - S[1][1] * out.U[1];
-              out.U[0] += (S[1][1] * r0 - S[0][1] * r1) / det;
-              out.U[1] += (S[0][0] * r1 - S[1][0] * r0) / det;
-            }
-          for (unsigned int r = 0; r < k; ++r)
-            x[r] = y0[r] * out.U[0] + y1[r] * out.U[1] - z[r];
+          out.ok = false;
+          return out;
         }
-      else
-        for (unsigned int r = 0; r < k; ++r)
-          x[r] = -z[r];
       factor.backward(x);
       // Back to the order of `active`.
       out.lambda.resize(k);
@@ -629,8 +738,87 @@ namespace wearlink::fe
     }
 
     /**
+     * Iterative refinement of the applied active solution in @p st, whose gaps are
+     * those of every position (accept()): the residuals of the active system are −g on
+     * the active positions (from the double-precision columns) and P − Nᵀλ; the
+     * correction solves the same system for them with the factor again. Ends when a
+     * correction is below 1e-12 of λ (three corrections from a single-precision
+     * factor at 100 kN); false if that takes more than max_refinements.
+     */
+    bool
+    refine(const ContactKinematics &kin,
+           WindowCompliance        &A,
+           ActiveFactor            &factor,
+           const bool               force_control,
+           const Tensor<1, 2>      &P,
+           WindowState             &st)
+    {
+      constexpr unsigned int max_refinements = 6;
+      const auto            &order           = factor.ordered();
+      const unsigned int     k               = order.size();
+      for (unsigned int step = 0; step < max_refinements; ++step)
+        {
+          std::vector<double> x(k);
+          Tensor<1, 2>        balance = P, dU;
+          double              largest = 0;
+          for (unsigned int r = 0; r < k; ++r)
+            {
+              x[r] = -st.gap[order[r]];
+              balance -= st.lambda[order[r]] * kin.normal[order[r]];
+              largest = std::max(largest, std::abs(st.lambda[order[r]]));
+            }
+          factor.forward_full(x);
+          if (force_control && !schur_step(factor, balance, x, dU))
+            return false;
+          factor.backward(x);
+          double correction = 0;
+          for (unsigned int r = 0; r < k; ++r)
+            {
+              st.lambda[order[r]] += x[r];
+              correction = std::max(correction, std::abs(x[r]));
+            }
+          st.U += dU;
+          if (correction <= 1e-12 * largest) // the gaps move by A δλ, below round-off
+            return true;
+          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+        }
+      return false;
+    }
+
+    /**
+     * Solve the active system on st.active and apply it (accept()), to double precision
+     * if @p exact (refine() after a single-precision factor; a double factor if that
+     * does not converge). False if a factorization fails.
+     */
+    bool
+    solve_and_accept(const ContactKinematics &kin,
+                     WindowCompliance        &A,
+                     ActiveFactor            &factor,
+                     const bool               force_control,
+                     const Tensor<1, 2>      &P,
+                     const bool               exact,
+                     const bool               inactive_only,
+                     WindowState             &st)
+    {
+      auto x = solve_active(kin, factor, st.active, force_control, P);
+      if (!x.ok)
+        return false;
+      const bool refining = exact && factor.single_precision();
+      accept(kin, A, x, st, inactive_only && !refining);
+      if (!refining || refine(kin, A, factor, force_control, P, st))
+        return true;
+      factor.make_double();
+      x = solve_active(kin, factor, st.active, force_control, P);
+      if (!x.ok)
+        return false;
+      accept(kin, A, x, st, inactive_only);
+      return true;
+    }
+
+    /**
      * The primal–dual iteration from @p st.active; true when the active set repeats
      * (converged), false when it cycles, stalls at @p limit, or a factorization fails.
+     * Each active solve to double precision if @p exact, else to the factor's.
      */
     bool
     primal_dual(const ContactKinematics &kin,
@@ -639,16 +827,15 @@ namespace wearlink::fe
                 const bool               force_control,
                 const Tensor<1, 2>      &P,
                 const unsigned int       limit,
+                const bool               exact,
                 WindowState             &st)
     {
       std::set<std::vector<unsigned int>> history;
       for (unsigned int it = 1; it <= limit; ++it)
         {
           ++st.iterations;
-          const auto x = solve_active(kin, factor, st.active, force_control, P);
-          if (!x.ok)
+          if (!solve_and_accept(kin, A, factor, force_control, P, exact, true, st))
             return false;
-          accept(kin, A, x, st, true);
           auto next = active_set::update(st.active, st.lambda, st.gap, kin.tolerance, history);
           if (force_control)
             active_set::ensure_two_active(next, st.gap, kin.normal, P);
@@ -909,15 +1096,18 @@ namespace wearlink::fe
                                            ActiveFactor            &factor,
                                            const bool               force_control,
                                            const Tensor<1, 2>      &load,
+                                           const bool               exact,
                                            WindowState             &st,
                                            bool                    &monotone_used)
   {
-    bool done = primal_dual(kin, A, factor, force_control, load, std::min(max_iterations, primal_dual_limit), st);
+    bool done =
+      primal_dual(kin, A, factor, force_control, load, std::min(max_iterations, primal_dual_limit), exact, st);
     if (!done)
       {
         ++n_monotone;
         monotone_used = true;
-        done          = monotone(kin, A, factor, force_control, load, 10 * max_iterations, st);
+        factor.make_double(); // the monotone phase decides on exact solutions
+        done = monotone(kin, A, factor, force_control, load, 10 * max_iterations, st);
       }
     if (!done)
       active_set::not_converged("condensed", st.iterations);
@@ -950,17 +1140,17 @@ namespace wearlink::fe
         double threshold = 0;
         kin              = compute_window_kinematics(problem, paired, {T, 1e-3 * spacing, 0.5}, &threshold);
         WindowCompliance A(problem, compliance, kin, *workspace);
-        ActiveFactor     factor(A, kin, m, workspace->factor);
         WindowState      st;
         st.lambda.assign(kin.g0.size(), 0.0);
         st.active = starting_set(kin, clearance, warm, force_control, load);
+        ActiveFactor       factor(A, kin, m, *workspace, st.active.size() >= single_precision_from);
         Tensor<1, 2>       U_pair; // since `paired`
         PinPose            moved = paired;
         bool               slid = false, narrow = false;
         const unsigned int updates_before = updates; // a widened window solves this pairing again
         for (;;)
           {
-            solve_linearized(kin, A, factor, force_control, load, st, sol.monotone);
+            solve_linearized(kin, A, factor, force_control, load, false, st, sol.monotone);
             U_pair += st.U;
             // First the window (so that the path is the reference solver's, which sees
             // every candidate), then the linearization and the pairing.
@@ -992,6 +1182,14 @@ namespace wearlink::fe
             paired.eccentricity += U_pair;
             T = 0.5 * std::max(closure_estimate, 0.0);
             continue;
+          }
+        if (factor.single_precision()) // the accepted linearization to double precision
+          {
+            const unsigned int before = st.iterations;
+            U_pair -= st.U;
+            solve_linearized(kin, A, factor, force_control, load, true, st, sol.monotone);
+            U_pair += st.U;
+            sol.iterations += st.iterations - before;
           }
         window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
         finish(kin, st, force_control, load, sol);

@@ -194,6 +194,7 @@ namespace wearlink::fe
                      condensed_detail::ActiveFactor     &factor,
                      bool                                force_control,
                      const dealii::Tensor<1, 2>         &load,
+                     bool                                exact,
                      condensed_detail::WindowState      &state,
                      bool                               &monotone_used);
 
