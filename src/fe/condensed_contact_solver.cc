@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <set>
 #include <tuple>
 
@@ -421,18 +422,22 @@ namespace wearlink::fe
         , single(single)
         , factor_single(work.factor_single, A.size())
         , factor_double(work.factor, A.size())
-        , key(A.size())
+        , is_active(A.size(), 0)
       {
         unsigned int centre = 0;
         for (unsigned int p = 1; p < kin.g0.size(); ++p)
           if (kin.g0[p] < kin.g0[centre])
             centre = p;
-        const long c = kin.candidates.empty() ? 0 : kin.candidates[centre];
+        const long        c = kin.candidates.empty() ? 0 : kin.candidates[centre];
+        std::vector<long> key(A.size()); // distance from the centre, then index
         for (unsigned int p = 0; p < key.size(); ++p)
           {
             const long d = std::abs(static_cast<long>(kin.candidates[p]) - c);
             key[p]       = std::min<long>(d, static_cast<long>(m) - d) * static_cast<long>(m) + kin.candidates[p];
           }
+        by_key.resize(A.size());
+        std::iota(by_key.begin(), by_key.end(), 0u);
+        std::sort(by_key.begin(), by_key.end(), [&](unsigned int a, unsigned int b) { return key[a] < key[b]; });
       }
 
       /** From now on in double precision (re-factored at the next set()). */
@@ -456,8 +461,15 @@ namespace wearlink::fe
       bool
       set(const std::vector<unsigned int> &active)
       {
-        std::vector<unsigned int> next = active;
-        std::sort(next.begin(), next.end(), [&](unsigned int a, unsigned int b) { return key[a] < key[b]; });
+        std::vector<unsigned int> next;
+        next.reserve(active.size());
+        for (const auto p : active)
+          is_active[p] = 1;
+        for (const auto p : by_key)
+          if (is_active[p])
+            next.push_back(p);
+        for (const auto p : active)
+          is_active[p] = 0;
         unsigned int c = 0;
         while (c < next.size() && c < order.size() && next[c] == order[c])
           ++c;
@@ -575,7 +587,8 @@ namespace wearlink::fe
       bool                               single;
       Cholesky<float>                    factor_single;
       Cholesky<double>                   factor_double;
-      std::vector<long>                  key; ///< sort key of each position (distance from the centre, then index)
+      std::vector<unsigned int>          by_key;    ///< the positions by distance from the centre, then index
+      std::vector<char>                  is_active; ///< scratch of set()
       std::vector<unsigned int>          order;
       bool                               ok = true;
       std::array<std::vector<double>, 2> y;                 ///< L⁻¹ n_x, L⁻¹ n_y (factor order)
@@ -1114,6 +1127,36 @@ namespace wearlink::fe
   }
 
 
+  // The accepted linearization, solved with a single-precision factor, to double
+  // precision: its solution refined (refine()) and the active set checked with the
+  // refined gaps; if the set changes, the primal–dual iteration goes on with refined
+  // solves. Leaves the gaps of every position.
+  void
+  CondensedContactSolver::solve_exactly(const ContactKinematics &kin,
+                                        WindowCompliance        &A,
+                                        ActiveFactor            &factor,
+                                        const bool               force_control,
+                                        const Tensor<1, 2>      &load,
+                                        WindowState             &st,
+                                        bool                    &monotone_used)
+  {
+    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+    if (refine(kin, A, factor, force_control, load, st))
+      {
+        std::set<std::vector<unsigned int>> history;
+        auto next = active_set::update(st.active, st.lambda, st.gap, kin.tolerance, history);
+        if (force_control)
+          active_set::ensure_two_active(next, st.gap, kin.normal, load);
+        if (next == st.active)
+          return;
+      }
+    else
+      factor.make_double();
+    solve_linearized(kin, A, factor, force_control, load, true, st, monotone_used);
+    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+  }
+
+
   // Pairings: the window kinematics at a pose, its compliance and factor; within one,
   // linearizations that refresh the gaps (refresh_gaps()) until the pin's translation of
   // the last one is small (relinearization_done()). A pin that slides by more than a
@@ -1187,11 +1230,12 @@ namespace wearlink::fe
           {
             const unsigned int before = st.iterations;
             U_pair -= st.U;
-            solve_linearized(kin, A, factor, force_control, load, true, st, sol.monotone);
+            solve_exactly(kin, A, factor, force_control, load, st, sol.monotone);
             U_pair += st.U;
             sol.iterations += st.iterations - before;
           }
-        window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+        else
+          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
         finish(kin, st, force_control, load, sol);
         sol.pin_translation = paired.eccentricity - pose.eccentricity + U_pair;
         return sol;

@@ -189,6 +189,15 @@ namespace wearlink::fe
            ContactSolution               &solution) const;
 
     void
+    solve_exactly(const ContactKinematics            &kinematics,
+                  condensed_detail::WindowCompliance &A,
+                  condensed_detail::ActiveFactor     &factor,
+                  bool                                force_control,
+                  const dealii::Tensor<1, 2>         &load,
+                  condensed_detail::WindowState      &state,
+                  bool                               &monotone_used);
+
+    void
     solve_linearized(const ContactKinematics            &kinematics,
                      condensed_detail::WindowCompliance &A,
                      condensed_detail::ActiveFactor     &factor,
