@@ -686,12 +686,18 @@ namespace wearlink::fe
       return out;
     }
 
+    /** Which gaps window_gaps() computes. */
+    enum class Rows
+    {
+      all,
+      inactive, ///< the only ones the active-set rules read (an active gap is zero up to round-off)
+      active    ///< the residual of the active system (refine())
+    };
+
     /**
      * g = g0 − n·U + A λ over the window, for the multipliers @p lambda (per position)
-     * of @p active: at every position, or (@p inactive_only) only at the positions
-     * outside @p active, the only gaps the active-set rules read (an active one is zero
-     * up to round-off); the others keep their values. One matrix–vector product of the
-     * gathered columns (BLAS) per run of positions.
+     * of @p active, at the positions @p rows names; the others keep their values. One
+     * matrix–vector product of the gathered columns (BLAS) per run of positions.
      */
     void
     window_gaps(const ContactKinematics         &kin,
@@ -700,18 +706,18 @@ namespace wearlink::fe
                 const std::vector<double>       &lambda,
                 const Tensor<1, 2>              &U,
                 std::vector<double>             &gap,
-                const bool                       inactive_only)
+                const Rows                       rows_wanted)
     {
       const unsigned int w = kin.g0.size();
       gap.resize(w);
       for (const auto p : active)
         A.ensure(p);
       std::vector<double> x(A.n_slots(), 0.0);
-      std::vector<char>   skip(w, 0);
+      std::vector<char>   skip(w, rows_wanted == Rows::active);
       for (const auto p : active)
         {
           x[A.slot_of(p)] = lambda[p];
-          skip[p]         = inactive_only;
+          skip[p]         = rows_wanted == Rows::inactive;
         }
       for (unsigned int q0 = 0; q0 < w;)
         {
@@ -737,26 +743,23 @@ namespace wearlink::fe
 
     /** Apply an active solution: λ on the window, U, and the gaps (see window_gaps()). */
     void
-    accept(const ContactKinematics &kin,
-           WindowCompliance        &A,
-           const ActiveSolution    &x,
-           WindowState             &st,
-           const bool               inactive_only)
+    accept(const ContactKinematics &kin, WindowCompliance &A, const ActiveSolution &x, WindowState &st, const Rows rows)
     {
       std::fill(st.lambda.begin(), st.lambda.end(), 0.0);
       for (unsigned int s = 0; s < st.active.size(); ++s)
         st.lambda[st.active[s]] = x.lambda[s];
       st.U = x.U;
-      window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, inactive_only);
+      window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, rows);
     }
 
     /**
      * Iterative refinement of the applied active solution in @p st, whose gaps are
-     * those of every position (accept()): the residuals of the active system are −g on
-     * the active positions (from the double-precision columns) and P − Nᵀλ; the
-     * correction solves the same system for them with the factor again. Ends when a
-     * correction is below 1e-12 of λ (three corrections from a single-precision
-     * factor at 100 kN); false if that takes more than max_refinements.
+     * those of the active positions (accept()): the residuals of the active system are
+     * −g there (from the double-precision columns) and P − Nᵀλ; the correction solves
+     * the same system for them with the factor again. Ends when a correction is below
+     * 1e-12 of λ (three corrections from a single-precision factor at 100 kN), with
+     * the gaps of the inactive positions; false if that takes more than
+     * max_refinements.
      */
     bool
     refine(const ContactKinematics &kin,
@@ -791,9 +794,12 @@ namespace wearlink::fe
               correction = std::max(correction, std::abs(x[r]));
             }
           st.U += dU;
-          if (correction <= 1e-12 * largest) // the gaps move by A δλ, below round-off
-            return true;
-          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+          if (correction <= 1e-12 * largest) // the active gaps move by A δλ, below round-off
+            {
+              window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::inactive);
+              return true;
+            }
+          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::active);
         }
       return false;
     }
@@ -817,14 +823,14 @@ namespace wearlink::fe
       if (!x.ok)
         return false;
       const bool refining = exact && factor.single_precision();
-      accept(kin, A, x, st, inactive_only && !refining);
+      accept(kin, A, x, st, refining ? Rows::active : inactive_only ? Rows::inactive : Rows::all);
       if (!refining || refine(kin, A, factor, force_control, P, st))
         return true;
       factor.make_double();
       x = solve_active(kin, factor, st.active, force_control, P);
       if (!x.ok)
         return false;
-      accept(kin, A, x, st, inactive_only);
+      accept(kin, A, x, st, inactive_only ? Rows::inactive : Rows::all);
       return true;
     }
 
@@ -990,7 +996,7 @@ namespace wearlink::fe
           joined = w;
           if (alpha < 1)
             continue;
-          accept(kin, A, x, st, false);
+          accept(kin, A, x, st, Rows::all);
           double worst_blocked = 0;
           for (const auto i : penetrating(st.lambda, st.gap, kin.tolerance))
             if (!blocked[i])
@@ -1140,7 +1146,7 @@ namespace wearlink::fe
                                         WindowState             &st,
                                         bool                    &monotone_used)
   {
-    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::active);
     if (refine(kin, A, factor, force_control, load, st))
       {
         std::set<std::vector<unsigned int>> history;
@@ -1153,7 +1159,7 @@ namespace wearlink::fe
     else
       factor.make_double();
     solve_linearized(kin, A, factor, force_control, load, true, st, monotone_used);
-    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::all);
   }
 
 
@@ -1235,7 +1241,7 @@ namespace wearlink::fe
             sol.iterations += st.iterations - before;
           }
         else
-          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, false);
+          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::all);
         finish(kin, st, force_control, load, sol);
         sol.pin_translation = paired.eccentricity - pose.eccentricity + U_pair;
         return sol;
