@@ -9,6 +9,7 @@
 #include "fe/contact_solver.h"
 #include "fe/window_kernels.h"
 
+#include <deal.II/base/parallel.h>
 #include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
@@ -50,7 +51,9 @@ namespace wearlink::fe
      * nodes that the window's rays meet (the force +n_p interpolated onto the nodes of
      * the face p meets, its displacement read at the face q meets). A column is gathered
      * on its first use into the next slot of a column-major w × slots matrix and kept
-     * for the state.
+     * for the state. Columns are independent: the many that a new factor needs at once
+     * are gathered on the threads deal.II's MultithreadInfo allows (TBB), each column
+     * by one thread, so the result does not depend on their number.
      *
      * The bore part in the sector frames of BoundaryCompliance::BoreColumn: with
      * v_pa = w_pa R_aᵀ n_p (weight of bore node a in p's face, R_a the rotation of a's
@@ -91,7 +94,19 @@ namespace wearlink::fe
       ensure(const unsigned int p)
       {
         if (slot[p] < 0)
-          gather(p);
+          gather({p});
+      }
+
+      /** Gather the columns of @p positions that are not gathered yet (this may move every column). */
+      void
+      ensure(const std::vector<unsigned int> &positions)
+      {
+        std::vector<unsigned int> missing;
+        for (const auto p : positions)
+          if (slot[p] < 0)
+            missing.push_back(p);
+        if (!missing.empty())
+          gather(missing);
       }
 
       /** A(·, p) over the window; ensure(p) first. */
@@ -146,8 +161,6 @@ namespace wearlink::fe
               ++n_rows;
             }
         row_of = std::move(local);
-        field_x.resize(n_rows);
-        field_y.resize(n_rows);
       }
 
       /** Per position and face node m: its row and v = weight × R_bᵀ n (see the class). */
@@ -199,12 +212,12 @@ namespace wearlink::fe
 
       /** The bore field f over the window's rows for the force n_p at p's face (see the class). */
       void
-      bore_field(const unsigned int p)
+      bore_field(const unsigned int p, double *field_x, double *field_y) const
       {
         if (kin.n_masters[p] == 0)
           {
-            std::fill(field_x.begin(), field_x.end(), 0.0);
-            std::fill(field_y.begin(), field_y.end(), 0.0);
+            std::fill(field_x, field_x + n_rows, 0.0);
+            std::fill(field_y, field_y + n_rows, 0.0);
           }
         for (unsigned int m = 0; m < kin.n_masters[p]; ++m)
           {
@@ -218,16 +231,7 @@ namespace wearlink::fe
                 while (left > 0)
                   {
                     const unsigned int len = std::min(left, n_bore - b);
-                    kernels::field(field_x.data() + r,
-                                   field_y.data() + r,
-                                   xx + b,
-                                   yx + b,
-                                   xy + b,
-                                   yy + b,
-                                   gx,
-                                   gy,
-                                   len,
-                                   m > 0);
+                    kernels::field(field_x + r, field_y + r, xx + b, yx + b, xy + b, yy + b, gx, gy, len, m > 0);
                     r += len;
                     left -= len;
                     b = 0;
@@ -236,15 +240,49 @@ namespace wearlink::fe
           }
       }
 
+      /**
+       * Reserve the next slots for @p positions and compute the bore and pin columns
+       * they use (BoundaryCompliance computes missing ones on first use, which only one
+       * thread may do).
+       */
       void
-      gather(const unsigned int p)
+      reserve(const std::vector<unsigned int> &positions)
       {
-        const std::size_t needed = static_cast<std::size_t>(owner.size() + 1) * w;
+        const std::size_t needed = static_cast<std::size_t>(owner.size() + positions.size()) * w;
         if (work.columns.size() < needed)
           work.columns.resize(std::max(needed, 2 * work.columns.size()));
-        slot[p] = static_cast<int>(owner.size());
-        owner.push_back(p);
-        bore_field(p);
+        for (const auto p : positions)
+          {
+            slot[p] = static_cast<int>(owner.size());
+            owner.push_back(p);
+            compliance.pin_column(kin.candidates[p]);
+            for (unsigned int m = 0; m < kin.n_masters[p]; ++m)
+              compliance.bore_column(kin.masters[p][m]);
+          }
+      }
+
+      /** Gather the columns of @p positions (in parallel when there are many). */
+      void
+      gather(const std::vector<unsigned int> &positions)
+      {
+        reserve(positions);
+        const auto fill_range = [&](const unsigned int begin, const unsigned int end) {
+          std::vector<double> fx(n_rows), fy(n_rows);
+          for (unsigned int i = begin; i < end; ++i)
+            fill(positions[i], fx.data(), fy.data());
+        };
+        constexpr unsigned int serial_below = 64;
+        if (positions.size() < serial_below)
+          fill_range(0, positions.size());
+        else
+          parallel::apply_to_subranges(0u, static_cast<unsigned int>(positions.size()), fill_range, serial_below / 2);
+      }
+
+      /** Column p into its slot, with the field buffers fx, fy (n_rows each). */
+      void
+      fill(const unsigned int p, double *field_x, double *field_y) const
+      {
+        bore_field(p, field_x, field_y);
         double    *col = work.columns.data() + static_cast<std::size_t>(slot[p]) * w;
         const auto pin = compliance.pin_column(kin.candidates[p]);
         for (const auto &s : segments)
@@ -256,10 +294,10 @@ namespace wearlink::fe
               {
                 const unsigned int len = std::min(left, n_pin - i);
                 const auto         fx  = [&](unsigned int m) {
-                  return field_x.data() + q + s.offset[m];
+                  return field_x + q + s.offset[m];
                 };
                 const auto fy = [&](unsigned int m) {
-                  return field_y.data() + q + s.offset[m];
+                  return field_y + q + s.offset[m];
                 };
                 if (s.n_masters >= 2)
                   kernels::read_two(col + q,
@@ -294,7 +332,6 @@ namespace wearlink::fe
       std::array<std::vector<unsigned int>, 3>                          row; ///< per face node m: its row, per position
       std::array<std::vector<double>, 3>                                vx, vy; ///< per face node m: v (see the class)
       std::vector<Segment>                                              segments;
-      std::vector<double>                                               field_x, field_y;
       std::vector<int>                                                  slot;
       std::vector<unsigned int>                                         owner; ///< the position of each slot
       Workspace                                                        &work;
@@ -480,8 +517,7 @@ namespace wearlink::fe
         gaps_valid    = std::min(gaps_valid, c);
         if (c == order.size())
           return ok;
-        for (const auto p : order)
-          A.ensure(p);
+        A.ensure(order);
         const auto entry = [&](const unsigned int r, const unsigned int s) {
           return A.column(order[s])[order[r]];
         };
