@@ -715,10 +715,13 @@ namespace wearlink::fe
           return out;
         }
       factor.backward(x);
-      // Back to the order of `active`.
-      out.lambda.resize(k);
+      // Back to the order of `active` (through the window: x by position first).
+      std::vector<double> by_position(kin.g0.size());
       for (unsigned int r = 0; r < k; ++r)
-        out.lambda[std::lower_bound(active.begin(), active.end(), order[r]) - active.begin()] = x[r];
+        by_position[order[r]] = x[r];
+      out.lambda.resize(k);
+      for (unsigned int s = 0; s < k; ++s)
+        out.lambda[s] = by_position[active[s]];
       return out;
     }
 
