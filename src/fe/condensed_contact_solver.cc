@@ -1123,6 +1123,7 @@ namespace wearlink::fe
     , primal_dual_limit(primal_dual_limit)
     , clearance(mean_clearance(problem))
     , pin_radius(smallest_pin_radius(problem))
+    , spacing(candidate_spacing(problem))
     , workspace(std::make_unique<Workspace>())
   {
   }
@@ -1202,13 +1203,55 @@ namespace wearlink::fe
   }
 
 
-  // Pairings: the window kinematics at a pose, its compliance and factor; within one,
-  // linearizations that refresh the gaps (refresh_gaps()) until the pin's translation of
-  // the last one is small (relinearization_done()). A pin that slides by more than a
-  // quarter of the candidate spacing since the pairing (a light load on a worn, inclined
-  // bore: 70 µm measured) is paired anew at its new pose, warm-started from the active
-  // candidates; a window too narrow for the solution's deformation is widened and the
-  // pairing solved again.
+  // The linearizations of one pairing: each refreshes the gaps about the translated pin
+  // (refresh_gaps(), the pairing kept) until the translation of the last one is small
+  // (relinearization_done()). First the window is checked (so that the path is the
+  // reference solver's, which sees every candidate): too narrow, @p widen receives the
+  // threshold it needs; then the linearization and the pairing: a pin that slid by
+  // more than pairing_outdated() ends the pairing. U_pair: the translation since it.
+  CondensedContactSolver::PairingEnd
+  CondensedContactSolver::linearize(const PinPose      &paired,
+                                    const double        threshold,
+                                    const bool          force_control,
+                                    const Tensor<1, 2> &load,
+                                    ContactKinematics  &kin,
+                                    WindowCompliance   &A,
+                                    ActiveFactor       &factor,
+                                    WindowState        &st,
+                                    Tensor<1, 2>       &U_pair,
+                                    unsigned int       &updates,
+                                    double             &widen,
+                                    bool               &monotone_used)
+  {
+    PinPose moved = paired;
+    for (;;)
+      {
+        solve_linearized(kin, A, factor, force_control, load, false, st, monotone_used);
+        U_pair += st.U;
+        const double needed = U_pair.norm() + 0.25 * largest_opening(kin, st) + kin.tolerance;
+        if (needed > threshold && threshold < 4 * paired.bore->max_radius())
+          {
+            widen = 2 * needed;
+            return PairingEnd::narrow;
+          }
+        if (!force_control || relinearization_done(st.U, pin_radius) || ++updates >= max_relinearizations)
+          return PairingEnd::accepted;
+        if (pairing_outdated(U_pair, spacing))
+          return PairingEnd::slid;
+        moved.eccentricity = paired.eccentricity + U_pair;
+        refresh_gaps(problem, moved, kin);
+        factor.gaps_changed();
+      }
+  }
+
+
+  // Pairings: the window kinematics at a pose, its compliance and factor, and its
+  // linearizations (linearize()). A pin that slides by more than a quarter of the
+  // candidate spacing since the pairing (a light load on a worn, inclined bore: 70 µm
+  // measured) is paired anew at its new pose, warm-started from the active candidates;
+  // a window too narrow for the solution's deformation is widened and the pairing
+  // solved again. The accepted linearization of a single-precision factor is taken to
+  // double precision (solve_exactly()).
   ContactSolution
   CondensedContactSolver::solve(const PinPose      &pose,
                                 const bool          force_control,
@@ -1216,9 +1259,7 @@ namespace wearlink::fe
                                 const double        closure_estimate,
                                 ContactKinematics  &kin)
   {
-    const unsigned int        m       = problem.pin_nodes.size();
-    const double              spacing = candidate_spacing(problem);
-    double                    T       = 0.5 * std::max(closure_estimate, 0.0);
+    double                    T = 0.5 * std::max(closure_estimate, 0.0);
     std::vector<unsigned int> warm;
     ContactSolution           sol;
     PinPose                   paired  = pose;
@@ -1231,47 +1272,27 @@ namespace wearlink::fe
         WindowState      st;
         st.lambda.assign(kin.g0.size(), 0.0);
         st.active = starting_set(kin, clearance, warm, force_control, load);
-        ActiveFactor       factor(A, kin, m, *workspace, st.active.size() >= single_precision_from);
-        Tensor<1, 2>       U_pair; // since `paired`
-        PinPose            moved = paired;
-        bool               slid = false, narrow = false;
+        ActiveFactor factor(A, kin, problem.pin_nodes.size(), *workspace, st.active.size() >= single_precision_from);
+        Tensor<1, 2> U_pair;                         // since `paired`
         const unsigned int updates_before = updates; // a widened window solves this pairing again
-        for (;;)
-          {
-            solve_linearized(kin, A, factor, force_control, load, false, st, sol.monotone);
-            U_pair += st.U;
-            // First the window (so that the path is the reference solver's, which sees
-            // every candidate), then the linearization and the pairing.
-            const double needed = U_pair.norm() + 0.25 * largest_opening(kin, st) + kin.tolerance;
-            if ((narrow = needed > threshold && threshold < 4 * pose.bore->max_radius()))
-              {
-                T = 2 * needed;
-                break;
-              }
-            if (!force_control || relinearization_done(st.U, pin_radius) || ++updates >= max_relinearizations)
-              break;
-            if ((slid = pairing_outdated(U_pair, spacing)))
-              break;
-            moved.eccentricity = paired.eccentricity + U_pair;
-            refresh_gaps(problem, moved, kin);
-            factor.gaps_changed();
-          }
+        const auto         end =
+          linearize(paired, threshold, force_control, load, kin, A, factor, st, U_pair, updates, T, sol.monotone);
         sol.iterations += st.iterations;
         warm.clear();
         for (const auto p : st.active)
           warm.push_back(kin.candidates[p]);
-        if (narrow)
+        if (end == PairingEnd::narrow)
           {
             updates = updates_before;
             continue;
           }
-        if (slid)
+        if (end == PairingEnd::slid)
           {
             paired.eccentricity += U_pair;
             T = 0.5 * std::max(closure_estimate, 0.0);
             continue;
           }
-        if (factor.single_precision()) // the accepted linearization to double precision
+        if (factor.single_precision())
           {
             const unsigned int before = st.iterations;
             U_pair -= st.U;
