@@ -355,43 +355,19 @@ namespace wearlink::fe
 
       /**
        * Rows c … k − 1 of the factor of the k × k matrix whose entry (r, s), r ≥ s, is
-       * @p entry(r, s): L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ). False if the matrix
-       * is not positive definite (in this precision).
+       * @p entry(r, s): L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ). A whole factor of
+       * many rows (c = 0) is built as two such steps, so that the second one's panel
+       * solve and update can run as two tasks each (refactor_rows()). False if the
+       * matrix is not positive definite (in this precision).
        */
       template <typename Entry>
       bool
       refactor_from(const unsigned int c, const unsigned int k, const Entry &entry)
       {
-        const blas_int t = k - c, ldb = ld;
-        blas_int       info = 0;
-        if (t == 0)
-          return true;
-        // A21ᵀ (c × t), then L21ᵀ = L11⁻¹ A21ᵀ.
-        if (c > 0)
-          {
-            std::vector<Number> X(static_cast<std::size_t>(c) * t);
-            for (unsigned int s = 0; s < c; ++s)
-              for (blas_int j = 0; j < t; ++j)
-                X[s + static_cast<std::size_t>(j) * c] = entry(c + j, s);
-            const blas_int cc = c;
-            trtrs("L", "N", "N", &cc, &t, L, &ldb, X.data(), &cc, &info);
-            if (info != 0)
-              return false;
-            for (blas_int j = 0; j < t; ++j)
-              for (unsigned int s = 0; s < c; ++s)
-                at(c + j, s) = X[s + static_cast<std::size_t>(j) * c];
-          }
-        for (blas_int j = 0; j < t; ++j)
-          for (blas_int i = j; i < t; ++i)
-            at(c + i, c + j) = entry(c + i, c + j);
-        if (c > 0)
-          {
-            const blas_int cc        = c;
-            const Number   minus_one = -1, one = 1;
-            syrk("L", "N", &t, &cc, &minus_one, &at(c, 0), &ldb, &one, &at(c, c), &ldb);
-          }
-        potrf("L", &t, &at(c, c), &ldb, &info);
-        return info == 0;
+        constexpr unsigned int split_from = 256; // rows; below it one step does all
+        if (c == 0 && k >= split_from)
+          return refactor_rows(0, k / 2, entry) && refactor_rows(k / 2, k, entry);
+        return refactor_rows(c, k, entry);
       }
 
       /** Rows valid … k − 1 of v := L⁻¹ v (k entries), the rows before valid being done. */
@@ -426,6 +402,101 @@ namespace wearlink::fe
       {
         return L[r + static_cast<std::size_t>(s) * ld];
       }
+
+      /** Rows c … k − 1 (see refactor_from()): panel, trailing block, update, its factor. */
+      template <typename Entry>
+      bool
+      refactor_rows(const unsigned int c, const unsigned int k, const Entry &entry)
+      {
+        const blas_int t = k - c, ldb = ld;
+        blas_int       info = 0;
+        if (t == 0)
+          return true;
+        if (c > 0 && !solve_panel(c, k, entry))
+          return false;
+        for (blas_int j = 0; j < t; ++j)
+          for (blas_int i = j; i < t; ++i)
+            at(c + i, c + j) = entry(c + i, c + j);
+        if (c > 0)
+          update_trailing(c, k);
+        potrf("L", &t, &at(c, c), &ldb, &info);
+        return info == 0;
+      }
+
+      /**
+       * L21 = A21 L11⁻ᵀ for rows c … k − 1, as L11⁻¹ A21ᵀ (LAPACK trtrs on a transposed
+       * copy); in two tasks of half the rows each when the panel is large.
+       */
+      template <typename Entry>
+      bool
+      solve_panel(const unsigned int c, const unsigned int k, const Entry &entry)
+      {
+        const unsigned int t     = k - c;
+        const unsigned int parts = t * c >= parallel_from ? 2 : 1;
+        bool               ok[2] = {true, true};
+        const auto         part  = [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int n = begin; n < end; ++n)
+            {
+              const unsigned int  j0 = c + n * t / parts, j1 = c + (n + 1) * t / parts;
+              const blas_int      cc = c, nj = j1 - j0, ldb = ld;
+              blas_int            info = 0;
+              std::vector<Number> X(static_cast<std::size_t>(c) * nj);
+              for (unsigned int s = 0; s < c; ++s)
+                for (unsigned int j = j0; j < j1; ++j)
+                  X[s + static_cast<std::size_t>(j - j0) * c] = entry(j, s);
+              trtrs("L", "N", "N", &cc, &nj, L, &ldb, X.data(), &cc, &info);
+              ok[n] = info == 0;
+              for (unsigned int j = j0; j < j1; ++j)
+                for (unsigned int s = 0; s < c; ++s)
+                  at(j, s) = X[s + static_cast<std::size_t>(j - j0) * c];
+            }
+        };
+        parallel::apply_to_subranges(0u, parts, part, 1);
+        return ok[0] && ok[1];
+      }
+
+      /**
+       * A22 −= L21 L21ᵀ (lower triangle) for rows c … k − 1: when large, as two tasks of
+       * equal work, the first m = t/√2 rows (syrk) and the others (gemm, syrk).
+       */
+      void
+      update_trailing(const unsigned int c, const unsigned int k)
+      {
+        const blas_int     t = k - c, cc = c, ldb = ld;
+        const Number       minus_one = -1, one = 1;
+        const bool         two  = static_cast<unsigned int>(t) * c >= parallel_from;
+        const unsigned int m    = two ? static_cast<unsigned int>(t / std::sqrt(2.0)) : t;
+        const auto         part = [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int n = begin; n < end; ++n)
+            if (n == 0)
+              {
+                const blas_int mm = m;
+                syrk("L", "N", &mm, &cc, &minus_one, &at(c, 0), &ldb, &one, &at(c, c), &ldb);
+              }
+            else
+              {
+                const blas_int rest = t - m, mm = m;
+                gemm("N",
+                     "T",
+                     &rest,
+                     &mm,
+                     &cc,
+                     &minus_one,
+                     &at(c + m, 0),
+                     &ldb,
+                     &at(c, 0),
+                     &ldb,
+                     &one,
+                     &at(c + m, c),
+                     &ldb);
+                syrk("L", "N", &rest, &cc, &minus_one, &at(c + m, 0), &ldb, &one, &at(c + m, c + m), &ldb);
+              }
+        };
+        parallel::apply_to_subranges(0u, two ? 2u : 1u, part, 1);
+      }
+
+      /** Panels of at least this many entries (rows × columns) are split into two tasks. */
+      static constexpr unsigned int parallel_from = 128 * 128;
 
       const unsigned int ld;
       Number            *L = nullptr;
