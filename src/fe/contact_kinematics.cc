@@ -72,9 +72,15 @@ namespace wearlink::fe
     void
     locate_on_bore(const std::vector<SurfaceFace> &faces, const double alpha, Ray &ray)
     {
-      auto it =
-        std::upper_bound(faces.begin(), faces.end(), alpha, [](double a, const SurfaceFace &f) { return a < f.begin; });
-      unsigned int f = it == faces.begin() ? faces.size() - 1 : (it - faces.begin()) - 1;
+      // The last face that begins at or before alpha (the last one if none does): from
+      // a guess by the mean face span, a walk (the faces are nearly uniform).
+      const long n = faces.size();
+      long       g = std::clamp(static_cast<long>((alpha - faces.front().begin) / two_pi * n), 0L, n - 1);
+      while (g > 0 && faces[g].begin > alpha)
+        --g;
+      while (g + 1 < n && faces[g + 1].begin <= alpha)
+        ++g;
+      unsigned int f = faces.front().begin > alpha ? n - 1 : g;
       double       d = alpha - faces[f].begin;
       d -= two_pi * std::floor(d / two_pi);
       if (d > faces[f].span)
@@ -219,8 +225,10 @@ namespace wearlink::fe
     {
       const auto        &nodes = problem.pin_nodes;
       const unsigned int m     = nodes.size();
-      auto               r     = [&](unsigned int i) {
-        return nodes[i].point.norm() + (pose.pin_offsets != nullptr ? (*pose.pin_offsets)[i] : 0.0);
+      if (pose.pin_offsets == nullptr)
+        return problem.pin_surface_slope;
+      auto r = [&](unsigned int i) {
+        return nodes[i].point.norm() + (*pose.pin_offsets)[i];
       };
       double s = 0;
       for (unsigned int i = 0; i < m; ++i)
