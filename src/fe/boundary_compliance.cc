@@ -114,8 +114,11 @@ namespace wearlink::fe
     , bore_columns(problem.bore_nodes.size())
     , pin_sector_size(sector_size(problem.pin_nodes, pin_sectors))
     , bore_sector_size(sector_size(problem.bore_nodes, bore_sectors))
-    , bore_sector_angle(bore_sector_size > 0 ? numbers::two_pi / bore_sectors : 0.0)
   {
+    if (bore_sector_size > 0)
+      for (unsigned int k = 0; k < bore_sectors; ++k)
+        sector_rotations.push_back(
+          {{std::cos(numbers::two_pi * k / bore_sectors), std::sin(numbers::two_pi * k / bore_sectors)}});
     const auto        n      = problem.dof_handler.n_dofs();
     const auto        is_pin = pin_dofs(problem);
     std::vector<char> clamped(n, 0);
@@ -197,6 +200,8 @@ namespace wearlink::fe
         rhs(reduced_index[nodes[chosen[s]].dofs[d]], 2 * s + d) = 1;
     const Eigen::MatrixXd u = ring_factor->llt.solve(rhs);
     n_solves += 2 * b;
+    // The base columns lie in the first sector, whose frame is the x–y frame: only the
+    // displacements are turned into the frames of their nodes' sectors.
     for (unsigned int s = 0; s < b; ++s)
       {
         auto &column = bore_columns[chosen[s]];
@@ -204,8 +209,11 @@ namespace wearlink::fe
         for (unsigned int d = 0; d < 2; ++d)
           for (unsigned int a = 0; a < q; ++a)
             {
-              column[2 * q * d + 2 * a]     = u(reduced_index[nodes[a].dofs[0]], 2 * s + d);
-              column[2 * q * d + 2 * a + 1] = u(reduced_index[nodes[a].dofs[1]], 2 * s + d);
+              const auto   r            = sector_rotation(a);
+              const double ux           = u(reduced_index[nodes[a].dofs[0]], 2 * s + d);
+              const double uy           = u(reduced_index[nodes[a].dofs[1]], 2 * s + d);
+              column[2 * q * d + a]     = r[0] * ux + r[1] * uy;
+              column[2 * q * d + q + a] = r[0] * uy - r[1] * ux;
             }
       }
     seconds_in_columns += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -228,14 +236,7 @@ namespace wearlink::fe
     const unsigned int base = bore_sector_size > 0 ? c % bore_sector_size : c;
     if (bore_columns[base].empty())
       compute_bore_block(base);
-    BoreColumn column{bore_columns[base].data(), c - base};
-    if (column.shift > 0)
-      {
-        const double angle = bore_sector_angle * (column.shift / bore_sector_size);
-        column.cos         = std::cos(angle);
-        column.sin         = std::sin(angle);
-      }
-    return column;
+    return {bore_columns[base].data(), c - base};
   }
 
 

@@ -24,7 +24,9 @@
 // candidates per sector, in the angle-sorted order) and the body onto itself, so
 // C(i + kS, j + kS) = R_k C(i, j) R_kᵀ (R_k the rotation by k sectors; the identity for
 // the pin's normal-to-normal entries). Only the S columns of the first sector are
-// computed; a column is handed out as a view of one of them, shifted and rotated. The
+// computed; a column is handed out as a shifted view of one of them. The bore's 2 × 2
+// blocks are stored in the frames of the nodes' sectors (BoreColumn), where
+// C'(i + kS, j + kS) = C'(i, j) holds without a rotation. The
 // constructor checks the node positions and normals for the rotation symmetry (to 1e-9
 // of the radius) and computes every column otherwise.
 //
@@ -40,6 +42,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -72,20 +75,29 @@ namespace wearlink::fe
     pin_column(unsigned int j);
 
     /**
-     * One column of the bore compliance: the displacement at bore candidate a for a unit
-     * force f (bushing frame) at the column's candidate c is R u', u' = f'x X(a') + f'y
-     * Y(a'), f' = Rᵀ f, a' = (a + q − shift) mod q, with X(a') = (base[2a'], base[2a'+1])
-     * and Y(a') = (base[2q + 2a'], base[2q + 2a' + 1]), R the rotation by (cos, sin)
-     * [m per N/m].
+     * One column of the bore compliance, in sector frames: the frame of a bore candidate
+     * is the x–y frame rotated by its sector's angle (sector_rotation(); the x–y frame
+     * itself on a mesh that is not periodic). For a unit force along the x (y) axis of
+     * candidate c's frame, the displacement of candidate a in a's frame is
+     * (xx, yx) ((xy, yy)) at index a' = (a + q − shift) mod q of the four planar arrays
+     * xx = base, yx = base + q, xy = base + 2q, yy = base + 3q [m per N/m]. In these
+     * frames the columns of a periodic body are shifted copies of one sector's, with no
+     * rotation left to apply per entry.
      */
     struct BoreColumn
     {
       const double *base  = nullptr;
       unsigned int  shift = 0;
-      double        cos = 1, sin = 0;
     };
     BoreColumn
     bore_column(unsigned int c);
+
+    /** (cos, sin) of the rotation of bore candidate @p a's frame (see BoreColumn). */
+    std::array<double, 2>
+    sector_rotation(const unsigned int a) const
+    {
+      return bore_sector_size > 0 ? sector_rotations[a / bore_sector_size] : std::array<double, 2>{{1.0, 0.0}};
+    }
 
     /** True when the pin's (the bore's) columns are rotations of one sector's. */
     bool
@@ -133,12 +145,12 @@ namespace wearlink::fe
     const ElasticityProblem       &problem;
     std::unique_ptr<Factorization> pin_factor, ring_factor;
     /** Per DoF: its row in its body's reduced (unclamped) system, −1 for clamped DoFs. */
-    std::vector<long>                reduced_index;
-    std::vector<std::vector<double>> pin_columns;
-    std::vector<std::vector<double>> bore_columns;
-    unsigned int                     pin_sector_size = 0, bore_sector_size = 0; ///< S per body, 0: not periodic
-    double                           bore_sector_angle  = 0;
-    unsigned long                    n_solves           = 0;
-    double                           seconds_in_columns = 0;
+    std::vector<long>                  reduced_index;
+    std::vector<std::vector<double>>   pin_columns;
+    std::vector<std::vector<double>>   bore_columns;
+    unsigned int                       pin_sector_size = 0, bore_sector_size = 0; ///< S per body, 0: not periodic
+    std::vector<std::array<double, 2>> sector_rotations;                          ///< (cos, sin) per bore sector
+    unsigned long                      n_solves           = 0;
+    double                             seconds_in_columns = 0;
   };
 } // namespace wearlink::fe

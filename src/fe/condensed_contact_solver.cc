@@ -7,13 +7,17 @@
 #include "fe/active_set_rules.h"
 #include "fe/boundary_ids.h"
 #include "fe/contact_solver.h"
+#include "fe/window_kernels.h"
 
+#include <deal.II/base/parallel.h>
 #include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <set>
 #include <tuple>
 
@@ -27,190 +31,633 @@ namespace wearlink::fe
 
 
     /**
+     * Active sets from this size on start with a single-precision factor (ActiveFactor,
+     * refine()): below it the factorization is cheap and the refinement would cost
+     * more than the float factor saves.
+     */
+    constexpr unsigned int single_precision_from = 160;
+
+    /** Memory that the window solves keep from one load state to the next. */
+    struct Workspace
+    {
+      std::vector<double> columns;       ///< the gathered columns of A, w entries each
+      std::vector<double> factor;        ///< the Cholesky factor of the active block
+      std::vector<float>  factor_single; ///< the same in single precision
+    };
+
+    /**
      * The compliance between the positions of one window, A(q, p) = ∂g_q/∂λ_p: the pin
      * part read from the pin columns, the bore part from the bore columns of the bore
      * nodes that the window's rays meet (the force +n_p interpolated onto the nodes of
      * the face p meets, its displacement read at the face q meets). A column is gathered
-     * on its first use and kept for the state.
+     * on its first use into the next slot of a column-major w × slots matrix and kept
+     * for the state. Columns are independent: the many that a new factor needs at once
+     * are gathered on the threads deal.II's MultithreadInfo allows (TBB), each column
+     * by one thread, so the result does not depend on their number.
+     *
+     * The bore part in the sector frames of BoundaryCompliance::BoreColumn: with
+     * v_pa = w_pa R_aᵀ n_p (weight of bore node a in p's face, R_a the rotation of a's
+     * frame), A_bore(q, p) = Σ_b Σ_a v_qbᵀ K(b, a) v_pa. Column p is two passes over
+     * contiguous arrays: the field f(b) = Σ_a K(b, a) v_pa over the window's bore nodes,
+     * then A(q, p) = pin(q, p) + Σ_b v_qb · f(b) over segments of positions whose face
+     * nodes advance with them (one array offset per face node), so that both passes are
+     * vector loops (window_kernels.h).
      */
     class WindowCompliance
     {
     public:
-      WindowCompliance(const ElasticityProblem &problem, BoundaryCompliance &compliance, const ContactKinematics &kin)
+      WindowCompliance(const ElasticityProblem &problem,
+                       BoundaryCompliance      &compliance,
+                       const ContactKinematics &kin,
+                       Workspace               &work)
         : kin(kin)
         , compliance(compliance)
+        , w(kin.candidates.size())
         , n_pin(problem.pin_nodes.size())
         , n_bore(problem.bore_nodes.size())
-        , local(problem.bore_nodes.size(), -1)
-        , columns(kin.candidates.size())
+        , slot(w, -1)
+        , work(work)
       {
-        for (unsigned int p = 0; p < kin.candidates.size(); ++p)
-          for (unsigned int a = 0; a < kin.n_masters[p]; ++a)
-            if (local[kin.masters[p][a]] < 0)
-              {
-                local[kin.masters[p][a]] = 0;
-                rows.push_back(kin.masters[p][a]);
-              }
-        std::sort(rows.begin(), rows.end());
-        for (unsigned int r = 0; r < rows.size(); ++r)
-          {
-            local[rows[r]] = static_cast<int>(r);
-            if (runs.empty() || rows[r] != std::get<1>(runs.back()) + std::get<2>(runs.back()))
-              runs.emplace_back(r, rows[r], 0);
-            ++std::get<2>(runs.back());
-          }
-        field.resize(2 * rows.size());
-        // How each position reads the field: its faces' rows with weight × normal.
-        readers.resize(kin.candidates.size());
-        for (unsigned int q = 0; q < kin.candidates.size(); ++q)
-          for (unsigned int a = 0; a < kin.n_masters[q]; ++a)
-            readers[q].push_back({2 * static_cast<unsigned int>(local[kin.masters[q][a]]),
-                                  kin.weights[q][a] * kin.normal[q][0],
-                                  kin.weights[q][a] * kin.normal[q][1]});
+        find_rows();
+        find_readers();
+        find_segments();
       }
 
       unsigned int
       size() const
       {
-        return columns.size();
+        return w;
       }
 
-      /** A(·, p) over the window. */
-      const std::vector<double> &
-      column(const unsigned int p)
+      /** Gather A(·, p) unless it is gathered (this may move every column in memory). */
+      void
+      ensure(const unsigned int p)
       {
-        if (columns[p].empty())
-          gather(p);
-        return columns[p];
+        if (slot[p] < 0)
+          gather({p});
       }
 
-      /** ½ (A(q, p) + A(p, q)): the symmetric part (A is symmetric up to round-off). */
-      double
-      entry(const unsigned int q, const unsigned int p)
+      /** Gather the columns of @p positions that are not gathered yet (this may move every column). */
+      void
+      ensure(const std::vector<unsigned int> &positions)
       {
-        return 0.5 * (column(p)[q] + column(q)[p]);
+        std::vector<unsigned int> missing;
+        for (const auto p : positions)
+          if (slot[p] < 0)
+            missing.push_back(p);
+        if (!missing.empty())
+          gather(missing);
+      }
+
+      /** A(·, p) over the window; ensure(p) first. */
+      const double *
+      column(const unsigned int p) const
+      {
+        return work.columns.data() + static_cast<std::size_t>(slot[p]) * w;
+      }
+
+      /** The gathered columns: a w × n_slots() column-major matrix. */
+      const double *
+      data() const
+      {
+        return work.columns.data();
+      }
+      unsigned int
+      n_slots() const
+      {
+        return owner.size();
+      }
+      /** The slot of position p's column, −1 if it is not gathered. */
+      int
+      slot_of(const unsigned int p) const
+      {
+        return slot[p];
       }
 
     private:
-      /**
-       * field += the displacement of the window's bore nodes for the force (fx, fy) at
-       * @p column's node (rotated into the column's sector and back; contiguous runs,
-       * so that the loops vectorize).
-       */
-      void
-      add_bore_response(const BoundaryCompliance::BoreColumn &column, const double fx, const double fy)
+      /** One segment of positions q0 … q0 + length − 1 (see the class). */
+      struct Segment
       {
-        const double  c = column.cos, s = column.sin;
-        const double  gx = c * fx + s * fy, gy = c * fy - s * fx; // Rᵀ f
-        const double *X = column.base, *Y = column.base + 2 * n_bore;
-        for (const auto &[r0, b0, n] : runs)
+        unsigned int       q0 = 0, length = 0, n_masters = 0;
+        std::array<int, 3> offset{}; ///< row of face node m − position, per m
+      };
+
+      /** The window's bore nodes (increasing) in runs of consecutive nodes. */
+      void
+      find_rows()
+      {
+        std::vector<int> local(n_bore, -1);
+        for (unsigned int p = 0; p < w; ++p)
+          for (unsigned int a = 0; a < kin.n_masters[p]; ++a)
+            local[kin.masters[p][a]] = 0;
+        n_rows = 0;
+        for (unsigned int b = 0; b < n_bore; ++b)
+          if (local[b] == 0)
+            {
+              local[b] = static_cast<int>(n_rows);
+              if (runs.empty() || b != std::get<1>(runs.back()) + std::get<2>(runs.back()))
+                runs.emplace_back(n_rows, b, 0);
+              ++std::get<2>(runs.back());
+              ++n_rows;
+            }
+        row_of = std::move(local);
+      }
+
+      /** Per position and face node m: its row and v = weight × R_bᵀ n (see the class). */
+      void
+      find_readers()
+      {
+        for (unsigned int m = 0; m < 3; ++m)
           {
-            unsigned int r = r0, left = n;
-            unsigned int b = (b0 + n_bore - column.shift) % n_bore;
-            while (left > 0)
+            row[m].assign(w, 0);
+            vx[m].assign(w, 0.0);
+            vy[m].assign(w, 0.0);
+          }
+        for (unsigned int q = 0; q < w; ++q)
+          for (unsigned int m = 0; m < kin.n_masters[q]; ++m)
+            {
+              const unsigned int b = kin.masters[q][m];
+              const auto         r = compliance.sector_rotation(b);
+              const double       c = kin.weights[q][m];
+              row[m][q]            = row_of[b];
+              vx[m][q]             = c * (r[0] * kin.normal[q][0] + r[1] * kin.normal[q][1]);
+              vy[m][q]             = c * (r[0] * kin.normal[q][1] - r[1] * kin.normal[q][0]);
+            }
+      }
+
+      /** Segments: consecutive candidates with the same face-node count, each face node's row one further. */
+      void
+      find_segments()
+      {
+        for (unsigned int q = 0; q < w; ++q)
+          {
+            bool extends = !segments.empty() && q > 0 && kin.candidates[q] == kin.candidates[q - 1] + 1 &&
+                           kin.n_masters[q] == kin.n_masters[q - 1];
+            for (unsigned int m = 0; extends && m < kin.n_masters[q]; ++m)
+              extends = row[m][q] == row[m][q - 1] + 1;
+            if (extends)
               {
-                const unsigned int len = std::min(left, n_bore - b);
-                double            *f   = field.data() + 2 * r;
-                const double      *x = X + 2 * b, *y = Y + 2 * b;
-                for (unsigned int t = 0; t < len; ++t)
+                ++segments.back().length;
+                continue;
+              }
+            Segment s;
+            s.q0        = q;
+            s.length    = 1;
+            s.n_masters = kin.n_masters[q];
+            for (unsigned int m = 0; m < s.n_masters; ++m)
+              s.offset[m] = static_cast<int>(row[m][q]) - static_cast<int>(q);
+            segments.push_back(s);
+          }
+      }
+
+      /** The bore field f over the window's rows for the force n_p at p's face (see the class). */
+      void
+      bore_field(const unsigned int p, double *field_x, double *field_y) const
+      {
+        if (kin.n_masters[p] == 0)
+          {
+            std::fill(field_x, field_x + n_rows, 0.0);
+            std::fill(field_y, field_y + n_rows, 0.0);
+          }
+        for (unsigned int m = 0; m < kin.n_masters[p]; ++m)
+          {
+            const auto    column = compliance.bore_column(kin.masters[p][m]);
+            const double  gx = vx[m][p], gy = vy[m][p];
+            const double *xx = column.base, *yx = xx + n_bore, *xy = yx + n_bore, *yy = xy + n_bore;
+            for (const auto &[r0, b0, n] : runs)
+              {
+                unsigned int r = r0, left = n;
+                unsigned int b = (b0 + n_bore - column.shift) % n_bore;
+                while (left > 0)
                   {
-                    const double ux = gx * x[2 * t] + gy * y[2 * t];
-                    const double uy = gx * x[2 * t + 1] + gy * y[2 * t + 1];
-                    f[2 * t] += c * ux - s * uy;
-                    f[2 * t + 1] += s * ux + c * uy;
+                    const unsigned int len = std::min(left, n_bore - b);
+                    kernels::field(field_x + r, field_y + r, xx + b, yx + b, xy + b, yy + b, gx, gy, len, m > 0);
+                    r += len;
+                    left -= len;
+                    b = 0;
                   }
-                r += len;
-                left -= len;
-                b = 0;
               }
           }
       }
 
+      /**
+       * Reserve the next slots for @p positions and compute the bore and pin columns
+       * they use (BoundaryCompliance computes missing ones on first use, which only one
+       * thread may do).
+       */
       void
-      gather(const unsigned int p)
+      reserve(const std::vector<unsigned int> &positions)
       {
-        const unsigned int w   = kin.candidates.size();
-        auto              &col = columns[p];
-        col.resize(w);
-        const auto pin = compliance.pin_column(kin.candidates[p]);
-        for (unsigned int q = 0; q < w;) // runs of consecutive candidates: contiguous copies
+        const std::size_t needed = static_cast<std::size_t>(owner.size() + positions.size()) * w;
+        if (work.columns.size() < needed)
+          work.columns.resize(std::max(needed, 2 * work.columns.size()));
+        for (const auto p : positions)
           {
-            unsigned int i   = kin.candidates[q] + n_pin - pin.shift;
-            i                = i >= n_pin ? i - n_pin : i;
-            unsigned int len = 1;
-            while (q + len < w && kin.candidates[q + len] == kin.candidates[q] + len && i + len < n_pin)
-              ++len;
-            std::copy(pin.base + i, pin.base + i + len, col.begin() + q);
-            q += len;
+            slot[p] = static_cast<int>(owner.size());
+            owner.push_back(p);
+            compliance.pin_column(kin.candidates[p]);
+            for (unsigned int m = 0; m < kin.n_masters[p]; ++m)
+              compliance.bore_column(kin.masters[p][m]);
           }
-        // The bore displacement of a unit λ_p at the window's bore nodes.
-        std::fill(field.begin(), field.end(), 0.0);
-        for (unsigned int a = 0; a < kin.n_masters[p]; ++a)
-          add_bore_response(compliance.bore_column(kin.masters[p][a]),
-                            kin.weights[p][a] * kin.normal[p][0],
-                            kin.weights[p][a] * kin.normal[p][1]);
-        for (unsigned int q = 0; q < w; ++q)
-          for (const auto &[r, cx, cy] : readers[q])
-            col[q] += cx * field[r] + cy * field[r + 1];
       }
 
-      const ContactKinematics  &kin;
-      BoundaryCompliance       &compliance;
-      const unsigned int        n_pin, n_bore;
-      std::vector<int>          local; ///< row of each bore node in the window's field, −1 outside
-      std::vector<unsigned int> rows;  ///< the window's bore nodes, increasing
-      /** Per position: its face's rows (2 × row index into the field) with weight × normal (x, y). */
-      std::vector<std::vector<std::tuple<unsigned int, double, double>>> readers;
+      /** Gather the columns of @p positions (in parallel when there are many). */
+      void
+      gather(const std::vector<unsigned int> &positions)
+      {
+        reserve(positions);
+        const auto fill_range = [&](const unsigned int begin, const unsigned int end) {
+          std::vector<double> fx(n_rows), fy(n_rows);
+          for (unsigned int i = begin; i < end; ++i)
+            fill(positions[i], fx.data(), fy.data());
+        };
+        constexpr unsigned int serial_below = 64;
+        if (positions.size() < serial_below)
+          fill_range(0, positions.size());
+        else
+          parallel::apply_to_subranges(0u, static_cast<unsigned int>(positions.size()), fill_range, serial_below / 2);
+      }
+
+      /** Column p into its slot, with the field buffers fx, fy (n_rows each). */
+      void
+      fill(const unsigned int p, double *field_x, double *field_y) const
+      {
+        bore_field(p, field_x, field_y);
+        double    *col = work.columns.data() + static_cast<std::size_t>(slot[p]) * w;
+        const auto pin = compliance.pin_column(kin.candidates[p]);
+        for (const auto &s : segments)
+          {
+            unsigned int q = s.q0, left = s.length;
+            unsigned int i = kin.candidates[q] + n_pin - pin.shift;
+            i              = i >= n_pin ? i - n_pin : i;
+            while (left > 0) // the pin column wraps at most once
+              {
+                const unsigned int len = std::min(left, n_pin - i);
+                const auto         fx  = [&](unsigned int m) {
+                  return field_x + q + s.offset[m];
+                };
+                const auto fy = [&](unsigned int m) {
+                  return field_y + q + s.offset[m];
+                };
+                if (s.n_masters >= 2)
+                  kernels::read_two(col + q,
+                                    pin.base + i,
+                                    vx[0].data() + q,
+                                    vy[0].data() + q,
+                                    fx(0),
+                                    fy(0),
+                                    vx[1].data() + q,
+                                    vy[1].data() + q,
+                                    fx(1),
+                                    fy(1),
+                                    len);
+                else
+                  std::copy(pin.base + i, pin.base + i + len, col + q);
+                for (unsigned int m = s.n_masters >= 2 ? 2 : 0; m < s.n_masters; ++m)
+                  kernels::read_add(col + q, vx[m].data() + q, vy[m].data() + q, fx(m), fy(m), len);
+                q += len;
+                left -= len;
+                i = 0;
+              }
+          }
+      }
+
+      const ContactKinematics &kin;
+      BoundaryCompliance      &compliance;
+      const unsigned int       w, n_pin, n_bore;
+      unsigned int             n_rows = 0;
+      std::vector<int>         row_of; ///< row of each bore node in the field, −1 outside the window
       /** Runs of consecutive bore nodes: (first row, first node, length). */
       std::vector<std::tuple<unsigned int, unsigned int, unsigned int>> runs;
-      std::vector<double>                                               field;
-      std::vector<std::vector<double>>                                  columns;
+      std::array<std::vector<unsigned int>, 3>                          row; ///< per face node m: its row, per position
+      std::array<std::vector<double>, 3>                                vx, vy; ///< per face node m: v (see the class)
+      std::vector<Segment>                                              segments;
+      std::vector<int>                                                  slot;
+      std::vector<unsigned int>                                         owner; ///< the position of each slot
+      Workspace                                                        &work;
     };
 
     /**
-     * The lower Cholesky factor of A on the active positions, kept in the order of
-     * increasing distance of the candidates from the window's first point of contact, so
-     * that the edges of the contact arc, where an active-set iteration changes the set,
-     * come last: a new set re-factors only the rows after the longest common prefix with
-     * the previous order (L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ); LAPACK).
+     * A lower Cholesky factor in the precision Number (leading dimension ld, storage in
+     * the solver's workspace), built and used row block by row block: LAPACK/BLAS.
+     */
+    template <typename Number>
+    class Cholesky
+    {
+    public:
+      Cholesky(std::vector<Number> &storage, const unsigned int ld)
+        : ld(ld)
+      {
+        if (storage.size() < static_cast<std::size_t>(ld) * ld) // only what is written is read
+          storage.resize(static_cast<std::size_t>(ld) * ld);
+        L = storage.data();
+      }
+
+      /**
+       * Rows c … k − 1 of the factor of the k × k matrix whose entry (r, s), r ≥ s, is
+       * @p entry(r, s): L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ). A whole factor of
+       * many rows (c = 0) is built as two such steps, so that the second one's panel
+       * solve and update can run as two tasks each (refactor_rows()). False if the
+       * matrix is not positive definite (in this precision).
+       */
+      template <typename Entry>
+      bool
+      refactor_from(const unsigned int c, const unsigned int k, const Entry &entry)
+      {
+        constexpr unsigned int split_from = 256; // rows; below it one step does all
+        if (c == 0 && k >= split_from)
+          return refactor_rows(0, k / 2, entry) && refactor_rows(k / 2, k, entry);
+        return refactor_rows(c, k, entry);
+      }
+
+      /** Rows valid … k − 1 of v := L⁻¹ v (k entries), the rows before valid being done. */
+      void
+      forward_rows(Number *v, const unsigned int k, const unsigned int valid)
+      {
+        const blas_int t = k - valid, c = valid, ldb = ld, one = 1;
+        blas_int       info = 0;
+        if (t == 0)
+          return;
+        if (c > 0)
+          {
+            const Number minus_one = -1, plus_one = 1;
+            gemv("N", &t, &c, &minus_one, &at(c, 0), &ldb, v, &one, &plus_one, v + c, &one);
+          }
+        trtrs("L", "N", "N", &t, &one, &at(c, c), &ldb, v + c, &t, &info);
+      }
+
+      /** v := L⁻ᵀ v (k entries). */
+      void
+      backward(Number *v, const unsigned int k) const
+      {
+        const blas_int kk = k, ldb = ld, one = 1;
+        blas_int       info = 0;
+        if (k > 0)
+          trtrs("L", "T", "N", &kk, &one, L, &ldb, v, &kk, &info);
+      }
+
+    private:
+      Number &
+      at(const unsigned int r, const unsigned int s)
+      {
+        return L[r + static_cast<std::size_t>(s) * ld];
+      }
+
+      /** Rows c … k − 1 (see refactor_from()): panel, trailing block, update, its factor. */
+      template <typename Entry>
+      bool
+      refactor_rows(const unsigned int c, const unsigned int k, const Entry &entry)
+      {
+        const blas_int t = k - c, ldb = ld;
+        blas_int       info = 0;
+        if (t == 0)
+          return true;
+        if (c > 0 && !solve_panel(c, k, entry))
+          return false;
+        for (blas_int j = 0; j < t; ++j)
+          for (blas_int i = j; i < t; ++i)
+            at(c + i, c + j) = entry(c + i, c + j);
+        if (c > 0)
+          update_trailing(c, k);
+        potrf("L", &t, &at(c, c), &ldb, &info);
+        return info == 0;
+      }
+
+      /**
+       * L21 = A21 L11⁻ᵀ for rows c … k − 1, as L11⁻¹ A21ᵀ (LAPACK trtrs on a transposed
+       * copy); in two tasks of half the rows each when the panel is large.
+       */
+      template <typename Entry>
+      bool
+      solve_panel(const unsigned int c, const unsigned int k, const Entry &entry)
+      {
+        const unsigned int t     = k - c;
+        const unsigned int parts = t * c >= parallel_from ? 2 : 1;
+        bool               ok[2] = {true, true};
+        const auto         part  = [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int n = begin; n < end; ++n)
+            {
+              const unsigned int  j0 = c + n * t / parts, j1 = c + (n + 1) * t / parts;
+              const blas_int      cc = c, nj = j1 - j0, ldb = ld;
+              blas_int            info = 0;
+              std::vector<Number> X(static_cast<std::size_t>(c) * nj);
+              for (unsigned int s = 0; s < c; ++s)
+                for (unsigned int j = j0; j < j1; ++j)
+                  X[s + static_cast<std::size_t>(j - j0) * c] = entry(j, s);
+              trtrs("L", "N", "N", &cc, &nj, L, &ldb, X.data(), &cc, &info);
+              ok[n] = info == 0;
+              for (unsigned int j = j0; j < j1; ++j)
+                for (unsigned int s = 0; s < c; ++s)
+                  at(j, s) = X[s + static_cast<std::size_t>(j - j0) * c];
+            }
+        };
+        parallel::apply_to_subranges(0u, parts, part, 1);
+        return ok[0] && ok[1];
+      }
+
+      /**
+       * A22 −= L21 L21ᵀ (lower triangle) for rows c … k − 1: when large, as two tasks of
+       * equal work, the first m = t/√2 rows (syrk) and the others (gemm, syrk).
+       */
+      void
+      update_trailing(const unsigned int c, const unsigned int k)
+      {
+        const blas_int     t = k - c, cc = c, ldb = ld;
+        const Number       minus_one = -1, one = 1;
+        const bool         two  = static_cast<unsigned int>(t) * c >= parallel_from;
+        const unsigned int m    = two ? static_cast<unsigned int>(t / std::sqrt(2.0)) : t;
+        const auto         part = [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int n = begin; n < end; ++n)
+            if (n == 0)
+              {
+                const blas_int mm = m;
+                syrk("L", "N", &mm, &cc, &minus_one, &at(c, 0), &ldb, &one, &at(c, c), &ldb);
+              }
+            else
+              {
+                const blas_int rest = t - m, mm = m;
+                gemm("N",
+                     "T",
+                     &rest,
+                     &mm,
+                     &cc,
+                     &minus_one,
+                     &at(c + m, 0),
+                     &ldb,
+                     &at(c, 0),
+                     &ldb,
+                     &one,
+                     &at(c + m, c),
+                     &ldb);
+                syrk("L", "N", &rest, &cc, &minus_one, &at(c + m, 0), &ldb, &one, &at(c + m, c + m), &ldb);
+              }
+        };
+        parallel::apply_to_subranges(0u, two ? 2u : 1u, part, 1);
+      }
+
+      /** Panels of at least this many entries (rows × columns) are split into two tasks. */
+      static constexpr unsigned int parallel_from = 128 * 128;
+
+      const unsigned int ld;
+      Number            *L = nullptr;
+    };
+
+    /**
+     * The Cholesky factor of A on the active positions, kept in the order of increasing
+     * distance of the candidates from the window's first point of contact, so that the
+     * edges of the contact arc, where an active-set iteration changes the set, come
+     * last: a new set re-factors only the rows after the longest common prefix with the
+     * previous order. The entries come from the gathered columns, lower triangle only
+     * (A is symmetric to 3e-14 of its largest entry, measured at 100 kN): entry (r, s),
+     * r after s in the factor's order, is A(order[r], order[s]), read from column
+     * order[s].
+     *
+     * Single precision (float) for large active sets: the factorization takes half the
+     * time, and a solution to double precision follows from the float factor by
+     * iterative refinement with the double-precision columns (refine(); A is well
+     * conditioned, cond ≈ 570 at 100 kN, so each step gains ~4 digits). A float factor
+     * that fails (not positive definite in float) is replaced by a double one.
      */
     class ActiveFactor
     {
     public:
-      ActiveFactor(WindowCompliance &A, const ContactKinematics &kin, const unsigned int m)
+      ActiveFactor(WindowCompliance        &A,
+                   const ContactKinematics &kin,
+                   const unsigned int       m,
+                   Workspace               &work,
+                   const bool               single)
         : A(A)
-        , capacity(A.size())
-        , L(new double[static_cast<std::size_t>(capacity) * capacity]) // only what is written is read
-        , key(A.size())
+        , single(single)
+        , factor_single(work.factor_single, A.size())
+        , factor_double(work.factor, A.size())
+        , is_active(A.size(), 0)
       {
         unsigned int centre = 0;
         for (unsigned int p = 1; p < kin.g0.size(); ++p)
           if (kin.g0[p] < kin.g0[centre])
             centre = p;
-        const long c = kin.candidates.empty() ? 0 : kin.candidates[centre];
+        const long        c = kin.candidates.empty() ? 0 : kin.candidates[centre];
+        std::vector<long> key(A.size()); // distance from the centre, then index
         for (unsigned int p = 0; p < key.size(); ++p)
           {
             const long d = std::abs(static_cast<long>(kin.candidates[p]) - c);
             key[p]       = std::min<long>(d, static_cast<long>(m) - d) * static_cast<long>(m) + kin.candidates[p];
           }
+        by_key.resize(A.size());
+        std::iota(by_key.begin(), by_key.end(), 0u);
+        std::sort(by_key.begin(), by_key.end(), [&](unsigned int a, unsigned int b) { return key[a] < key[b]; });
+      }
+
+      /** From now on in double precision (re-factored at the next set()). */
+      void
+      make_double()
+      {
+        single        = false;
+        ok            = true;
+        normals_valid = gaps_valid = 0;
+        order.clear();
+      }
+
+      /** True while the factor is in single precision (its solutions need refine()). */
+      bool
+      single_precision() const
+      {
+        return single;
       }
 
       /** Factor A on @p active (any order); false if it is not positive definite. */
       bool
       set(const std::vector<unsigned int> &active)
       {
-        std::vector<unsigned int> next = active;
-        std::sort(next.begin(), next.end(), [&](unsigned int a, unsigned int b) { return key[a] < key[b]; });
+        std::vector<unsigned int> next;
+        next.reserve(active.size());
+        for (const auto p : active)
+          is_active[p] = 1;
+        for (const auto p : by_key)
+          if (is_active[p])
+            next.push_back(p);
+        for (const auto p : active)
+          is_active[p] = 0;
         unsigned int c = 0;
         while (c < next.size() && c < order.size() && next[c] == order[c])
           ++c;
         order = next;
-        if (c == order.size())
-          return ok;
         if (!ok) // the old factor is unusable: start over
           c = 0;
-        ok = refactor_from(c);
+        normals_valid = std::min(normals_valid, c);
+        gaps_valid    = std::min(gaps_valid, c);
+        if (c == order.size())
+          return ok;
+        A.ensure(order);
+        const auto entry = [&](const unsigned int r, const unsigned int s) {
+          return A.column(order[s])[order[r]];
+        };
+        ok = single ? factor_single.refactor_from(c, order.size(), entry) :
+                      factor_double.refactor_from(c, order.size(), entry);
+        if (!ok && single)
+          {
+            single        = false;
+            normals_valid = gaps_valid = 0;
+            ok                         = factor_double.refactor_from(0, order.size(), entry);
+          }
         return ok;
+      }
+
+      /**
+       * The forward substitutions in the factor's order, y_d = L⁻¹ n_d (d = x, y) and
+       * z = L⁻¹ g0: row r depends on rows ≤ r only, so after set() only the rows from
+       * the first change are recomputed (and z in full after gaps_changed()).
+       */
+      void
+      forward(const ContactKinematics &kin, const bool with_normals)
+      {
+        for (unsigned int d = 0; with_normals && d < 2; ++d)
+          forward_rows([&](unsigned int p) { return kin.normal[p][d]; }, normals_valid, yf[d], y[d]);
+        if (with_normals)
+          normals_valid = order.size();
+        forward_rows([&](unsigned int p) { return kin.g0[p]; }, gaps_valid, zf, z);
+        gaps_valid = order.size();
+      }
+
+      /** The initial gaps changed (a new linearization): z is recomputed in full. */
+      void
+      gaps_changed()
+      {
+        gaps_valid = 0;
+      }
+
+      /** y_d (d = 0, 1) and z of forward(), in the factor's order. */
+      const std::vector<double> &
+      forward_normal(const unsigned int d) const
+      {
+        return y[d];
+      }
+      const std::vector<double> &
+      forward_gap() const
+      {
+        return z;
+      }
+
+      /** x := L⁻¹ x for x in the factor's order. */
+      void
+      forward_full(std::vector<double> &x)
+      {
+        if (!single)
+          return factor_double.forward_rows(x.data(), order.size(), 0);
+        std::vector<float> v(x.begin(), x.end());
+        factor_single.forward_rows(v.data(), order.size(), 0);
+        std::copy(v.begin(), v.end(), x.begin());
+      }
+
+      /** x := L⁻ᵀ x for x in the factor's order. */
+      void
+      backward(std::vector<double> &x) const
+      {
+        if (!single)
+          return factor_double.backward(x.data(), order.size());
+        std::vector<float> v(x.begin(), x.end());
+        factor_single.backward(v.data(), order.size());
+        std::copy(v.begin(), v.end(), x.begin());
       }
 
       /** The active positions in the factor's order. */
@@ -220,63 +667,43 @@ namespace wearlink::fe
         return order;
       }
 
-      /** Solve A X = B in place for @p nrhs columns of length ordered().size(). */
-      void
-      solve(std::vector<double> &B, const blas_int nrhs) const
-      {
-        const blas_int k = order.size(), ld = capacity;
-        blas_int       info = 0;
-        potrs("L", &k, &nrhs, L.get(), &ld, B.data(), &k, &info);
-      }
-
     private:
-      double &
-      at(const unsigned int r, const unsigned int s)
+      /**
+       * Rows valid … k − 1 of the forward substitution of b (the value of each
+       * position) into out, through the single-precision copy vf when the factor is.
+       */
+      template <typename Value>
+      void
+      forward_rows(const Value &b, const unsigned int valid, std::vector<float> &vf, std::vector<double> &out)
       {
-        return L[r + static_cast<std::size_t>(s) * capacity];
+        const unsigned int k = order.size();
+        out.resize(k);
+        for (unsigned int r = valid; r < k; ++r)
+          out[r] = b(order[r]);
+        if (!single)
+          return factor_double.forward_rows(out.data(), k, valid);
+        vf.resize(k);
+        for (unsigned int r = valid; r < k; ++r)
+          vf[r] = static_cast<float>(out[r]);
+        factor_single.forward_rows(vf.data(), k, valid);
+        for (unsigned int r = valid; r < k; ++r)
+          out[r] = vf[r];
       }
 
-      bool
-      refactor_from(const unsigned int c)
-      {
-        const blas_int k = order.size(), t = k - c, ld = capacity;
-        blas_int       info = 0;
-        if (t == 0)
-          return true;
-        // A21ᵀ (c × t), then L21ᵀ = L11⁻¹ A21ᵀ.
-        if (c > 0)
-          {
-            std::vector<double> X(static_cast<std::size_t>(c) * t);
-            for (blas_int j = 0; j < t; ++j)
-              for (unsigned int s = 0; s < c; ++s)
-                X[s + static_cast<std::size_t>(j) * c] = A.entry(order[c + j], order[s]);
-            const blas_int cc = c;
-            trtrs("L", "N", "N", &cc, &t, L.get(), &ld, X.data(), &cc, &info);
-            if (info != 0)
-              return false;
-            for (blas_int j = 0; j < t; ++j)
-              for (unsigned int s = 0; s < c; ++s)
-                at(c + j, s) = X[s + static_cast<std::size_t>(j) * c];
-          }
-        for (blas_int j = 0; j < t; ++j)
-          for (blas_int i = j; i < t; ++i)
-            at(c + i, c + j) = A.entry(order[c + i], order[c + j]);
-        if (c > 0)
-          {
-            const blas_int cc        = c;
-            const double   minus_one = -1, one = 1;
-            syrk("L", "N", &t, &cc, &minus_one, &at(c, 0), &ld, &one, &at(c, c), &ld);
-          }
-        potrf("L", &t, &at(c, c), &ld, &info);
-        return info == 0;
-      }
-
-      WindowCompliance         &A;
-      const unsigned int        capacity;
-      std::unique_ptr<double[]> L;
-      std::vector<long>         key; ///< sort key of each position (distance from the centre, then index)
-      std::vector<unsigned int> order;
-      bool                      ok = true;
+      WindowCompliance                  &A;
+      bool                               single;
+      Cholesky<float>                    factor_single;
+      Cholesky<double>                   factor_double;
+      std::vector<unsigned int>          by_key;    ///< the positions by distance from the centre, then index
+      std::vector<char>                  is_active; ///< scratch of set()
+      std::vector<unsigned int>          order;
+      bool                               ok = true;
+      std::array<std::vector<double>, 2> y;                 ///< L⁻¹ n_x, L⁻¹ n_y (factor order)
+      std::vector<double>                z;                 ///< L⁻¹ g0 (factor order)
+      std::array<std::vector<float>, 2>  yf;                ///< y in single precision
+      std::vector<float>                 zf;                ///< z in single precision
+      unsigned int                       normals_valid = 0; ///< leading rows of y that are up to date
+      unsigned int                       gaps_valid    = 0; ///< leading rows of z that are up to date
     };
 
     /** The multipliers of the active positions (in the order of @p active) and U. */
@@ -288,8 +715,51 @@ namespace wearlink::fe
     };
 
     /**
+     * The Schur step of the active system in the factor's variables: for the forward
+     * substitutions y_d = L⁻¹ n_d and w = L⁻¹ a of a right-hand side a, the U of
+     * A λ − N U = a, Nᵀ λ = b is S⁻¹ (b − Yᵀw) with S = Nᵀ A⁻¹ N = YᵀY, and
+     * L⁻ᵀ (w + Y U) is λ; x receives w + Y U. False if S is singular.
+     */
+    bool
+    schur_step(const ActiveFactor &factor, const Tensor<1, 2> &b, std::vector<double> &x, Tensor<1, 2> &U)
+    {
+      const auto &y0 = factor.forward_normal(0), &y1 = factor.forward_normal(1);
+      const auto  k       = x.size();
+      double      S[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {b[0], b[1]};
+      for (unsigned int r = 0; r < k; ++r)
+        {
+          S[0][0] += y0[r] * y0[r];
+          S[0][1] += y0[r] * y1[r];
+          S[1][1] += y1[r] * y1[r];
+          rhs[0] -= y0[r] * x[r];
+          rhs[1] -= y1[r] * x[r];
+        }
+      S[1][0]          = S[0][1];
+      const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
+      if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
+        return false;
+      // Two steps of iterative refinement of U: with only a few active candidates of
+      // nearly parallel normals, S is near-singular (the pin may slide sideways almost
+      // freely) and the 2 × 2 solve leaves a residual of cond(S) ε, which the balance
+      // Nᵀλ = b would show at 1e-7 (measured on worn profiles at small loads);
+      // Nᵀλ = S U + Yᵀw, so the balance is the residual of S U = rhs.
+      U = 0;
+      for (unsigned int step = 0; step < 3; ++step)
+        {
+          const double r0 = rhs[0] - S[0][0] * U[0] - S[0][1] * U[1];
+          const double r1 = rhs[1] - S[1][0] * U[0] - S[1][1] * U[1];
+          U[0] += (S[1][1] * r0 - S[0][1] * r1) / det;
+          U[1] += (S[0][0] * r1 - S[1][0] * r0) / det;
+        }
+      for (unsigned int r = 0; r < k; ++r)
+        x[r] += y0[r] * U[0] + y1[r] * U[1];
+      return true;
+    }
+
+    /**
      * The active system: A λ = N U − g0 with, under force control, Nᵀ λ = P
-     * (S = Nᵀ A⁻¹ N, U = S⁻¹ (P + Nᵀ A⁻¹ g0)), under displacement control λ = −A⁻¹ g0.
+     * (schur_step() with a = −g0, b = P), under displacement control λ = −A⁻¹ g0. To
+     * the precision of the factor (refine() takes a single-precision one further).
      */
     ActiveSolution
     solve_active(const ContactKinematics         &kin,
@@ -304,85 +774,71 @@ namespace wearlink::fe
           out.ok = false;
           return out;
         }
-      const auto         &order = factor.ordered();
-      const unsigned int  k     = order.size();
-      std::vector<double> B(3 * k);
-      for (unsigned int r = 0; r < k; ++r)
-        {
-          B[r]         = kin.normal[order[r]][0];
-          B[k + r]     = kin.normal[order[r]][1];
-          B[2 * k + r] = kin.g0[order[r]];
-        }
-      factor.solve(B, 3);
+      const auto        &order = factor.ordered();
+      const unsigned int k     = order.size();
+      factor.forward(kin, force_control);
       std::vector<double> x(k);
-      if (force_control)
-        {
-          double S[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {P[0], P[1]};
-          for (unsigned int r = 0; r < k; ++r)
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                S[d][0] += kin.normal[order[r]][d] * B[r];
-                S[d][1] += kin.normal[order[r]][d] * B[k + r];
-                rhs[d] += kin.normal[order[r]][d] * B[2 * k + r];
-              }
-          const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
-          if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
-            {
-              out.ok = false;
-              return out;
-            }
-          out.U[0] = (S[1][1] * rhs[0] - S[0][1] * rhs[1]) / det;
-          out.U[1] = (S[0][0] * rhs[1] - S[1][0] * rhs[0]) / det;
-          for (unsigned int r = 0; r < k; ++r)
-            x[r] = B[r] * out.U[0] + B[k + r] * out.U[1] - B[2 * k + r];
-          // Two steps of iterative refinement of the balance: with only a few active
-          // candidates of nearly parallel normals, S is near-singular (the pin may slide
-          // sideways almost freely) and U carries round-off of cond(S) ε, which Nᵀλ = P
-          // shows at 1e-7 (measured on worn profiles at small loads). λ = Y U − z keeps
-          // the active gaps closed for any U, so U alone is corrected: δU = S⁻¹ (P − Nᵀλ).
-          for (unsigned int step = 0; step < 2; ++step)
-            {
-              double defect[2] = {P[0], P[1]};
-              for (unsigned int r = 0; r < k; ++r)
-                for (unsigned int d = 0; d < 2; ++d)
-                  defect[d] -= kin.normal[order[r]][d] * x[r];
-              const double dU0 = (S[1][1] * defect[0] - S[0][1] * defect[1]) / det;
-              const double dU1 = (S[0][0] * defect[1] - S[1][0] * defect[0]) / det;
-              out.U[0] += dU0;
-              out.U[1] += dU1;
-              for (unsigned int r = 0; r < k; ++r)
-                x[r] += B[r] * dU0 + B[k + r] * dU1;
-            }
-        }
-      else
-        for (unsigned int r = 0; r < k; ++r)
-          x[r] = -B[2 * k + r];
-      // Back to the order of `active`.
-      out.lambda.resize(k);
       for (unsigned int r = 0; r < k; ++r)
-        out.lambda[std::lower_bound(active.begin(), active.end(), order[r]) - active.begin()] = x[r];
+        x[r] = -factor.forward_gap()[r];
+      if (force_control && !schur_step(factor, P, x, out.U))
+        {
+          out.ok = false;
+          return out;
+        }
+      factor.backward(x);
+      // Back to the order of `active` (through the window: x by position first).
+      std::vector<double> by_position(kin.g0.size());
+      for (unsigned int r = 0; r < k; ++r)
+        by_position[order[r]] = x[r];
+      out.lambda.resize(k);
+      for (unsigned int s = 0; s < k; ++s)
+        out.lambda[s] = by_position[active[s]];
       return out;
     }
 
-    /** g = g0 − n·U + A λ over the window, for the multipliers @p lambda of @p active. */
+    /** Which gaps window_gaps() computes. */
+    enum class Rows
+    {
+      all,
+      inactive, ///< the only ones the active-set rules read (an active gap is zero up to round-off)
+      active    ///< the residual of the active system (refine())
+    };
+
+    /**
+     * g = g0 − n·U + A λ over the window, for the multipliers @p lambda (per position)
+     * of @p active, at the positions @p rows names; the others keep their values. One
+     * matrix–vector product of the gathered columns (BLAS) per run of positions.
+     */
     void
     window_gaps(const ContactKinematics         &kin,
                 WindowCompliance                &A,
                 const std::vector<unsigned int> &active,
                 const std::vector<double>       &lambda,
                 const Tensor<1, 2>              &U,
-                std::vector<double>             &gap)
+                std::vector<double>             &gap,
+                const Rows                       rows_wanted)
     {
       const unsigned int w = kin.g0.size();
       gap.resize(w);
-      for (unsigned int q = 0; q < w; ++q)
-        gap[q] = kin.g0[q] - kin.normal[q] * U;
-      for (unsigned int s = 0; s < active.size(); ++s)
+      for (const auto p : active)
+        A.ensure(p);
+      std::vector<double> x(A.n_slots(), 0.0);
+      std::vector<char>   skip(w, rows_wanted == Rows::active);
+      for (const auto p : active)
         {
-          const auto  &col = A.column(active[s]);
-          const double l   = lambda[s];
-          for (unsigned int q = 0; q < w; ++q)
-            gap[q] += col[q] * l;
+          x[A.slot_of(p)] = lambda[p];
+          skip[p]         = rows_wanted == Rows::inactive;
+        }
+      for (unsigned int q0 = 0; q0 < w;)
+        {
+          unsigned int q1 = q0;
+          for (; q1 < w && !skip[q1]; ++q1)
+            gap[q1] = kin.g0[q1] - kin.normal[q1] * U;
+          const blas_int rows = q1 - q0, cols = x.size(), ld = w, one = 1;
+          const double   alpha = 1, beta = 1;
+          if (rows > 0 && cols > 0)
+            gemv("N", &rows, &cols, &alpha, A.data() + q0, &ld, x.data(), &one, &beta, gap.data() + q0, &one);
+          q0 = q1 + 1;
         }
     }
 
@@ -395,20 +851,109 @@ namespace wearlink::fe
       unsigned int              iterations = 0;
     };
 
-    /** Apply an active solution: λ on the window, U, and the gaps. */
+    /** Apply an active solution: λ on the window, U, and the gaps (see window_gaps()). */
     void
-    accept(const ContactKinematics &kin, WindowCompliance &A, const ActiveSolution &x, WindowState &st)
+    accept(const ContactKinematics &kin, WindowCompliance &A, const ActiveSolution &x, WindowState &st, const Rows rows)
     {
       std::fill(st.lambda.begin(), st.lambda.end(), 0.0);
       for (unsigned int s = 0; s < st.active.size(); ++s)
         st.lambda[st.active[s]] = x.lambda[s];
       st.U = x.U;
-      window_gaps(kin, A, st.active, x.lambda, st.U, st.gap);
+      window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, rows);
+    }
+
+    /**
+     * Iterative refinement of the applied active solution in @p st, whose gaps are
+     * those of the active positions (accept()): the residuals of the active system are
+     * −g there (from the double-precision columns) and P − Nᵀλ; the correction solves
+     * the same system for them with the factor again. Ends when the error left is below
+     * 1e-12 of λ (two corrections from a single-precision factor at 100 kN), with the
+     * gaps of the inactive positions; false if that takes more than max_refinements.
+     */
+    bool
+    refine(const ContactKinematics &kin,
+           WindowCompliance        &A,
+           ActiveFactor            &factor,
+           const bool               force_control,
+           const Tensor<1, 2>      &P,
+           WindowState             &st)
+    {
+      constexpr unsigned int max_refinements = 6;
+      const auto            &order           = factor.ordered();
+      const unsigned int     k               = order.size();
+      double                 previous        = 0; // the size of the last correction
+      for (unsigned int step = 0; step < max_refinements; ++step)
+        {
+          std::vector<double> x(k);
+          Tensor<1, 2>        balance = P, dU;
+          double              largest = 0;
+          for (unsigned int r = 0; r < k; ++r)
+            {
+              x[r] = -st.gap[order[r]];
+              balance -= st.lambda[order[r]] * kin.normal[order[r]];
+              largest = std::max(largest, std::abs(st.lambda[order[r]]));
+            }
+          factor.forward_full(x);
+          if (force_control && !schur_step(factor, balance, x, dU))
+            return false;
+          factor.backward(x);
+          double correction = 0;
+          for (unsigned int r = 0; r < k; ++r)
+            {
+              st.lambda[order[r]] += x[r];
+              correction = std::max(correction, std::abs(x[r]));
+            }
+          st.U += dU;
+          // Converged when this correction, or the next one that the contraction of the
+          // last two predicts (each correction leaves ρ = c_k / c_(k−1) of itself, ~3e-5
+          // from a float factor at 100 kN), is below 1e-12 of λ; the active gaps then
+          // move by A δλ, below round-off.
+          const double next = step > 0 && previous > 0 ? correction * (correction / previous) : correction;
+          if (std::max(next, correction * 1e-4) <= 1e-12 * largest || correction <= 1e-12 * largest)
+            {
+              window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::inactive);
+              return true;
+            }
+          previous = correction;
+          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::active);
+        }
+      return false;
+    }
+
+    /**
+     * Solve the active system on st.active and apply it (accept()), to double precision
+     * if @p exact (refine() after a single-precision factor; a double factor if that
+     * does not converge). False if a factorization fails.
+     */
+    bool
+    solve_and_accept(const ContactKinematics &kin,
+                     WindowCompliance        &A,
+                     ActiveFactor            &factor,
+                     const bool               force_control,
+                     const Tensor<1, 2>      &P,
+                     const bool               exact,
+                     const bool               inactive_only,
+                     WindowState             &st)
+    {
+      auto x = solve_active(kin, factor, st.active, force_control, P);
+      if (!x.ok)
+        return false;
+      const bool refining = exact && factor.single_precision();
+      accept(kin, A, x, st, refining ? Rows::active : inactive_only ? Rows::inactive : Rows::all);
+      if (!refining || refine(kin, A, factor, force_control, P, st))
+        return true;
+      factor.make_double();
+      x = solve_active(kin, factor, st.active, force_control, P);
+      if (!x.ok)
+        return false;
+      accept(kin, A, x, st, inactive_only ? Rows::inactive : Rows::all);
+      return true;
     }
 
     /**
      * The primal–dual iteration from @p st.active; true when the active set repeats
      * (converged), false when it cycles, stalls at @p limit, or a factorization fails.
+     * Each active solve to double precision if @p exact, else to the factor's.
      */
     bool
     primal_dual(const ContactKinematics &kin,
@@ -417,16 +962,15 @@ namespace wearlink::fe
                 const bool               force_control,
                 const Tensor<1, 2>      &P,
                 const unsigned int       limit,
+                const bool               exact,
                 WindowState             &st)
     {
       std::set<std::vector<unsigned int>> history;
       for (unsigned int it = 1; it <= limit; ++it)
         {
           ++st.iterations;
-          const auto x = solve_active(kin, factor, st.active, force_control, P);
-          if (!x.ok)
+          if (!solve_and_accept(kin, A, factor, force_control, P, exact, true, st))
             return false;
-          accept(kin, A, x, st);
           auto next = active_set::update(st.active, st.lambda, st.gap, kin.tolerance, history);
           if (force_control)
             active_set::ensure_two_active(next, st.gap, kin.normal, P);
@@ -568,7 +1112,7 @@ namespace wearlink::fe
           joined = w;
           if (alpha < 1)
             continue;
-          accept(kin, A, x, st);
+          accept(kin, A, x, st, Rows::all);
           double worst_blocked = 0;
           for (const auto i : penetrating(st.lambda, st.gap, kin.tolerance))
             if (!blocked[i])
@@ -656,8 +1200,13 @@ namespace wearlink::fe
     , primal_dual_limit(primal_dual_limit)
     , clearance(mean_clearance(problem))
     , pin_radius(smallest_pin_radius(problem))
+    , spacing(candidate_spacing(problem))
+    , workspace(std::make_unique<Workspace>())
   {
   }
+
+
+  CondensedContactSolver::~CondensedContactSolver() = default;
 
 
   // The window: every candidate whose initial gap is below T. A candidate outside it
@@ -683,28 +1232,103 @@ namespace wearlink::fe
                                            ActiveFactor            &factor,
                                            const bool               force_control,
                                            const Tensor<1, 2>      &load,
+                                           const bool               exact,
                                            WindowState             &st,
                                            bool                    &monotone_used)
   {
-    bool done = primal_dual(kin, A, factor, force_control, load, std::min(max_iterations, primal_dual_limit), st);
+    bool done =
+      primal_dual(kin, A, factor, force_control, load, std::min(max_iterations, primal_dual_limit), exact, st);
     if (!done)
       {
         ++n_monotone;
         monotone_used = true;
-        done          = monotone(kin, A, factor, force_control, load, 10 * max_iterations, st);
+        factor.make_double(); // the monotone phase decides on exact solutions
+        done = monotone(kin, A, factor, force_control, load, 10 * max_iterations, st);
       }
     if (!done)
       active_set::not_converged("condensed", st.iterations);
   }
 
 
-  // Pairings: the window kinematics at a pose, its compliance and factor; within one,
-  // linearizations that refresh the gaps (refresh_gaps()) until the pin's translation of
-  // the last one is small (relinearization_done()). A pin that slides by more than a
-  // quarter of the candidate spacing since the pairing (a light load on a worn, inclined
-  // bore: 70 µm measured) is paired anew at its new pose, warm-started from the active
-  // candidates; a window too narrow for the solution's deformation is widened and the
-  // pairing solved again.
+  // The accepted linearization, solved with a single-precision factor, to double
+  // precision: its solution refined (refine()) and the active set checked with the
+  // refined gaps; if the set changes, the primal–dual iteration goes on with refined
+  // solves. Leaves the gaps of every position.
+  void
+  CondensedContactSolver::solve_exactly(const ContactKinematics &kin,
+                                        WindowCompliance        &A,
+                                        ActiveFactor            &factor,
+                                        const bool               force_control,
+                                        const Tensor<1, 2>      &load,
+                                        WindowState             &st,
+                                        bool                    &monotone_used)
+  {
+    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::active);
+    if (refine(kin, A, factor, force_control, load, st))
+      {
+        std::set<std::vector<unsigned int>> history;
+        auto next = active_set::update(st.active, st.lambda, st.gap, kin.tolerance, history);
+        if (force_control)
+          active_set::ensure_two_active(next, st.gap, kin.normal, load);
+        if (next == st.active)
+          return;
+      }
+    else
+      factor.make_double();
+    solve_linearized(kin, A, factor, force_control, load, true, st, monotone_used);
+    window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::all);
+  }
+
+
+  // The linearizations of one pairing: each refreshes the gaps about the translated pin
+  // (refresh_gaps(), the pairing kept) until the translation of the last one is small
+  // (relinearization_done()). First the window is checked (so that the path is the
+  // reference solver's, which sees every candidate): too narrow, @p widen receives the
+  // threshold it needs; then the linearization and the pairing: a pin that slid by
+  // more than pairing_outdated() ends the pairing. U_pair: the translation since it.
+  CondensedContactSolver::PairingEnd
+  CondensedContactSolver::linearize(const PinPose      &paired,
+                                    const double        threshold,
+                                    const bool          force_control,
+                                    const Tensor<1, 2> &load,
+                                    ContactKinematics  &kin,
+                                    WindowCompliance   &A,
+                                    ActiveFactor       &factor,
+                                    WindowState        &st,
+                                    Tensor<1, 2>       &U_pair,
+                                    unsigned int       &updates,
+                                    double             &widen,
+                                    bool               &monotone_used)
+  {
+    PinPose moved = paired;
+    for (;;)
+      {
+        solve_linearized(kin, A, factor, force_control, load, false, st, monotone_used);
+        U_pair += st.U;
+        const double needed = U_pair.norm() + 0.25 * largest_opening(kin, st) + kin.tolerance;
+        if (needed > threshold && threshold < 4 * paired.bore->max_radius())
+          {
+            widen = 2 * needed;
+            return PairingEnd::narrow;
+          }
+        if (!force_control || relinearization_done(st.U, pin_radius) || ++updates >= max_relinearizations)
+          return PairingEnd::accepted;
+        if (pairing_outdated(U_pair, spacing))
+          return PairingEnd::slid;
+        moved.eccentricity = paired.eccentricity + U_pair;
+        refresh_gaps(problem, moved, kin);
+        factor.gaps_changed();
+      }
+  }
+
+
+  // Pairings: the window kinematics at a pose, its compliance and factor, and its
+  // linearizations (linearize()). A pin that slides by more than a quarter of the
+  // candidate spacing since the pairing (a light load on a worn, inclined bore: 70 µm
+  // measured) is paired anew at its new pose, warm-started from the active candidates;
+  // a window too narrow for the solution's deformation is widened and the pairing
+  // solved again. The accepted linearization of a single-precision factor is taken to
+  // double precision (solve_exactly()).
   ContactSolution
   CondensedContactSolver::solve(const PinPose      &pose,
                                 const bool          force_control,
@@ -712,9 +1336,7 @@ namespace wearlink::fe
                                 const double        closure_estimate,
                                 ContactKinematics  &kin)
   {
-    const unsigned int        m       = problem.pin_nodes.size();
-    const double              spacing = candidate_spacing(problem);
-    double                    T       = 0.5 * std::max(closure_estimate, 0.0);
+    double                    T = 0.5 * std::max(closure_estimate, 0.0);
     std::vector<unsigned int> warm;
     ContactSolution           sol;
     PinPose                   paired  = pose;
@@ -723,49 +1345,40 @@ namespace wearlink::fe
       {
         double threshold = 0;
         kin              = compute_window_kinematics(problem, paired, {T, 1e-3 * spacing, 0.5}, &threshold);
-        WindowCompliance A(problem, compliance, kin);
-        ActiveFactor     factor(A, kin, m);
+        WindowCompliance A(problem, compliance, kin, *workspace);
         WindowState      st;
         st.lambda.assign(kin.g0.size(), 0.0);
         st.active = starting_set(kin, clearance, warm, force_control, load);
-        Tensor<1, 2>       U_pair; // since `paired`
-        PinPose            moved = paired;
-        bool               slid = false, narrow = false;
+        ActiveFactor factor(A, kin, problem.pin_nodes.size(), *workspace, st.active.size() >= single_precision_from);
+        Tensor<1, 2> U_pair;                         // since `paired`
         const unsigned int updates_before = updates; // a widened window solves this pairing again
-        for (;;)
-          {
-            solve_linearized(kin, A, factor, force_control, load, st, sol.monotone);
-            U_pair += st.U;
-            // First the window (so that the path is the reference solver's, which sees
-            // every candidate), then the linearization and the pairing.
-            const double needed = U_pair.norm() + 0.25 * largest_opening(kin, st) + kin.tolerance;
-            if ((narrow = needed > threshold && threshold < 4 * pose.bore->max_radius()))
-              {
-                T = 2 * needed;
-                break;
-              }
-            if (!force_control || relinearization_done(st.U, pin_radius) || ++updates >= max_relinearizations)
-              break;
-            if ((slid = pairing_outdated(U_pair, spacing)))
-              break;
-            moved.eccentricity = paired.eccentricity + U_pair;
-            refresh_gaps(problem, moved, kin);
-          }
+        const auto         end =
+          linearize(paired, threshold, force_control, load, kin, A, factor, st, U_pair, updates, T, sol.monotone);
         sol.iterations += st.iterations;
         warm.clear();
         for (const auto p : st.active)
           warm.push_back(kin.candidates[p]);
-        if (narrow)
+        if (end == PairingEnd::narrow)
           {
             updates = updates_before;
             continue;
           }
-        if (slid)
+        if (end == PairingEnd::slid)
           {
             paired.eccentricity += U_pair;
             T = 0.5 * std::max(closure_estimate, 0.0);
             continue;
           }
+        if (factor.single_precision())
+          {
+            const unsigned int before = st.iterations;
+            U_pair -= st.U;
+            solve_exactly(kin, A, factor, force_control, load, st, sol.monotone);
+            U_pair += st.U;
+            sol.iterations += st.iterations - before;
+          }
+        else
+          window_gaps(kin, A, st.active, st.lambda, st.U, st.gap, Rows::all);
         finish(kin, st, force_control, load, sol);
         sol.pin_translation = paired.eccentricity - pose.eccentricity + U_pair;
         return sol;

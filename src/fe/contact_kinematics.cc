@@ -43,14 +43,17 @@ namespace wearlink::fe
       unsigned char               n_masters = 0;
     };
 
-    /** The length of the ray from @p x along @p n to the bore profile. */
+    /**
+     * The length of the ray from @p x along @p n to the bore profile; @p round_radius
+     * is the radius of a round bore (every sample the same; < 0: not round).
+     */
     double
-    ray_length(const Profile &bore, const bool round, const Tensor<1, 2> &x, const Tensor<1, 2> &n)
+    ray_length(const Profile &bore, const double round_radius, const Tensor<1, 2> &x, const Tensor<1, 2> &n)
     {
-      const double radius = bore.radius(std::atan2(x[1], x[0]));
+      const double radius = round_radius >= 0 ? round_radius : bore.radius(std::atan2(x[1], x[0]));
       const double b      = x * n;
       double       t      = -b + std::sqrt(std::max(b * b - x * x + radius * radius, 0.0));
-      if (!round)
+      if (round_radius < 0)
         for (unsigned int it = 0; it < 20; ++it)
           {
             const Tensor<1, 2> y     = x + t * n;
@@ -69,9 +72,15 @@ namespace wearlink::fe
     void
     locate_on_bore(const std::vector<SurfaceFace> &faces, const double alpha, Ray &ray)
     {
-      auto it =
-        std::upper_bound(faces.begin(), faces.end(), alpha, [](double a, const SurfaceFace &f) { return a < f.begin; });
-      unsigned int f = it == faces.begin() ? faces.size() - 1 : (it - faces.begin()) - 1;
+      // The last face that begins at or before alpha (the last one if none does): from
+      // a guess by the mean face span, a walk (the faces are nearly uniform).
+      const long n = faces.size();
+      long       g = std::clamp(static_cast<long>((alpha - faces.front().begin) / two_pi * n), 0L, n - 1);
+      while (g > 0 && faces[g].begin > alpha)
+        --g;
+      while (g + 1 < n && faces[g + 1].begin <= alpha)
+        ++g;
+      unsigned int f = faces.front().begin > alpha ? n - 1 : g;
       double       d = alpha - faces[f].begin;
       d -= two_pi * std::floor(d / two_pi);
       if (d > faces[f].span)
@@ -100,22 +109,81 @@ namespace wearlink::fe
         }
     }
 
-    Ray
-    cast(const ElasticityProblem &problem, const PinPose &pose, const bool round, const unsigned int i)
+    /**
+     * Casting the rays of one pose: the rotation by the relative angle and the radius of
+     * a round bore, computed once (the same numbers rotate() and Profile::radius() give).
+     */
+    class RayCaster
     {
-      const auto  &node  = problem.pin_nodes[i];
-      Tensor<1, 2> point = node.point;
-      if (pose.pin_offsets != nullptr)
-        point *= 1 + (*pose.pin_offsets)[i] / point.norm();
-      Ray                ray;
-      const Tensor<1, 2> x = pose.eccentricity + rotate(point, pose.relative_angle);
-      ray.normal           = rotate(node.normal, pose.relative_angle);
-      ray.g0               = ray_length(*pose.bore, round, x, ray.normal);
-      const Tensor<1, 2> y = x + ray.g0 * ray.normal;
-      ray.bore_angle       = std::atan2(y[1], y[0]);
-      locate_on_bore(problem.bore_faces, ray.bore_angle, ray);
-      return ray;
-    }
+    public:
+      RayCaster(const ElasticityProblem &problem, const PinPose &pose)
+        : problem(problem)
+        , pose(pose)
+        , round_radius(pose.bore->is_round() ? pose.bore->radius(0.0) : -1.0)
+        , c(std::cos(pose.relative_angle))
+        , s(std::sin(pose.relative_angle))
+      {
+      }
+
+      /** Candidate i's initial gap only. */
+      double
+      gap(const unsigned int i) const
+      {
+        return ray_length(*pose.bore, round_radius, point(i), normal(i));
+      }
+
+      /** Candidate i's ray: gap, normal, and where it meets the bore. */
+      Ray
+      cast(const unsigned int i) const
+      {
+        Ray                ray;
+        const Tensor<1, 2> x = point(i);
+        ray.normal           = normal(i);
+        ray.g0               = ray_length(*pose.bore, round_radius, x, ray.normal);
+        const Tensor<1, 2> y = x + ray.g0 * ray.normal;
+        ray.bore_angle       = std::atan2(y[1], y[0]);
+        locate_on_bore(problem.bore_faces, ray.bore_angle, ray);
+        return ray;
+      }
+
+      /** Candidate i's initial gap along a given @p n (bushing frame). */
+      double
+      gap_along(const unsigned int i, const Tensor<1, 2> &n) const
+      {
+        return ray_length(*pose.bore, round_radius, point(i), n);
+      }
+
+    private:
+      Tensor<1, 2>
+      rotated(const Tensor<1, 2> &v) const
+      {
+        Tensor<1, 2> r;
+        r[0] = c * v[0] - s * v[1];
+        r[1] = s * v[0] + c * v[1];
+        return r;
+      }
+
+      /** The candidate in the bushing frame (its radial offset applied, see PinPose). */
+      Tensor<1, 2>
+      point(const unsigned int i) const
+      {
+        Tensor<1, 2> p = problem.pin_nodes[i].point;
+        if (pose.pin_offsets != nullptr)
+          p *= 1 + (*pose.pin_offsets)[i] / p.norm();
+        return pose.eccentricity + rotated(p);
+      }
+
+      Tensor<1, 2>
+      normal(const unsigned int i) const
+      {
+        return rotated(problem.pin_nodes[i].normal);
+      }
+
+      const ElasticityProblem &problem;
+      const PinPose           &pose;
+      const double             round_radius; ///< < 0: not round
+      const double             c, s;         ///< cos, sin of the relative angle
+    };
 
     void
     append(ContactKinematics &k, const unsigned int i, const Ray &ray)
@@ -157,8 +225,10 @@ namespace wearlink::fe
     {
       const auto        &nodes = problem.pin_nodes;
       const unsigned int m     = nodes.size();
-      auto               r     = [&](unsigned int i) {
-        return nodes[i].point.norm() + (pose.pin_offsets != nullptr ? (*pose.pin_offsets)[i] : 0.0);
+      if (pose.pin_offsets == nullptr)
+        return problem.pin_surface_slope;
+      auto r = [&](unsigned int i) {
+        return nodes[i].point.norm() + (*pose.pin_offsets)[i];
       };
       double s = 0;
       for (unsigned int i = 0; i < m; ++i)
@@ -177,11 +247,11 @@ namespace wearlink::fe
   ContactKinematics
   compute_kinematics(const ElasticityProblem &problem, const PinPose &pose)
   {
-    ContactKinematics  k     = empty_kinematics(pose);
-    const bool         round = pose.bore->is_round();
-    const unsigned int m     = problem.pin_nodes.size();
+    ContactKinematics  k = empty_kinematics(pose);
+    const RayCaster    rays(problem, pose);
+    const unsigned int m = problem.pin_nodes.size();
     for (unsigned int i = 0; i < m; ++i)
-      append(k, i, cast(problem, pose, round, i));
+      append(k, i, rays.cast(i));
     return k;
   }
 
@@ -189,16 +259,10 @@ namespace wearlink::fe
   void
   refresh_gaps(const ElasticityProblem &problem, const PinPose &pose, ContactKinematics &k)
   {
-    const bool round = pose.bore->is_round();
-    k.eccentricity   = pose.eccentricity;
+    const RayCaster rays(problem, pose);
+    k.eccentricity = pose.eccentricity;
     for (unsigned int p = 0; p < k.candidates.size(); ++p)
-      {
-        const unsigned int i     = k.candidates[p];
-        Tensor<1, 2>       point = problem.pin_nodes[i].point;
-        if (pose.pin_offsets != nullptr)
-          point *= 1 + (*pose.pin_offsets)[i] / point.norm();
-        k.g0[p] = ray_length(*pose.bore, round, pose.eccentricity + rotate(point, pose.relative_angle), k.normal[p]);
-      }
+      k.g0[p] = rays.gap_along(k.candidates[p], k.normal[p]);
   }
 
 
@@ -213,14 +277,14 @@ namespace wearlink::fe
     constexpr unsigned int B     = 8;
     const auto            &nodes = problem.pin_nodes;
     const unsigned int     m     = nodes.size();
-    const bool             round = pose.bore->is_round();
+    const RayCaster        rays(problem, pose);
     const double           L = 2 * (pose.eccentricity.norm() + max_slope(*pose.bore) + pin_max_slope(problem, pose));
     const unsigned int     n_blocks = (m + B - 1) / B;
     std::vector<double>    sampled(n_blocks);
     double                 g_min = std::numeric_limits<double>::max();
     for (unsigned int j = 0; j < n_blocks; ++j)
       {
-        sampled[j] = cast(problem, pose, round, j * B).g0;
+        sampled[j] = rays.gap(j * B);
         g_min      = std::min(g_min, sampled[j]);
       }
     const double threshold = std::max({rule.at_least, g_min + rule.above_smallest, -rule.overlap_factor * g_min});
@@ -237,10 +301,10 @@ namespace wearlink::fe
         da -= two_pi * std::floor(da / two_pi);
         const double lower = 0.5 * (sampled[j] + sampled[(j + 1) % n_blocks]) - 0.5 * L * da;
         if (sampled[j] <= threshold)
-          below.emplace_back(a, cast(problem, pose, round, a));
+          below.emplace_back(a, rays.cast(a));
         if (lower <= threshold)
           for (unsigned int i = a + 1; i < b; ++i)
-            if (Ray ray = cast(problem, pose, round, i); ray.g0 <= threshold)
+            if (Ray ray = rays.cast(i); ray.g0 <= threshold)
               below.emplace_back(i, ray);
       }
     // Padded by one candidate on either side, so that every contact node's neighbours
@@ -256,7 +320,7 @@ namespace wearlink::fe
         if (listed)
           append(k, i, below[next++].second);
         else if (in[(i + 1) % m] || in[(i + m - 1) % m])
-          append(k, i, cast(problem, pose, round, i));
+          append(k, i, rays.cast(i));
       }
     return k;
   }

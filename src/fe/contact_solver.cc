@@ -80,7 +80,7 @@ namespace wearlink::fe
                 }
             }
         }
-      std::sort(next.begin(), next.end());
+      // next is sorted: the loop above visits the positions in increasing order.
       if (next != active && history.count(next))
         {
           // Cycling: correct one kind of violation only — drop every tensile candidate

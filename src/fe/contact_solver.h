@@ -56,6 +56,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace wearlink::fe
@@ -83,6 +84,7 @@ namespace wearlink::fe
     class WindowCompliance;
     class ActiveFactor;
     struct WindowState;
+    struct Workspace;
   } // namespace condensed_detail
 
   /** Linearizations of one load state at most (the last one is accepted). */
@@ -142,6 +144,7 @@ namespace wearlink::fe
                            BoundaryCompliance      &compliance,
                            unsigned int             max_iterations,
                            unsigned int             primal_dual_limit = 30);
+    ~CondensedContactSolver();
 
     /**
      * One load state about @p pose, on its contact window (compute_window_kinematics):
@@ -185,12 +188,44 @@ namespace wearlink::fe
            const dealii::Tensor<1, 2>    &load,
            ContactSolution               &solution) const;
 
+    /** How the linearizations of one pairing ended (linearize()). */
+    enum class PairingEnd
+    {
+      accepted,
+      narrow, ///< the window is too narrow for the solution's deformation
+      slid    ///< the pin slid too far from the pairing's pose
+    };
+
+    PairingEnd
+    linearize(const PinPose                      &paired,
+              double                              threshold,
+              bool                                force_control,
+              const dealii::Tensor<1, 2>         &load,
+              ContactKinematics                  &kinematics,
+              condensed_detail::WindowCompliance &A,
+              condensed_detail::ActiveFactor     &factor,
+              condensed_detail::WindowState      &state,
+              dealii::Tensor<1, 2>               &U_pair,
+              unsigned int                       &updates,
+              double                             &widen,
+              bool                               &monotone_used);
+
+    void
+    solve_exactly(const ContactKinematics            &kinematics,
+                  condensed_detail::WindowCompliance &A,
+                  condensed_detail::ActiveFactor     &factor,
+                  bool                                force_control,
+                  const dealii::Tensor<1, 2>         &load,
+                  condensed_detail::WindowState      &state,
+                  bool                               &monotone_used);
+
     void
     solve_linearized(const ContactKinematics            &kinematics,
                      condensed_detail::WindowCompliance &A,
                      condensed_detail::ActiveFactor     &factor,
                      bool                                force_control,
                      const dealii::Tensor<1, 2>         &load,
+                     bool                                exact,
                      condensed_detail::WindowState      &state,
                      bool                               &monotone_used);
 
@@ -200,7 +235,10 @@ namespace wearlink::fe
     const unsigned int       primal_dual_limit;
     const double             clearance;  ///< mean radial clearance of the meshed surfaces [m]
     const double             pin_radius; ///< smallest radius of the meshed pin surface [m]
+    const double             spacing;    ///< candidate_spacing() [m]
     unsigned long            n_monotone = 0;
+    /** Memory the load states reuse (gathered columns, factor). */
+    std::unique_ptr<condensed_detail::Workspace> workspace;
   };
 
   class ReferenceContactSolver

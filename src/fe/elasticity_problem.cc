@@ -4,6 +4,7 @@
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "fe/boundary_ids.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -318,8 +319,17 @@ namespace wearlink::fe
       std::sort(v.begin(), v.end(), [](const SurfaceNode &a, const SurfaceNode &b) { return a.angle < b.angle; });
       return v;
     };
-    pin_nodes  = sorted(pin_map);
-    bore_nodes = sorted(bore_map);
+    pin_nodes         = sorted(pin_map);
+    bore_nodes        = sorted(bore_map);
+    pin_surface_slope = 0;
+    for (unsigned int i = 0; i < pin_nodes.size(); ++i)
+      {
+        const auto &a = pin_nodes[i], &b = pin_nodes[(i + 1) % pin_nodes.size()];
+        double      d = b.angle - a.angle;
+        d -= wearlink::numbers::two_pi * std::floor(d / wearlink::numbers::two_pi);
+        if (d > 0)
+          pin_surface_slope = std::max(pin_surface_slope, std::abs(b.point.norm() - a.point.norm()) / d);
+      }
     core_nodes.clear();
     for (const auto &c : core_map)
       core_nodes.push_back({c.first, c.second});

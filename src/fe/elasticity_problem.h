@@ -117,7 +117,9 @@ namespace wearlink::fe
     dealii::SparsityPattern      sparsity_pattern;
     dealii::SparseMatrix<double> stiffness_matrix;
 
-    std::vector<SurfaceNode> pin_nodes;  ///< sorted by angle
+    std::vector<SurfaceNode> pin_nodes; ///< sorted by angle
+    /** max |Δr / Δψ| between neighbouring pin nodes [m/rad] (the contact window's bound). */
+    double                   pin_surface_slope = 0;
     std::vector<SurfaceNode> bore_nodes; ///< sorted by angle
     std::vector<SurfaceFace> bore_faces; ///< sorted by begin
     /** (x, y) DoF pairs of the rigid pin core's support points. */
