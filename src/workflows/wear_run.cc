@@ -186,12 +186,12 @@ namespace wearlink::workflows
       if (st.fingerprint != fingerprint(entries) || st.scene != entries)
         {
           const std::string differences = scene_differences(st.scene, entries);
-          throw InputError("Cannot resume from '" + checkpoint + "': it was written for another scene than " +
-                           scene.file +
-                           " with these settings: " + (differences.empty() ? "its fingerprint differs" : differences) +
-                           ". Resume with the scene and --set options the run was started with (only Output/*, "
-                           "Wear/Number of iterations, Wear/Target revolutions, Wear/FE output and Wear/Profile "
-                           "magnification may change), or start afresh (`--overwrite`).");
+          throw InputError(
+            "Cannot resume from '" + checkpoint + "': it was written for another scene than " + scene.file +
+            " with these settings: " + (differences.empty() ? "its fingerprint differs" : differences) +
+            ". Resume with the scene and --set options the run was started with (only Output/*, "
+            "Wear/Number of iterations, Wear/Target revolutions, Wear/FE output, Wear/Profile "
+            "magnification, Life/Maximum revolutions and Life/Maximum iterations may change), or start afresh (`--overwrite`).");
         }
       wear::StateShape shape;
       const auto       n = scene.mechanism->n_coordinates();
@@ -232,12 +232,15 @@ namespace wearlink::workflows
 
     /** One line per iteration on stderr: revolutions, factor, depths and volume per joint. */
     void
-    print_progress(const wear::WearLoop &loop, const unsigned int n_iterations, const double seconds)
+    print_progress(const wear::WearLoop &loop,
+                   const unsigned int    n_iterations,
+                   const double          seconds,
+                   const std::string    &prefix)
     {
       const auto        &st = loop.state();
       std::ostringstream os;
-      os << "[wearlink] wear iteration " << st.iterations_done << '/' << n_iterations << "  revolutions "
-         << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
+      os << "[wearlink] " << prefix << "wear iteration " << st.iterations_done << '/' << n_iterations
+         << "  revolutions " << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
       for (const auto &j : st.joints)
         {
           const auto &r = j.history.back();
@@ -300,7 +303,9 @@ namespace wearlink::workflows
       ro.analyses  = false;
       ro.warnings  = &result.warnings;
       Stopwatch dynamics;
-      result.summary             = run_scene(scene, ro);
+      result.summary = run_scene(scene, ro);
+      if (options.more_warnings)
+        result.warnings.merge(*options.more_warnings);
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
@@ -421,8 +426,12 @@ namespace wearlink::workflows
         io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
       if (write && scene.wear_loop.fe_output)
         write_fe_files(wearing, loop, dir, fe_meshes_copied);
+      if (options.after_iteration)
+        options.after_iteration(loop);
     });
-    while (!loop.finished())
+    if (options.factor_limit)
+      loop.set_factor_limit(options.factor_limit);
+    while (!loop.finished() && !(options.stop && options.stop(loop)))
       {
         if (options.stop_after > 0 && done_here == options.stop_after)
           {
@@ -438,13 +447,15 @@ namespace wearlink::workflows
         loop.iterate(observers);
         ++done_here;
         if (options.progress)
-          print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds());
+          print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds(), options.progress_prefix);
       }
     result.state    = loop.state();
     result.timings  = loop.timings();
     result.finished = true;
     if (options.final_outputs)
       after_wear(scene, options, result);
+    if (options.final_outputs && options.extend_summary)
+      options.extend_summary(result.summary);
     // A resumed run's wall time includes its earlier processes' up to the checkpoint.
     if (options.final_outputs && write)
       write_run_files(scene, dir, result, loop.earlier_wall_time() + total.seconds());

@@ -9,6 +9,7 @@
 
 #include "app/command_line.h"
 #include "app/output_claim.h"
+#include "app/run_files.h"
 #include "base/exceptions.h"
 #include "base/output_directory.h"
 #include "io/scene.h"
@@ -21,6 +22,47 @@
 
 namespace wearlink::app
 {
+  RunFiles
+  run_files()
+  {
+    RunFiles f;
+    f.patterns       = {"summary.json",
+                        "parameters.prm",
+                        "time_series.csv",
+                        "checkpoint.json",
+                        "analysis_series.csv",
+                        "phase_portrait_*.png",
+                        "poincare_section.csv",
+                        "poincare_*.png",
+                        "lyapunov_*.csv",
+                        "lyapunov_*.png",
+                        "wear_history.csv",
+                        "wear_depth_*.csv",
+                        "wear_depth_*.png",
+                        "profiles_*.csv",
+                        "profiles_*.msh",
+                        "profile_*_bore.png",
+                        "profile_*_pin.png",
+                        "bore_*.csv",
+                        "pin_*.csv",
+                        "wear_volume.png",
+                        "response_before.csv",
+                        "response_after.csv",
+                        "response.png",
+                        "before_after.md",
+                        "before_after_*.png",
+                        "before_after_*.csv",
+                        "mesh_*.msh",
+                        "fields_*.vtu",
+                        "fields_*_pressure.csv",
+                        "orbit_*.png",
+                        "contact_forces.png",
+                        "accelerations.png"};
+    f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe"};
+    return f;
+  }
+
+
   namespace
   {
     const char *help_text =
@@ -95,47 +137,6 @@ Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files
 memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
 (see `wearlink --help`).
 )";
-
-    /** The file names `wearlink run` writes (see the help above), for --overwrite. */
-    RunFiles
-    run_files()
-    {
-      RunFiles f;
-      f.patterns       = {"summary.json",
-                          "parameters.prm",
-                          "time_series.csv",
-                          "checkpoint.json",
-                          "analysis_series.csv",
-                          "phase_portrait_*.png",
-                          "poincare_section.csv",
-                          "poincare_*.png",
-                          "lyapunov_*.csv",
-                          "lyapunov_*.png",
-                          "wear_history.csv",
-                          "wear_depth_*.csv",
-                          "wear_depth_*.png",
-                          "profiles_*.csv",
-                          "profiles_*.msh",
-                          "profile_*_bore.png",
-                          "profile_*_pin.png",
-                          "bore_*.csv",
-                          "pin_*.csv",
-                          "wear_volume.png",
-                          "response_before.csv",
-                          "response_after.csv",
-                          "response.png",
-                          "before_after.md",
-                          "before_after_*.png",
-                          "before_after_*.csv",
-                          "mesh_*.msh",
-                          "fields_*.vtu",
-                          "fields_*_pressure.csv",
-                          "orbit_*.png",
-                          "contact_forces.png",
-                          "accelerations.png"};
-      f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe"};
-      return f;
-    }
 
     /** Take @p dir for this run (see the help text): lock, stale temporaries, earlier runs. */
     std::unique_ptr<OutputDirectory>
