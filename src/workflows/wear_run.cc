@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/wear_run.h"
 
+#include "analysis/cycle_peaks.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "io/analyses_parameters.h"
@@ -281,12 +282,57 @@ namespace wearlink::workflows
     }
 
     /**
+     * The peak acceleration magnitude of the response body over every accepted step, in
+     * the Wear/Response cycles from the initial assembly before wear (the first
+     * iteration's start; not known to a resumed run) and after wear: the largest and the
+     * mean of the per-cycle peaks, and the ratio after/before of each.
+     */
+    Json
+    response_block(const io::Scene                   &scene,
+                   const analysis::CyclePeakRecorder *before,
+                   const analysis::CyclePeakRecorder &after)
+    {
+      const double cycles = scene.wear_loop.response_cycles;
+      const auto   whole  = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
+      const auto   peaks  = [whole](const analysis::CyclePeakRecorder &p, double &largest, double &mean) {
+        const auto n = std::min(whole, p.peaks().size());
+        largest = mean = 0;
+        for (std::size_t k = 0; k < n; ++k)
+          {
+            largest = std::max(largest, p.peaks()[k]);
+            mean += p.peaks()[k] / n;
+          }
+        return n > 0;
+      };
+      Json r      = Json::object();
+      r["body"]   = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      r["cycles"] = cycles;
+      double a_largest = 0, a_mean = 0, b_largest = 0, b_mean = 0;
+      if (peaks(after, a_largest, a_mean))
+        {
+          r["peak_acceleration_after_m_s2"]     = a_largest;
+          r["mean_cycle_peak_after_m_s2"]       = a_mean;
+        }
+      if (before && peaks(*before, b_largest, b_mean) && b_largest > 0)
+        {
+          r["peak_acceleration_before_m_s2"] = b_largest;
+          r["mean_cycle_peak_before_m_s2"]   = b_mean;
+          r["peak_acceleration_ratio"]       = a_largest / b_largest;
+          r["mean_cycle_peak_ratio"]         = a_mean / b_mean;
+        }
+      return r;
+    }
+
+    /**
      * After the loop: the response after wear from the initial assembly with the final
      * profiles, the summary, the worn profiles and plots, and the before/after-wear
      * comparison if the scene lists analyses.
      */
     void
-    after_wear(io::Scene &scene, const WearRunOptions &options, WearRunResult &result)
+    after_wear(io::Scene                         &scene,
+               const WearRunOptions              &options,
+               WearRunResult                     &result,
+               const analysis::CyclePeakRecorder *before_peaks)
     {
       const bool        write  = !options.output_directory.empty();
       const std::string dir    = options.output_directory;
@@ -297,9 +343,10 @@ namespace wearlink::workflows
       for (auto *j : scene.clearance_joints)
         j->set_mode(false, 0);
       io::ResponseRecorder after(*scene.mechanism, io::response_body(scene), period / 400, ws.response_cycles * period);
-      RunOptions           ro;
+      analysis::CyclePeakRecorder after_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+      RunOptions                  ro;
       ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
-      ro.observers = {&after};
+      ro.observers = {&after, &after_peaks};
       ro.analyses  = false;
       ro.warnings  = &result.warnings;
       Stopwatch dynamics;
@@ -309,6 +356,7 @@ namespace wearlink::workflows
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
+      result.summary["response"] = response_block(scene, before_peaks, after_peaks);
       if (write)
         {
           io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
@@ -415,7 +463,8 @@ namespace wearlink::workflows
       loop.set_checkpoint(checkpoint);
 
     unsigned int         done_here = 0;
-    io::ResponseRecorder before(*scene.mechanism,
+    analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+    io::ResponseRecorder        before(*scene.mechanism,
                                 io::response_body(scene),
                                 period / 400,
                                 scene.wear_loop.response_cycles * period);
@@ -443,7 +492,10 @@ namespace wearlink::workflows
         const Stopwatch iteration;
         auto            observers = options.observers;
         if (loop.state().iterations_done == 0)
-          observers.push_back(&before);
+          {
+            observers.push_back(&before);
+            observers.push_back(&before_peaks);
+          }
         loop.iterate(observers);
         ++done_here;
         if (options.progress)
@@ -453,7 +505,7 @@ namespace wearlink::workflows
     result.timings  = loop.timings();
     result.finished = true;
     if (options.final_outputs)
-      after_wear(scene, options, result);
+      after_wear(scene, options, result, options.resume ? nullptr : &before_peaks);
     if (options.final_outputs && options.extend_summary)
       options.extend_summary(result.summary);
     // A resumed run's wall time includes its earlier processes' up to the checkpoint.

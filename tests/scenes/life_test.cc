@@ -10,6 +10,7 @@
 // worn clearance at the start of every iteration and the mean contact force exceeds m g
 // by a few tenths of a percent).
 #include "base/json.h"
+#include "base/output_directory.h"
 #include "io/json_file.h"
 #include "support/test_support.h"
 
@@ -17,6 +18,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 using namespace wearlink;
 using namespace wearlink::testing;
@@ -98,4 +101,30 @@ TEST(Life, AResumedRunEndsWhereTheUninterruptedRunEnds)
               json_number(b.at("criteria").at(c).at("revolutions")))
       << c;
   EXPECT_EQ(file_content(whole + "/life_history.csv"), file_content(parts + "/life_history.csv"));
+}
+
+// `life` holds its folder as `run` does (app/output_claim.h): a folder locked by another
+// process (this one) is refused with exit status 2 naming the holder, untouched; a folder
+// holding an earlier run's summary.json is refused unless --overwrite.
+TEST(Life, HoldsItsFolderAsRunDoes)
+{
+  const std::string scene = source_path("tests/scenes/life_journal.prm");
+  const std::string dir   = fresh_directory("life_locked");
+  {
+    OutputDirectory held(dir, EarlierRun::resume, {}, "");
+    const auto      r = run_wearlink({"life", scene, "--output", dir, "--quiet"});
+    EXPECT_EQ(r.exit_status, 2) << r.output;
+    EXPECT_NE(r.output.find("is in use by another wearlink run (pid " + std::to_string(::getpid())), std::string::npos)
+      << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/summary.json"));
+  }
+  std::ofstream(dir + "/summary.json") << "earlier";
+  const auto refused = run_wearlink({"life", scene, "--output", dir, "--quiet"});
+  EXPECT_EQ(refused.exit_status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("holds the files of an earlier run (summary.json)"), std::string::npos)
+    << refused.output;
+  EXPECT_EQ(file_content(dir + "/summary.json"), "earlier");
+  const auto replaced = run_wearlink({"life", scene, "--output", dir, "--quiet", "--overwrite"});
+  EXPECT_EQ(replaced.exit_status, 0) << replaced.output;
+  EXPECT_NE(file_content(dir + "/summary.json"), "earlier");
 }

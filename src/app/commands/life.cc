@@ -4,10 +4,12 @@
 #include "workflows/life.h"
 
 #include "app/command_line.h"
+#include "app/ensemble_command.h"
 #include "app/output_claim.h"
 #include "app/run_files.h"
 #include "base/exceptions.h"
 #include "io/life_parameters.h"
+#include "workflows/ensemble.h"
 
 #include <filesystem>
 #include <iostream>
@@ -16,9 +18,10 @@ namespace wearlink::app
 {
   namespace
   {
-    const char *help_text =
-      R"(wearlink life SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
+    const std::string help_text =
+      std::string(R"(wearlink life SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
 wearlink life SCENE.prm --resume DIR [--set ...] [--quiet]
+[mpirun -np R] wearlink life SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [...]
 
 When is the joint worn out? Runs the wear loop of a wear scene (section Wear: the
 iterations, their extrapolation, the pressure models; see `wearlink run --help`) until
@@ -56,9 +59,14 @@ within the tolerance; the first criterion reached and its life. The table is pri
                       may be raised)
 
 )"
-      R"(The output directory is locked while the command runs; one that holds an earlier run's
+                  R"(The output directory is locked while the command runs; one that holds an earlier run's
 files is refused unless --overwrite (remove them) or --resume (continue it).
 
+Ensembles (default folder output/<scene name>_life_ensemble; each member a life run in
+DIR/member_<k>/; the revolutions to each criterion get a mean, a standard deviation and
+a 95 % interval, over the members that reached it):
+)") + workflows::ensemble_help() +
+      R"(
 Options:
   --output DIR        output directory
   --set S/E=V         override entry E of subsection S (repeatable), e.g.
@@ -83,13 +91,37 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
       return f;
     }
 
+    /** Every member a life run (workflows/life.h) in DIR/member_<k>/. */
+    int
+    run_life_ensemble(const std::string &file, const ParsedArguments &a)
+    {
+      const bool progress = !a.has("--quiet");
+      return run_ensemble_command(
+        "life",
+        file,
+        a,
+        [progress](io::Scene &scene, const std::string &dir, const std::string &prefix, const bool resume) {
+          workflows::LifeRunOptions o;
+          o.output_directory = dir;
+          o.resume           = resume;
+          o.progress         = progress;
+          o.progress_prefix  = prefix;
+          return workflows::run_life(scene, o).wear.summary;
+        },
+        life_files());
+    }
+
     int
     run(const std::vector<std::string> &args)
     {
-      const auto a = parse_arguments(
-        args,
-        {{"--output", true}, {"--set", true, true}, {"--quiet", false}, {"--overwrite", false}, {"--resume", true}},
-        "life");
+      std::vector<OptionSpec> spec = {{"--output", true},
+                                      {"--set", true, true},
+                                      {"--quiet", false},
+                                      {"--overwrite", false},
+                                      {"--resume", true}};
+      for (const auto &o : ensemble_options())
+        spec.push_back(o);
+      const auto a = parse_arguments(args, spec, "life");
       if (a.positional.size() != 1)
         throw InputError("`wearlink life` needs exactly one scene file (given " + std::to_string(a.positional.size()) +
                          "). See `wearlink life --help`.");
@@ -99,6 +131,11 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
       const std::string file  = a.positional[0];
       io::Scene         scene = io::read_scene(file, a.all("--set"));
       io::check_life_criteria(scene); // before the folder is claimed: a bad input writes nothing
+      if (a.has("--ensemble") || a.has("--seed") || a.has("--perturbation"))
+        {
+          ensemble_request(a); // a bad value is refused before anything runs
+          return run_life_ensemble(file, a);
+        }
 
       workflows::LifeRunOptions o;
       o.resume           = a.has("--resume");
@@ -125,6 +162,6 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
   const Command        life_command = {"life",
                                        "life SCENE.prm [--output DIR] [--set S/E=V ...]  "
                                               "wear until the scene's Life criteria: revolutions to each",
-                                       help_text,
+                                       help_text.c_str(),
                                        run};
 } // namespace wearlink::app
