@@ -104,7 +104,7 @@ namespace wearlink::workflows
           take(it.value(), key, it.key() + "_" + key);
     if (summary.contains("response"))
       for (auto it = summary.at("response").begin(); it != summary.at("response").end(); ++it)
-        if (it.key() != "cycles")
+        if (it.key() != "cycles" && it.key() != "settling_cycles")
           take(summary.at("response"), it.key(), "response_" + it.key());
     if (summary.contains("life"))
       {

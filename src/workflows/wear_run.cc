@@ -284,36 +284,39 @@ namespace wearlink::workflows
     /**
      * The peak acceleration magnitude of the response body over every accepted step, in
      * the Wear/Response cycles from the initial assembly before wear (the first
-     * iteration's start; not known to a resumed run) and after wear: the largest and the
-     * mean of the per-cycle peaks, and the ratio after/before of each.
+     * iteration's start; not known to a resumed run) and after wear: the largest over
+     * them, and the mean of the per-cycle peaks after the first cycle (the journal
+     * settles from its assembly position in it; with one response cycle, that one), and
+     * the ratios after/before.
      */
     Json
     response_block(const io::Scene                   &scene,
                    const analysis::CyclePeakRecorder *before,
                    const analysis::CyclePeakRecorder &after)
     {
-      const double cycles = scene.wear_loop.response_cycles;
-      const auto   whole  = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
-      const auto   peaks  = [whole](const analysis::CyclePeakRecorder &p, double &largest, double &mean) {
+      const double cycles  = scene.wear_loop.response_cycles;
+      const auto   whole   = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
+      const auto   settle  = std::size_t(whole >= 2 ? 1 : 0);
+      const auto   measure = [&](const analysis::CyclePeakRecorder &p, double &largest, double &mean) {
         const auto n = std::min(whole, p.peaks().size());
         largest = mean = 0;
         for (std::size_t k = 0; k < n; ++k)
-          {
-            largest = std::max(largest, p.peaks()[k]);
-            mean += p.peaks()[k] / n;
-          }
-        return n > 0;
+          largest = std::max(largest, p.peaks()[k]);
+        for (std::size_t k = settle; k < n; ++k)
+          mean += p.peaks()[k] / (n - settle);
+        return n > settle;
       };
-      Json r      = Json::object();
-      r["body"]   = scene.mechanism->get_bodies()[io::response_body(scene)].name;
-      r["cycles"] = cycles;
+      Json r               = Json::object();
+      r["body"]            = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      r["cycles"]          = cycles;
+      r["settling_cycles"] = settle;
       double a_largest = 0, a_mean = 0, b_largest = 0, b_mean = 0;
-      if (peaks(after, a_largest, a_mean))
+      if (measure(after, a_largest, a_mean))
         {
-          r["peak_acceleration_after_m_s2"]     = a_largest;
-          r["mean_cycle_peak_after_m_s2"]       = a_mean;
+          r["peak_acceleration_after_m_s2"] = a_largest;
+          r["mean_cycle_peak_after_m_s2"]   = a_mean;
         }
-      if (before && peaks(*before, b_largest, b_mean) && b_largest > 0)
+      if (before && measure(*before, b_largest, b_mean) && b_largest > 0)
         {
           r["peak_acceleration_before_m_s2"] = b_largest;
           r["mean_cycle_peak_before_m_s2"]   = b_mean;
@@ -462,7 +465,7 @@ namespace wearlink::workflows
     if (write)
       loop.set_checkpoint(checkpoint);
 
-    unsigned int         done_here = 0;
+    unsigned int                done_here = 0;
     analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
     io::ResponseRecorder        before(*scene.mechanism,
                                 io::response_body(scene),
