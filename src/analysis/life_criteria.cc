@@ -146,6 +146,41 @@ namespace wearlink::analysis
     return (remaining - 0.5 * tolerance * total) / cycles;
   }
 
+  double
+  ResponseTrend::rise(const double revolutions) const
+  {
+    if (points < 2)
+      return 0;
+    return 100 * slope * revolutions / fresh;
+  }
+
+  ResponseTrend
+  response_trend(const std::vector<double> &revolutions, const std::vector<double> &measures, const std::size_t count)
+  {
+    ResponseTrend t;
+    double        sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t k = 0; k < count && k < measures.size(); ++k)
+      if (std::isfinite(measures[k]))
+        {
+          sx += revolutions[k];
+          sy += measures[k];
+          sxx += revolutions[k] * revolutions[k];
+          sxy += revolutions[k] * measures[k];
+          ++t.points;
+        }
+    const double n = static_cast<double>(t.points), d = n * sxx - sx * sx;
+    if (t.points == 0)
+      return t;
+    t.slope        = t.points >= 2 && d > 0 ? (n * sxy - sx * sy) / d : 0.0;
+    t.fresh        = (sy - t.slope * sx) / n;
+    double squares = 0;
+    for (std::size_t k = 0; k < count && k < measures.size(); ++k)
+      if (std::isfinite(measures[k]))
+        squares += std::pow(measures[k] - t.fresh - t.slope * revolutions[k], 2);
+    t.scatter = t.points > 2 ? std::sqrt(squares / (n - 2)) / t.fresh : std::numeric_limits<double>::quiet_NaN();
+    return t;
+  }
+
   std::vector<double>
   LifeHistory::column(const std::size_t c) const
   {

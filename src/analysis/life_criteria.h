@@ -11,11 +11,17 @@
 //                     relative revolution of pin and bushing [m];
 //   pin_mass_loss     the mass worn off a joint's pin (volume × density) [mg];
 //   bushing_mass_loss the same of a bushing [mg];
-//   response_rise     the rise of the response measure over its value with the fresh
-//                     profiles [%]. The measure: the mean over `Response cycles` driving
-//                     cycles of the per-cycle peak |a| of the response body (every
+//   response_rise     the rise of the response measure's trend over its value with the
+//                     fresh profiles [%]. The measure: the mean over `Response cycles`
+//                     driving cycles of the per-cycle peak |a| of the response body (every
 //                     accepted integrator step, analysis/cycle_peaks.h), in a run from the
 //                     initial assembly with the current profiles after one settling cycle.
+//                     It scatters by ~10 % from one measurement to the next (the impacts
+//                     of a chaotic clearance mechanism: a rise is reached by noise long
+//                     before the joint has changed), so the criterion follows its trend:
+//                     the least-squares line through every measurement so far (the fresh
+//                     one included) against revolutions, rise = line(N)/line(0) − 1; it
+//                     counts from the 4th measurement on.
 // A joint criterion is reached when any wearing joint reaches it (the summary names it).
 //
 // Locating a crossing. An iteration extrapolates its simulated wear by a factor f: the
@@ -137,6 +143,26 @@ namespace wearlink::analysis
     std::size_t iteration = 0; ///< the row at which it was first reached
   };
 
+  /** How many response measurements the trend needs before the response criterion counts. */
+  constexpr std::size_t min_response_points = 4;
+
+  /** The least-squares line of the response measures [m/s²] against revolutions. */
+  struct ResponseTrend
+  {
+    double      fresh   = std::numeric_limits<double>::quiet_NaN(); ///< the line at 0 revolutions [m/s²]
+    double      slope   = std::numeric_limits<double>::quiet_NaN(); ///< [m/s² per revolution]
+    double      scatter = std::numeric_limits<double>::quiet_NaN(); ///< residuals' standard deviation / fresh [-]
+    std::size_t points  = 0;
+
+    /** The rise of the line at @p revolutions over its fresh value [%] (0 with one point). */
+    double
+    rise(double revolutions) const;
+  };
+
+  /** The trend of the finite @p measures at @p revolutions (the first @p count rows). */
+  ResponseTrend
+  response_trend(const std::vector<double> &revolutions, const std::vector<double> &measures, std::size_t count);
+
   /**
    * What a life run knows after each iteration: one row per iteration (row 0: the start,
    * before any wear), each criterion's value and the joint that has it, and the response
@@ -148,9 +174,9 @@ namespace wearlink::analysis
     std::vector<CriterionSpec>            criteria;
     std::vector<unsigned int>             iterations;
     std::vector<double>                   revolutions, factors;
-    std::vector<std::vector<double>>      values; ///< [row][criterion]
-    std::vector<std::vector<std::string>> joints; ///< [row][criterion]
-    std::vector<double>                   response;
+    std::vector<std::vector<double>>      values;   ///< [row][criterion]
+    std::vector<std::vector<std::string>> joints;   ///< [row][criterion]
+    std::vector<double>                   response; ///< the measure of each row [m/s²]
 
     std::size_t
     rows() const

@@ -100,7 +100,7 @@ namespace wearlink::io
     spec.title   = title;
     spec.x_label = "revolutions";
     spec.y_label = "criterion value / its limit (1: reached)";
-    spec.extra   = "set key inside top left box opaque\nset grid\nset yrange [0:*]\n";
+    spec.extra   = "set key inside top left box opaque\nset grid\n";
     int point    = 4;
     for (std::size_t c = 0; c < h.criteria.size(); ++c)
       {

@@ -63,6 +63,8 @@ namespace wearlink::workflows
       done(const wear::WearLoop &loop) const;
       bool
       reached(std::size_t c) const;
+      analysis::Crossing
+      crossing(std::size_t c) const;
       double
       measure_response();
       void
@@ -181,17 +183,17 @@ namespace wearlink::workflows
 
     /**
      * The factor at which the response criterion @p c (column @p index) is predicted to
-     * cross, from the trend of its last two values against revolutions; +∞ without a
-     * rising trend (then the iteration takes the loop's own factor).
+     * cross, from the slope of the response trend; +∞ without a rising trend or before it
+     * has enough points (then the iteration takes the loop's own factor).
      */
     double
     LifeRun::response_reach(const wear::StepPreview &p, const analysis::CriterionSpec &c, const std::size_t index) const
     {
-      const std::size_t k = history.rows();
-      if (k < 2)
+      const std::size_t k     = history.rows();
+      const auto        trend = analysis::response_trend(history.revolutions, history.response, k);
+      if (trend.points < analysis::min_response_points - 1)
         return std::numeric_limits<double>::infinity();
-      const double rise  = history.values[k - 1][index] - history.values[k - 2][index];
-      const double slope = rise / (history.revolutions[k - 1] - history.revolutions[k - 2]);
+      const double slope = 100 * trend.slope / trend.fresh; // [% per revolution]
       if (!(slope > 0) || !std::isfinite(slope))
         return std::numeric_limits<double>::infinity();
       return std::max(0.0, (c.limit - history.values[k - 1][index]) / slope / p.cycles);
@@ -213,7 +215,8 @@ namespace wearlink::workflows
       for (const auto &c : history.criteria)
         if (c.kind == analysis::Criterion::response_rise)
           {
-            values.push_back(100 * (history.response.back() / history.response.front() - 1));
+            const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
+            values.push_back(trend.rise(st.revolutions));
             joints.push_back("");
           }
         else
@@ -232,10 +235,25 @@ namespace wearlink::workflows
         print_progress();
     }
 
+    /**
+     * The first crossing of criterion @p c; the response's counts from its
+     * min_response_points-th measurement (a trend of fewer points is not one).
+     */
+    analysis::Crossing
+    LifeRun::crossing(const std::size_t c) const
+    {
+      auto         values = history.column(c);
+      const double limit  = history.criteria[c].limit;
+      if (history.criteria[c].kind == analysis::Criterion::response_rise)
+        for (std::size_t k = 0; k + 1 < analysis::min_response_points && k < values.size(); ++k)
+          values[k] = std::min(values[k], limit * (1 - 1e-6));
+      return analysis::first_crossing(history.revolutions, values, limit);
+    }
+
     bool
     LifeRun::reached(const std::size_t c) const
     {
-      return analysis::first_crossing(history.revolutions, history.column(c), history.criteria[c].limit).reached;
+      return crossing(c).reached;
     }
 
     bool
@@ -323,10 +341,17 @@ namespace wearlink::workflows
       life["life_revolutions"] = first.empty() ? Json() : Json(first_revolutions);
       life["life_hours"]       = first.empty() ? Json() : Json(first_revolutions * period / 3600);
       if (scene.life.response_rise > 0)
-        life["response"] = {{"body", scene.mechanism->get_bodies()[body].name},
-                            {"cycles", scene.life.response_cycles},
-                            {"fresh_m_s2", history.response.front()},
-                            {"last_m_s2", history.response.back()}};
+        {
+          const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
+          life["response"] = {{"body", scene.mechanism->get_bodies()[body].name},
+                              {"cycles", scene.life.response_cycles},
+                              {"measured_fresh_m_s2", history.response.front()},
+                              {"measured_last_m_s2", history.response.back()},
+                              {"trend_fresh_m_s2", trend.fresh},
+                              {"trend_slope_percent_per_1000_rev", 1e5 * trend.slope / trend.fresh},
+                              {"scatter_percent", 100 * trend.scatter},
+                              {"measurements", trend.points}};
+        }
       return life;
     }
   } // namespace

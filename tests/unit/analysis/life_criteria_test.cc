@@ -88,3 +88,18 @@ TEST(LifeCriteria, FirstCrossingIsInterpolatedInItsBracket)
   EXPECT_TRUE(first_crossing({0, 100}, {0, 10 * (1 - 1e-12)}, 10).reached);
   EXPECT_FALSE(first_crossing({0, 100}, {0, 9.9}, 10).reached);
 }
+
+TEST(LifeCriteria, TheResponseTrendIsTheLeastSquaresLine)
+{
+  // 100, 110, 100, 110 m/s² at 0, 1000, 2000, 3000 rev: the line 102 + 0.002 N
+  // (slope Σ(x − x̄)(y − ȳ)/Σ(x − x̄)² = 10000/5e6), so 6 % above its fresh value at
+  // 3000 rev, while the last measurement over the first says +10 %.
+  const auto t = response_trend({0, 1000, 2000, 3000}, {100, 110, 100, 110}, 4);
+  EXPECT_EQ(t.points, 4u);
+  EXPECT_NEAR(t.slope, 0.002, 1e-15);
+  EXPECT_NEAR(t.fresh, 102, 1e-12);
+  EXPECT_NEAR(t.rise(3000), 100 * 6 / 102.0, 1e-12);
+  // Residuals ±(−2, 6, −6, 2): s = √(80 / 2) relative to 102.
+  EXPECT_NEAR(t.scatter, std::sqrt(40.0) / 102, 1e-12);
+  EXPECT_EQ(response_trend({0, 1000}, {100, 120}, 1).rise(1000), 0) << "one point has no trend";
+}
