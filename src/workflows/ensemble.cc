@@ -100,8 +100,9 @@ namespace wearlink::workflows
           take(it.value(), key, it.key() + "_" + key);
     if (summary.contains("bodies"))
       for (auto it = summary.at("bodies").begin(); it != summary.at("bodies").end(); ++it)
-        for (const char *key : {"max_abs_ax_m_s2", "max_abs_ay_m_s2"})
-          take(it.value(), key, it.key() + "_" + key);
+        for (const char *key : {"max_abs_ax_m_s2", "max_abs_ay_m_s2"}) // a slider's 1e-14 across its guide is no figure
+          if (it.value().contains(key) && it.value().at(key).is_number() && json_number(it.value().at(key)) > 1e-6)
+            take(it.value(), key, it.key() + "_" + key);
     if (summary.contains("response"))
       for (auto it = summary.at("response").begin(); it != summary.at("response").end(); ++it)
         if (it.key() != "cycles" && it.key() != "settling_cycles")
