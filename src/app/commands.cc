@@ -13,12 +13,14 @@ namespace wearlink::app
   extern const Command study_command;
   extern const Command compare_dynamics_command;
   extern const Command compare_signal_command;
+  extern const Command life_command;
 
   const std::vector<Command> &
   commands()
   {
     static const std::vector<Command> table = {
       run_scene_command,
+      life_command,
       lyapunov_command,
       contact_command,
       sweep_command,

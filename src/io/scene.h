@@ -10,6 +10,7 @@
 #pragma once
 
 #include "analysis/analyses_settings.h"
+#include "analysis/life_criteria.h"
 #include "base/parameters.h"
 #include "contact/clearance_joint.h"
 #include "mbs/mechanism.h"
@@ -61,6 +62,8 @@ namespace wearlink::io
     std::vector<std::unique_ptr<wear::JointWear>> wear;
     /** The "Wear" section (used when wear is non-empty). */
     wear::WearLoopSettings wear_loop;
+    /** The "Life" section: the stop criteria of `wearlink life` (io/life_parameters.h). */
+    analysis::LifeSettings life;
 
     /** The parsed parameters (for echoing the effective scene next to the results). */
     std::unique_ptr<dealii::ParameterHandler> parameters;

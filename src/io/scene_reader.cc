@@ -8,6 +8,7 @@
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
 #include "io/analyses_parameters.h"
+#include "io/life_parameters.h"
 #include "io/profile_file.h"
 #include "io/scene.h"
 #include "mbs/assembly.h"
@@ -440,6 +441,7 @@ namespace wearlink::io
       declare_numerics(prm);
       declare_analyses(prm);
       wear::declare_wear_loop(prm);
+      declare_life(prm);
     }
 
     // ------------------------------------------------------------------------------
@@ -846,6 +848,7 @@ namespace wearlink::io
 
     build_scene(scene, prm, bodies, joints);
     scene.analyses = parse_analyses(prm, scene);
+    scene.life     = parse_life(prm, scene);
     return scene;
   }
 

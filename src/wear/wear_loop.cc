@@ -135,7 +135,9 @@ namespace wearlink::wear
     const auto   loads      = record_loads(extra_observers, t_start + settings.cycles_per_iteration * period);
     const auto   increments = archard_increments(*loads, t_start);
     Stopwatch    bookkeeping;
-    const double factor = extrapolation_factor(increments);
+    double       factor = extrapolation_factor(increments);
+    if (factor_limit)
+      factor = std::max(0.0, std::min(factor, factor_limit(preview(increments, factor))));
     for (unsigned int i = 0; i < wearing.size(); ++i)
       update_profiles(i, *increments[i], *loads, factor);
     st.factors.push_back(factor);
@@ -209,6 +211,32 @@ namespace wearlink::wear
     const double factor =
       max_depth > 0 ? std::min(settings.max_factor, settings.max_depth_increment / max_depth) : settings.max_factor;
     return std::min(factor, (settings.target_revolutions - st.revolutions) / settings.cycles_per_iteration);
+  }
+
+  StepPreview
+  WearLoop::preview(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments, const double factor) const
+  {
+    StepPreview p;
+    p.revolutions = st.revolutions;
+    p.cycles      = settings.cycles_per_iteration;
+    p.factor      = factor;
+    for (unsigned int i = 0; i < wearing.size(); ++i)
+      {
+        const auto           &js = st.joints[i];
+        StepPreview::Joint    j;
+        const IterationRecord r = js.history.empty() ? IterationRecord() : js.history.back();
+        j.state                 = &js;
+        j.depth_pin             = r.depth_pin.empty() ? std::vector<double>(js.pin.n_points(), 0.0) : r.depth_pin;
+        j.depth_bore            = r.depth_bore.empty() ? std::vector<double>(js.bore.n_points(), 0.0) : r.depth_bore;
+        j.volume_pin            = r.volume_pin;
+        j.volume_bore           = r.volume_bore;
+        j.pin_increment  = smoothed(increments[i]->pin_depth(), settings.smoothing_wavelength, js.pin.mean_radius());
+        j.bore_increment = smoothed(increments[i]->bore_depth(), settings.smoothing_wavelength, js.bore.mean_radius());
+        j.pin_volume_increment  = increments[i]->pin_volume;
+        j.bore_volume_increment = increments[i]->bore_volume;
+        p.joints.push_back(std::move(j));
+      }
+    return p;
   }
 
   void

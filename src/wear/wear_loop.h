@@ -65,6 +65,35 @@ namespace wearlink::wear
                                                         const std::vector<mbs::StepObserver *> &observers)>;
 
   /**
+   * What step 3 knows when it chooses an iteration's factor, for a caller that limits
+   * the factor (WearLoop::set_factor_limit; the life run's stop criteria): per wearing
+   * joint the wear so far and this iteration's increments as step 4 applies them
+   * (smoothed), for a factor of 1. Step 4 makes the depths depth + f · increment and the
+   * volumes volume + f · volume increment.
+   */
+  struct StepPreview
+  {
+    struct Joint
+    {
+      const JointWearState *state = nullptr;                 ///< the joint's wear so far (its history)
+      std::vector<double>   depth_pin, depth_bore;           ///< cumulative depth per area [m]
+      double                volume_pin = 0, volume_bore = 0; ///< cumulative [m³]
+      std::vector<double>   pin_increment, bore_increment;   ///< depth per area, factor 1 [m]
+      double                pin_volume_increment = 0, bore_volume_increment = 0; ///< [m³]
+    };
+    double             revolutions = 0; ///< represented before this iteration [-]
+    double             cycles      = 0; ///< simulated in this iteration [-]
+    double             factor      = 0; ///< the factor step 3 chose itself [-]
+    std::vector<Joint> joints;
+  };
+
+  /**
+   * The largest factor a caller allows for the iteration of @p preview (≥ 0; the loop
+   * takes the smaller of it and its own).
+   */
+  using FactorLimit = std::function<double(const StepPreview &preview)>;
+
+  /**
    * @p depth (periodic samples around a surface of mean radius @p radius [m]) low-pass
    * filtered at @p wavelength [m] (Wear/Smoothing wavelength: Gaussian, transfer 1/2
    * there, mean kept); unchanged for a wavelength of 0.
@@ -147,6 +176,17 @@ namespace wearlink::wear
       iteration_outputs = std::move(write);
     }
 
+    /**
+     * Limit every iteration's factor by @p limit (see StepPreview), after the loop's own
+     * choice (fixed, or adaptive up to Target revolutions). The limited factor is the
+     * iteration's: it is in the state, the checkpoint and the revolutions.
+     */
+    void
+    set_factor_limit(FactorLimit limit)
+    {
+      factor_limit = std::move(limit);
+    }
+
     /** True when the iterations are done or the adaptive target is reached. */
     bool
     finished() const;
@@ -194,6 +234,10 @@ namespace wearlink::wear
     double
     extrapolation_factor(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments) const;
 
+    /** What set_factor_limit's function sees of this iteration (step 3). */
+    StepPreview
+    preview(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments, double factor) const;
+
     /** Step 4. New profiles and the cumulative records of joint @p i. */
     void
     update_profiles(unsigned int i, const ArchardAccumulator &increment, const LoadRecorder &loads, double factor);
@@ -224,6 +268,7 @@ namespace wearlink::wear
     WearState                              st;
     std::string                            checkpoint_path;
     std::function<void()>                  iteration_outputs; ///< see set_iteration_outputs()
+    FactorLimit                            factor_limit;      ///< see set_factor_limit()
     PhaseTimings                           own_timings;
     double                                 earlier_total = 0;  ///< see earlier_wall_time()
     Stopwatch                              process_time;       ///< since start() or resume()

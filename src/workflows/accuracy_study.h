@@ -29,8 +29,11 @@
 // force/acceleration errors.
 #pragma once
 
+#include "analysis/ensemble_statistics.h"
 #include "io/scene.h"
 
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -60,6 +63,14 @@ namespace wearlink::workflows
     std::vector<std::string> knobs;
     /** Replacement values by knob name (each value: parts separated by ';'). */
     std::map<std::string, std::vector<std::string>> values;
+    /**
+     * Members of the chaos floor (see ChaosFloor; 0 or 1: none): the scene's own run and
+     * floor_members − 1 runs perturbed as the members of an ensemble
+     * (workflows/ensemble.h) with this seed and perturbation.
+     */
+    unsigned int  floor_members = 4;
+    std::uint64_t seed          = 1;
+    double        perturbation  = 1e-9; ///< [rad]
   };
 
   /** Every knob wearlink knows, by name, for a scene using every effect. */
@@ -89,11 +100,38 @@ namespace wearlink::workflows
     bool        ok           = true;
     std::string failure;       ///< message of a failed run
     double      wall_time = 0; ///< [s], reading + building + running
+    double      cpu_time  = 0; ///< [s], the process's CPU time over the same (its cost on a core of its own)
     /** Measured quantities (name → value), e.g. "A/volume_pin_m3". */
     std::map<std::string, double> quantities;
     /** Relative errors against the knob's reference, same names (+ "A/profile_pin"). */
     std::map<std::string, double> errors;
     double                        worst = 0; ///< see the file comment; NaN if unknown
+  };
+
+  /**
+   * The chaos floor of a study (issue 15): runs at the scene's own settings whose
+   * initial crank angles differ by ~1e-9 rad differ by what no knob can resolve. Every
+   * pair of members is compared as a knob's row is with its reference; the mean and the
+   * largest of each error over the pairs are the floor that a knob's error must clear to
+   * mean anything. Also the members' quantities' mean, standard deviation and 95 %
+   * interval.
+   */
+  struct ChaosFloor
+  {
+    unsigned int                  members      = 0;
+    std::uint64_t                 seed         = 0;
+    double                        perturbation = 0;
+    std::map<std::string, double> mean_error, max_error; ///< per error name, over the pairs
+    /** The pairs' "worst" (the measure of the rows' worst column): mean, smallest, largest. */
+    double worst_mean = std::numeric_limits<double>::quiet_NaN();
+    double worst_min  = std::numeric_limits<double>::quiet_NaN();
+    double worst_max  = std::numeric_limits<double>::quiet_NaN();
+    /** The same of the pairs' worn-volume error (largest over surfaces and joints). */
+    double                                          volume_mean = std::numeric_limits<double>::quiet_NaN();
+    double                                          volume_min  = std::numeric_limits<double>::quiet_NaN();
+    double                                          volume_max  = std::numeric_limits<double>::quiet_NaN();
+    std::map<std::string, analysis::EnsembleFigure> quantities;
+    std::vector<std::string>                        failures; ///< of members that failed
   };
 
   struct AccuracyStudy
@@ -103,6 +141,9 @@ namespace wearlink::workflows
     bool                     wears = false;
     std::vector<std::string> quantity_names; ///< in column order
     std::vector<StudyRow>    rows;
+    ChaosFloor               floor; ///< members 0: none
+    /** False on the MPI ranks other than 0 (they measured runs; rank 0 has the study). */
+    bool root = true;
 
     /** The Markdown table (accuracy.md). */
     std::string
@@ -110,11 +151,19 @@ namespace wearlink::workflows
     /** accuracy.csv. */
     std::string
     csv() const;
+    /**
+     * accuracy_floor.csv: per quantity (and error) the chaos floor's mean and largest
+     * pairwise error, and the members' mean, standard deviation and 95 % interval.
+     */
+    std::string
+    floor_csv() const;
   };
 
   /**
    * Validate the request against @p scene_file (InputError before any run), then run
-   * every value of every selected knob. A run that fails is a row with ok = false.
+   * every value of every selected knob and the chaos floor's members, on the ranks of
+   * MPI_COMM_WORLD if MPI is initialised (workflows/accuracy_runs.h). A run that fails is
+   * a row with ok = false. The study is complete on rank 0 (root = false elsewhere).
    */
   AccuracyStudy
   run_accuracy_study(const std::string &scene_file, const StudyRequest &request);

@@ -14,7 +14,8 @@ namespace wearlink::workflows
   is_run_control(const std::string &entry)
   {
     return entry.rfind("Output/", 0) == 0 || entry == "Wear/Number of iterations" ||
-           entry == "Wear/Target revolutions" || entry == "Wear/FE output" || entry == "Wear/Profile magnification";
+           entry == "Wear/Target revolutions" || entry == "Wear/FE output" || entry == "Wear/Profile magnification" ||
+           entry == "Life/Maximum revolutions" || entry == "Life/Maximum iterations";
   }
 
   std::map<std::string, std::string>

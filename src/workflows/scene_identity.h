@@ -2,7 +2,8 @@
 // The identity of a scene for resuming a wear run: its effective entries
 // ("Section/Subsection/Entry" → value, --set overrides applied) without those that
 // only say how far to go and what to write (run control: Output/*, Wear/Number of
-// iterations, Wear/Target revolutions, Wear/FE output, Wear/Profile magnification), and
+// iterations, Wear/Target revolutions, Wear/FE output, Wear/Profile magnification,
+// Life/Maximum revolutions, Life/Maximum iterations), and
 // a fingerprint of them (64-bit FNV-1a, the same on every platform). A checkpoint keeps
 // both, so that a resume with another scene is refused with the entries that differ.
 #pragma once

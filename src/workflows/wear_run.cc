@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/wear_run.h"
 
+#include "analysis/cycle_peaks.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "io/analyses_parameters.h"
@@ -186,12 +187,12 @@ namespace wearlink::workflows
       if (st.fingerprint != fingerprint(entries) || st.scene != entries)
         {
           const std::string differences = scene_differences(st.scene, entries);
-          throw InputError("Cannot resume from '" + checkpoint + "': it was written for another scene than " +
-                           scene.file +
-                           " with these settings: " + (differences.empty() ? "its fingerprint differs" : differences) +
-                           ". Resume with the scene and --set options the run was started with (only Output/*, "
-                           "Wear/Number of iterations, Wear/Target revolutions, Wear/FE output and Wear/Profile "
-                           "magnification may change), or start afresh (`--overwrite`).");
+          throw InputError(
+            "Cannot resume from '" + checkpoint + "': it was written for another scene than " + scene.file +
+            " with these settings: " + (differences.empty() ? "its fingerprint differs" : differences) +
+            ". Resume with the scene and --set options the run was started with (only Output/*, "
+            "Wear/Number of iterations, Wear/Target revolutions, Wear/FE output, Wear/Profile "
+            "magnification, Life/Maximum revolutions and Life/Maximum iterations may change), or start afresh (`--overwrite`).");
         }
       wear::StateShape shape;
       const auto       n = scene.mechanism->n_coordinates();
@@ -232,12 +233,15 @@ namespace wearlink::workflows
 
     /** One line per iteration on stderr: revolutions, factor, depths and volume per joint. */
     void
-    print_progress(const wear::WearLoop &loop, const unsigned int n_iterations, const double seconds)
+    print_progress(const wear::WearLoop &loop,
+                   const unsigned int    n_iterations,
+                   const double          seconds,
+                   const std::string    &prefix)
     {
       const auto        &st = loop.state();
       std::ostringstream os;
-      os << "[wearlink] wear iteration " << st.iterations_done << '/' << n_iterations << "  revolutions "
-         << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
+      os << "[wearlink] " << prefix << "wear iteration " << st.iterations_done << '/' << n_iterations
+         << "  revolutions " << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
       for (const auto &j : st.joints)
         {
           const auto &r = j.history.back();
@@ -278,12 +282,60 @@ namespace wearlink::workflows
     }
 
     /**
+     * The peak acceleration magnitude of the response body over every accepted step, in
+     * the Wear/Response cycles from the initial assembly before wear (the first
+     * iteration's start; not known to a resumed run) and after wear: the largest over
+     * them, and the mean of the per-cycle peaks after the first cycle (the journal
+     * settles from its assembly position in it; with one response cycle, that one), and
+     * the ratios after/before.
+     */
+    Json
+    response_block(const io::Scene                   &scene,
+                   const analysis::CyclePeakRecorder *before,
+                   const analysis::CyclePeakRecorder &after)
+    {
+      const double cycles  = scene.wear_loop.response_cycles;
+      const auto   whole   = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
+      const auto   settle  = std::size_t(whole >= 2 ? 1 : 0);
+      const auto   measure = [&](const analysis::CyclePeakRecorder &p, double &largest, double &mean) {
+        const auto n = std::min(whole, p.peaks().size());
+        largest = mean = 0;
+        for (std::size_t k = 0; k < n; ++k)
+          largest = std::max(largest, p.peaks()[k]);
+        for (std::size_t k = settle; k < n; ++k)
+          mean += p.peaks()[k] / (n - settle);
+        return n > settle;
+      };
+      Json r               = Json::object();
+      r["body"]            = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      r["cycles"]          = cycles;
+      r["settling_cycles"] = settle;
+      double a_largest = 0, a_mean = 0, b_largest = 0, b_mean = 0;
+      if (measure(after, a_largest, a_mean))
+        {
+          r["peak_acceleration_after_m_s2"] = a_largest;
+          r["mean_cycle_peak_after_m_s2"]   = a_mean;
+        }
+      if (before && measure(*before, b_largest, b_mean) && b_largest > 0)
+        {
+          r["peak_acceleration_before_m_s2"] = b_largest;
+          r["mean_cycle_peak_before_m_s2"]   = b_mean;
+          r["peak_acceleration_ratio"]       = a_largest / b_largest;
+          r["mean_cycle_peak_ratio"]         = a_mean / b_mean;
+        }
+      return r;
+    }
+
+    /**
      * After the loop: the response after wear from the initial assembly with the final
      * profiles, the summary, the worn profiles and plots, and the before/after-wear
      * comparison if the scene lists analyses.
      */
     void
-    after_wear(io::Scene &scene, const WearRunOptions &options, WearRunResult &result)
+    after_wear(io::Scene                         &scene,
+               const WearRunOptions              &options,
+               WearRunResult                     &result,
+               const analysis::CyclePeakRecorder *before_peaks)
     {
       const bool        write  = !options.output_directory.empty();
       const std::string dir    = options.output_directory;
@@ -294,16 +346,20 @@ namespace wearlink::workflows
       for (auto *j : scene.clearance_joints)
         j->set_mode(false, 0);
       io::ResponseRecorder after(*scene.mechanism, io::response_body(scene), period / 400, ws.response_cycles * period);
-      RunOptions           ro;
+      analysis::CyclePeakRecorder after_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+      RunOptions                  ro;
       ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
-      ro.observers = {&after};
+      ro.observers = {&after, &after_peaks};
       ro.analyses  = false;
       ro.warnings  = &result.warnings;
       Stopwatch dynamics;
-      result.summary             = run_scene(scene, ro);
+      result.summary = run_scene(scene, ro);
+      if (options.more_warnings)
+        result.warnings.merge(*options.more_warnings);
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
+      result.summary["response"] = response_block(scene, before_peaks, after_peaks);
       if (write)
         {
           io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
@@ -409,8 +465,9 @@ namespace wearlink::workflows
     if (write)
       loop.set_checkpoint(checkpoint);
 
-    unsigned int         done_here = 0;
-    io::ResponseRecorder before(*scene.mechanism,
+    unsigned int                done_here = 0;
+    analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+    io::ResponseRecorder        before(*scene.mechanism,
                                 io::response_body(scene),
                                 period / 400,
                                 scene.wear_loop.response_cycles * period);
@@ -421,8 +478,12 @@ namespace wearlink::workflows
         io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
       if (write && scene.wear_loop.fe_output)
         write_fe_files(wearing, loop, dir, fe_meshes_copied);
+      if (options.after_iteration)
+        options.after_iteration(loop);
     });
-    while (!loop.finished())
+    if (options.factor_limit)
+      loop.set_factor_limit(options.factor_limit);
+    while (!loop.finished() && !(options.stop && options.stop(loop)))
       {
         if (options.stop_after > 0 && done_here == options.stop_after)
           {
@@ -434,17 +495,22 @@ namespace wearlink::workflows
         const Stopwatch iteration;
         auto            observers = options.observers;
         if (loop.state().iterations_done == 0)
-          observers.push_back(&before);
+          {
+            observers.push_back(&before);
+            observers.push_back(&before_peaks);
+          }
         loop.iterate(observers);
         ++done_here;
         if (options.progress)
-          print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds());
+          print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds(), options.progress_prefix);
       }
     result.state    = loop.state();
     result.timings  = loop.timings();
     result.finished = true;
     if (options.final_outputs)
-      after_wear(scene, options, result);
+      after_wear(scene, options, result, options.resume ? nullptr : &before_peaks);
+    if (options.final_outputs && options.extend_summary)
+      options.extend_summary(result.summary);
     // A resumed run's wall time includes its earlier processes' up to the checkpoint.
     if (options.final_outputs && write)
       write_run_files(scene, dir, result, loop.earlier_wall_time() + total.seconds());

@@ -11,8 +11,10 @@
 #include "base/timings.h"
 #include "base/validity_warnings.h"
 #include "io/scene.h"
+#include "wear/wear_loop.h"
 #include "wear/wear_state.h"
 
+#include <functional>
 #include <string>
 
 namespace wearlink::workflows
@@ -34,6 +36,26 @@ namespace wearlink::workflows
     std::vector<mbs::StepObserver *> observers;
     /** Skip the after-wear response run and the plots (tests, comparisons). */
     bool final_outputs = true;
+    /** Prefix of the progress lines (an ensemble's member). */
+    std::string progress_prefix;
+
+    // Hooks of a run that is more than a wear run (workflows/life.h); none by default.
+    /** Limits every iteration's factor (wear::WearLoop::set_factor_limit). */
+    wear::FactorLimit factor_limit;
+    /**
+     * Called after every iteration with the loop (the joints hold the new profiles),
+     * after the iteration's own files and before its checkpoint.
+     */
+    std::function<void(const wear::WearLoop &loop)> after_iteration;
+    /** Ends the loop before the next iteration when it returns true (then as if finished). */
+    std::function<bool(const wear::WearLoop &loop)> stop;
+    /** Adds to the summary of a finished run before it is written. */
+    std::function<void(Json &summary)> extend_summary;
+    /**
+     * Warnings of other runs of this command (a life run's response runs), merged into
+     * the summary's and printed with them; not kept in the checkpoint.
+     */
+    const ValidityWarnings *more_warnings = nullptr;
   };
 
   struct WearRunResult

@@ -8,10 +8,13 @@
 #include "workflows/run.h"
 
 #include "app/command_line.h"
+#include "app/ensemble_command.h"
 #include "app/output_claim.h"
+#include "app/run_files.h"
 #include "base/exceptions.h"
 #include "base/output_directory.h"
 #include "io/scene.h"
+#include "workflows/ensemble.h"
 #include "workflows/first_look.h"
 #include "workflows/wear_run.h"
 
@@ -21,11 +24,53 @@
 
 namespace wearlink::app
 {
+  RunFiles
+  run_files()
+  {
+    RunFiles f;
+    f.patterns       = {"summary.json",
+                        "parameters.prm",
+                        "time_series.csv",
+                        "checkpoint.json",
+                        "analysis_series.csv",
+                        "phase_portrait_*.png",
+                        "poincare_section.csv",
+                        "poincare_*.png",
+                        "lyapunov_*.csv",
+                        "lyapunov_*.png",
+                        "wear_history.csv",
+                        "wear_depth_*.csv",
+                        "wear_depth_*.png",
+                        "profiles_*.csv",
+                        "profiles_*.msh",
+                        "profile_*_bore.png",
+                        "profile_*_pin.png",
+                        "bore_*.csv",
+                        "pin_*.csv",
+                        "wear_volume.png",
+                        "response_before.csv",
+                        "response_after.csv",
+                        "response.png",
+                        "before_after.md",
+                        "before_after_*.png",
+                        "before_after_*.csv",
+                        "mesh_*.msh",
+                        "fields_*.vtu",
+                        "fields_*_pressure.csv",
+                        "orbit_*.png",
+                        "contact_forces.png",
+                        "accelerations.png"};
+    f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe"};
+    return f;
+  }
+
+
   namespace
   {
-    const char *help_text =
-      R"(wearlink run SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
+    const std::string help_text =
+      std::string(R"(wearlink run SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
 wearlink run SCENE.prm --resume DIR [--set ...] [--quiet]
+wearlink run SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [--output DIR] [...]
 wearlink run --validate SCENE.prm [--set ...]
 wearlink run --print-parameters [SCENE.prm]
 
@@ -82,6 +127,11 @@ killed are removed at the next start. SIGINT/SIGTERM stop a run: its temporary f
 are removed, finished files and the last checkpoint are kept (exit status 128 + signal;
 a second signal stops at once).
 
+Ensembles (mpirun -np R wearlink run SCENE --ensemble N: members over R MPI ranks;
+default folder output/<scene name>_ensemble; --resume DIR reads finished members back
+and resumes the others):
+)") + workflows::ensemble_help() +
+      R"(
 Options:
   --output DIR        output directory
   --set S/E=V         override entry E of subsection S (repeatable), e.g.
@@ -95,47 +145,6 @@ Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files
 memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
 (see `wearlink --help`).
 )";
-
-    /** The file names `wearlink run` writes (see the help above), for --overwrite. */
-    RunFiles
-    run_files()
-    {
-      RunFiles f;
-      f.patterns       = {"summary.json",
-                          "parameters.prm",
-                          "time_series.csv",
-                          "checkpoint.json",
-                          "analysis_series.csv",
-                          "phase_portrait_*.png",
-                          "poincare_section.csv",
-                          "poincare_*.png",
-                          "lyapunov_*.csv",
-                          "lyapunov_*.png",
-                          "wear_history.csv",
-                          "wear_depth_*.csv",
-                          "wear_depth_*.png",
-                          "profiles_*.csv",
-                          "profiles_*.msh",
-                          "profile_*_bore.png",
-                          "profile_*_pin.png",
-                          "bore_*.csv",
-                          "pin_*.csv",
-                          "wear_volume.png",
-                          "response_before.csv",
-                          "response_after.csv",
-                          "response.png",
-                          "before_after.md",
-                          "before_after_*.png",
-                          "before_after_*.csv",
-                          "mesh_*.msh",
-                          "fields_*.vtu",
-                          "fields_*_pressure.csv",
-                          "orbit_*.png",
-                          "contact_forces.png",
-                          "accelerations.png"};
-      f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe"};
-      return f;
-    }
 
     /** Take @p dir for this run (see the help text): lock, stale temporaries, earlier runs. */
     std::unique_ptr<OutputDirectory>
@@ -219,18 +228,55 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
       return 0;
     }
 
+    /**
+     * `wearlink run --ensemble N`: every member a wear run (or a plain run) of the scene
+     * perturbed, in DIR/member_<k>/ (app/ensemble_command.h).
+     */
+    int
+    run_ensemble_scene(const std::string &file, const ParsedArguments &a, const bool wear)
+    {
+      const bool progress = !a.has("--quiet");
+      if (wear)
+        return run_ensemble_command(
+          "run",
+          file,
+          a,
+          [progress](io::Scene &scene, const std::string &dir, const std::string &prefix, const bool resume) {
+            workflows::WearRunOptions w;
+            w.output_directory = dir;
+            w.resume           = resume;
+            w.progress         = progress;
+            w.progress_prefix  = prefix;
+            return workflows::run_wear(scene, w).summary;
+          },
+          run_files());
+      if (a.has("--resume"))
+        throw InputError("--resume continues a wear run, but no clearance joint of " + file + " has a Wear law.");
+      return run_ensemble_command(
+        "run",
+        file,
+        a,
+        [](io::Scene &scene, const std::string &dir, const std::string &, const bool) {
+          workflows::RunOptions ro;
+          ro.output_directory = dir;
+          return workflows::run_scene(scene, ro);
+        },
+        run_files());
+    }
+
     int
     run(const std::vector<std::string> &args)
     {
-      const auto a = parse_arguments(args,
-                                     {{"--output", true},
+      std::vector<OptionSpec> spec = {{"--output", true},
                                       {"--set", true, true},
                                       {"--validate", false},
                                       {"--print-parameters", false},
                                       {"--quiet", false},
                                       {"--overwrite", false},
-                                      {"--resume", true}},
-                                     "run");
+                                      {"--resume", true}};
+      for (const auto &o : ensemble_options())
+        spec.push_back(o);
+      const auto a = parse_arguments(args, spec, "run");
       if (a.has("--print-parameters"))
         {
           io::print_scene_parameters(std::cout, a.positional.empty() ? "" : a.positional[0]);
@@ -253,6 +299,11 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
           return 0;
         }
 
+      if (a.has("--ensemble") || a.has("--seed") || a.has("--perturbation"))
+        {
+          ensemble_request(a); // a bad value is refused before anything runs
+          return run_ensemble_scene(file, a, workflows::has_wear(scene));
+        }
       if (workflows::has_wear(scene) || a.has("--resume"))
         return run_wear_scene(scene, file, a);
       return run_plain_scene(scene, file, a);
@@ -263,6 +314,6 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
   const Command        run_scene_command = {"run",
                                             "run SCENE.prm [--output DIR] [--set S/E=V ...]  "
                                                    "simulate a mechanism scene",
-                                            help_text,
+                                            help_text.c_str(),
                                             run};
 } // namespace wearlink::app

@@ -8,6 +8,9 @@
 #include "base/exceptions.h"
 #include "workflows/accuracy_study.h"
 
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -19,6 +22,8 @@ namespace wearlink::app
     const std::string help_text =
       std::string(R"(wearlink study accuracy SCENE.prm [--output DIR] [--set "Section/Entry=value" ...]
                      [--quick] [--knobs a,b,...] [--study STUDY.prm] [--overwrite] [--quiet]
+                     [--ensemble N] [--seed S] [--perturbation RAD]
+mpirun -np R wearlink study accuracy ...   (the same, runs spread over R MPI ranks)
 
 Shows what accuracy costs in time. Each accuracy knob that applies to the scene
 (integrator tolerance or step, Baumgarte factors, contact law, discrete areas per
@@ -32,10 +37,24 @@ the knob's reference run (its finest value; for choices without a "finer" one, t
 scene's own): relative error of the worn volume and largest wear depth of pin and
 bushing, relative L2 difference of the worn-depth profiles, peak contact force per
 clearance joint and peak acceleration of the response body.
-One progress line per run. Writes into DIR (default: output/<scene name>_accuracy),
-each file atomically: accuracy.csv (every quantity and error), accuracy.md (the table),
-accuracy_pareto.png (worst error vs wall time, log-log, one series per knob) and, for
-wear scenes, accuracy_pareto_volume.png (the worn volume's error vs wall time).
+The pressure-model knob evaluates all three models on sampled load states (50 per
+cycle; fe with 0.2 mm surface elements, re-meshing beyond 2 of them) when the scene
+itself evaluates every step without fe: fe at every step of a 100-cycle run takes
+hours; what sampling costs in accuracy is the load-sampling knob's row.
+
+The chaos floor: the scene's own run and N − 1 runs whose angle drivers' initial angles
+are shifted by ~1e-9 rad (as the members of `wearlink run --ensemble`; N = --ensemble,
+default 4, 0: none) are compared pairwise as a row is with its reference. Their spread
+is what no knob can resolve: the table has it as a column ("floor", and each row's
+"worst/floor"), the PNGs as a band, accuracy_floor.csv per quantity.
+
+Runs are spread over the MPI ranks (largest predicted first, each to the least loaded
+rank); one line per run with the estimated time left (on that rank). Writes into DIR
+(default: output/<scene name>_accuracy; rank 0), each file atomically: accuracy.csv
+(every quantity and error, the floor), accuracy.md (the table, also printed),
+accuracy_floor.csv, accuracy_pareto.png (worst error vs wall time, log-log, one series
+per knob, the floor as a band) and, for wear scenes, accuracy_pareto_volume.png (the
+worn volume's error vs wall time).
 )") + output_folder_help +
       R"(
 Options:
@@ -47,6 +66,9 @@ Options:
   --set S/E=V         override a scene entry in every run (repeatable)
   --overwrite         replace the files of an earlier study in DIR
   --quiet             no progress lines
+  --ensemble N        members of the chaos floor (default 4; 0: no floor)
+  --seed S            seed of the floor's perturbations (default 1)
+  --perturbation RAD  their size (default 1e-9 rad)
 
 )" + workflows::study_file_help() +
       R"(
@@ -60,7 +82,23 @@ output that cannot be written or memory that ran out, 1 an internal error (see
     RunFiles
     study_files()
     {
-      return {{"accuracy.csv", "accuracy.md", "accuracy_pareto.png", "accuracy_pareto_volume.png"}, {}};
+      return {
+        {"accuracy.csv", "accuracy.md", "accuracy_floor.csv", "accuracy_pareto.png", "accuracy_pareto_volume.png"},
+        {}};
+    }
+
+    /** --ensemble N of the study: the chaos floor's members (0, or 2 … 100; default 4). */
+    unsigned int
+    floor_members(const ParsedArguments &a)
+    {
+      const double n = a.number("--ensemble", 4);
+      if (!(n == 0 || (n >= 2 && n <= 100)) || n != std::floor(n))
+        throw InputError("--ensemble " + a.value("--ensemble") +
+                         ": the chaos floor needs 2 … 100 members (0: no floor; default 4).");
+      const double s = a.number("--seed", 1);
+      if (!(s >= 0 && s <= 9007199254740992.0 && s == std::floor(s)))
+        throw InputError("--seed " + a.value("--seed") + ": the seed must be a whole number from 0 to 2^53.");
+      return static_cast<unsigned int>(n);
     }
 
     int
@@ -77,7 +115,10 @@ output that cannot be written or memory that ran out, 1 an internal error (see
                                                           {"--knobs", true},
                                                           {"--study", true},
                                                           {"--quiet", false},
-                                                          {"--overwrite", false}},
+                                                          {"--overwrite", false},
+                                                          {"--ensemble", true},
+                                                          {"--seed", true},
+                                                          {"--perturbation", true}},
                                      "study accuracy");
       if (a.positional.size() != 1)
         throw InputError("`wearlink study accuracy` needs exactly one scene file (given " +
@@ -89,6 +130,12 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       request.progress  = !a.has("--quiet");
       if (a.has("--study"))
         workflows::read_study_file(a.value("--study"), request);
+      request.floor_members = floor_members(a);
+      request.seed          = static_cast<std::uint64_t>(a.number("--seed", 1));
+      request.perturbation  = a.number("--perturbation", 1e-9);
+      if (!(request.perturbation > 0 && request.perturbation <= 1e-3))
+        throw InputError("--perturbation " + a.value("--perturbation") +
+                         ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (default 1e-9 rad).");
       if (a.has("--knobs"))
         {
           request.knobs.clear();
@@ -99,10 +146,19 @@ output that cannot be written or memory that ran out, 1 an internal error (see
         }
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_accuracy");
-      const auto claimed = claim_output_directory(output_claim(out, study_files(), a));
+      // MPI for this command only. One thread per rank: the ranks are the parallelism.
+      int                                      argc           = 1;
+      char                                     program[]      = "wearlink";
+      char                                    *argv_storage[] = {program, nullptr};
+      char                                   **argv           = argv_storage;
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      const auto claimed = claim_output_directory_on_root(output_claim(out, study_files(), a));
       const auto study   = workflows::run_accuracy_study(file, request);
+      if (!study.root)
+        return 0;
       workflows::write_accuracy_study(out, study);
-      std::cout << study.markdown() << "\nwrote " << out << "/accuracy.csv, accuracy.md, accuracy_pareto.png\n";
+      std::cout << study.markdown() << "\nwrote " << out
+                << "/accuracy.csv, accuracy.md, accuracy_floor.csv, accuracy_pareto.png\n";
       return 0;
     }
   } // namespace

@@ -80,3 +80,66 @@ TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
         }
   EXPECT_EQ(cases, 75u);
 }
+
+
+// A pin pushed into a worn pocket that is deeper than the pin's curvature can follow
+// rests on the pocket's two rims. Bore: R1 = 12 mm plus a pocket 100 µm deep over ±30°
+// (parabolic), pin R2 = 11.5 mm (c = 0.5 mm). Travelling along 0° the pin reaches the
+// rims at s = c/cos 30° = 0.577 mm, the floor only at s = c + 0.1 mm = 0.6 mm: the rims
+// carry it. A load at 10° lies inside the cone of the two rim normals (±30°), so both
+// rims must carry a share — the lateral slide of the pin from the first rim to the
+// second is what the solver's window must follow (issue 15: the sums run over a window
+// of the sub-grid; a window that missed the second rim would leave the pin penetrating
+// it, with all pressure on one rim). Equilibrium: the bore pressures integrate to the
+// load within the area discretization (1e-2 F, see the test above). The rims' shares
+// from statics: two forces along ±30° (from the bore centre) balancing F at 10° give
+// F_+30/F_−30 = sin 40°/sin 20° = 1.88; the contact arcs widen this a little, so only
+// the ordering and both being > 10 % of F are asserted.
+TEST(Winkler, APinInADeepPocketRestsOnBothRims)
+{
+  constexpr double    pi = 3.14159265358979323846;
+  const unsigned int  n  = 360;
+  std::vector<double> bore(n);
+  for (unsigned int k = 0; k < n; ++k)
+    {
+      const double x = std::remainder(2 * pi * k / n, 2 * pi) / (30 * pi / 180);
+      bore[k]        = 0.012 + (std::abs(x) < 1 ? 100e-6 * (1 - x * x) : 0.0);
+    }
+  contact::JointGeometry g;
+  g.bore         = Profile::from_samples(bore, "bore");
+  g.pin          = Profile::round(0.0115, n);
+  g.axial_length = 0.01;
+  g.bushing      = {207e9, 0.3};
+  g.pin_material = {207e9, 0.3};
+
+  dealii::ParameterHandler prm;
+  contact::pressure_models().declare_all(prm);
+  prm.enter_subsection("winkler");
+  prm.set("Layer thickness", "1e-3");
+  prm.leave_subsection();
+  ParameterReader reader(prm, "test");
+  auto            model = contact::pressure_models().create("winkler", reader, "Pressure model");
+  model->update_geometry(g);
+
+  const double         F = 500, direction = 10 * pi / 180;
+  contact::ContactLoad load;
+  load.contact_angle = direction;
+  load.normal_force  = F;
+  load.force         = {-F * std::cos(direction), -F * std::sin(direction)};
+  load.eccentricity  = {5.8e-4 * std::cos(direction), 5.8e-4 * std::sin(direction)};
+  contact::SurfacePressure out;
+  ASSERT_NO_THROW(model->evaluate(load, out));
+  double fx = 0, fy = 0, upper = 0, lower = 0;
+  for (unsigned int k = 0; k < n; ++k)
+    {
+      const double psi = 2 * pi * k / n, w = g.axial_length * g.bore.radius(psi) * 2 * pi / n;
+      fx += out.bore[k] * w * std::cos(psi);
+      fy += out.bore[k] * w * std::sin(psi);
+      const double deg = std::remainder(psi, 2 * pi) * 180 / pi;
+      (deg > 0 ? upper : lower) += out.bore[k] * w;
+    }
+  EXPECT_NEAR(fx, F * std::cos(direction), 1e-2 * F);
+  EXPECT_NEAR(fy, F * std::sin(direction), 1e-2 * F);
+  EXPECT_GT(lower, 0.1 * F) << "the rim at −30° carries nothing";
+  EXPECT_GT(upper, lower) << "the rim the load leans on (+30°) must carry more";
+}

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The peak acceleration of one body in every driving cycle, over every accepted
+// integrator step (not a sampled series, which can miss an impact's spike between
+// samples): the response measure of a life run's `Response rise` criterion and of the
+// before/after-wear response in a wear run's summary. A cycle is [t0 + kT, t0 + (k+1)T)
+// from the run's start t0; a step is counted in the cycle its end falls in.
+#pragma once
+
+#include "mbs/simulation.h"
+
+#include <vector>
+
+namespace wearlink::analysis
+{
+  class CyclePeakRecorder : public mbs::StepObserver
+  {
+  public:
+    /**
+     * @param n_coordinates of the mechanism (3 per body)
+     * @param body index of the body
+     * @param period driving period T [s]
+     * @param skip_cycles cycles at the start that are not recorded (a settling transient)
+     */
+    CyclePeakRecorder(unsigned int n_coordinates, unsigned int body, double period, unsigned int skip_cycles = 0);
+
+    void
+    on_start(const mbs::StepContext &c) override;
+    void
+    on_step(const mbs::StepContext &c) override;
+
+    /** Largest |a| (magnitude of the body's acceleration) per recorded cycle [m/s²]. */
+    const std::vector<double> &
+    peaks() const
+    {
+      return cycle_peaks;
+    }
+    /** The largest of peaks() (0 if none). */
+    double
+    largest() const;
+    /** The mean of peaks() over the whole cycles recorded (the last cycle if incomplete is left out; NaN if none). */
+    double
+    mean_of_whole_cycles() const;
+
+  private:
+    const unsigned int  n, body;
+    const double        period;
+    const unsigned int  skip;
+    double              t_start = 0, t_last = 0;
+    std::vector<double> cycle_peaks;
+  };
+} // namespace wearlink::analysis

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "app/ensemble_command.h"
+
+#include "app/output_claim.h"
+#include "base/exceptions.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+namespace wearlink::app
+{
+  std::vector<OptionSpec>
+  ensemble_options()
+  {
+    return {{"--ensemble", true}, {"--seed", true}, {"--perturbation", true}};
+  }
+
+  workflows::EnsembleRequest
+  ensemble_request(const ParsedArguments &a)
+  {
+    workflows::EnsembleRequest r;
+    if (!a.has("--ensemble"))
+      {
+        if (a.has("--seed") || a.has("--perturbation"))
+          throw InputError("--seed and --perturbation belong to an ensemble: add --ensemble N (2 … 1000).");
+        return r;
+      }
+    const double n = a.number("--ensemble", 0);
+    if (!(n >= 2 && n <= 1000 && n == std::floor(n)))
+      throw InputError("--ensemble " + a.value("--ensemble") +
+                       ": the number of members must be a whole number from 2 to 1000 (a spread needs two).");
+    r.members      = static_cast<unsigned int>(n);
+    const double s = a.number("--seed", 1);
+    if (!(s >= 0 && s <= 9007199254740992.0 && s == std::floor(s)))
+      throw InputError("--seed " + a.value("--seed") + ": the seed must be a whole number from 0 to 2^53.");
+    r.seed         = static_cast<std::uint64_t>(s);
+    r.perturbation = a.number("--perturbation", 1e-9);
+    if (!(r.perturbation > 0 && r.perturbation <= 1e-3))
+      throw InputError("--perturbation " + a.value("--perturbation") +
+                       ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (it is meant to be "
+                       "physically tiny; default 1e-9 rad).");
+    return r;
+  }
+
+  namespace
+  {
+    /** The ensemble's own files, and the member folders (those asked for and any earlier). */
+    RunFiles
+    ensemble_files(const std::string &dir, const unsigned int members, const RunFiles &member_files)
+    {
+      RunFiles f = member_files;
+      for (const char *name : {"summary.json", "ensemble.csv", "ensemble.png"})
+        f.patterns.push_back(name);
+      for (unsigned int k = 0; k < members; ++k)
+        f.subdirectories.push_back(workflows::member_directory_name(k, members));
+      std::error_code ec;
+      for (const auto &e : std::filesystem::directory_iterator(dir, ec))
+        if (e.is_directory(ec) && e.path().filename().string().rfind("member_", 0) == 0)
+          f.subdirectories.push_back(e.path().filename().string());
+      return f;
+    }
+  } // namespace
+
+  int
+  run_ensemble_command(const std::string          &command,
+                       const std::string          &file,
+                       const ParsedArguments      &a,
+                       const workflows::MemberRun &run,
+                       const RunFiles             &member_files)
+  {
+    // MPI for this command only. One thread per rank: the ranks are the parallelism.
+    int                                      argc           = 1;
+    char                                     program[]      = "wearlink";
+    char                                    *argv_storage[] = {program, nullptr};
+    char                                   **argv           = argv_storage;
+    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    workflows::EnsembleOptions               o;
+    o.scene_file           = file;
+    o.overrides            = ParameterOverrides(a.all("--set"));
+    o.request              = ensemble_request(a);
+    o.command              = command;
+    o.resume               = a.has("--resume");
+    o.progress             = !a.has("--quiet");
+    const std::string stem = std::filesystem::path(file).stem().string();
+    o.output_directory     = o.resume ?
+                               a.value("--resume") :
+                               a.value("--output", "output/" + stem + (command == "life" ? "_life" : "") + "_ensemble");
+    OutputClaim claim =
+      output_claim(o.output_directory, ensemble_files(o.output_directory, o.request.members, member_files), a);
+    if (o.resume)
+      claim.earlier = EarlierRun::resume;
+    claim.advice = "Add --overwrite to replace them, --resume " + o.output_directory +
+                   " (instead of --output) to continue that ensemble, or choose another --output directory.";
+    const auto claimed    = claim_output_directory_on_root(claim);
+    bool       all_failed = false;
+    const Json summary    = workflows::run_ensemble(o, run, all_failed);
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << workflows::ensemble_table(summary) << "wrote " << o.output_directory
+                << "/summary.json, ensemble.csv, ensemble.png and member_*/\n";
+    return all_failed ? 3 : 0;
+  }
+} // namespace wearlink::app

@@ -1,0 +1,356 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "workflows/ensemble.h"
+
+#include "analysis/ensemble_statistics.h"
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/interrupt.h"
+#include "base/output_directory.h"
+#include "base/text.h"
+#include "base/timings.h"
+#include "io/json_file.h"
+#include "io/plot.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace wearlink::workflows
+{
+  std::string
+  ensemble_help()
+  {
+    return R"(  --ensemble N        run N members (2 … 1000) whose initial conditions differ by a
+                      physically tiny, seeded perturbation: member k shifts the initial
+                      angle of every angle driver by σ z (z standard normal from the seed
+                      and k; σ = --perturbation), each a complete run in DIR/member_<k>/.
+                      With `mpirun -np R` the members are spread over R ranks (member k on
+                      rank k mod R); the results do not depend on R. DIR/summary.json holds
+                      ensemble.<figure>.{mean,std,ci95_low,ci95_high,members} (95 %
+                      interval of the mean, Student t for the member count) for every
+                      figure of the members' summaries, and the members; DIR/ensemble.csv
+                      one row per member, DIR/ensemble.png each figure's spread.
+  --seed S            seed of the perturbations (default 1): the same seed, the same members
+  --perturbation RAD  σ of the initial-angle shifts (default 1e-9 rad)
+)";
+  }
+
+  std::string
+  member_directory_name(const unsigned int k, const unsigned int n)
+  {
+    const auto         width = std::to_string(n > 0 ? n - 1 : 0).size();
+    std::ostringstream os;
+    os << "member_" << std::setw(static_cast<int>(std::max<std::size_t>(2, width))) << std::setfill('0') << k;
+    return os.str();
+  }
+
+  ParameterOverrides
+  member_overrides(const io::Scene               &scene,
+                   const ParameterOverrides      &base,
+                   const EnsembleRequest         &request,
+                   const unsigned int             k,
+                   std::map<std::string, double> *shifts)
+  {
+    if (scene.drivers.empty())
+      throw InputError("--ensemble perturbs the initial angle of the scene's angle drivers ('Joint <d>/Angle offset'), "
+                       "but " +
+                       scene.file + " has no angle driver.");
+    const auto         z   = analysis::member_normals(request.seed, k, static_cast<unsigned int>(scene.drivers.size()));
+    ParameterOverrides o   = base;
+    auto              &prm = *scene.parameters;
+    for (std::size_t d = 0; d < scene.drivers.size(); ++d)
+      {
+        const std::string name = scene.mechanism->get_constraints()[scene.drivers[d]]->name;
+        prm.enter_subsection("Joint " + name);
+        const double offset = prm.get_double("Angle offset");
+        prm.leave_subsection();
+        const double shift = request.perturbation * z[d];
+        o.set("Joint " + name + "/Angle offset", offset + shift);
+        if (shifts)
+          (*shifts)[name] = shift;
+      }
+    return o;
+  }
+
+  std::map<std::string, double>
+  summary_figures(const Json &summary)
+  {
+    std::map<std::string, double> f;
+    const auto                    take = [&f](const Json &block, const std::string &key, const std::string &name) {
+      if (block.contains(key) && block.at(key).is_number() && std::isfinite(json_number(block.at(key))))
+        f[name] = json_number(block.at(key));
+    };
+    static const char *const joint_keys[] = {"wear_volume_pin_m3",
+                                             "wear_volume_bushing_m3",
+                                             "max_wear_depth_pin_m",
+                                             "max_wear_depth_bushing_m",
+                                             "mass_loss_pin_mg",
+                                             "mass_loss_bushing_mg",
+                                             "sliding_distance_m",
+                                             "mean_normal_force_N",
+                                             "max_normal_force_N",
+                                             "fraction_in_contact"};
+    if (summary.contains("clearance_joints"))
+      for (auto it = summary.at("clearance_joints").begin(); it != summary.at("clearance_joints").end(); ++it)
+        for (const char *key : joint_keys)
+          take(it.value(), key, it.key() + "_" + key);
+    if (summary.contains("bodies"))
+      for (auto it = summary.at("bodies").begin(); it != summary.at("bodies").end(); ++it)
+        for (const char *key : {"max_abs_ax_m_s2", "max_abs_ay_m_s2"}) // a slider's 1e-14 across its guide is no figure
+          if (it.value().contains(key) && it.value().at(key).is_number() && json_number(it.value().at(key)) > 1e-6)
+            take(it.value(), key, it.key() + "_" + key);
+    if (summary.contains("response"))
+      for (auto it = summary.at("response").begin(); it != summary.at("response").end(); ++it)
+        if (it.key() != "cycles" && it.key() != "settling_cycles")
+          take(summary.at("response"), it.key(), "response_" + it.key());
+    if (summary.contains("life"))
+      {
+        const Json &life = summary.at("life");
+        take(life, "life_revolutions", "life_revolutions");
+        for (auto it = life.at("criteria").begin(); it != life.at("criteria").end(); ++it)
+          take(it.value(), "revolutions", "life_" + it.key() + "_revolutions");
+      }
+    return f;
+  }
+
+  namespace
+  {
+    /** What one member produced (serialised to gather it on rank 0). */
+    Json
+    run_member(const EnsembleOptions &o, const MemberRun &run, const unsigned int k, const int rank)
+    {
+      const Stopwatch   wall;
+      const std::string dir    = o.output_directory + "/" + member_directory_name(k, o.request.members);
+      Json              m      = {{"index", k}, {"rank", rank}, {"directory", dir}};
+      std::string       prefix = "member " + std::to_string(k) + ": ";
+      try
+        {
+          io::Scene                     base = io::read_scene(o.scene_file, o.overrides);
+          std::map<std::string, double> shifts;
+          const auto                    mine  = member_overrides(base, o.overrides, o.request, k, &shifts);
+          io::Scene                     scene = io::read_scene(o.scene_file, mine);
+          m["perturbation_rad"]               = shifts;
+          Json summary;
+          if (o.resume && std::filesystem::exists(dir + "/summary.json"))
+            summary = io::read_json_file(dir + "/summary.json");
+          else
+            summary = run(scene, dir, prefix, o.resume && std::filesystem::exists(dir + "/checkpoint.json"));
+          m["status"]  = "ok";
+          m["figures"] = summary_figures(summary);
+        }
+      catch (const Interrupted &) // SIGINT/SIGTERM stops the ensemble, not this member
+        {
+          throw;
+        }
+      catch (const NumericalError &e)
+        {
+          m["status"]  = "failed";
+          m["message"] = trim(e.message());
+        }
+      m["wall_time_s"] = wall.seconds();
+      return m;
+    }
+
+    /** Members round-robin over the ranks, gathered on rank 0 in member order. */
+    std::vector<Json>
+    run_members(const EnsembleOptions &o, const MemberRun &run, const MPI_Comm comm)
+    {
+      const unsigned int rank  = dealii::Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n     = dealii::Utilities::MPI::n_mpi_processes(comm);
+      Json               mine  = Json::array();
+      double             spent = 0;
+      unsigned int       done = 0, on_this_rank = 0;
+      for (unsigned int k = rank; k < o.request.members; k += n)
+        ++on_this_rank;
+      for (unsigned int k = rank; k < o.request.members; k += n)
+        {
+          mine.push_back(run_member(o, run, k, static_cast<int>(rank)));
+          spent += json_number(mine.back().at("wall_time_s"));
+          ++done;
+          if (o.progress)
+            std::cerr << "[wearlink] ensemble member " << k << " (rank " << rank
+                      << "): " << mine.back().at("status").get<std::string>() << " in " << std::setprecision(3)
+                      << json_number(mine.back().at("wall_time_s")) << " s; " << on_this_rank - done
+                      << " more on this rank, about " << spent / done * (on_this_rank - done) << " s left\n";
+        }
+      const auto        gathered = dealii::Utilities::MPI::gather(comm, mine.dump(-1), 0);
+      std::vector<Json> members(o.request.members);
+      for (const auto &text : gathered)
+        {
+          const Json j = Json::parse(text);
+          for (std::size_t i = 0; i < j.size(); ++i)
+            members[static_cast<std::size_t>(json_number(j[i].at("index")))] = j[i];
+        }
+      return rank == 0 ? members : std::vector<Json>();
+    }
+
+    /** Per figure, the statistics over the members that ran (analysis/ensemble_statistics.h). */
+    Json
+    statistics_of(const std::vector<Json> &members)
+    {
+      std::vector<std::map<std::string, double>> figures;
+      for (const auto &m : members)
+        if (m.at("status").get<std::string>() == "ok")
+          figures.push_back(m.at("figures").get<std::map<std::string, double>>());
+      Json out = Json::object();
+      for (const auto &[name, f] : analysis::ensemble_figures(figures))
+        out[name] = {{"mean", f.mean},
+                     {"std", f.std},
+                     {"ci95_low", f.ci95_low},
+                     {"ci95_high", f.ci95_high},
+                     {"members", f.members}};
+      return out;
+    }
+
+    /** ensemble.csv: one row per member, its status, perturbations and figures. */
+    std::string
+    members_csv(const Json &summary)
+    {
+      const Json        &members = summary.at("members");
+      const Json        &stats   = summary.at("ensemble");
+      std::ostringstream os;
+      os << "member,status,rank,wall_time_s";
+      std::vector<std::string> drivers;
+      if (!members.empty() && members[0].contains("perturbation_rad"))
+        for (auto it = members[0].at("perturbation_rad").begin(); it != members[0].at("perturbation_rad").end(); ++it)
+          drivers.push_back(it.key());
+      for (const auto &d : drivers)
+        os << ",perturbation_" << d << "_rad";
+      for (auto it = stats.begin(); it != stats.end(); ++it)
+        os << ',' << it.key();
+      os << '\n' << std::setprecision(17);
+      for (const auto &m : members)
+        {
+          os << json_number(m.at("index")) << ',' << m.at("status").get<std::string>() << ','
+             << json_number(m.at("rank")) << ',' << json_number(m.at("wall_time_s"));
+          for (const auto &d : drivers)
+            os << ',' << (m.contains("perturbation_rad") ? json_number(m.at("perturbation_rad").at(d)) : NAN);
+          for (auto it = stats.begin(); it != stats.end(); ++it)
+            os << ','
+               << (m.contains("figures") && m.at("figures").contains(it.key()) ?
+                     json_number(m.at("figures").at(it.key())) :
+                     NAN);
+          os << '\n';
+        }
+      return os.str();
+    }
+
+    /**
+     * ensemble.png: per figure, each member's deviation from the mean [%] (points) and
+     * the 95 % interval of the mean (a bar).
+     */
+    void
+    plot_spread(const Json &summary, const std::string &path)
+    {
+      const Json    &stats = summary.at("ensemble");
+      io::PlotSpec   spec;
+      io::PlotSeries points{"members", {}, {}, "points", "pt 7 ps 1.2 lc rgb 'black'"};
+      io::PlotSeries band{"95 % interval of the mean", {}, {}, "lines", "lw 6 lc rgb '#8080c0'"};
+      std::string    tics = "set xtics rotate by -40 noenhanced (";
+      int            i    = 0;
+      for (auto it = stats.begin(); it != stats.end(); ++it, ++i)
+        {
+          const double mean = json_number(it.value().at("mean"));
+          tics += (i ? ", " : "") + std::string("\"") + it.key() + "\" " + std::to_string(i);
+          if (!(std::abs(mean) > 0))
+            continue;
+          for (const auto &m : summary.at("members"))
+            if (m.contains("figures") && m.at("figures").contains(it.key()))
+              {
+                points.x.push_back(i);
+                points.y.push_back(100 * (json_number(m.at("figures").at(it.key())) / mean - 1));
+              }
+          const Json &lo = it.value().at("ci95_low"), &hi = it.value().at("ci95_high");
+          if (lo.is_number() && hi.is_number())
+            {
+              band.x.insert(band.x.end(), {double(i), double(i), NAN});
+              band.y.insert(band.y.end(),
+                            {100 * (json_number(lo) / mean - 1), 100 * (json_number(hi) / mean - 1), NAN});
+            }
+        }
+      spec.title =
+        "Ensemble of " + std::to_string(summary.at("members").size()) + " members: each figure relative to its mean";
+      spec.x_label = "";
+      spec.y_label = "member / mean − 1 [%]";
+      spec.series  = {band, points};
+      spec.extra   = tics + ")\nset xrange [-0.5:" + std::to_string(i - 0.5) + "]\nset bmargin 14\nset grid\n";
+      spec.width   = 1400;
+      spec.height  = 800;
+      io::plot_png(spec, path);
+    }
+  } // namespace
+
+  Json
+  run_ensemble(const EnsembleOptions &o, const MemberRun &run, bool &all_failed)
+  {
+    const MPI_Comm     comm    = MPI_COMM_WORLD;
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const Stopwatch    wall;
+    if (o.request.members < 2)
+      throw InputError("--ensemble " + std::to_string(o.request.members) +
+                       ": an ensemble needs at least 2 members (2 … 1000) for a spread.");
+    {
+      io::Scene base = io::read_scene(o.scene_file, o.overrides);
+      member_overrides(base, o.overrides, o.request, 0); // the scene can be perturbed (same on every rank)
+    }
+    if (rank == 0 && o.progress)
+      std::cerr << "[wearlink] ensemble of " << o.request.members << " members (seed " << o.request.seed
+                << ", perturbation " << o.request.perturbation << " rad) on " << n_ranks << " MPI rank"
+                << (n_ranks == 1 ? "" : "s") << "\n";
+    const auto members = run_members(o, run, comm);
+    all_failed         = false;
+    if (rank != 0)
+      return Json();
+    Json summary                = Json::object();
+    summary["scene"]            = o.scene_file;
+    summary["command"]          = o.command;
+    summary["overrides"]        = o.overrides.settings();
+    summary["members_count"]    = o.request.members;
+    summary["seed"]             = o.request.seed;
+    summary["perturbation_rad"] = o.request.perturbation;
+    summary["perturbation"] = "each angle driver's initial angle ('Joint <d>/Angle offset') + perturbation_rad × z, z "
+                              "standard normal from the seed and the member index";
+    summary["mpi_ranks"]    = n_ranks;
+    summary["wall_time_s"]  = wall.seconds();
+    summary["members"]      = members;
+    summary["ensemble"]     = statistics_of(members);
+    std::size_t ok          = 0;
+    for (const auto &m : members)
+      ok += m.at("status").get<std::string>() == "ok" ? 1 : 0;
+    summary["members_ok"] = ok;
+    all_failed            = ok == 0;
+    make_output_directory(o.output_directory);
+    write_file_atomically(o.output_directory + "/summary.json", summary.dump(2) + "\n");
+    write_file_atomically(o.output_directory + "/ensemble.csv", members_csv(summary));
+    if (ok > 0)
+      plot_spread(summary, o.output_directory + "/ensemble.png");
+    return summary;
+  }
+
+  std::string
+  ensemble_table(const Json &summary)
+  {
+    std::ostringstream os;
+    os << "figure                                      mean           std            95 % interval of the mean        "
+          "members\n";
+    const auto number = [](const Json &v) {
+      return v.is_number() ? format_number(json_number(v), 5) : std::string("–");
+    };
+    for (auto it = summary.at("ensemble").begin(); it != summary.at("ensemble").end(); ++it)
+      {
+        const Json &f = it.value();
+        os << std::left << std::setw(44) << it.key() << std::setw(15) << number(f.at("mean")) << std::setw(15)
+           << number(f.at("std")) << std::setw(33) << (number(f.at("ci95_low")) + " … " + number(f.at("ci95_high")))
+           << json_number(f.at("members")) << "\n";
+      }
+    os << json_number(summary.at("members_ok")) << " of " << json_number(summary.at("members_count"))
+       << " members ran; seed " << json_number(summary.at("seed")) << ", " << json_number(summary.at("mpi_ranks"))
+       << " MPI rank(s), " << std::setprecision(4) << json_number(summary.at("wall_time_s")) << " s wall\n";
+    return os.str();
+  }
+} // namespace wearlink::workflows

@@ -1,0 +1,30 @@
+# mpirun -np 2 wearlink study accuracy params/nine_bar_wear.prm (its default knobs and
+# chaos floor), timed. cmake -DWEARLINK=... -DMPIRUN=... -DSOURCE_DIR=... -DOUTPUT_DIR=... -P study_default.cmake
+file(REMOVE_RECURSE "${OUTPUT_DIR}")
+string(TIMESTAMP start "%s" UTC)
+execute_process(COMMAND ${MPIRUN} -np 2 ${WEARLINK} study accuracy ${SOURCE_DIR}/params/nine_bar_wear.prm
+                        --output ${OUTPUT_DIR}
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(TIMESTAMP stop "%s" UTC)
+math(EXPR seconds "${stop} - ${start}")
+math(EXPR minutes "${seconds} / 60")
+math(EXPR rest "${seconds} % 60")
+message("${err}${out}")
+message("study accuracy params/nine_bar_wear.prm on 2 MPI ranks: ${seconds} s wall (${minutes} min ${rest} s); "
+        "target < 15 min on 2 cores (measured with whatever else runs on the machine)")
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "the study failed with status ${status}")
+endif()
+foreach(f accuracy.csv accuracy.md accuracy_floor.csv)
+  if(NOT EXISTS ${OUTPUT_DIR}/${f})
+    message(FATAL_ERROR "${f} was not written")
+  endif()
+endforeach()
+file(READ ${OUTPUT_DIR}/accuracy.csv table)
+if(table MATCHES "\"failed: ")
+  message(FATAL_ERROR "a row of the study failed (see accuracy.csv)")
+endif()
+file(READ ${OUTPUT_DIR}/accuracy.md report)
+if(NOT report MATCHES "Chaos floor: 4 runs")
+  message(FATAL_ERROR "accuracy.md has no chaos floor of 4 members")
+endif()

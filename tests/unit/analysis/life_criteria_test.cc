@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The stop criteria of a life run (analysis/life_criteria.h) on hand-made wear states:
+// the factor at which a criterion reaches its limit (the depths h + f Δh and volumes
+// V + f ΔV are known before the step), the approach to a crossing within the
+// tolerance, and the interpolated crossing with its bracket.
+#include "analysis/life_criteria.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace wearlink;
+using namespace wearlink::analysis;
+
+namespace
+{
+  /**
+   * One joint: pin depths {1, 3, 2} µm growing by {2, 0, 1} µm per unit factor, bore
+   * depths {0, 5, 0} µm growing by {1, 1, 1} µm; volumes pin 1e-9 + f 1e-10 m³, bore
+   * 2e-9 + f 4e-10 m³.
+   */
+  wear::StepPreview
+  preview()
+  {
+    wear::StepPreview        p;
+    wear::StepPreview::Joint j;
+    j.depth_pin             = {1e-6, 3e-6, 2e-6};
+    j.pin_increment         = {2e-6, 0, 1e-6};
+    j.depth_bore            = {0, 5e-6, 0};
+    j.bore_increment        = {1e-6, 1e-6, 1e-6};
+    j.volume_pin            = 1e-9;
+    j.pin_volume_increment  = 1e-10;
+    j.volume_bore           = 2e-9;
+    j.bore_volume_increment = 4e-10;
+    p.joints.push_back(j);
+    p.revolutions = 1000;
+    p.cycles      = 10;
+    p.factor      = 100;
+    return p;
+  }
+} // namespace
+
+TEST(LifeCriteria, FactorToReachEachWearCriterion)
+{
+  const auto                        p         = preview();
+  const std::vector<JointDensities> densities = {{2700, 7850}};
+  // Deepest wear: bore 5 + f µm reaches 8 µm at f = 3 (the pin, max(1 + 2f, 3, 2 + f),
+  // only at f = 3.5).
+  CriterionSpec depth{Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", 8e-6};
+  EXPECT_NEAR(factor_to_reach(depth, p, densities, 100), 3, 3e-12);
+  // Clearance growth: max pin + max bore = max(1 + 2f, 3) + 5 + f: 3 + 5 + f up to f = 1,
+  // then 6 + 3f: 12 µm at f = 2.
+  CriterionSpec growth{Criterion::clearance_growth, "clearance_growth", "Radial clearance growth", "m", 12e-6};
+  EXPECT_NEAR(factor_to_reach(growth, p, densities, 100), 2, 2e-12);
+  // Pin mass: (1e-9 + f 1e-10) m³ × 2700 kg/m³ = 2.7 + 0.27 f mg: 5.4 mg at f = 10.
+  CriterionSpec pin{Criterion::pin_mass_loss, "pin_mass_loss", "Pin mass loss", "mg", 5.4};
+  EXPECT_NEAR(factor_to_reach(pin, p, densities, 100), 10, 1e-11);
+  // Beyond the loop's own factor: no limit from this criterion.
+  EXPECT_TRUE(std::isinf(factor_to_reach(pin, p, densities, 5)));
+  // Already reached: 0.
+  CriterionSpec bushing{Criterion::bushing_mass_loss, "bushing_mass_loss", "Bushing mass loss", "mg", 1};
+  EXPECT_EQ(factor_to_reach(bushing, p, densities, 100), 0);
+}
+
+TEST(LifeCriteria, ApproachLeavesAShortLastStep)
+{
+  // 10 cycles per iteration at 1000 revolutions, tolerance 2 %. A crossing 10 factors
+  // away is 100 revolutions: more than 2 % of 1100, so stop 1 % of 1100 = 11 short of it.
+  EXPECT_NEAR(approach_factor(10, 10, 1000, 0.02), (100 - 11) / 10.0, 1e-12);
+  // A crossing 2 factors away (20 rev ≤ 2 % of 1020): land on it.
+  EXPECT_EQ(approach_factor(2, 10, 1000, 0.02), 2);
+  // From the start (0 revolutions) two steps: 99 % of the way, then the rest.
+  EXPECT_NEAR(approach_factor(50, 10, 0, 0.02), 50 * 0.99, 1e-12);
+  EXPECT_TRUE(std::isinf(approach_factor(INFINITY, 10, 0, 0.02)));
+}
+
+TEST(LifeCriteria, FirstCrossingIsInterpolatedInItsBracket)
+{
+  // Values 0, 4, 8, 12 at 0, 100, 200, 300 rev: the limit 10 is crossed halfway
+  // between 200 and 300.
+  const auto x = first_crossing({0, 100, 200, 300}, {0, 4, 8, 12}, 10);
+  ASSERT_TRUE(x.reached);
+  EXPECT_DOUBLE_EQ(x.revolutions, 250);
+  EXPECT_EQ(x.low, 200);
+  EXPECT_EQ(x.high, 300);
+  EXPECT_EQ(x.iteration, 3u);
+  // A landing a rounding below the limit counts as reached there.
+  EXPECT_TRUE(first_crossing({0, 100}, {0, 10 * (1 - 1e-12)}, 10).reached);
+  EXPECT_FALSE(first_crossing({0, 100}, {0, 9.9}, 10).reached);
+}
+
+TEST(LifeCriteria, TheResponseTrendIsTheLeastSquaresLine)
+{
+  // 100, 110, 100, 110 m/s² at 0, 1000, 2000, 3000 rev: the line 102 + 0.002 N
+  // (slope Σ(x − x̄)(y − ȳ)/Σ(x − x̄)² = 10000/5e6), so 6 % above its fresh value at
+  // 3000 rev, while the last measurement over the first says +10 %.
+  const auto t = response_trend({0, 1000, 2000, 3000}, {100, 110, 100, 110}, 4);
+  EXPECT_EQ(t.points, 4u);
+  EXPECT_NEAR(t.slope, 0.002, 1e-15);
+  EXPECT_NEAR(t.fresh, 102, 1e-12);
+  EXPECT_NEAR(t.rise(3000), 100 * 6 / 102.0, 1e-12);
+  // Residuals ±(−2, 6, −6, 2): s = √(80 / 2) relative to 102.
+  EXPECT_NEAR(t.scatter, std::sqrt(40.0) / 102, 1e-12);
+  EXPECT_EQ(response_trend({0, 1000}, {100, 120}, 1).rise(1000), 0) << "one point has no trend";
+}
