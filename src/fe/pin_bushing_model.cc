@@ -256,8 +256,8 @@ namespace wearlink::fe
         }
       const Tensor<1, 2> resultant = rotate(sol.resultant * L, load.bushing_angle);
       const Tensor<1, 2> ecc       = rotate(e + sol.pin_translation, load.bushing_angle);
-      r.resultant                  = {resultant[0], resultant[1]};
-      r.pin_displacement           = {ecc[0], ecc[1]};
+      r.resultant                  = {{resultant[0], resultant[1]}};
+      r.pin_displacement           = {{ecc[0], ecc[1]}};
       if (load.control == Control::force)
         r.equilibrium_relative_residual = (resultant - tensor(load.load)).norm() / tensor(load.load).norm();
       contact_extent(kin, sol, r);

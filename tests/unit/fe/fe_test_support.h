@@ -74,7 +74,7 @@ namespace wearlink::fe::testing
   {
     LoadCase lc;
     lc.control = Control::force;
-    lc.load    = {0.0, -F};
+    lc.load    = {{0.0, -F}};
     return lc;
   }
 

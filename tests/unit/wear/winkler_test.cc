@@ -64,8 +64,8 @@ TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
           load.pin_angle     = pin_angle;
           load.contact_angle = direction;
           load.normal_force  = F;
-          load.force         = {-F * std::cos(direction), -F * std::sin(direction)};
-          load.eccentricity  = {5e-4 * std::cos(direction), 5e-4 * std::sin(direction)};
+          load.force         = {{-F * std::cos(direction), -F * std::sin(direction)}};
+          load.eccentricity  = {{5e-4 * std::cos(direction), 5e-4 * std::sin(direction)}};
           ASSERT_NO_THROW(model->evaluate(load, out)) << "F = " << F << " N, direction " << direction;
           double fx = 0, fy = 0;
           for (unsigned int k = 0; k < n; ++k)
