@@ -12,6 +12,67 @@ namespace wearlink::contact
   namespace
   {
     using numbers::two_pi;
+
+    /**
+     * The kinks of one profile (its sample angles, turned by the body angle θ) from a
+     * start angle on, in increasing order: the next kink's global angle, its radius, and
+     * cos/sin of (kink − φ_e) advanced by a fixed rotation per kink instead of a cosine
+     * each (~100 kinks per evaluation at most: a rounding drift of ~1e-14).
+     */
+    struct KinkWalker
+    {
+      KinkWalker(const std::vector<double> &samples, double theta, double start, double phi_e, const Gap::Step &step)
+        : r(samples)
+        , n(static_cast<long>(samples.size()))
+        , d(two_pi / samples.size())
+        , theta(theta)
+        , step(step)
+      {
+        k     = static_cast<long>(std::ceil((start - theta) / d));
+        angle = theta + k * d;
+        if (angle < start) // rounding of the division
+          {
+            ++k;
+            angle = theta + k * d;
+          }
+        cos_rel = std::cos(angle - phi_e);
+        sin_rel = std::sin(angle - phi_e);
+      }
+      /** Radius of sample k (unwrapped index). */
+      double
+      sample(long j) const
+      {
+        j %= n;
+        return r[j < 0 ? j + n : j];
+      }
+      double
+      next_radius() const
+      {
+        return sample(k);
+      }
+      /** Radius at a global angle @p x in [angle − d, angle] (the segment before the next kink). */
+      double
+      radius_at(double x) const
+      {
+        const double r0 = sample(k - 1), r1 = sample(k);
+        return r0 + (r1 - r0) * ((x - (angle - d)) / d);
+      }
+      void
+      advance()
+      {
+        ++k;
+        angle                = theta + k * d;
+        const double c       = cos_rel * step.cos - sin_rel * step.sin;
+        sin_rel              = sin_rel * step.cos + cos_rel * step.sin;
+        cos_rel              = c;
+      }
+      const std::vector<double> &r;
+      long                       n;
+      double                     d, theta;
+      const Gap::Step           &step;
+      long                       k;
+      double                     angle, cos_rel, sin_rel;
+    };
   }
 
   Gap::Gap(const Profile &bore_profile, const Profile &pin_profile)
@@ -21,6 +82,8 @@ namespace wearlink::contact
     , r1(bore_profile.mean_radius())
     , r2(pin_profile.mean_radius())
     , min_clearance(bore_profile.min_radius() - pin_profile.max_radius())
+    , bore_step{std::cos(two_pi / bore_profile.n_points()), std::sin(two_pi / bore_profile.n_points())}
+    , pin_step{std::cos(two_pi / pin_profile.n_points()), std::sin(two_pi / pin_profile.n_points())}
   {
   }
 
@@ -48,51 +111,79 @@ namespace wearlink::contact
         return r;
       }
     // Directions with e·u(φ) ≥ min_clearance: |φ − φ_e| ≤ acos(min_clearance/|e|).
-    const double half = min_clearance > 0 ? std::acos(std::min(1.0, min_clearance / ne)) : 0.5 * two_pi;
+    const double cos_half = min_clearance > 0 ? std::min(1.0, min_clearance / ne) : -1.0;
+    const double half     = std::acos(cos_half);
+    const double sin_half = std::sqrt(std::max(0.0, 1 - cos_half * cos_half));
     const double lo = phi_e - half, hi = phi_e + half;
 
-    // Kinks of both profiles inside [lo, hi], merged in increasing order.
-    const unsigned int nb = bore.n_points(), np = pin.n_points();
-    const double       db = two_pi / nb, dp = two_pi / np;
-    double             next_b = tb + std::ceil((lo - tb) / db) * db;
-    double             next_p = tp + std::ceil((lo - tp) / dp) * dp;
-    // h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p), the part of g that is linear between kinks.
-    auto h = [&](double phi) {
-      return bore.radius(phi - tb) - pin.radius(phi - tp);
-    };
-    double best = std::numeric_limits<double>::infinity(), phi = phi_e;
-    auto   consider = [&](double x, double hx) {
-      const double g = hx - ne * std::cos(x - phi_e);
+    // Kinks of both profiles inside [lo, hi], merged in increasing order; between kinks
+    // h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p) is linear and g(φ) = h(φ) − |e| cos(φ − φ_e).
+    KinkWalker   bw(bore.samples(), tb, lo, phi_e, bore_step);
+    KinkWalker   pw(pin.samples(), tp, lo, phi_e, pin_step);
+    double       best = std::numeric_limits<double>::infinity(), phi = phi_e;
+    const double ne_inv = 1 / ne;
+    auto         consider_kink = [&](double x, double g) {
       if (g < best)
         {
           best = g;
           phi  = x;
         }
     };
-    double a = lo, ha = h(lo);
-    consider(a, ha);
+    double a = lo, ha = bw.radius_at(lo) - pw.radius_at(lo), sa = -sin_half;
+    consider_kink(a, ha - ne * cos_half);
     while (a < hi)
       {
-        double bnext = std::min({next_b, next_p, hi});
-        if (bnext <= a) // a kink at a itself: step to the following one
+        const double x = std::min({bw.angle, pw.angle, hi});
+        if (x <= a) // a kink at a itself: step to the following one
           {
-            if (next_b <= a)
-              next_b += db;
-            if (next_p <= a)
-              next_p += dp;
+            if (bw.angle <= a)
+              bw.advance();
+            if (pw.angle <= a)
+              pw.advance();
             continue;
           }
-        const double hb    = h(bnext);
-        const double slope = (hb - ha) / (bnext - a);
-        if (std::abs(slope) < ne)
+        double hx, cx, sx;
+        if (x == hi)
           {
-            const double x = phi_e - std::asin(slope / ne);
-            if (x > a && x < bnext)
-              consider(x, ha + slope * (x - a));
+            hx = bw.radius_at(hi) - pw.radius_at(hi);
+            cx = cos_half;
+            sx = sin_half;
           }
-        consider(bnext, hb);
-        a  = bnext;
-        ha = hb;
+        else if (x == bw.angle)
+          {
+            hx = bw.next_radius() - (x == pw.angle ? pw.next_radius() : pw.radius_at(x));
+            cx = bw.cos_rel;
+            sx = bw.sin_rel;
+          }
+        else
+          {
+            hx = bw.radius_at(x) - pw.next_radius();
+            cx = pw.cos_rel;
+            sx = pw.sin_rel;
+          }
+        // g' = slope + |e| sin(φ − φ_e) rises through 0 inside the segment: a minimum at
+        // sin(φ − φ_e) = −slope/|e|, cos(φ − φ_e) = √(1 − (slope/|e|)²) (within ±90°).
+        const double slope = (hx - ha) / (x - a);
+        if (slope + ne * sa < 0 && slope + ne * sx > 0)
+          {
+            const double q  = std::clamp(slope * ne_inv, -1.0, 1.0);
+            const double cq = std::sqrt(1 - q * q);
+            const double xs = phi_e - std::asin(q);
+            const double gs = ha + slope * (xs - a) - ne * cq;
+            if (gs < best && xs > a && xs < x)
+              {
+                best = gs;
+                phi  = xs;
+              }
+          }
+        consider_kink(x, hx - ne * cx);
+        if (bw.angle <= x)
+          bw.advance();
+        if (pw.angle <= x)
+          pw.advance();
+        a  = x;
+        ha = hx;
+        sa = sx;
       }
     const double g = best;
     r.penetration  = -g;

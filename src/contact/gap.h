@@ -12,7 +12,9 @@
 // of the pin, shifted by θ_pin) g(φ) = a + b φ − |e| cos(φ − φ_e), which is convex
 // within ±90° of φ_e and stationary at φ = φ_e − asin(b/|e|): the global minimum is
 // at a kink or at one of these points, and all of them are visited (~2N·window/2π
-// evaluations). A grid plus golden-section search, used before, could stop in a local
+// evaluations, each without a trigonometric call: the cosines and sines of the kinks
+// relative to φ_e advance by a fixed rotation per sample spacing, and an arcsine is taken only
+// for a segment whose g' changes sign). A grid plus golden-section search, used before, could stop in a local
 // minimum of a jagged worn profile (measured up to 2e-7 m off, ~1 % of δ). The contact normal is taken radial, u(φ*) — the
 // per-area model of seed eqs 28–33 with the exact gap; the profiles' slopes are small
 // (wear depths ≪ radii).
@@ -66,6 +68,12 @@ namespace wearlink::contact
     {
       return is_round;
     }
+    /** cos and sin of one sample spacing 2π/N of a profile. */
+    struct Step
+    {
+      double cos, sin;
+    };
+
     /** Nominal radial clearance c = mean R1* − mean R2* [m]. */
     double
     nominal_clearance() const
@@ -84,5 +92,6 @@ namespace wearlink::contact
     bool    is_round;
     double  r1, r2;        ///< radii when round
     double  min_clearance; ///< min R1* − max R2*
+    Step    bore_step, pin_step;
   };
 } // namespace wearlink::contact

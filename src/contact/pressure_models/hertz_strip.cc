@@ -111,17 +111,33 @@ namespace wearlink::contact
       {
         const unsigned int n     = profile.n_points();
         const double       width = 2 * pi / n;
-        // Only the areas within the strip's angular half-width (plus one) can be loaded.
+        // Only the areas within the strip's angular half-width (plus one) can be loaded:
+        // area k's centre is at k·width + θ − φ, so they are a run of consecutive k.
         const double half = b / radius + width;
-        for (unsigned int k = 0; k < n; ++k)
+        if (half >= pi) // the strip wraps around the whole profile
           {
-            const double centre = wrap(profile.angle(k) + theta - phi);
-            if (std::abs(centre) > half)
-              continue;
-            const double s0 = radius * (centre - 0.5 * width);
-            const double s1 = radius * (centre + 0.5 * width);
-            p[k]            = p0 * b * (strip_primitive(s1, b) - strip_primitive(s0, b)) / (radius * width);
+            for (unsigned int k = 0; k < n; ++k)
+              p[k] = area_average(wrap(profile.angle(k) + theta - phi), radius, width, b, p0);
+            return;
           }
+        const double offset = theta - phi;
+        const long   k_lo   = static_cast<long>(std::ceil((-half - offset) / width));
+        const long   k_hi   = static_cast<long>(std::floor((half - offset) / width));
+        const long   nn     = static_cast<long>(n);
+        for (long k = k_lo; k <= k_hi; ++k)
+          {
+            const long j = ((k % nn) + nn) % nn;
+            p[j]         = area_average(k * width + offset, radius, width, b, p0);
+          }
+      }
+
+      /** Mean pressure over the area of angular @p width centred @p centre from the contact point. */
+      static double
+      area_average(double centre, double radius, double width, double b, double p0)
+      {
+        const double s0 = radius * (centre - 0.5 * width);
+        const double s1 = radius * (centre + 0.5 * width);
+        return p0 * b * (strip_primitive(s1, b) - strip_primitive(s0, b)) / (radius * width);
       }
 
       JointGeometry geometry;
