@@ -61,10 +61,10 @@ namespace wearlink::contact
       advance()
       {
         ++k;
-        angle                = theta + k * d;
-        const double c       = cos_rel * step.cos - sin_rel * step.sin;
-        sin_rel              = sin_rel * step.cos + cos_rel * step.sin;
-        cos_rel              = c;
+        angle          = theta + k * d;
+        const double c = cos_rel * step.cos - sin_rel * step.sin;
+        sin_rel        = sin_rel * step.cos + cos_rel * step.sin;
+        cos_rel        = c;
       }
       const std::vector<double> &r;
       long                       n;
@@ -73,7 +73,7 @@ namespace wearlink::contact
       long                       k;
       double                     angle, cos_rel, sin_rel;
     };
-  }
+  } // namespace
 
   Gap::Gap(const Profile &bore_profile, const Profile &pin_profile)
     : bore(bore_profile)
@@ -121,7 +121,7 @@ namespace wearlink::contact
     KinkWalker   bw(bore.samples(), tb, lo, phi_e, bore_step);
     KinkWalker   pw(pin.samples(), tp, lo, phi_e, pin_step);
     double       best = std::numeric_limits<double>::infinity(), phi = phi_e;
-    const double ne_inv = 1 / ne;
+    const double ne_inv        = 1 / ne;
     auto         consider_kink = [&](double x, double g) {
       if (g < best)
         {
