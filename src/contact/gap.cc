@@ -25,15 +25,21 @@ namespace wearlink::contact
         : r(samples)
         , n(static_cast<long>(samples.size()))
         , d(two_pi / samples.size())
-        , theta(theta)
         , step(step)
       {
-        k     = static_cast<long>(std::ceil((start - theta) / d));
-        angle = theta + k * d;
-        if (angle < start) // rounding of the division
+        // The start in the body frame, in sample spacings reduced to [0, n): indices
+        // and angles stay small whatever the body angle (a trial stage of a diverging
+        // step can hold 1e17 rad); base is the global angle of sample 0 nearest below.
+        double psi = (start - theta) / d;
+        psi -= static_cast<double>(n) * std::floor(psi / static_cast<double>(n));
+        psi   = std::clamp(psi, 0.0, static_cast<double>(n));
+        base  = start - psi * d;
+        k     = static_cast<long>(std::ceil(psi));
+        angle = base + k * d;
+        if (angle < start) // rounding
           {
             ++k;
-            angle = theta + k * d;
+            angle = base + k * d;
           }
         cos_rel = std::cos(angle - phi_e);
         sin_rel = std::sin(angle - phi_e);
@@ -61,14 +67,14 @@ namespace wearlink::contact
       advance()
       {
         ++k;
-        angle          = theta + k * d;
+        angle          = base + k * d;
         const double c = cos_rel * step.cos - sin_rel * step.sin;
         sin_rel        = sin_rel * step.cos + cos_rel * step.sin;
         cos_rel        = c;
       }
       const std::vector<double> &r;
       long                       n;
-      double                     d, theta;
+      double                     d, base;
       const Gap::Step           &step;
       long                       k;
       double                     angle, cos_rel, sin_rel;
@@ -98,6 +104,12 @@ namespace wearlink::contact
         r.normal      = ne > 0 ? mbs::Vec2(e / ne) : mbs::Vec2(1, 0);
         r.bore_radius = r1;
         r.pin_radius  = r2;
+        return r;
+      }
+    if (!std::isfinite(tb) || !std::isfinite(tp))
+      {
+        // A diverging trial stage: no contact direction exists; the integrator rejects it.
+        r.penetration = std::numeric_limits<double>::quiet_NaN();
         return r;
       }
     const double phi_e = ne > 0 ? std::atan2(e.y(), e.x()) : 0.0;

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace wearlink;
@@ -177,4 +178,34 @@ TEST(Gap, JaggedWornProfilesMatchBruteForceMinimum)
         }
     }
   EXPECT_GE(in_contact, 15) << "too few trials in contact to test the search";
+}
+
+// The body angles are unwrapped (tens of thousands of radians after a long run), and a
+// trial stage of a diverging step can hold any value. The search works on angles
+// reduced to one turn: a body turned by whole turns gives the same gap (to the
+// rounding of the reduction), a diverging 1.86e17 rad (seen in a dop853 trial stage of
+// the accuracy study, which hung the search that kept unwrapped kink indices) ends
+// with a finite answer, and a non-finite angle with NaN (no contact direction exists).
+TEST(Gap, WholeTurnsHugeAndNonFiniteBodyAngles)
+{
+  constexpr double    pi = 3.14159265358979323846;
+  const unsigned      n  = 360;
+  std::vector<double> bore(n);
+  for (unsigned k = 0; k < n; ++k)
+    bore[k] = 0.012 + 30e-6 * std::exp(-std::pow((2 * pi * k / n - 1.0) / 0.4, 2)) + 2e-6 * std::sin(7.0 * k);
+  const Gap       gap(Profile::from_samples(bore), Profile::round(0.0115, n));
+  const mbs::Vec2 e = 5.4e-4 * mbs::Vec2(std::cos(1.3), std::sin(1.3));
+  const auto      r = gap.evaluate(e, 0.3, -0.7);
+  ASSERT_GT(r.penetration, 1e-6) << "the pin pressed into the pocket";
+  for (const double turns : {1.0, 17.0, 1000.0, 20000.0})
+    {
+      const auto rt = gap.evaluate(e, 0.3 + turns * 2 * pi, -0.7 - turns * 2 * pi);
+      EXPECT_NEAR(rt.penetration, r.penetration, 1e-15 + 2e-17 * turns) << turns << " turns";
+      EXPECT_NEAR(std::remainder(rt.angle() - r.angle(), 2 * pi), 0.0, 1e-9) << turns << " turns";
+    }
+  const auto huge = gap.evaluate(e, -1.8629481622138998e17, 126.9);
+  EXPECT_TRUE(std::isfinite(huge.penetration));
+  EXPECT_LT(std::abs(huge.penetration), 1e-4) << "a gap of this pair, at some angle";
+  EXPECT_TRUE(std::isnan(gap.evaluate(e, std::nan(""), 0.0).penetration));
+  EXPECT_TRUE(std::isnan(gap.evaluate(e, 0.0, std::numeric_limits<double>::infinity()).penetration));
 }
