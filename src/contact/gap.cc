@@ -113,15 +113,26 @@ namespace wearlink::contact
         return r;
       }
     const double phi_e = ne > 0 ? std::atan2(e.y(), e.x()) : 0.0;
-    if (!(ne > min_clearance))
-      {
-        // No direction can touch: a continuous lower bound of −δ, exact in sign.
-        r.penetration = ne - min_clearance;
-        r.normal      = mbs::Vec2(std::cos(phi_e), std::sin(phi_e));
-        r.bore_radius = bore.radius(phi_e - tb);
-        r.pin_radius  = pin.radius(phi_e - tp);
-        return r;
-      }
+    if (!(ne > min_clearance)) // no direction can touch: a continuous lower bound of −δ, exact in sign
+      return at_direction(phi_e, ne - min_clearance, tb, tp);
+    const Minimum m = minimize(ne, phi_e, tb, tp);
+    return at_direction(m.phi, -m.g, tb, tp);
+  }
+
+  GapResult
+  Gap::at_direction(double phi, double penetration, double tb, double tp) const
+  {
+    GapResult r;
+    r.penetration = penetration;
+    r.normal      = mbs::Vec2(std::cos(phi), std::sin(phi));
+    r.bore_radius = bore.radius(phi - tb);
+    r.pin_radius  = pin.radius(phi - tp);
+    return r;
+  }
+
+  Gap::Minimum
+  Gap::minimize(double ne, double phi_e, double tb, double tp) const
+  {
     // Directions with e·u(φ) ≥ min_clearance: |φ − φ_e| ≤ acos(min_clearance/|e|).
     const double cos_half = min_clearance > 0 ? std::min(1.0, min_clearance / ne) : -1.0;
     const double half     = std::acos(cos_half);
@@ -130,79 +141,47 @@ namespace wearlink::contact
 
     // Kinks of both profiles inside [lo, hi], merged in increasing order; between kinks
     // h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p) is linear and g(φ) = h(φ) − |e| cos(φ − φ_e).
-    KinkWalker   bw(bore.samples(), tb, lo, phi_e, bore_step);
-    KinkWalker   pw(pin.samples(), tp, lo, phi_e, pin_step);
-    double       best = std::numeric_limits<double>::infinity(), phi = phi_e;
-    const double ne_inv        = 1 / ne;
-    auto         consider_kink = [&](double x, double g) {
-      if (g < best)
-        {
-          best = g;
-          phi  = x;
-        }
+    KinkWalker bw(bore.samples(), tb, lo, phi_e, bore_step);
+    KinkWalker pw(pin.samples(), tp, lo, phi_e, pin_step);
+    Minimum    m{std::numeric_limits<double>::infinity(), phi_e};
+    auto       consider = [&m](double x, double g) {
+      if (g < m.g)
+        m = {g, x};
     };
     double a = lo, ha = bw.radius_at(lo) - pw.radius_at(lo), sa = -sin_half;
-    consider_kink(a, ha - ne * cos_half);
+    consider(a, ha - ne * cos_half);
     while (a < hi)
       {
         const double x = std::min({bw.angle, pw.angle, hi});
-        if (x <= a) // a kink at a itself: step to the following one
+        if (x > a)
           {
-            if (bw.angle <= a)
-              bw.advance();
-            if (pw.angle <= a)
-              pw.advance();
-            continue;
-          }
-        double hx, cx, sx;
-        if (x == hi)
-          {
-            hx = bw.radius_at(hi) - pw.radius_at(hi);
-            cx = cos_half;
-            sx = sin_half;
-          }
-        else if (x == bw.angle)
-          {
-            hx = bw.next_radius() - (x == pw.angle ? pw.next_radius() : pw.radius_at(x));
-            cx = bw.cos_rel;
-            sx = bw.sin_rel;
-          }
-        else
-          {
-            hx = bw.radius_at(x) - pw.next_radius();
-            cx = pw.cos_rel;
-            sx = pw.sin_rel;
-          }
-        // g' = slope + |e| sin(φ − φ_e) rises through 0 inside the segment: a minimum at
-        // sin(φ − φ_e) = −slope/|e|, cos(φ − φ_e) = √(1 − (slope/|e|)²) (within ±90°).
-        const double slope = (hx - ha) / (x - a);
-        if (slope + ne * sa < 0 && slope + ne * sx > 0)
-          {
-            const double q  = std::clamp(slope * ne_inv, -1.0, 1.0);
-            const double cq = std::sqrt(1 - q * q);
-            const double xs = phi_e - std::asin(q);
-            const double gs = ha + slope * (xs - a) - ne * cq;
-            if (gs < best && xs > a && xs < x)
+            // h at x, and cos/sin of (x − φ_e): at a kink from its walker, at hi from the window.
+            const bool   at_hi = x == hi, at_b = !at_hi && x == bw.angle, at_p = !at_hi && x == pw.angle;
+            const double hx = (at_b ? bw.next_radius() : bw.radius_at(x)) - (at_p ? pw.next_radius() : pw.radius_at(x));
+            const double cx = at_hi ? cos_half : at_b ? bw.cos_rel : pw.cos_rel;
+            const double sx = at_hi ? sin_half : at_b ? bw.sin_rel : pw.sin_rel;
+            // g' = slope + |e| sin(φ − φ_e) rises through 0 inside the segment: a minimum at
+            // sin(φ − φ_e) = −slope/|e|, cos(φ − φ_e) = √(1 − (slope/|e|)²) (within ±90°).
+            const double slope = (hx - ha) / (x - a);
+            if (slope + ne * sa < 0 && slope + ne * sx > 0)
               {
-                best = gs;
-                phi  = xs;
+                const double q  = std::clamp(slope / ne, -1.0, 1.0);
+                const double xs = phi_e - std::asin(q);
+                if (xs > a && xs < x)
+                  consider(xs, ha + slope * (xs - a) - ne * std::sqrt(1 - q * q));
               }
+            consider(x, hx - ne * cx);
+            a  = x;
+            ha = hx;
+            sa = sx;
           }
-        consider_kink(x, hx - ne * cx);
-        if (bw.angle <= x)
+        // Past a kink at a (also one at the start of the window).
+        if (bw.angle <= a)
           bw.advance();
-        if (pw.angle <= x)
+        if (pw.angle <= a)
           pw.advance();
-        a  = x;
-        ha = hx;
-        sa = sx;
       }
-    const double g = best;
-    r.penetration  = -g;
-    r.normal       = mbs::Vec2(std::cos(phi), std::sin(phi));
-    r.bore_radius  = bore.radius(phi - tb);
-    r.pin_radius   = pin.radius(phi - tp);
-    return r;
+    return m;
   }
 
   GapResult

@@ -82,11 +82,16 @@ namespace wearlink::contact
     }
 
   private:
-    double
-    gap(double phi, const mbs::Vec2 &e, double tb, double tp) const
+    /** The smallest gap g over the directions that can touch, and its direction φ. */
+    struct Minimum
     {
-      return bore.radius(phi - tb) - pin.radius(phi - tp) - e.x() * std::cos(phi) - e.y() * std::sin(phi);
-    }
+      double g, phi;
+    };
+    Minimum
+    minimize(double eccentricity_norm, double phi_e, double bushing_angle, double pin_angle) const;
+    /** The result with contact direction @p phi and penetration @p penetration. */
+    GapResult
+    at_direction(double phi, double penetration, double bushing_angle, double pin_angle) const;
 
     Profile bore, pin;
     bool    is_round;
