@@ -18,6 +18,37 @@
 
 using namespace wearlink;
 
+namespace
+{
+  /** Steel on steel (E = 207 GPa, ν = 0.3), 10 mm long. */
+  contact::JointGeometry
+  steel_joint(const Profile &bore, const Profile &pin)
+  {
+    contact::JointGeometry g;
+    g.bore         = bore;
+    g.pin          = pin;
+    g.axial_length = 0.01;
+    g.bushing      = {207e9, 0.3};
+    g.pin_material = {207e9, 0.3};
+    return g;
+  }
+
+  /** The winkler pressure model (1 mm layer) on @p g. */
+  std::unique_ptr<contact::PressureModel>
+  winkler_on(const contact::JointGeometry &g)
+  {
+    dealii::ParameterHandler prm;
+    contact::pressure_models().declare_all(prm);
+    prm.enter_subsection("winkler");
+    prm.set("Layer thickness", "1e-3");
+    prm.leave_subsection();
+    ParameterReader reader(prm, "test");
+    auto            model = contact::pressure_models().create("winkler", reader, "Pressure model");
+    model->update_geometry(g);
+    return model;
+  }
+} // namespace
+
 TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
 {
   constexpr double    pi = 3.14159265358979323846;
@@ -37,21 +68,9 @@ TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
       pin[k] =
         0.0115 - 15e-6 * std::exp(-std::pow(std::remainder(psi - 3.0, 2 * pi), 2) / 0.5) - 1e-6 * std::abs(noise());
     }
-  contact::JointGeometry g;
-  g.bore         = Profile::from_samples(bore, "bore");
-  g.pin          = Profile::from_samples(pin, "pin");
-  g.axial_length = 0.01;
-  g.bushing      = {207e9, 0.3};
-  g.pin_material = {207e9, 0.3};
+  const contact::JointGeometry g = steel_joint(Profile::from_samples(bore, "bore"), Profile::from_samples(pin, "pin"));
 
-  dealii::ParameterHandler prm;
-  contact::pressure_models().declare_all(prm);
-  prm.enter_subsection("winkler");
-  prm.set("Layer thickness", "1e-3");
-  prm.leave_subsection();
-  ParameterReader reader(prm, "test");
-  auto            model = contact::pressure_models().create("winkler", reader, "Pressure model");
-  model->update_geometry(g);
+  auto model = winkler_on(g);
 
   contact::SurfacePressure out;
   unsigned int             cases = 0;
@@ -105,21 +124,9 @@ TEST(Winkler, APinInADeepPocketRestsOnBothRims)
       const double x = std::remainder(2 * pi * k / n, 2 * pi) / (30 * pi / 180);
       bore[k]        = 0.012 + (std::abs(x) < 1 ? 100e-6 * (1 - x * x) : 0.0);
     }
-  contact::JointGeometry g;
-  g.bore         = Profile::from_samples(bore, "bore");
-  g.pin          = Profile::round(0.0115, n);
-  g.axial_length = 0.01;
-  g.bushing      = {207e9, 0.3};
-  g.pin_material = {207e9, 0.3};
+  const contact::JointGeometry g = steel_joint(Profile::from_samples(bore, "bore"), Profile::round(0.0115, n));
 
-  dealii::ParameterHandler prm;
-  contact::pressure_models().declare_all(prm);
-  prm.enter_subsection("winkler");
-  prm.set("Layer thickness", "1e-3");
-  prm.leave_subsection();
-  ParameterReader reader(prm, "test");
-  auto            model = contact::pressure_models().create("winkler", reader, "Pressure model");
-  model->update_geometry(g);
+  auto model = winkler_on(g);
 
   const double         F = 500, direction = 10 * pi / 180;
   contact::ContactLoad load;
