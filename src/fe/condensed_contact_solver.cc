@@ -1136,6 +1136,21 @@ namespace wearlink::fe
       return false;
     }
 
+    /** Whether some of @p normal lie on either side of @p load (or along it). */
+    bool
+    brackets(const std::vector<Tensor<1, 2>> &normal, const Tensor<1, 2> &load)
+    {
+      bool left = false, right = false;
+      for (const auto &n : normal)
+        if (n * load > 0)
+          {
+            const double side = load[0] * n[1] - load[1] * n[0];
+            left              = left || side >= 0;
+            right             = right || side <= 0;
+          }
+      return left && right;
+    }
+
     /** The starting active set: @p warm (candidates) in the window, else the overlapping positions. */
     std::vector<unsigned int>
     starting_set(const ContactKinematics         &kin,
@@ -1329,6 +1344,31 @@ namespace wearlink::fe
   }
 
 
+  // On a worn, jagged bore the window's few candidates (9 at 87 N, 0.2 mm elements,
+  // bores worn ~50 µm) can all face one side of the load: their normals span −22.3° …
+  // −10.4° against a load at −9.0°. Then no λ ≥ 0 balances the load, the monotone
+  // phase's feasible start is not feasible, and its step drops the pair's second
+  // position that ensure_two_active() adds back, forever. The window is widened
+  // (the threshold doubled, at least by 5 % of the candidate spacing) until some normal
+  // lies on either side of the load; a closed bore always has such normals.
+  ContactKinematics
+  CondensedContactSolver::load_bracketing_window(const PinPose      &pose,
+                                                 const bool          force_control,
+                                                 const Tensor<1, 2> &load,
+                                                 double             &T,
+                                                 double             &threshold) const
+  {
+    const double largest = 4 * pose.bore->max_radius();
+    for (;;)
+      {
+        auto kin = compute_window_kinematics(problem, pose, {T, 1e-3 * spacing, 0.5}, &threshold);
+        if (!force_control || brackets(kin.normal, load) || threshold >= largest)
+          return kin;
+        T = std::max(2 * threshold, threshold + 0.05 * spacing);
+      }
+  }
+
+
   // Pairings: the window kinematics at a pose, its compliance and factor, and its
   // linearizations (linearize()). A pin that slides by more than a quarter of the
   // candidate spacing since the pairing (a light load on a worn, inclined bore: 70 µm
@@ -1351,7 +1391,7 @@ namespace wearlink::fe
     for (unsigned int pairing = 0; pairing < 4 * max_relinearizations; ++pairing)
       {
         double threshold = 0;
-        kin              = compute_window_kinematics(problem, paired, {T, 1e-3 * spacing, 0.5}, &threshold);
+        kin              = load_bracketing_window(paired, force_control, load, T, threshold);
         WindowCompliance A(problem, compliance, kin, *workspace);
         WindowState      st;
         st.lambda.assign(kin.g0.size(), 0.0);

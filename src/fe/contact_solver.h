@@ -181,6 +181,19 @@ namespace wearlink::fe
     }
 
   private:
+    /**
+     * The contact window at @p pose from the threshold @p T [m] on; under force control
+     * widened (T raised) until its normals bracket @p load: no λ ≥ 0 on a window whose
+     * normals all lie on one side of the load balances it. @p threshold receives the
+     * window's threshold [m].
+     */
+    ContactKinematics
+    load_bracketing_window(const PinPose              &pose,
+                           bool                        force_control,
+                           const dealii::Tensor<1, 2> &load,
+                           double                     &T,
+                           double                     &threshold) const;
+
     void
     finish(const ContactKinematics       &kinematics,
            condensed_detail::WindowState &state,

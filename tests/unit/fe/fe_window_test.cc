@@ -12,6 +12,7 @@
 #include "fe/contact_solver.h"
 #include "fe/pin_bushing_mesher.h"
 #include "fe_test_support.h"
+#include "io/profile_file.h"
 
 #include <gtest/gtest.h>
 
@@ -91,4 +92,35 @@ TEST(FeContactWindow, ElasticClosingOutsideTheContactIsSmallAndTheWindowHoldsEve
                         << " active; elastic closing outside ≥ " << -closing / opening << " × the opening\n";
           }
     }
+}
+
+// A worn pair from a wear run (data/jagged_worn_*.csv: 0.2 mm elements, bores worn
+// ~50 µm with kinks between neighbouring samples) under the 87 N load state on which the
+// condensed solver's active set cycled: the first window's nine candidates all had
+// normals on one side of the load, so no λ ≥ 0 in it could balance the load. The window
+// is widened until its normals bracket the load (load_bracketing_window()); then the
+// condensed solve equals the whole-surface reference, and balances the load.
+TEST(FeContactWindow, BracketsTheLoadOnAJaggedWornBore)
+{
+  const std::string dir = std::string(WEARLINK_SOURCE_DIR) + "/tests/unit/fe/data/";
+  auto              g   = steel_pair();
+  g.bore                = io::read_profile_csv(dir + "jagged_worn_bore.csv", 360);
+  g.pin                 = io::read_profile_csv(dir + "jagged_worn_pin.csv", 360);
+  FeSettings s;
+  s.surface_element_size    = 2e-4;
+  s.refined_layer_thickness = 0.1e-3;
+  s.outer_radius            = 0.024;
+  PinBushingModel model(g, s, mesh_file("jagged_worn"));
+  LoadCase        lc;
+  lc.bushing_angle = 0.6226649469383595;
+  lc.pin_angle     = 449.81100440093189;
+  lc.load          = {78.10359582365588, 39.241158796993744};
+  ContactResult condensed;
+  ASSERT_NO_THROW(condensed = model.solve(lc, SolverKind::condensed, "", true));
+  const ContactResult reference = model.solve(lc, SolverKind::reference);
+  EXPECT_LT(condensed.equilibrium_relative_residual, 1e-8);
+  ASSERT_EQ(condensed.pressure.size(), reference.pressure.size());
+  for (std::size_t i = 0; i < reference.pressure.size(); ++i)
+    EXPECT_NEAR(condensed.pressure[i], reference.pressure[i], 1e-9 * reference.peak_pressure) << "node " << i;
+  EXPECT_NEAR(condensed.half_angle, reference.half_angle, 1e-9);
 }
