@@ -114,7 +114,7 @@ TEST(FeContactWindow, BracketsTheLoadOnAJaggedWornBore)
   LoadCase        lc;
   lc.bushing_angle = 0.6226649469383595;
   lc.pin_angle     = 449.81100440093189;
-  lc.load          = {78.10359582365588, 39.241158796993744};
+  lc.load          = {{78.10359582365588, 39.241158796993744}};
   ContactResult condensed;
   ASSERT_NO_THROW(condensed = model.solve(lc, SolverKind::condensed, "", true));
   const ContactResult reference = model.solve(lc, SolverKind::reference);
