@@ -3,6 +3,7 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/text.h"
 #include "fe/model_pool.h"
 #include "fe/pin_bushing_model.h"
 
@@ -93,6 +94,26 @@ namespace wearlink::fe
     }
   } // namespace
 
+  // A load state the solver fails on is named in full (the force in both components, the
+  // body angles to 17 digits), so that `wearlink contact` with the worn profiles of the
+  // run's checkpoint reproduces it.
+  ContactResult
+  FePressureModel::solve_or_explain(const contact::ContactLoad &load)
+  {
+    try
+      {
+        return model->solve(load_case(load), SolverKind::condensed);
+      }
+    catch (const NumericalError &e)
+      {
+        const auto lc = load_case(load); // + 0.0: no "-0" for a zero component
+        throw NumericalError(std::string(e.what()) + " The load state: force on the pin (" +
+                             format_number(lc.load[0] + 0.0) + ", " + format_number(lc.load[1] + 0.0) +
+                             ") N (global), bushing angle " + format_number(lc.bushing_angle) + " rad, pin angle " +
+                             format_number(lc.pin_angle) + " rad.");
+      }
+  }
+
   bool
   FePressureModel::write_fields(const contact::ContactLoad &load, const std::string &stem)
   {
@@ -123,7 +144,6 @@ namespace wearlink::fe
     if (load.force[0] == 0 && load.force[1] == 0)
       return;
     use_profiles(*model, geometry);
-    const ContactResult r = model->solve(load_case(load), SolverKind::condensed);
-    out                   = model->surface_pressure(r);
+    out = model->surface_pressure(solve_or_explain(load));
   }
 } // namespace wearlink::fe

@@ -21,6 +21,7 @@
 namespace wearlink::fe
 {
   class PinBushingModel;
+  struct ContactResult;
 
   class FePressureModel : public contact::PressureModel
   {
@@ -64,6 +65,10 @@ namespace wearlink::fe
     restore_geometry(const contact::JointGeometry &meshed, const contact::JointGeometry &current) override;
 
   private:
+    /** The condensed solve of @p load; NumericalError naming the load state if it fails. */
+    ContactResult
+    solve_or_explain(const contact::ContactLoad &load);
+
     const FeSettings                 settings;
     unsigned int                     mesh_counter = 0;
     contact::JointGeometry           geometry;

@@ -192,3 +192,37 @@ TEST(FePlugin, VanishingLoadsAreCarried)
         EXPECT_NEAR(sum_pin, magnitude, 1e-3 * magnitude) << magnitude << " N at " << angle * 180 / pi << "°";
       }
 }
+
+// A load state the condensed solver cannot finish (here: one active-set iteration
+// allowed, for a contact of hundreds of nodes) is named in the error in full, so that
+// `wearlink contact` reproduces it: the force on the pin (the negated bushing force) and
+// both body angles.
+TEST(FePlugin, AFailedLoadStateIsNamedInTheError)
+{
+  dealii::ParameterHandler prm;
+  contact::pressure_models().declare_all(prm);
+  prm.enter_subsection("fe");
+  prm.set("Surface element size", "1e-4");
+  prm.set("Refined layer thickness", "0");
+  prm.set("Maximum active-set iterations", "1");
+  prm.leave_subsection();
+  ParameterReader reader(prm, "test");
+  auto            model = contact::pressure_models().create("fe", reader, "Pressure model");
+  model->update_geometry(steel_pair(360));
+  contact::ContactLoad load;
+  load.force         = {0.0, 1e5};
+  load.bushing_angle = 0.25;
+  load.pin_angle     = -1.5;
+  contact::SurfacePressure out;
+  try
+    {
+      model->evaluate(load, out);
+      FAIL() << "one active-set iteration cannot carry 100 kN";
+    }
+  catch (const NumericalError &e)
+    {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("force on the pin (0, -100000) N"), std::string::npos) << m;
+      EXPECT_NE(m.find("bushing angle 0.25 rad, pin angle -1.5 rad"), std::string::npos) << m;
+    }
+}
