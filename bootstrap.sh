@@ -11,7 +11,7 @@ shift || true
 
 packages="cmake make g++ libdeal.ii-dev libeigen3-dev libmetis-dev gmsh libgmsh-dev
           googletest libgtest-dev libsuitesparse-dev gnuplot-nox openmpi-bin python3-matplotlib
-          nlohmann-json3-dev zlib1g-dev libfftw3-dev clang-format libopenblas0-serial"
+          nlohmann-json3-dev zlib1g-dev libfftw3-dev clang-format libopenblas0-pthread"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -4,12 +4,15 @@
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/numbers.h"
+#include "fe/blas_threads.h"
 #include "fe/boundary_ids.h"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
+#include <deal.II/base/parallel.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -19,8 +22,51 @@ namespace wearlink::fe
 
   struct BoundaryCompliance::Factorization
   {
-    Eigen::SparseMatrix<double>                              matrix;
-    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
+    /** Eigen's supernodal LLT with its CHOLMOD factor in reach (Workspace::solve()). */
+    struct Llt : Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>
+    {
+      cholmod_factor *
+      factor() const
+      {
+        return m_cholmodFactor;
+      }
+    };
+    Eigen::SparseMatrix<double> matrix;
+    Llt                         llt;
+  };
+
+  // CHOLMOD solves with one factor from several threads when each has a workspace (a
+  // cholmod_common) of its own: the solve only reads the factor.
+  struct BoundaryCompliance::Workspace
+  {
+    Workspace()
+    {
+      cholmod_start(&common);
+    }
+    ~Workspace()
+    {
+      cholmod_finish(&common);
+    }
+    Workspace(const Workspace &) = delete;
+    Workspace &
+    operator=(const Workspace &) = delete;
+
+    /** K⁻¹ rhs with the factor of @p f; through Eigen's own workspace without one (@p w null). */
+    static Eigen::MatrixXd
+    solve(Workspace *w, const Factorization &f, Eigen::MatrixXd &rhs)
+    {
+      if (w == nullptr)
+        return f.llt.solve(rhs);
+      cholmod_dense  b = Eigen::viewAsCholmod(rhs);
+      cholmod_dense *x = cholmod_solve(CHOLMOD_A, f.llt.factor(), &b, &w->common);
+      if (x == nullptr)
+        throw NumericalError("CHOLMOD failed to solve with the clamped stiffness factor (out of memory?).");
+      Eigen::MatrixXd u = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double *>(x->x), rhs.rows(), rhs.cols());
+      cholmod_free_dense(&x, &w->common);
+      return u;
+    }
+
+    cholmod_common common;
   };
 
   namespace
@@ -142,19 +188,39 @@ namespace wearlink::fe
   namespace
   {
     /**
-     * Up to @p block missing columns around @p j among the first @p n entries of the
-     * (periodic) candidate list: j first, then alternately its neighbours on either side.
+     * Up to @p block columns around @p j that are @p missing, among the first @p n
+     * entries of the (periodic) candidate list: j first, then alternately its neighbours
+     * on either side.
      */
-    template <typename Columns>
+    template <typename Missing>
     std::vector<unsigned int>
-    missing_neighbours(const Columns &columns, const unsigned int n, const unsigned int j, const unsigned int block)
+    missing_neighbours(const Missing &missing, const unsigned int n, const unsigned int j, const unsigned int block)
     {
       std::vector<unsigned int> chosen{j};
       for (unsigned int d = 1; chosen.size() < block && 2 * d <= n; ++d)
         for (const unsigned int k : {(j + d) % n, (j + n - d) % n})
-          if (chosen.size() < block && columns[k].empty() && std::find(chosen.begin(), chosen.end(), k) == chosen.end())
+          if (chosen.size() < block && missing(k) && std::find(chosen.begin(), chosen.end(), k) == chosen.end())
             chosen.push_back(k);
       return chosen;
+    }
+
+    /** The blocks (missing_neighbours()) that compute every missing one of the first @p n @p columns. */
+    std::vector<std::vector<unsigned int>>
+    plan_blocks(const std::vector<std::vector<double>> &columns, const unsigned int n, const unsigned int block)
+    {
+      std::vector<char> planned(n, 0);
+      const auto        missing = [&](const unsigned int k) {
+        return columns[k].empty() && !planned[k];
+      };
+      std::vector<std::vector<unsigned int>> blocks;
+      for (unsigned int j = 0; j < n; ++j)
+        if (missing(j))
+          {
+            blocks.push_back(missing_neighbours(missing, n, j, block));
+            for (const auto k : blocks.back())
+              planned[k] = 1;
+          }
+      return blocks;
     }
   } // namespace
 
@@ -162,17 +228,26 @@ namespace wearlink::fe
   void
   BoundaryCompliance::compute_pin_block(const unsigned int j)
   {
-    const auto         start  = std::chrono::steady_clock::now();
-    const auto        &nodes  = problem.pin_nodes;
-    const unsigned int n      = pin_sector_size > 0 ? pin_sector_size : nodes.size();
-    const auto         chosen = missing_neighbours(pin_columns, n, j, block_size);
-    const unsigned int b      = chosen.size();
-    Eigen::MatrixXd    rhs    = Eigen::MatrixXd::Zero(pin_factor->matrix.rows(), b);
+    const auto         start   = std::chrono::steady_clock::now();
+    const unsigned int n       = pin_sector_size > 0 ? pin_sector_size : problem.pin_nodes.size();
+    const auto         missing = [&](const unsigned int k) {
+      return pin_columns[k].empty();
+    };
+    n_solves += fill_pin_block(missing_neighbours(missing, n, j, block_size), nullptr);
+    seconds_in_columns += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+
+  unsigned int
+  BoundaryCompliance::fill_pin_block(const std::vector<unsigned int> &chosen, Workspace *w)
+  {
+    const auto        &nodes = problem.pin_nodes;
+    const unsigned int b     = chosen.size();
+    Eigen::MatrixXd    rhs   = Eigen::MatrixXd::Zero(pin_factor->matrix.rows(), b);
     for (unsigned int s = 0; s < b; ++s)
       for (unsigned int d = 0; d < 2; ++d)
         rhs(reduced_index[nodes[chosen[s]].dofs[d]], s) = nodes[chosen[s]].normal[d];
-    const Eigen::MatrixXd u = pin_factor->llt.solve(rhs);
-    n_solves += b;
+    const Eigen::MatrixXd u = Workspace::solve(w, *pin_factor, rhs);
     for (unsigned int s = 0; s < b; ++s)
       {
         auto &column = pin_columns[chosen[s]];
@@ -181,25 +256,36 @@ namespace wearlink::fe
           column[i] = nodes[i].normal[0] * u(reduced_index[nodes[i].dofs[0]], s) +
                       nodes[i].normal[1] * u(reduced_index[nodes[i].dofs[1]], s);
       }
-    seconds_in_columns += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return b;
   }
 
 
   void
   BoundaryCompliance::compute_bore_block(const unsigned int c)
   {
-    const auto         start = std::chrono::steady_clock::now();
+    const auto         start   = std::chrono::steady_clock::now();
+    const unsigned int q       = problem.bore_nodes.size();
+    const auto         missing = [&](const unsigned int k) {
+      return bore_columns[k].empty();
+    };
+    n_solves +=
+      fill_bore_block(missing_neighbours(missing, bore_sector_size > 0 ? bore_sector_size : q, c, block_size / 2),
+                      nullptr);
+    seconds_in_columns += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+
+  unsigned int
+  BoundaryCompliance::fill_bore_block(const std::vector<unsigned int> &chosen, Workspace *w)
+  {
     const auto        &nodes = problem.bore_nodes;
     const unsigned int q     = nodes.size();
-    const auto         chosen =
-      missing_neighbours(bore_columns, bore_sector_size > 0 ? bore_sector_size : q, c, block_size / 2);
-    const unsigned int b   = chosen.size();
-    Eigen::MatrixXd    rhs = Eigen::MatrixXd::Zero(ring_factor->matrix.rows(), 2 * b);
+    const unsigned int b     = chosen.size();
+    Eigen::MatrixXd    rhs   = Eigen::MatrixXd::Zero(ring_factor->matrix.rows(), 2 * b);
     for (unsigned int s = 0; s < b; ++s)
       for (unsigned int d = 0; d < 2; ++d)
         rhs(reduced_index[nodes[chosen[s]].dofs[d]], 2 * s + d) = 1;
-    const Eigen::MatrixXd u = ring_factor->llt.solve(rhs);
-    n_solves += 2 * b;
+    const Eigen::MatrixXd u = Workspace::solve(w, *ring_factor, rhs);
     // The base columns lie in the first sector, whose frame is the x–y frame: only the
     // displacements are turned into the frames of their nodes' sectors.
     for (unsigned int s = 0; s < b; ++s)
@@ -216,7 +302,7 @@ namespace wearlink::fe
               column[2 * q * d + q + a] = r[0] * uy - r[1] * ux;
             }
       }
-    seconds_in_columns += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return 2 * b;
   }
 
 
@@ -257,12 +343,30 @@ namespace wearlink::fe
   }
 
 
+  // The blocks are planned first, as the on-demand path would take them, then solved on
+  // every core (apply_to_subranges), each thread with a CHOLMOD workspace of its own;
+  // a block writes only its own columns, whose slots exist already.
   void
   BoundaryCompliance::precompute_all()
   {
-    for (unsigned int j = 0; j < pin_columns.size(); ++j)
-      pin_column(j);
-    for (unsigned int c = 0; c < bore_columns.size(); ++c)
-      bore_column(c);
+    const auto start = std::chrono::steady_clock::now();
+    const auto pin_blocks =
+      plan_blocks(pin_columns, pin_sector_size > 0 ? pin_sector_size : pin_columns.size(), block_size);
+    const auto bore_blocks =
+      plan_blocks(bore_columns, bore_sector_size > 0 ? bore_sector_size : bore_columns.size(), block_size / 2);
+    const auto                 n_pin = static_cast<unsigned int>(pin_blocks.size());
+    std::atomic<unsigned long> solves{0};
+    const auto                 blocks = [&](const unsigned int begin, const unsigned int end) {
+      Workspace w;
+      for (unsigned int k = begin; k < end; ++k)
+        solves += k < n_pin ? fill_pin_block(pin_blocks[k], &w) : fill_bore_block(bore_blocks[k - n_pin], &w);
+    };
+    const auto n = n_pin + static_cast<unsigned int>(bore_blocks.size());
+    if (blas_is_thread_safe())
+      parallel::apply_to_subranges(0u, n, blocks, 1);
+    else
+      blocks(0u, n);
+    n_solves += solves;
+    seconds_in_columns += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 } // namespace wearlink::fe

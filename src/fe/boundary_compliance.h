@@ -111,7 +111,10 @@ namespace wearlink::fe
       return bore_sector_size > 0;
     }
 
-    /** Fill every column (the full influence matrices; one sector's for a periodic body). */
+    /**
+     * Fill every column (the full influence matrices; one sector's for a periodic body),
+     * in the blocks the on-demand path would take, on every core.
+     */
     void
     precompute_all();
 
@@ -141,6 +144,16 @@ namespace wearlink::fe
     compute_bore_block(unsigned int c);
 
     struct Factorization; // CHOLMOD through Eigen, one per body (kept out of this header)
+    struct Workspace;     // CHOLMOD's workspace of one thread (precompute_all())
+
+    /**
+     * Solve for the unit loads of the candidates @p chosen and fill their columns, with
+     * the workspace @p w (null: the factorization's own); returns the solves.
+     */
+    unsigned int
+    fill_pin_block(const std::vector<unsigned int> &chosen, Workspace *w);
+    unsigned int
+    fill_bore_block(const std::vector<unsigned int> &chosen, Workspace *w);
 
     const ElasticityProblem       &problem;
     std::unique_ptr<Factorization> pin_factor, ring_factor;

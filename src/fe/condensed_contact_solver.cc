@@ -5,6 +5,7 @@
 #include "base/exceptions.h"
 #include "base/text.h"
 #include "fe/active_set_rules.h"
+#include "fe/blas_threads.h"
 #include "fe/boundary_ids.h"
 #include "fe/contact_solver.h"
 #include "fe/window_kernels.h"
@@ -432,7 +433,7 @@ namespace wearlink::fe
       solve_panel(const unsigned int c, const unsigned int k, const Entry &entry)
       {
         const unsigned int t     = k - c;
-        const unsigned int parts = t * c >= parallel_from ? 2 : 1;
+        const unsigned int parts = t * c >= parallel_from && blas_is_thread_safe() ? 2 : 1;
         bool               ok[2] = {true, true};
         const auto         part  = [&](const unsigned int begin, const unsigned int end) {
           for (unsigned int n = begin; n < end; ++n)
@@ -464,7 +465,7 @@ namespace wearlink::fe
       {
         const blas_int     t = k - c, cc = c, ldb = ld;
         const Number       minus_one = -1, one = 1;
-        const bool         two  = static_cast<unsigned int>(t) * c >= parallel_from;
+        const bool         two  = static_cast<unsigned int>(t) * c >= parallel_from && blas_is_thread_safe();
         const unsigned int m    = two ? static_cast<unsigned int>(t / std::sqrt(2.0)) : t;
         const auto         part = [&](const unsigned int begin, const unsigned int end) {
           for (unsigned int n = begin; n < end; ++n)

@@ -5,6 +5,7 @@
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/numbers.h"
+#include "fe/blas_threads.h"
 #include "fe/boundary_ids.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -136,6 +137,7 @@ namespace wearlink::fe
     , pin_profile(pin_profile)
     , bore_profile(bore_profile)
   {
+    blas_is_thread_safe(); // one BLAS thread per call from here on (fe/blas_threads.h)
   }
 
 

