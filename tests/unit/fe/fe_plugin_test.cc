@@ -19,14 +19,17 @@ using namespace wearlink::fe::testing;
 
 namespace
 {
+  /** The fe pressure model at @p surface_size [m]; @p max_iterations: its default if 0. */
   std::unique_ptr<contact::PressureModel>
-  create_fe_model(double surface_size)
+  create_fe_model(double surface_size, unsigned int max_iterations = 0)
   {
     dealii::ParameterHandler prm;
     contact::pressure_models().declare_all(prm);
     prm.enter_subsection("fe");
     prm.set("Surface element size", std::to_string(surface_size));
     prm.set("Refined layer thickness", "0");
+    if (max_iterations > 0)
+      prm.set("Maximum active-set iterations", std::to_string(max_iterations));
     prm.leave_subsection();
     ParameterReader reader(prm, "test");
     return contact::pressure_models().create("fe", reader, "Pressure model");
@@ -76,7 +79,7 @@ TEST(FePlugin, PressurePerAreaBalancesLoadInBodyFrames)
   contact::ContactLoad load;
   load.bushing_angle = -20 * pi / 180;
   load.pin_angle     = 30 * pi / 180;
-  load.force         = {0.0, 1000.0};
+  load.force         = {{0.0, 1000.0}};
   contact::SurfacePressure out;
   model->evaluate(load, out);
   ASSERT_EQ(out.pin.size(), 72u);
@@ -102,7 +105,7 @@ TEST(FePlugin, PressurePerAreaBalancesLoadInBodyFrames)
   EXPECT_NEAR(fb[1], -1000.0, 2e-3 * 1000);
 
   // No load, no pressure.
-  load.force = {0.0, 0.0};
+  load.force = {{0.0, 0.0}};
   model->evaluate(load, out);
   EXPECT_EQ(*std::max_element(out.pin.begin(), out.pin.end()), 0.0);
 }
@@ -152,7 +155,7 @@ TEST(FePlugin, SmallLoadsInAnyDirectionCarryNoTensileForce)
       {
         const double         angle = (7.3 + 10.0 * k) * pi / 180;
         contact::ContactLoad load;
-        load.force = {magnitude * std::cos(angle), magnitude * std::sin(angle)};
+        load.force = {{magnitude * std::cos(angle), magnitude * std::sin(angle)}};
         model->evaluate(load, out);
         double sum_pin = 0, sum_bore = 0;
         for (unsigned int i = 0; i < geometry.pin.n_points(); ++i)
@@ -184,7 +187,7 @@ TEST(FePlugin, VanishingLoadsAreCarried)
       {
         const double         angle = (3.1 + 45.0 * k) * pi / 180;
         contact::ContactLoad load;
-        load.force = {magnitude * std::cos(angle), magnitude * std::sin(angle)};
+        load.force = {{magnitude * std::cos(angle), magnitude * std::sin(angle)}};
         ASSERT_NO_THROW(model->evaluate(load, out)) << magnitude << " N at " << angle * 180 / pi << "°";
         double sum_pin = 0;
         for (unsigned int i = 0; i < geometry.pin.n_points(); ++i)
@@ -199,18 +202,10 @@ TEST(FePlugin, VanishingLoadsAreCarried)
 // both body angles.
 TEST(FePlugin, AFailedLoadStateIsNamedInTheError)
 {
-  dealii::ParameterHandler prm;
-  contact::pressure_models().declare_all(prm);
-  prm.enter_subsection("fe");
-  prm.set("Surface element size", "1e-4");
-  prm.set("Refined layer thickness", "0");
-  prm.set("Maximum active-set iterations", "1");
-  prm.leave_subsection();
-  ParameterReader reader(prm, "test");
-  auto            model = contact::pressure_models().create("fe", reader, "Pressure model");
+  auto model = create_fe_model(1e-4, 1);
   model->update_geometry(steel_pair(360));
   contact::ContactLoad load;
-  load.force         = {0.0, 1e5};
+  load.force         = {{0.0, 1e5}};
   load.bushing_angle = 0.25;
   load.pin_angle     = -1.5;
   contact::SurfacePressure out;

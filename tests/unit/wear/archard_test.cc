@@ -19,6 +19,7 @@
 #include "base/parameters.h"
 #include "contact/pressure_model.h"
 #include "wear/archard.h"
+#include "wear_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -26,6 +27,7 @@
 #include <cmath>
 
 using namespace wearlink;
+using namespace wearlink::wear::testing;
 
 namespace
 {
@@ -40,19 +42,6 @@ namespace
     return contact::pressure_models().create(name, reader, "Pressure model");
   }
 
-  contact::JointGeometry
-  steel_joint(unsigned int n_areas)
-  {
-    contact::JointGeometry g;
-    g.bore                        = Profile::round(0.012, n_areas);
-    g.pin                         = Profile::round(0.0115, n_areas);
-    g.axial_length                = 0.01;
-    g.bushing.youngs_modulus      = 207e9;
-    g.bushing.poisson_ratio       = 0.3;
-    g.pin_material.youngs_modulus = 207e9;
-    g.pin_material.poisson_ratio  = 0.3;
-    return g;
-  }
 } // namespace
 
 TEST(Archard, ConstantLoadOnRotatingPin)
@@ -75,7 +64,7 @@ TEST(Archard, ConstantLoadOnRotatingPin)
       s.load.pin_angle     = omega * i * dt;
       s.load.contact_angle = -pi / 2;
       s.load.normal_force  = force;
-      s.load.force         = {0, force};
+      s.load.force         = {{0, force}};
       s.sliding_speed      = omega * r2;
       s.weight             = dt; // periodic trapezoid = uniform weights
       acc.add(s);
@@ -119,15 +108,8 @@ TEST(Archard, ConstantLoadOnRotatingPin)
 // ~3° here → 3e-3); we ask 1 %.
 TEST(Archard, LocalVolumeMatchesGlobalForWinkler)
 {
-  const auto               g = steel_joint(360);
-  dealii::ParameterHandler prm;
-  contact::pressure_models().declare_all(prm);
-  prm.enter_subsection("winkler");
-  prm.set("Layer thickness", "1e-3");
-  prm.leave_subsection();
-  ParameterReader reader(prm, "test");
-  auto            model = contact::pressure_models().create("winkler", reader, "Pressure model");
-  model->update_geometry(g);
+  const auto               g     = steel_joint(360);
+  auto                     model = winkler_on(g);
   wear::ArchardAccumulator acc(g, 1e-13, 1e-13, *model);
   for (unsigned int i = 0; i < 720; ++i)
     {
@@ -135,8 +117,8 @@ TEST(Archard, LocalVolumeMatchesGlobalForWinkler)
       s.load.pin_angle     = 2 * pi * i / 720;
       s.load.contact_angle = 0.3;
       s.load.normal_force  = 200;
-      s.load.force         = {-200 * std::cos(0.3), -200 * std::sin(0.3)};
-      s.load.eccentricity  = {5e-4 * std::cos(0.3), 5e-4 * std::sin(0.3)};
+      s.load.force         = {{-200 * std::cos(0.3), -200 * std::sin(0.3)}};
+      s.load.eccentricity  = {{5e-4 * std::cos(0.3), 5e-4 * std::sin(0.3)}};
       s.sliding_speed      = 0.1;
       s.weight             = 1e-3;
       acc.add(s);

@@ -9,45 +9,14 @@
 // give the load to the area discretization: a narrow contact's force is attributed to
 // its area's centre, up to half an area (0.5°) off its true direction, so the lateral
 // error reaches F sin 0.5° = 8.7e-3 F (measured 3.6e-3 F); asserted to 1e-2 F.
-#include "base/parameters.h"
-#include "contact/pressure_model.h"
+#include "wear_test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace wearlink;
-
-namespace
-{
-  /** Steel on steel (E = 207 GPa, ν = 0.3), 10 mm long. */
-  contact::JointGeometry
-  steel_joint(const Profile &bore, const Profile &pin)
-  {
-    contact::JointGeometry g;
-    g.bore         = bore;
-    g.pin          = pin;
-    g.axial_length = 0.01;
-    g.bushing      = {207e9, 0.3};
-    g.pin_material = {207e9, 0.3};
-    return g;
-  }
-
-  /** The winkler pressure model (1 mm layer) on @p g. */
-  std::unique_ptr<contact::PressureModel>
-  winkler_on(const contact::JointGeometry &g)
-  {
-    dealii::ParameterHandler prm;
-    contact::pressure_models().declare_all(prm);
-    prm.enter_subsection("winkler");
-    prm.set("Layer thickness", "1e-3");
-    prm.leave_subsection();
-    ParameterReader reader(prm, "test");
-    auto            model = contact::pressure_models().create("winkler", reader, "Pressure model");
-    model->update_geometry(g);
-    return model;
-  }
-} // namespace
+using namespace wearlink::wear::testing;
 
 TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
 {
@@ -132,8 +101,8 @@ TEST(Winkler, APinInADeepPocketRestsOnBothRims)
   contact::ContactLoad load;
   load.contact_angle = direction;
   load.normal_force  = F;
-  load.force         = {-F * std::cos(direction), -F * std::sin(direction)};
-  load.eccentricity  = {5.8e-4 * std::cos(direction), 5.8e-4 * std::sin(direction)};
+  load.force         = {{-F * std::cos(direction), -F * std::sin(direction)}};
+  load.eccentricity  = {{5.8e-4 * std::cos(direction), 5.8e-4 * std::sin(direction)}};
   contact::SurfacePressure out;
   ASSERT_NO_THROW(model->evaluate(load, out));
   double fx = 0, fy = 0, upper = 0, lower = 0;
