@@ -25,6 +25,7 @@ namespace wearlink::contact
         : r(samples)
         , n(static_cast<long>(samples.size()))
         , d(two_pi / samples.size())
+        , inverse_d(samples.size() / two_pi)
         , step(step)
       {
         // The start in the body frame, in sample spacings reduced to [0, n): indices
@@ -43,30 +44,27 @@ namespace wearlink::contact
           }
         cos_rel = std::cos(angle - phi_e);
         sin_rel = std::sin(angle - phi_e);
-      }
-      /** Radius of sample k (unwrapped index). */
-      double
-      sample(long j) const
-      {
-        j %= n;
-        return r[j < 0 ? j + n : j];
+        i       = k % n;
+        i_prev  = i == 0 ? n - 1 : i - 1;
       }
       double
       next_radius() const
       {
-        return sample(k);
+        return r[i];
       }
       /** Radius at a global angle @p x in [angle − d, angle] (the segment before the next kink). */
       double
       radius_at(double x) const
       {
-        const double r0 = sample(k - 1), r1 = sample(k);
-        return r0 + (r1 - r0) * ((x - (angle - d)) / d);
+        const double r0 = r[i_prev], r1 = r[i];
+        return r0 + (r1 - r0) * ((x - (angle - d)) * inverse_d);
       }
       void
       advance()
       {
         ++k;
+        i_prev         = i;
+        i              = i + 1 == n ? 0 : i + 1; // k mod n, without a division per kink
         angle          = base + k * d;
         const double c = cos_rel * step.cos - sin_rel * step.sin;
         sin_rel        = sin_rel * step.cos + cos_rel * step.sin;
@@ -74,9 +72,10 @@ namespace wearlink::contact
       }
       const std::vector<double> &r;
       long                       n;
-      double                     d, base;
+      double                     d, inverse_d, base;
       const Gap::Step           &step;
-      long                       k;
+      long                       k;                 ///< the next kink's sample index, unwrapped (k ≥ 0)
+      long                       i = 0, i_prev = 0; ///< k and k − 1 modulo n
       double                     angle, cos_rel, sin_rel;
     };
   } // namespace
@@ -162,11 +161,14 @@ namespace wearlink::contact
             const double sx = at_hi ? sin_half : at_b ? bw.sin_rel : pw.sin_rel;
             // g' = slope + |e| sin(φ − φ_e) rises through 0 inside the segment: a minimum at
             // sin(φ − φ_e) = −slope/|e|, cos(φ − φ_e) = √(1 − (slope/|e|)²) (within ±90°).
-            const double slope = (hx - ha) / (x - a);
-            if (slope + ne * sa < 0 && slope + ne * sx > 0)
+            // The signs of g' × (x − a) > 0 at both ends decide, so that the division
+            // (the walk's slowest operation) is taken only for such a segment.
+            const double dx = x - a, dh = hx - ha;
+            if (dh + ne * sa * dx < 0 && dh + ne * sx * dx > 0)
               {
-                const double q  = std::clamp(slope / ne, -1.0, 1.0);
-                const double xs = phi_e - std::asin(q);
+                const double slope = dh / dx;
+                const double q     = std::clamp(slope / ne, -1.0, 1.0);
+                const double xs    = phi_e - std::asin(q);
                 if (xs > a && xs < x)
                   consider(xs, ha + slope * (xs - a) - ne * std::sqrt(1 - q * q));
               }

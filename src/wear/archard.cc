@@ -102,11 +102,13 @@ namespace wearlink::wear
       x -= n * std::floor(x / n);
       const long   i = static_cast<long>(std::floor(x));
       const double f = x - i;
+      // a = k − i and b = k − i − 1 modulo n, advanced without a division per sample.
+      long a = ((-i) % n + n) % n, b = a == 0 ? n - 1 : a - 1;
       for (long k = 0; k < n; ++k)
         {
-          const long a = ((k - i) % n + n) % n;     // k − i
-          const long b = ((k - i - 1) % n + n) % n; // k − i − 1
-          out[k]       = scale * ((1 - f) * p[a] + f * p[b]);
+          out[k] = scale * ((1 - f) * p[a] + f * p[b]);
+          b      = a;
+          a      = a + 1 == n ? 0 : a + 1;
         }
     }
   } // namespace
