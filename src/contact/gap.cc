@@ -149,40 +149,47 @@ namespace wearlink::contact
     };
     double a = lo, ha = bw.radius_at(lo) - pw.radius_at(lo), sa = -sin_half;
     consider(a, ha - ne * cos_half);
-    while (a < hi)
+    // The segment [a, x] that ends where h = hx, cos(x − φ_e) = cx, sin(x − φ_e) = sx.
+    const auto segment = [&](const double x, const double hx, const double cx, const double sx) {
+      // g' = slope + |e| sin(φ − φ_e) rises through 0 inside the segment: a minimum at
+      // sin(φ − φ_e) = −slope/|e|, cos(φ − φ_e) = √(1 − (slope/|e|)²) (within ±90°).
+      // The signs of g' × (x − a) > 0 at both ends decide, so that the division
+      // (the walk's slowest operation) is taken only for such a segment.
+      const double dx = x - a, dh = hx - ha;
+      if (dh + ne * sa * dx < 0 && dh + ne * sx * dx > 0)
+        {
+          const double slope = dh / dx;
+          const double q     = std::clamp(slope / ne, -1.0, 1.0);
+          const double xs    = phi_e - std::asin(q);
+          if (xs > a && xs < x)
+            consider(xs, ha + slope * (xs - a) - ne * std::sqrt(1 - q * q));
+        }
+      consider(x, hx - ne * cx);
+      a  = x;
+      ha = hx;
+      sa = sx;
+    };
+    // The kinks inside the window, the nearer walker's first (both at a common kink).
+    for (;;)
       {
-        const double x = std::min({bw.angle, pw.angle, hi});
-        if (x > a)
+        const bool   bore_next = bw.angle <= pw.angle, both = bw.angle == pw.angle;
+        const double x = bore_next ? bw.angle : pw.angle;
+        if (!(x < hi))
+          break;
+        if (x > a) // a kink at the window's start is its first point, already considered
           {
-            // h at x, and cos/sin of (x − φ_e): at a kink from its walker, at hi from the window.
-            const bool   at_hi = x == hi, at_b = !at_hi && x == bw.angle, at_p = !at_hi && x == pw.angle;
-            const double hx = (at_b ? bw.next_radius() : bw.radius_at(x)) - (at_p ? pw.next_radius() : pw.radius_at(x));
-            const double cx = at_hi ? cos_half : at_b ? bw.cos_rel : pw.cos_rel;
-            const double sx = at_hi ? sin_half : at_b ? bw.sin_rel : pw.sin_rel;
-            // g' = slope + |e| sin(φ − φ_e) rises through 0 inside the segment: a minimum at
-            // sin(φ − φ_e) = −slope/|e|, cos(φ − φ_e) = √(1 − (slope/|e|)²) (within ±90°).
-            // The signs of g' × (x − a) > 0 at both ends decide, so that the division
-            // (the walk's slowest operation) is taken only for such a segment.
-            const double dx = x - a, dh = hx - ha;
-            if (dh + ne * sa * dx < 0 && dh + ne * sx * dx > 0)
-              {
-                const double slope = dh / dx;
-                const double q     = std::clamp(slope / ne, -1.0, 1.0);
-                const double xs    = phi_e - std::asin(q);
-                if (xs > a && xs < x)
-                  consider(xs, ha + slope * (xs - a) - ne * std::sqrt(1 - q * q));
-              }
-            consider(x, hx - ne * cx);
-            a  = x;
-            ha = hx;
-            sa = sx;
+            if (bore_next)
+              segment(x, bw.next_radius() - (both ? pw.next_radius() : pw.radius_at(x)), bw.cos_rel, bw.sin_rel);
+            else
+              segment(x, bw.radius_at(x) - pw.next_radius(), pw.cos_rel, pw.sin_rel);
           }
-        // Past a kink at a (also one at the start of the window).
-        if (bw.angle <= a)
+        if (bore_next)
           bw.advance();
-        if (pw.angle <= a)
+        if (!bore_next || both)
           pw.advance();
       }
+    if (hi > a)
+      segment(hi, bw.radius_at(hi) - pw.radius_at(hi), cos_half, sin_half);
     return m;
   }
 
