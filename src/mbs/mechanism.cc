@@ -2,6 +2,7 @@
 #include "mbs/mechanism.h"
 
 #include "base/exceptions.h"
+#include "mbs/body_trig.h"
 
 #include <algorithm>
 #include <cmath>
@@ -214,11 +215,7 @@ namespace wearlink::mbs
   Mechanism::accelerations(double t, const double *q, const double *v, double *a, PowerTerms &power)
   {
     ++evaluations;
-    const unsigned int nb = n_bodies();
-    for (unsigned int b = 0; b < nb; ++b)
-      {
-        ::sincos(q[3 * b + 2], &trig[2 * b + 1], &trig[2 * b]); // one call for both (glibc)
-      }
+    body_trig(q, n_bodies(), trig.data());
     const StateView s(q, v, trig.data());
     apply_forces(t, s, power);
     for (unsigned int c = 0; c < constraints.size(); ++c)
