@@ -19,53 +19,48 @@ namespace wearlink::mbs
 {
   namespace
   {
-    /** The angles of bodies b0 … b0 + count − 1 into a[0 … lanes − 1], padded with zeros. */
-    void
-    gather_angles(const double *q, const unsigned int b0, const unsigned int count, const unsigned int lanes, double *a)
-    {
-      for (unsigned int l = 0; l < lanes; ++l)
-        a[l] = l < count ? q[3 * (b0 + l) + 2] : 0.0;
-    }
-
-    /** cos c[l] and sin s[l] of bodies b0 + l, l < count, into trig. */
-    void
-    scatter(const double *c, const double *s, const unsigned int b0, const unsigned int count, double *trig)
-    {
-      for (unsigned int l = 0; l < count; ++l)
-        {
-          trig[2 * (b0 + l)]     = c[l];
-          trig[2 * (b0 + l) + 1] = s[l];
-        }
-    }
-
 #ifdef WEARLINK_LIBMVEC
+    /** c = cos a, s = sin a for 4 angles (AVX2). */
     __attribute__((target("avx2,fma"))) void
-    body_trig_avx2(const double *q, const unsigned int n_bodies, double *trig)
+    cos_sin_4(const double *a, double *c, double *s)
     {
-      for (unsigned int b0 = 0; b0 < n_bodies; b0 += 4)
-        {
-          const unsigned int count = n_bodies - b0 < 4 ? n_bodies - b0 : 4;
-          double             a[4], c[4], s[4];
-          gather_angles(q, b0, count, 4, a);
-          const __m256d x = _mm256_loadu_pd(a);
-          _mm256_storeu_pd(c, _ZGVdN4v_cos(x));
-          _mm256_storeu_pd(s, _ZGVdN4v_sin(x));
-          scatter(c, s, b0, count, trig);
-        }
+      const __m256d x = _mm256_loadu_pd(a);
+      _mm256_storeu_pd(c, _ZGVdN4v_cos(x));
+      _mm256_storeu_pd(s, _ZGVdN4v_sin(x));
     }
 
+    /** c = cos a, s = sin a for 2 angles (SSE2). */
     void
-    body_trig_sse2(const double *q, const unsigned int n_bodies, double *trig)
+    cos_sin_2(const double *a, double *c, double *s)
     {
-      for (unsigned int b0 = 0; b0 < n_bodies; b0 += 2)
+      const __m128d x = _mm_loadu_pd(a);
+      _mm_storeu_pd(c, _ZGVbN2v_cos(x));
+      _mm_storeu_pd(s, _ZGVbN2v_sin(x));
+    }
+
+    /**
+     * The bodies in groups of @p lanes through @p cos_sin (the last group padded with
+     * zero angles, whose results are not written).
+     */
+    template <unsigned int lanes>
+    void
+    in_groups(const double      *q,
+              const unsigned int n_bodies,
+              double            *trig,
+              void (*cos_sin)(const double *, double *, double *))
+    {
+      for (unsigned int b0 = 0; b0 < n_bodies; b0 += lanes)
         {
-          const unsigned int count = n_bodies - b0 < 2 ? n_bodies - b0 : 2;
-          double             a[2], c[2], s[2];
-          gather_angles(q, b0, count, 2, a);
-          const __m128d x = _mm_loadu_pd(a);
-          _mm_storeu_pd(c, _ZGVbN2v_cos(x));
-          _mm_storeu_pd(s, _ZGVbN2v_sin(x));
-          scatter(c, s, b0, count, trig);
+          const unsigned int count = n_bodies - b0 < lanes ? n_bodies - b0 : lanes;
+          double             a[lanes], c[lanes], s[lanes];
+          for (unsigned int l = 0; l < lanes; ++l)
+            a[l] = l < count ? q[3 * (b0 + l) + 2] : 0.0;
+          cos_sin(a, c, s);
+          for (unsigned int l = 0; l < count; ++l)
+            {
+              trig[2 * (b0 + l)]     = c[l];
+              trig[2 * (b0 + l) + 1] = s[l];
+            }
         }
     }
 #endif
@@ -77,8 +72,8 @@ namespace wearlink::mbs
 #ifdef WEARLINK_LIBMVEC
     static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     if (avx2)
-      return body_trig_avx2(q, n_bodies, trig);
-    return body_trig_sse2(q, n_bodies, trig);
+      return in_groups<4>(q, n_bodies, trig, cos_sin_4);
+    return in_groups<2>(q, n_bodies, trig, cos_sin_2);
 #else
     for (unsigned int b = 0; b < n_bodies; ++b)
       {
