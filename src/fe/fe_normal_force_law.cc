@@ -180,7 +180,7 @@ namespace wearlink::fe
           lc.pin_angle     = psi_b - psi_p; // the contact direction psi_b meets the pin at psi_p
           for (const double F : forces)
             {
-              lc.load = {F * std::cos(psi_b), F * std::sin(psi_b)};
+              lc.load = {{F * std::cos(psi_b), F * std::sin(psi_b)}};
               ++build.n_solves;
               try
                 {
@@ -445,7 +445,7 @@ namespace wearlink::fe
     std::vector<std::array<double, 2>> directions;
     for (unsigned int i = 0; i < n_b; ++i)
       for (unsigned int j = 0; j < n_p; ++j)
-        directions.push_back({two_pi * i / n_b, two_pi * j / n_p});
+        directions.push_back({{two_pi * i / n_b, two_pi * j / n_p}});
     // A worn table's directions go all around both surfaces: its solves would ask for
     // nearly every compliance column, one block at a time; computed up front they run
     // on every core (BoundaryCompliance::precompute_all(); 19.7 s → 10.2 s for a worn
@@ -488,7 +488,7 @@ namespace wearlink::fe
     fe.refined_arc_half_angle  = round_refined_half_angle(g, forces.back());
     fe.refined_arc_bore_centre = bore_angle;
     fe.refined_arc_pin_centre  = pin_angle;
-    auto curve                 = solve_table_on_own_mesh(g, fe, forces, {{bore_angle, pin_angle}}, build);
+    auto curve                 = solve_table_on_own_mesh(g, fe, forces, {{{bore_angle, pin_angle}}}, build);
     build.seconds              = clock.seconds();
     return curve;
   }

@@ -26,11 +26,11 @@ namespace wearlink::wear
     LoadSample s;
     s.load.bushing_angle = d.bushing_angle;
     s.load.pin_angle     = d.pin_angle;
-    s.load.eccentricity  = {d.eccentricity.x(), d.eccentricity.y()};
+    s.load.eccentricity  = {{d.eccentricity.x(), d.eccentricity.y()}};
     s.load.penetration   = d.penetration;
     s.load.normal_force  = d.normal_force;
     s.load.contact_angle = d.contact_angle;
-    s.load.force         = {-d.normal_force * std::cos(d.contact_angle), -d.normal_force * std::sin(d.contact_angle)};
+    s.load.force         = {{-d.normal_force * std::cos(d.contact_angle), -d.normal_force * std::sin(d.contact_angle)}};
     s.sliding_speed      = std::abs(d.sliding_velocity);
     return s;
   }
