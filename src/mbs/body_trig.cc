@@ -3,8 +3,7 @@
 
 #include <cmath>
 
-#if defined(__x86_64__) && defined(__GLIBC__) && defined(__GNUC__) && !defined(__clang__)
-#  define WEARLINK_LIBMVEC 1
+#ifdef WEARLINK_LIBMVEC // set by src/mbs/CMakeLists.txt when libmvec is linked
 #  include <immintrin.h>
 
 // libmvec's entry points, named by the x86-64 vector function ABI (b: SSE2, 2 lanes;
