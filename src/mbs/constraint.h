@@ -17,6 +17,7 @@
 
 #include "mbs/types.h"
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -50,6 +51,19 @@ namespace wearlink::mbs
     /** Evaluate Φ, Φq, Φt and γ at time @p t for the state @p s. */
     virtual void
     evaluate(double t, const StateView &s, ConstraintRows &out) const = 0;
+
+    /**
+     * Which of the three Jacobian entries per body (x, y, θ) of equation @p row are
+     * constants, the same at every state and time (e.g. the ±1 of a revolute's position
+     * rows). The Schur complement folds products of constant entries once at set-up;
+     * declaring an entry constant that is not gives wrong accelerations, so the unit
+     * tests check every declaration at random states. The default declares none.
+     */
+    virtual std::array<bool, 3>
+    constant_jacobian(unsigned int /*row*/) const
+    {
+      return {{false, false, false}};
+    }
 
     /** Type name as written in the scene ("revolute", …). */
     virtual std::string

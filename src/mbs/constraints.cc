@@ -56,6 +56,12 @@ namespace wearlink::mbs
         return "revolute";
       }
 
+      std::array<bool, 3>
+      constant_jacobian(unsigned int) const override
+      {
+        return {{true, true, false}};
+      }
+
       void
       evaluate(double, const StateView &s, ConstraintRows &out) const override
       {
@@ -118,6 +124,12 @@ namespace wearlink::mbs
         return "translational";
       }
 
+      std::array<bool, 3>
+      constant_jacobian(const unsigned int row) const override
+      {
+        return {{row == 1, row == 1, row == 1}}; // row 1 is the relative angle
+      }
+
       void
       evaluate(double, const StateView &s, ConstraintRows &out) const override
       {
@@ -177,6 +189,12 @@ namespace wearlink::mbs
         return "fixed-angle";
       }
 
+      std::array<bool, 3>
+      constant_jacobian(unsigned int) const override
+      {
+        return {{true, true, true}};
+      }
+
       void
       evaluate(double, const StateView &s, ConstraintRows &out) const override
       {
@@ -208,6 +226,12 @@ namespace wearlink::mbs
       type() const override
       {
         return "angle-driver";
+      }
+
+      std::array<bool, 3>
+      constant_jacobian(unsigned int) const override
+      {
+        return {{true, true, true}};
       }
 
       void

@@ -149,11 +149,17 @@ namespace wearlink::mbs
   void
   Mechanism::plan_schur_assembly()
   {
-    // Every pair of constraint rows that share a body contributes one product per body
-    // to the lower triangle of S; listing them once removes the index arithmetic and
-    // the nested loops from every right-hand side.
+    // Every pair of constraint rows that share a body contributes Σ_d a_d w_d b_d (their
+    // Jacobian entries for that body, w its M⁻¹ diagonal) to the lower triangle of S.
+    // Listing the products once removes the index arithmetic and the nested loops from
+    // every right-hand side, and the dimensions where both entries are constants (the
+    // ±1 and 0 of positions and angles) are summed here, once: what remains per
+    // right-hand side is mostly one θ product per pair of revolute rows.
     const unsigned int m = n_equations;
-    schur_terms.clear();
+    evaluate_rows_at_rest();
+    std::vector<double> constant(std::size_t(m) * m, 0.0);
+    theta_terms.clear();
+    full_terms.clear();
     for (unsigned int b = 0; b < n_bodies(); ++b)
       for (const auto &[c1, side1] : body_constraints[b])
         for (const auto &[c2, side2] : body_constraints[b])
@@ -164,16 +170,50 @@ namespace wearlink::mbs
                 const unsigned int col = permuted[row_offset[c2] + k2];
                 if (col > row)
                   continue;
-                const ConstraintRows &r1 = rows[c1], &r2 = rows[c2];
-                schur_terms.push_back({std::size_t(row) * m + col,
-                                       side1 == 0 ? r1.jac_i[k1] : r1.jac_j[k1],
-                                       side2 == 0 ? r2.jac_i[k2] : r2.jac_j[k2],
-                                       &inverse_mass[3 * b]});
+                const std::size_t   target = std::size_t(row) * m + col;
+                const double       *a      = side1 == 0 ? rows[c1].jac_i[k1] : rows[c1].jac_j[k1];
+                const double       *bb     = side2 == 0 ? rows[c2].jac_i[k2] : rows[c2].jac_j[k2];
+                const double       *w      = &inverse_mass[3 * b];
+                const auto          fixed1 = constraints[c1]->constant_jacobian(k1);
+                const auto          fixed2 = constraints[c2]->constant_jacobian(k2);
+                std::array<bool, 3> fixed;
+                for (unsigned int d = 0; d < 3; ++d)
+                  fixed[d] = fixed1[d] && fixed2[d];
+                if (fixed[0] && fixed[1])
+                  {
+                    constant[target] += a[0] * w[0] * bb[0] + a[1] * w[1] * bb[1];
+                    if (fixed[2])
+                      constant[target] += a[2] * w[2] * bb[2];
+                    else
+                      theta_terms.push_back({target, a + 2, bb + 2, w[2]});
+                  }
+                else
+                  full_terms.push_back({target, a, bb, w});
               }
     // In memory order of the targets, for locality.
-    std::stable_sort(schur_terms.begin(), schur_terms.end(), [](const SchurTerm &x, const SchurTerm &y) {
+    std::stable_sort(theta_terms.begin(), theta_terms.end(), [](const ThetaTerm &x, const ThetaTerm &y) {
       return x.target < y.target;
     });
+    std::stable_sort(full_terms.begin(), full_terms.end(), [](const FullTerm &x, const FullTerm &y) {
+      return x.target < y.target;
+    });
+    schur_entries.clear();
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = first_column[i]; j <= i; ++j)
+        schur_entries.push_back({std::size_t(i) * m + j, constant[std::size_t(i) * m + j]});
+  }
+
+  void
+  Mechanism::evaluate_rows_at_rest()
+  {
+    // The constant Jacobian entries hold at any state: take q = 0, q̇ = 0, t = 0.
+    const unsigned int  nb = n_bodies();
+    std::vector<double> zero(3 * nb, 0.0), trig_zero(2 * nb, 0.0);
+    for (unsigned int b = 0; b < nb; ++b)
+      trig_zero[2 * b] = 1.0;
+    const StateView s(zero.data(), zero.data(), trig_zero.data());
+    for (unsigned int c = 0; c < constraints.size(); ++c)
+      constraints[c]->evaluate(0.0, s, rows[c]);
   }
 
   void
@@ -281,12 +321,14 @@ namespace wearlink::mbs
   void
   Mechanism::assemble_schur_complement()
   {
-    // S = Φq M⁻¹ Φqᵀ, lower triangle, from the planned products (plan_schur_assembly).
-    const unsigned int m = n_equations;
-    for (unsigned int i = 0; i < m; ++i)
-      std::fill(schur.begin() + i * m + first_column[i], schur.begin() + i * m + i + 1, 0.0);
+    // S = Φq M⁻¹ Φqᵀ, lower triangle: the constant part of every envelope entry, then
+    // the planned products (plan_schur_assembly).
     double *S = schur.data();
-    for (const SchurTerm &t : schur_terms)
+    for (const SchurEntry &e : schur_entries)
+      S[e.target] = e.constant;
+    for (const ThetaTerm &t : theta_terms)
+      S[t.target] += t.w * *t.a * *t.b;
+    for (const FullTerm &t : full_terms)
       S[t.target] += t.a[0] * t.w[0] * t.b[0] + t.a[1] * t.w[1] * t.b[1] + t.a[2] * t.w[2] * t.b[2];
   }
 
@@ -294,31 +336,35 @@ namespace wearlink::mbs
   Mechanism::factor_schur_complement(const double t)
   {
     const unsigned int m = n_equations;
-    // Cholesky S = L Lᵀ in place within the envelope, row by row (each entry is one
-    // contiguous dot product of two rows). S has a few dozen rows at most; a plain
-    // envelope factorization beats a blocked dense library one by a wide margin here
-    // (callgrind on the nine-bar: Eigen's dynamic LLT spent ~3× the instructions in its
-    // blocking and GEMV kernels). The reciprocal pivots are kept for the solves.
+    // S = L D Lᵀ (L unit lower triangular) in place within the envelope, row by row; each
+    // entry is one contiguous dot product of two rows. S has a few dozen rows at most; a
+    // plain envelope factorization beats a blocked dense library one by a wide margin
+    // here (callgrind on the nine-bar: Eigen's dynamic LLT spent ~3× the instructions in
+    // its blocking and GEMV kernels). LDLᵀ rather than Cholesky: the rows form one chain
+    // of dependent pivots, and a square root plus a division per pivot was ~40 % of the
+    // factorization's time on that chain (perf); one division per pivot remains.
+    // w_j = L_ij D_j of the current row is kept in `work` (scratch until the solve).
     double *L = schur.data();
+    double *w = work.data();
     for (unsigned int i = 0; i < m; ++i)
       {
         double            *Li = L + std::size_t(i) * m;
         const unsigned int fi = first_column[i];
+        double             d  = Li[i];
         for (unsigned int j = fi; j < i; ++j)
           {
             const double *Lj = L + std::size_t(j) * m;
             double        s  = Li[j];
             for (unsigned int k = std::max(fi, first_column[j]); k < j; ++k)
-              s -= Li[k] * Lj[k];
+              s -= w[k] * Lj[k];
+            w[j]  = s;
             Li[j] = s * inverse_pivot[j];
+            d -= s * Li[j];
           }
-        double d = Li[i];
-        for (unsigned int k = fi; k < i; ++k)
-          d -= Li[k] * Li[k];
         if (!(d > 1e-14 * (1.0 + std::abs(Li[i]))))
           throw_rank_loss(t);
-        Li[i]            = std::sqrt(d);
-        inverse_pivot[i] = 1.0 / Li[i];
+        Li[i]            = d;
+        inverse_pivot[i] = 1.0 / d;
       }
   }
 
@@ -340,19 +386,20 @@ namespace wearlink::mbs
     const double      *L = schur.data();
     for (unsigned int r = 0; r < m; ++r)
       work[permuted[r]] = rhs[r];
-    for (unsigned int i = 0; i < m; ++i) // L y = rhs
+    for (unsigned int i = 0; i < m; ++i) // L y = rhs (unit diagonal)
       {
         const double *Li = L + std::size_t(i) * m;
         double        s  = work[i];
         for (unsigned int k = first_column[i]; k < i; ++k)
           s -= Li[k] * work[k];
-        work[i] = s * inverse_pivot[i];
+        work[i] = s;
       }
-    for (unsigned int i = m; i-- > 0;) // Lᵀ λ = y
+    for (unsigned int i = 0; i < m; ++i) // z = D⁻¹ y
+      work[i] *= inverse_pivot[i];
+    for (unsigned int i = m; i-- > 0;) // Lᵀ λ = z (unit diagonal)
       {
         const double *Li = L + std::size_t(i) * m;
-        const double  x  = work[i] * inverse_pivot[i];
-        work[i]          = x;
+        const double  x  = work[i];
         for (unsigned int k = first_column[i]; k < i; ++k)
           work[k] -= Li[k] * x;
       }

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -182,10 +183,13 @@ namespace wearlink::mbs
     /** The permutation of S (reverse Cuthill–McKee) and its envelope. */
     void
     order_schur_rows();
-    /** The flat list of products that assemble S (schur_terms). */
+    /** The constant part of S and the products that complete it (schur_entries, …). */
     void
     plan_schur_assembly();
-    /** S = L Lᵀ in place; NumericalError naming @p t if Φq lost rank. */
+    /** Every constraint's rows at q = 0, q̇ = 0, t = 0 (where its constant entries are read). */
+    void
+    evaluate_rows_at_rest();
+    /** S = L D Lᵀ in place (D on the diagonal); NumericalError naming @p t if Φq lost rank. */
     void
     factor_schur_complement(double t);
     /** The NumericalError of a singular S (Φq lost rank) at time @p t. */
@@ -224,21 +228,35 @@ namespace wearlink::mbs
     std::vector<unsigned int> permuted;     ///< row r of Φ sits at position permuted[r] in S
     std::vector<unsigned int> first_column; ///< envelope start per permuted row
     /**
-     * One product of the assembly: S[target] += Σ_d a[d] w[d] b[d], with a and b the
-     * Jacobian rows (3 entries, one body) of two constraint rows that share the body
-     * and w that body's M⁻¹ diagonal. Planned once by finalize(); the pointers are into
-     * `rows` and `inverse_mass`, which are never resized afterwards.
+     * The assembly of S, planned once by finalize() (the pointers are into `rows` and
+     * `inverse_mass`, which are never resized afterwards): every envelope entry starts
+     * from its constant part; a ThetaTerm adds w a_θ b_θ of two rows whose position
+     * entries are constants (folded into the constant part); a FullTerm adds
+     * Σ_d a[d] w[d] b[d] over the three entries of one body.
      */
-    struct SchurTerm
+    struct SchurEntry
+    {
+      std::size_t target; ///< flat index into `schur`
+      double      constant;
+    };
+    struct ThetaTerm
+    {
+      std::size_t   target;
+      const double *a, *b;
+      double        w;
+    };
+    struct FullTerm
     {
       std::size_t   target;
       const double *a, *b, *w;
     };
-    std::vector<SchurTerm> schur_terms;
-    Eigen::VectorXd        rhs, lambda, forces;
-    std::vector<double>    trig;          ///< cos θ, sin θ per body
-    std::vector<double>    work;          ///< permuted right-hand side / solution
-    std::vector<double>    inverse_pivot; ///< 1 / L_ii of the last factorization
+    std::vector<SchurEntry> schur_entries; ///< every envelope entry, in memory order
+    std::vector<ThetaTerm>  theta_terms;
+    std::vector<FullTerm>   full_terms;
+    Eigen::VectorXd         rhs, lambda, forces;
+    std::vector<double>     trig;          ///< cos θ, sin θ per body
+    std::vector<double>     work;          ///< factorization scratch, then the permuted right-hand side / solution
+    std::vector<double>     inverse_pivot; ///< 1 / D_ii of the last factorization
 
     long evaluations = 0;
   };
