@@ -51,6 +51,7 @@ namespace wearlink::mbs
     rhs.setZero(n_equations);
     lambda.setZero(n_equations);
     forces.setZero(3 * nb);
+    scaled_forces.assign(3 * nb, 0.0);
     trig.assign(2 * nb, 0.0);
     work.assign(n_equations, 0.0);
     inverse_pivot.assign(n_equations, 0.0);
@@ -290,30 +291,27 @@ namespace wearlink::mbs
   Mechanism::assemble_constraint_rhs(const double *v)
   {
     // Baumgarte: γ̂ = γ − 2αΦ̇ − β²Φ; rhs = Φq M⁻¹ g − γ̂.
-
-    rhs.setZero();
+    const unsigned int nc = n_coordinates();
+    for (unsigned int i = 0; i < nc; ++i)
+      scaled_forces[i] = inverse_mass[i] * forces[i];
+    const double two_alpha = 2 * baumgarte_alpha, beta_squared = baumgarte_beta * baumgarte_beta;
     for (unsigned int c = 0; c < constraints.size(); ++c)
       {
-        const auto &con = *constraints[c];
-        const auto &r   = rows[c];
+        const auto   &con = *constraints[c];
+        const auto   &r   = rows[c];
+        const double *vj = v + 3 * con.body_j, *gj = scaled_forces.data() + 3 * con.body_j;
         for (unsigned int k = 0; k < r.n; ++k)
           {
-            double jv  = r.phi_t[k];
-            double jmg = 0;
-            for (unsigned int d = 0; d < 3; ++d)
+            const double *J   = r.jac_j[k];
+            double        jv  = r.phi_t[k] + J[0] * vj[0] + J[1] * vj[1] + J[2] * vj[2];
+            double        jmg = J[0] * gj[0] + J[1] * gj[1] + J[2] * gj[2];
+            if (con.body_i != ground)
               {
-                if (con.body_i != ground)
-                  {
-                    const unsigned int col = 3 * con.body_i + d;
-                    jv += r.jac_i[k][d] * v[col];
-                    jmg += r.jac_i[k][d] * inverse_mass[col] * forces[col];
-                  }
-                const unsigned int col = 3 * con.body_j + d;
-                jv += r.jac_j[k][d] * v[col];
-                jmg += r.jac_j[k][d] * inverse_mass[col] * forces[col];
+                const double *I = r.jac_i[k], *vi = v + 3 * con.body_i, *gi = scaled_forces.data() + 3 * con.body_i;
+                jv += I[0] * vi[0] + I[1] * vi[1] + I[2] * vi[2];
+                jmg += I[0] * gi[0] + I[1] * gi[1] + I[2] * gi[2];
               }
-            const double gamma_hat = r.gamma[k] - 2 * baumgarte_alpha * jv - baumgarte_beta * baumgarte_beta * r.phi[k];
-            rhs[row_offset[c] + k] = jmg - gamma_hat;
+            rhs[row_offset[c] + k] = jmg - (r.gamma[k] - two_alpha * jv - beta_squared * r.phi[k]);
           }
       }
   }
@@ -418,14 +416,19 @@ namespace wearlink::mbs
       {
         const auto &con = *constraints[c];
         const auto &r   = rows[c];
+        double     *aj  = a + 3 * con.body_j;
+        double     *ai  = con.body_i != ground ? a + 3 * con.body_i : nullptr;
         for (unsigned int k = 0; k < r.n; ++k)
           {
             const double l = lambda[row_offset[c] + k];
-            for (unsigned int d = 0; d < 3; ++d)
+            aj[0] -= r.jac_j[k][0] * l;
+            aj[1] -= r.jac_j[k][1] * l;
+            aj[2] -= r.jac_j[k][2] * l;
+            if (ai)
               {
-                if (con.body_i != ground)
-                  a[3 * con.body_i + d] -= r.jac_i[k][d] * l;
-                a[3 * con.body_j + d] -= r.jac_j[k][d] * l;
+                ai[0] -= r.jac_i[k][0] * l;
+                ai[1] -= r.jac_i[k][1] * l;
+                ai[2] -= r.jac_i[k][2] * l;
               }
           }
       }
@@ -459,12 +462,12 @@ namespace wearlink::mbs
   }
 
   double
-  Mechanism::potential_energy(const double *q, const double *v) const
+  Mechanism::potential_energy(const double *q, const double *v, const double *trig) const
   {
     double e = 0;
     for (unsigned int b = 0; b < n_bodies(); ++b)
       e -= bodies[b].mass * (gravity.x() * q[3 * b] + gravity.y() * q[3 * b + 1]);
-    const StateView s(q, v);
+    const StateView s(q, v, trig);
     for (const auto &f : force_elements)
       e += f->potential_energy(s);
     return e;

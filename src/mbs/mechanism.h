@@ -154,9 +154,12 @@ namespace wearlink::mbs
     /** ½ q̇ᵀ M q̇ [J]. */
     double
     kinetic_energy(const double *v) const;
-    /** Gravity plus force-element potentials [J]. */
+    /**
+     * Gravity plus force-element potentials [J]. @p trig: the bodies' (cos θ, sin θ)
+     * from body_trig(), if the caller has them (else each rotation computes its own).
+     */
     double
-    potential_energy(const double *q, const double *v) const;
+    potential_energy(const double *q, const double *v, const double *trig = nullptr) const;
 
     /** Count of right-hand-side evaluations since construction. */
     long
@@ -254,6 +257,7 @@ namespace wearlink::mbs
     std::vector<ThetaTerm>  theta_terms;
     std::vector<FullTerm>   full_terms;
     Eigen::VectorXd         rhs, lambda, forces;
+    std::vector<double>     scaled_forces; ///< M⁻¹ g
     std::vector<double>     trig;          ///< cos θ, sin θ per body
     std::vector<double>     work;          ///< factorization scratch, then the permuted right-hand side / solution
     std::vector<double>     inverse_pivot; ///< 1 / D_ii of the last factorization

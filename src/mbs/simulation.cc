@@ -2,6 +2,7 @@
 #include "mbs/simulation.h"
 
 #include "base/exceptions.h"
+#include "mbs/body_trig.h"
 
 #include <cmath>
 #include <limits>
@@ -60,6 +61,7 @@ namespace wearlink::mbs
     integrator         = make_integrator(system, s);
     locate_events      = s.type != IntegratorType::rk4;
     scratch.setZero(system.size());
+    end_trig.assign(2 * mechanism.n_bodies(), 0.0);
   }
 
   void
@@ -242,11 +244,14 @@ namespace wearlink::mbs
         double t_first = std::numeric_limits<double>::infinity();
         triggered.clear();
         roots.clear();
+        if (!event_elements.empty())
+          body_trig(integrator->state().data(), mechanism.n_bodies(), end_trig.data());
         for (auto *e : event_elements)
           {
-            const double f     = e->event_value(StateView(integrator->state().data(), integrator->state().data() + n));
-            const bool   onset = !e->mode() && f > 0;
-            const bool   sep   = e->mode() && f <= 0;
+            const double f =
+              e->event_value(StateView(integrator->state().data(), integrator->state().data() + n, end_trig.data()));
+            const bool onset = !e->mode() && f > 0;
+            const bool sep   = e->mode() && f <= 0;
             if (onset || sep)
               {
                 triggered.push_back(e);

@@ -237,5 +237,6 @@ namespace wearlink::mbs
     double                      budget_start_time  = 0;    ///< time of initialize() [s]
     long                        budget_start_steps = 0;    ///< steps taken before it
     mutable Eigen::VectorXd     scratch;
+    std::vector<double>         end_trig; ///< the bodies' (cos θ, sin θ) at the end of a step
   };
 } // namespace wearlink::mbs

@@ -8,6 +8,7 @@
 #include "base/text.h"
 #include "io/analyses_parameters.h"
 #include "mbs/assembly.h"
+#include "mbs/body_trig.h"
 #include "workflows/analyses.h"
 #include "workflows/first_look.h"
 
@@ -235,6 +236,9 @@ namespace wearlink::workflows
       record(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, double h)
       {
         const auto n = mech.n_coordinates();
+        // The bodies' cos and sin once for the joints' diagnostics and the potentials.
+        trig.resize(2 * mech.n_bodies());
+        mbs::body_trig(y.data(), mech.n_bodies(), trig.data());
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
           {
             auto &x  = bodies[i];
@@ -248,7 +252,7 @@ namespace wearlink::workflows
             x.max_ay = std::max(x.max_ay, std::abs(f[n + 3 * i + 1]));
           }
         max_violation = std::max(max_violation, mech.last_constraint_violation());
-        const mbs::StateView s(y.data(), y.data() + n);
+        const mbs::StateView s(y.data(), y.data() + n, trig.data());
         for (unsigned int k = 0; k < joints.size(); ++k)
           {
             const auto d          = scene.clearance_joints[k]->diagnostics(s);
@@ -260,9 +264,10 @@ namespace wearlink::workflows
             js.contact_time += 0.5 * h * ((in ? 1 : 0) + (js.was_in_contact ? 1 : 0));
             js.was_in_contact = in;
           }
-        using Q               = mbs::MechanismOde;
-        const auto   z        = 2 * n;
-        const double energy   = mech.kinetic_energy(y.data() + n) + mech.potential_energy(y.data(), y.data() + n);
+        using Q        = mbs::MechanismOde;
+        const auto   z = 2 * n;
+        const double energy =
+          mech.kinetic_energy(y.data() + n) + mech.potential_energy(y.data(), y.data() + n, trig.data());
         const double residual = energy - energy_start - y[z + Q::reaction_work] + y[z + Q::damping_dissipation] +
                                 y[z + Q::friction_dissipation];
         max_energy_residual = std::max(max_energy_residual, std::abs(residual));
@@ -318,6 +323,7 @@ namespace wearlink::workflows
       io::Scene                            &scene;
       mbs::Mechanism                       &mech;
       std::ostream                         *csv;
+      std::vector<double>                   trig; ///< per step: the bodies' (cos θ, sin θ)
       double                                interval;
       bool                                  progress;
       std::vector<BodyExtremes>             bodies;
