@@ -84,16 +84,12 @@ namespace wearlink::contact
     double
     interval_integral(const double *x, const double *y, const double *m, const double xa, const double xb)
     {
-      static constexpr std::array<double, 4> node{0.1834346424956498,
-                                                  0.5255324099163290,
-                                                  0.7966664774136267,
-                                                  0.9602898564975363};
-      static constexpr std::array<double, 4> weight{0.3626837833783620,
-                                                    0.3137066458778873,
-                                                    0.2223810344533745,
-                                                    0.1012285362903763};
-      const double                           mid = 0.5 * (xa + xb), half = 0.5 * (xb - xa), h = x[1] - x[0];
-      double                                 sum = 0;
+      static constexpr std::array<double, 4> node{
+        {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363}};
+      static constexpr std::array<double, 4> weight{
+        {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763}};
+      const double mid = 0.5 * (xa + xb), half = 0.5 * (xb - xa), h = x[1] - x[0];
+      double       sum = 0;
       for (std::size_t q = 0; q < node.size(); ++q)
         for (const double sign : {-1.0, 1.0})
           {

@@ -334,7 +334,7 @@ namespace wearlink::fe
       }
     core_nodes.clear();
     for (const auto &c : core_map)
-      core_nodes.push_back({c.first, c.second});
+      core_nodes.push_back({{c.first, c.second}});
     std::sort(outer.begin(), outer.end());
     outer.erase(std::unique(outer.begin(), outer.end()), outer.end());
     outer_dofs = outer;

@@ -89,7 +89,7 @@ namespace wearlink::fe
       lc.control       = Control::force;
       lc.bushing_angle = load.bushing_angle;
       lc.pin_angle     = load.pin_angle;
-      lc.load          = {-load.force[0], -load.force[1]};
+      lc.load          = {{-load.force[0], -load.force[1]}};
       return lc;
     }
   } // namespace

@@ -317,18 +317,16 @@ namespace wearlink::fe
         if (used.count(tags[i]) != 0)
           {
             index[tags[i]] = m.points.size();
-            m.points.push_back({coords[3 * i], coords[3 * i + 1]});
+            m.points.push_back({{coords[3 * i], coords[3 * i + 1]}});
           }
       // Quadrilaterals counter-clockwise (deal.II needs a positive Jacobian; gmsh's
       // orientation follows the surface's, which it may choose either way).
       const auto quads = element_nodes(3, surface);
       for (std::size_t e = 0; e + 3 < quads.size(); e += 4)
         {
-          std::array<std::size_t, 4> q     = {index.at(quads[e]),
-                                              index.at(quads[e + 1]),
-                                              index.at(quads[e + 2]),
-                                              index.at(quads[e + 3])};
-          double                     area2 = 0; // twice the signed area (shoelace)
+          std::array<std::size_t, 4> q = {
+            {index.at(quads[e]), index.at(quads[e + 1]), index.at(quads[e + 2]), index.at(quads[e + 3])}};
+          double area2 = 0; // twice the signed area (shoelace)
           for (unsigned v = 0; v < 4; ++v)
             {
               const auto &a = m.points[q[v]], &b = m.points[q[(v + 1) % 4]];
@@ -341,7 +339,7 @@ namespace wearlink::fe
       auto segments = [&](const int curve, std::vector<std::array<std::size_t, 2>> &out) {
         const auto lines = element_nodes(1, curve);
         for (std::size_t e = 0; e + 1 < lines.size(); e += 2)
-          out.push_back({index.at(lines[e]), index.at(lines[e + 1])});
+          out.push_back({{index.at(lines[e]), index.at(lines[e + 1])}});
       };
       segments(contact, m.contact);
       segments(contact_outside ? inner_arc : outer_arc, m.far);

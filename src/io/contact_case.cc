@@ -121,7 +121,7 @@ namespace wearlink::io
                           "longer describes any material",
                         "Give eccentricities up to the radial clearance + 5 % of the pin radius (" +
                           format_number(R1 - R2 + max_approach, 4) + " m); realistic approaches are micrometres.");
-          const std::array<double, 2> value = {magnitude * direction[0] / norm, magnitude * direction[1] / norm};
+          const std::array<double, 2> value = {{magnitude * direction[0] / norm, magnitude * direction[1] / norm}};
           (force_control ? lc.load : lc.eccentricity) = value;
           loads.push_back(lc);
         }

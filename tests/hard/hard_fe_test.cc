@@ -305,7 +305,7 @@ TEST(HardCasesFe, LightLoadSlidesIntoAWornPocket)
     {
       LoadCase lc;
       lc.control            = Control::force;
-      lc.load               = {-F, 0.0}; // along π: the pocket is 12° beside it
+      lc.load               = {{-F, 0.0}}; // along π: the pocket is 12° beside it
       const auto   c        = model.solve(lc, SolverKind::condensed);
       const auto   ref      = model.solve(lc, SolverKind::reference);
       const double sideways = std::abs(c.pin_displacement[1]);

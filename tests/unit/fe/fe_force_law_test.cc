@@ -49,7 +49,7 @@ namespace
     LoadCase lc;
     lc.control            = Control::force;
     lc.pin_angle          = relative_angle;
-    lc.load               = {F * std::cos(psi), F * std::sin(psi)};
+    lc.load               = {{F * std::cos(psi), F * std::sin(psi)}};
     const ContactResult r = model.solve(lc, SolverKind::condensed);
     const contact::Gap  gap(g.bore, g.pin);
     return gap.evaluate(mbs::Vec2(r.pin_displacement[0], r.pin_displacement[1]), 0.0, relative_angle).penetration;
@@ -244,7 +244,7 @@ TEST(FeForceLaw, ElasticImpactConservesEnergyAndSummaryStatesTheLaw)
 TEST(FeForceLaw, TableRepairsNoiseAtTheLowestLevelsAndFlagsMore)
 {
   const std::vector<double>                forces     = {10, 20, 40, 80};
-  const std::vector<std::array<double, 2>> directions = {{0, 0}, {0, 1}};
+  const std::vector<std::array<double, 2>> directions = {{{{0, 0}}, {{0, 1}}}};
   std::vector<double> approach = {1.727e-7, 1.476e-7, 2.076e-7, 3.276e-7, 1e-7, 1.6e-7, 2.5e-7, 4e-7};
   TableBuild          build;
   make_monotone(approach, forces, directions, 0.25e-6, build);
@@ -254,7 +254,9 @@ TEST(FeForceLaw, TableRepairsNoiseAtTheLowestLevelsAndFlagsMore)
   EXPECT_NEAR(build.max_repair, 1.727e-7 - approach[0], 1e-15);
   for (std::size_t r = 1; r < approach.size(); ++r)
     if (r % forces.size() != 0)
-      EXPECT_LT(approach[r - 1], approach[r]) << r;
+      {
+        EXPECT_LT(approach[r - 1], approach[r]) << r;
+      }
   EXPECT_EQ(approach[4], 1e-7) << "a monotone direction is left alone";
 
   EXPECT_EQ(build.n_repaired_beyond_noise, 0u);

@@ -50,11 +50,11 @@ namespace
     rhs(double t, const double *y, double *f) override
     {
       last_t = t;
-      last_y = {y[0], y[1]};
+      last_y = {{y[0], y[1]}};
       Oscillator::rhs(t, y, f);
     }
     double                last_t = -1;
-    std::array<double, 2> last_y{0, 0};
+    std::array<double, 2> last_y{{0, 0}};
   };
 
   /** Integrate to 2π; return the final error and the worst dense-output error. */
