@@ -4,7 +4,7 @@
 # relocating the deal.II libraries alone is ~1e9 instructions — is not counted). Counts
 # are repeatable to a fraction of a percent whatever else the machine runs, unlike wall
 # time. Two crank cycles (1 s of motion) of params/nine_bar_clearance.prm with each
-# embedded pair. Asserts nothing; prints the figures.
+# embedded pair and with dopri5-stiff (the scene's method). Asserts nothing; prints the figures.
 #   usage: instructions_per_step.sh WEARLINK SOURCE_DIR WORK_DIR
 set -euo pipefail
 wearlink="$1"; source="$2"; work="$3"
@@ -12,8 +12,8 @@ if ! command -v valgrind >/dev/null; then
   echo "valgrind is not installed: nothing measured"; exit 0
 fi
 mkdir -p "$work"
-printf '%-8s %10s %10s %10s %16s %16s\n' method steps rejected rhs_evals instr/step instr/rhs
-for method in dopri5 dop853; do
+printf '%-12s %10s %10s %10s %16s %16s\n' method steps rejected rhs_evals instr/step instr/rhs
+for method in dopri5 dopri5-stiff dop853; do
   out="$work/$method"
   valgrind --tool=callgrind --callgrind-out-file="$work/callgrind.$method" \
     --toggle-collect='wearlink::mbs::Simulation::run*' \
@@ -24,6 +24,6 @@ for method in dopri5 dop853; do
 import json
 s = json.load(open('$out/summary.json'))
 ir = float('$ir')
-print('%-8s %10d %10d %10d %16.0f %16.0f' % ('$method', s['steps'], s['rejected_steps'], s['rhs_evaluations'],
+print('%-12s %10d %10d %10d %16.0f %16.0f' % ('$method', s['steps'], s['rejected_steps'], s['rhs_evaluations'],
       ir / s['steps'], ir / s['rhs_evaluations']))"
 done
