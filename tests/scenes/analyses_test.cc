@@ -402,6 +402,8 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
                                                   plain_dir,
                                                   "--quiet",
                                                   "--set",
+                                                  "Integrator/Method=dopri5", // the wear scene's
+                                                  "--set",
                                                   "Simulation/End time=2.5"});
   ASSERT_EQ(p.exit_status, 0) << p.output;
   const Json plain  = io::read_json_file(plain_dir + "/summary.json");
