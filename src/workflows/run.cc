@@ -63,6 +63,7 @@ namespace wearlink::workflows
         : scene(scene)
         , mech(*scene.mechanism)
         , csv(csv)
+        , trig(2 * mech.n_bodies())
         , interval(interval)
         , progress(progress)
         , bodies(mech.n_bodies())
@@ -237,7 +238,6 @@ namespace wearlink::workflows
       {
         const auto n = mech.n_coordinates();
         // The bodies' cos and sin once for the joints' diagnostics and the potentials.
-        trig.resize(2 * mech.n_bodies());
         mbs::body_trig(y.data(), mech.n_bodies(), trig.data());
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
           {

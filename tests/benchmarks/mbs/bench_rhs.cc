@@ -5,9 +5,11 @@
 // recorded, then Mechanism::accelerations() is evaluated on all of them, round after
 // round; the best round gives ns per right-hand side. The states are the ones the
 // integrator meets (free flight, impacts, continuous contact in the proportions of the
-// run), and the same states for every build, so two builds compare without the chaos of
-// their trajectories and with less of the machine's noise than a whole run. Prints a
-// checksum of the accelerations (equal across builds that compute the same numbers).
+// run), so the figure is a run's mean cost without the integrator, and the best of many
+// rounds carries less of the machine's noise than a whole run. Each build records its
+// own run's states: a build whose round-off differs follows another (equally typical)
+// trajectory, with a different number of states and checksum; the checksum of the
+// accelerations is equal only across builds that compute the same numbers.
 //   usage: bench_rhs [T] [rounds]
 #include "base/parameters.h"
 #include "io/scene.h"
