@@ -218,8 +218,7 @@ namespace wearlink::contact
     d.contact_angle      = c.gap.angle();
     if (c.gap.penetration > 0)
       {
-        double fel;
-        forces(c, d.normal_force, fel, d.friction_force);
+        forces(c, d.normal_force, d.elastic_force, d.friction_force);
         d.penetration_rate = c.rate;
         d.sliding_velocity = c.slide;
         d.force_on_pin     = -d.normal_force * c.gap.normal + d.friction_force * c.t;

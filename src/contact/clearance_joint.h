@@ -68,6 +68,7 @@ namespace wearlink::contact
     double    penetration_rate = 0;             ///< δ̇ [m/s] (0 out of contact)
     double    sliding_velocity = 0;             ///< v_t [m/s] (0 out of contact)
     double    normal_force     = 0;             ///< F_n [N]
+    double    elastic_force    = 0;             ///< its elastic part, without the hysteresis damping [N]
     double    friction_force   = 0;             ///< F_t [N]
     mbs::Vec2 normal{1, 0};                     ///< n, global
     double    contact_angle = 0;                ///< φ* [rad], global

@@ -252,7 +252,9 @@ namespace wearlink::fe
             Double(0, 1e9),
             "Largest load level of the table, at most 1e9 N. Beyond its approach the force follows "
             "the power law of the table's end slope; every such evaluation is counted in summary.json "
-            "(extrapolations_above_table) and warned about (warnings).",
+            "(extrapolations_above_table, trial stages of rejected steps included), and a run whose "
+            "accepted steps reach an elastic force above this level (max_elastic_force_N) is warned "
+            "about (warnings).",
             "N");
     declare(prm,
             "Table load levels",

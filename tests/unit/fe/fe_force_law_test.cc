@@ -281,3 +281,52 @@ TEST(FeForceLaw, TableRepairsNoiseAtTheLowestLevelsAndFlagsMore)
   EXPECT_GT(none[0], 0.0);
   EXPECT_LT(none[0], none[1]);
 }
+
+// The table-range warning follows the accepted steps: the pendulum's impacts stay inside
+// the default table (10 N … 100 kN), so no warning; with the table's largest load set to half the largest elastic force that the
+// accepted steps reached, the run warns and names that force; with it at 1.3 × that
+// force, only trial stages pass it and the run does not warn.
+TEST(FeForceLaw, TableRangeWarningFollowsTheAcceptedSteps)
+{
+  ::setenv("WEARLINK_CACHE_DIR", wearlink::testing::fresh_directory("fe_force_law_range_cache").c_str(), 1);
+  std::vector<std::string> set    = {"Body bob/Initial velocity=0.3, 0",
+                                     "Simulation/End time=0.03",
+                                     "Joint O/Clearance/Normal force law=fe",
+                                     "Joint O/Clearance/fe/Restitution coefficient=0.9",
+                                     "Joint O/Clearance/fe/Surface element size=1e-4",
+                                     "Joint O/Clearance/fe/Table load levels=12"};
+  const auto               warned = [](const Json &summary) {
+    for (const auto &w : summary.at("warnings"))
+      if (w.get<std::string>().find("largest elastic contact force at an accepted step") != std::string::npos)
+        return true;
+    return false;
+  };
+  io::Scene    inside = wearlink::testing::scene("tests/hard/pendulum_clearance.prm", set);
+  const Json   s1     = wearlink::testing::run(inside);
+  const Json  &j1     = s1.at("clearance_joints").at("O");
+  const double peak   = json_number(j1.at("max_elastic_force_N"));
+  std::cout << "largest elastic force " << peak << " N; evaluations above the table "
+            << j1.at("extrapolations_above_table").get<long>() << '\n';
+  ASSERT_GT(peak, 40.0) << "the bob must load the wall well above the table's 10 N";
+  EXPECT_LT(peak, 1e5);
+  EXPECT_FALSE(warned(s1)) << s1.at("warnings").dump();
+
+  // Just above the peak: trial stages of rejected steps overshoot beyond the table
+  // (measured: 2 evaluations), the accepted steps do not.
+  auto near = set;
+  near.push_back("Joint O/Clearance/fe/Table maximum force=" + std::to_string(1.3 * peak));
+  io::Scene   close = wearlink::testing::scene("tests/hard/pendulum_clearance.prm", near);
+  const Json  s3    = wearlink::testing::run(close);
+  const Json &j3    = s3.at("clearance_joints").at("O");
+  std::cout << "table up to 1.3 x the peak: largest elastic force " << json_number(j3.at("max_elastic_force_N"))
+            << " N, evaluations above the table " << j3.at("extrapolations_above_table").get<long>() << '\n';
+  EXPECT_LT(json_number(j3.at("max_elastic_force_N")), 1.3 * peak);
+  EXPECT_FALSE(warned(s3)) << s3.at("warnings").dump();
+
+  set.push_back("Joint O/Clearance/fe/Table maximum force=" + std::to_string(peak / 2));
+  io::Scene  beyond = wearlink::testing::scene("tests/hard/pendulum_clearance.prm", set);
+  const Json s2     = wearlink::testing::run(beyond);
+  EXPECT_TRUE(warned(s2)) << s2.at("warnings").dump();
+  EXPECT_GT(json_number(s2.at("clearance_joints").at("O").at("max_elastic_force_N")), peak / 2);
+  ::unsetenv("WEARLINK_CACHE_DIR");
+}
