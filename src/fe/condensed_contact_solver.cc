@@ -1334,6 +1334,12 @@ namespace wearlink::fe
             widen = 2 * needed;
             return PairingEnd::narrow;
           }
+        if (force_control && relinearization_done(st.U, pin_radius) &&
+            pairing_off_the_solution(U_pair, load / load.norm(), spacing) && updates < max_relinearizations)
+          {
+            ++updates;
+            return PairingEnd::slid;
+          }
         if (!force_control || relinearization_done(st.U, pin_radius) || ++updates >= max_relinearizations)
           return PairingEnd::accepted;
         if (pairing_outdated(U_pair, spacing))

@@ -2,6 +2,7 @@
 #include "fe/contact_kinematics.h"
 
 #include "base/numbers.h"
+#include "contact/gap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -323,5 +324,102 @@ namespace wearlink::fe
           append(k, i, rays.cast(i));
       }
     return k;
+  }
+
+  namespace
+  {
+    /** The sample directions of both profiles in the bushing frame, sorted, in [0, 2π). */
+    std::vector<double>
+    sample_directions(const Profile &bore, const Profile &pin, const double relative_angle)
+    {
+      std::vector<double> phi;
+      phi.reserve(bore.n_points() + pin.n_points());
+      for (unsigned int i = 0; i < bore.n_points(); ++i)
+        phi.push_back(bore.angle(i));
+      for (unsigned int j = 0; j < pin.n_points(); ++j)
+        phi.push_back(pin.angle(j) + relative_angle);
+      for (auto &a : phi)
+        a -= two_pi * std::floor(a / two_pi);
+      std::sort(phi.begin(), phi.end());
+      phi.erase(std::unique(phi.begin(), phi.end(), [](double a, double b) { return b - a < 1e-12; }), phi.end());
+      return phi;
+    }
+
+    double
+    cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+    {
+      return a[0] * b[1] - a[1] * b[0];
+    }
+  } // namespace
+
+
+  Tensor<1, 2>
+  rigid_rest_position(const Profile &bore, const Profile &pin, const double relative_angle, const Tensor<1, 2> &d)
+  {
+    const double phi_d     = std::atan2(d[1], d[0]);
+    const auto   clearance = [&](const double phi) {
+      return bore.radius(phi) - pin.radius(phi - relative_angle);
+    };
+    if (bore.is_round() && pin.is_round())
+      return clearance(phi_d) * d;
+    // Polar points p_k = u(φ_k)/c(φ_k), in angular order; the hull's vertices by a
+    // cyclic scan from the farthest point (a hull vertex), keeping left turns only.
+    const auto                phi = sample_directions(bore, pin, relative_angle);
+    const std::size_t         n   = phi.size();
+    std::vector<Tensor<1, 2>> p(n);
+    std::size_t               far = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      {
+        p[k][0] = std::cos(phi[k]) / clearance(phi[k]);
+        p[k][1] = std::sin(phi[k]) / clearance(phi[k]);
+        if (p[k].norm_square() > p[far].norm_square())
+          far = k;
+      }
+    std::vector<std::size_t> hull = {far};
+    for (std::size_t i = 1; i <= n; ++i)
+      {
+        const std::size_t k = (far + i) % n;
+        while (hull.size() >= 2 && cross(p[hull.back()] - p[hull[hull.size() - 2]], p[k] - p[hull.back()]) <= 0)
+          hull.pop_back();
+        if (i < n)
+          hull.push_back(k);
+      }
+    // The hull edge (a, b) whose directions bracket φ_d (counter-clockwise from a).
+    const auto ccw_from = [](const double from, const double to) {
+      return to - from - two_pi * std::floor((to - from) / two_pi);
+    };
+    std::size_t a = hull.back(), b = hull.front();
+    for (std::size_t h = 0; h < hull.size(); ++h)
+      {
+        const std::size_t a_h = hull[h], b_h = hull[(h + 1) % hull.size()];
+        if (ccw_from(phi[a_h], phi_d) <= ccw_from(phi[a_h], phi[b_h]))
+          {
+            a = a_h;
+            b = b_h;
+            break;
+          }
+      }
+    // The vertex of the constraint polygon: e·u_a = c_a, e·u_b = c_b.
+    Tensor<1, 2> e;
+    const double ca = clearance(phi[a]), cb = clearance(phi[b]);
+    const double det = std::sin(phi[b] - phi[a]);
+    if (std::abs(det) < 1e-12)
+      e = ca * d;
+    else
+      {
+        e[0] = (ca * std::sin(phi[b]) - cb * std::sin(phi[a])) / det;
+        e[1] = (cb * std::cos(phi[a]) - ca * std::cos(phi[b])) / det;
+      }
+    // Between the sample directions the gap is not the polygon's: onto the exact radial
+    // gap along d (a few sub-µm steps; the contact solver refines the rest).
+    const contact::Gap gap(bore, pin);
+    for (int it = 0; it < 3; ++it)
+      {
+        const double overlap = gap.evaluate(mbs::Vec2(e[0], e[1]), 0.0, relative_angle).penetration;
+        if (!std::isfinite(overlap))
+          break;
+        e -= overlap * d;
+      }
+    return e;
   }
 } // namespace wearlink::fe

@@ -107,4 +107,19 @@ namespace wearlink::fe
                             const WindowThreshold   &rule,
                             double                  *threshold = nullptr);
 
+  /**
+   * Where a rigid pin pushed along the unit direction @p d (bushing frame) comes to rest
+   * in the bore: the eccentricity e that maximizes d·e while the radial gap
+   * c(φ) − e·u(φ), c(φ) = R1*(φ) − R2*(φ − θ), stays ≥ 0 (θ the pin's angle relative to
+   * the bushing). The constraints e·u(φ_k) ≤ c(φ_k) at the profiles' sample directions
+   * make a convex polygon; its vertex that d selects is found as the edge of the hull of
+   * the polar points u(φ_k)/c(φ_k) that the ray along d leaves through (O(N)), then
+   * moved along d onto the exact radial gap (contact::Gap). On a worn, nearly conformal
+   * pocket the rest point lies off the load's line: the pin slides along the pocket
+   * until the contact normal faces the load (the tangential part of e is the slope
+   * c'(φ) of the clearance there). Round profiles: c(φ_d) d exactly.
+   */
+  dealii::Tensor<1, 2>
+  rigid_rest_position(const Profile &bore, const Profile &pin, double relative_angle, const dealii::Tensor<1, 2> &d);
+
 } // namespace wearlink::fe

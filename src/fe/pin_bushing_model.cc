@@ -138,8 +138,9 @@ namespace wearlink::fe
                                                            settings.primal_dual_iterations);
     }
 
-    // Force control: the pin starts at the rigid-contact position along the load
-    // direction (radial gap of the two profiles there) plus the predicted elastic
+    // Force control: the pin starts where a rigid pin pushed by the load rests
+    // (rigid_rest_position(): on round profiles the radial gap along the load, in a worn
+    // pocket off the load's line, where the contact faces the load) plus the predicted elastic
     // approach (predicted_approach(): deterministic, so that a state's result does not
     // depend on what was solved before), and the solver finds the elastic translation U
     // from there. The gap is linearized in U; the gaps are refreshed about e + U with the
@@ -161,13 +162,12 @@ namespace wearlink::fe
           const Tensor<1, 2> F = rotate(tensor(load.load), -load.bushing_angle);
           if (!(F.norm() > 0) || !std::isfinite(F.norm()))
             throw InputError("A force-controlled load state needs a finite, non-zero load.");
-          P                = F / L;
-          const double phi = std::atan2(F[1], F[0]);
-          const double s   = geometry.bore.radius(phi) - geometry.pin.radius(phi - relative_angle);
-          closure          = predicted_approach(P.norm(),
+          P                    = F / L;
+          closure              = predicted_approach(P.norm(),
                                        problem->effective_modulus(),
                                        geometry.bore.mean_radius() - geometry.pin.mean_radius());
-          e                = (s + closure) * F / F.norm();
+          const Tensor<1, 2> d = F / F.norm();
+          e                    = rigid_rest_position(geometry.bore, geometry.pin, relative_angle, d) + closure * d;
         }
       else
         e = rotate(tensor(load.eccentricity), -load.bushing_angle);
@@ -211,9 +211,11 @@ namespace wearlink::fe
           sol = reference->solve(kin, force_control, P);
           iterations += sol.iterations;
           U_pair += sol.pin_translation;
-          if (!force_control || relinearization_done(sol.pin_translation, R) || update >= max_relinearizations)
+          const bool done = relinearization_done(sol.pin_translation, R);
+          if (!force_control || (done && !pairing_off_the_solution(U_pair, P / P.norm(), spacing)) ||
+              update >= max_relinearizations)
             break;
-          if (pairing_outdated(U_pair, spacing))
+          if (done || pairing_outdated(U_pair, spacing))
             {
               paired.eccentricity += U_pair;
               U_pair = 0;
