@@ -1334,15 +1334,12 @@ namespace wearlink::fe
             widen = 2 * needed;
             return PairingEnd::narrow;
           }
-        if (force_control && relinearization_done(st.U, pin_radius) &&
-            pairing_off_the_solution(U_pair, load / load.norm(), spacing) && updates < max_relinearizations)
-          {
-            ++updates;
-            return PairingEnd::slid;
-          }
-        if (!force_control || relinearization_done(st.U, pin_radius) || ++updates >= max_relinearizations)
+        // Converged: accepted if paired at the solution, else paired there once more.
+        const bool done = relinearization_done(st.U, pin_radius);
+        if (!force_control || (done && !pairing_off_the_solution(U_pair, load / load.norm(), spacing)) ||
+            ++updates >= max_relinearizations)
           return PairingEnd::accepted;
-        if (pairing_outdated(U_pair, spacing))
+        if (done || pairing_outdated(U_pair, spacing))
           return PairingEnd::slid;
         moved.eccentricity = paired.eccentricity + U_pair;
         refresh_gaps(problem, moved, kin);

@@ -370,8 +370,9 @@ namespace wearlink::fe
     std::size_t               far = 0;
     for (std::size_t k = 0; k < n; ++k)
       {
-        p[k][0] = std::cos(phi[k]) / clearance(phi[k]);
-        p[k][1] = std::sin(phi[k]) / clearance(phi[k]);
+        const double c = clearance(phi[k]);
+        p[k][0]        = std::cos(phi[k]) / c;
+        p[k][1]        = std::sin(phi[k]) / c;
         if (p[k].norm_square() > p[far].norm_square())
           far = k;
       }
