@@ -117,7 +117,6 @@ namespace wearlink::fe
         throw NumericalError("The clamped stiffness matrix of the pin–bushing mesh is not positive "
                              "definite (CHOLMOD failed): check the mesh (inverted elements?) and "
                              "the materials.");
-      EffectLedger::instance().add_resource("factorizations");
     }
 
     /**
@@ -177,8 +176,26 @@ namespace wearlink::fe
     for (types::global_dof_index d = 0; d < n; ++d)
       if (!clamped[d])
         reduced_index[d] = is_pin[d] ? n_pin++ : n_ring++;
-    factor_body(problem.stiffness_matrix, reduced_index, is_pin, 1, n_pin, pin_factor->matrix, pin_factor->llt);
-    factor_body(problem.stiffness_matrix, reduced_index, is_pin, 0, n_ring, ring_factor->matrix, ring_factor->llt);
+    // The two bodies' factorizations are independent: one task each (each CHOLMOD
+    // factor has its own workspace) where the BLAS allows several threads.
+    const auto factor = [&](const unsigned int begin, const unsigned int end) {
+      for (unsigned int body = begin; body < end; ++body)
+        if (body == 0)
+          factor_body(problem.stiffness_matrix, reduced_index, is_pin, 1, n_pin, pin_factor->matrix, pin_factor->llt);
+        else
+          factor_body(problem.stiffness_matrix,
+                      reduced_index,
+                      is_pin,
+                      0,
+                      n_ring,
+                      ring_factor->matrix,
+                      ring_factor->llt);
+    };
+    if (blas_is_thread_safe())
+      parallel::apply_to_subranges(0u, 2u, factor, 1);
+    else
+      factor(0, 2);
+    EffectLedger::instance().add_resource("factorizations", 2);
   }
 
 

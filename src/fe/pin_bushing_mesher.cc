@@ -178,6 +178,7 @@ namespace wearlink::fe
       // split halves all sizes, so the geometry is meshed at twice the target sizes.
       gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
       gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+      gmsh::option::setNumber("Mesh.Binary", 1);
     }
 
     void
