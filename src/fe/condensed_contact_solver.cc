@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -38,9 +39,32 @@ namespace wearlink::fe
      */
     constexpr unsigned int single_precision_from = 160;
 
+    /** Adds the seconds from its construction to its end to @p into. */
+    class ScopedSeconds
+    {
+    public:
+      explicit ScopedSeconds(double &into)
+        : into(into)
+        , start(std::chrono::steady_clock::now())
+      {
+      }
+      ~ScopedSeconds()
+      {
+        into += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
+      ScopedSeconds(const ScopedSeconds &) = delete;
+      ScopedSeconds &
+      operator=(const ScopedSeconds &) = delete;
+
+    private:
+      double                                     &into;
+      const std::chrono::steady_clock::time_point start;
+    };
+
     /** Memory that the window solves keep from one load state to the next. */
     struct Workspace
     {
+      CondensedTimings    timings;
       std::vector<double> columns;       ///< the gathered columns of A, w entries each
       std::vector<double> factor;        ///< the Cholesky factor of the active block
       std::vector<float>  factor_single; ///< the same in single precision
@@ -128,6 +152,13 @@ namespace wearlink::fe
       {
         return owner.size();
       }
+      /** The solver's time by phase (Workspace). */
+      CondensedTimings &
+      timings() const
+      {
+        return work.timings;
+      }
+
       /** The slot of position p's column, −1 if it is not gathered. */
       int
       slot_of(const unsigned int p) const
@@ -267,7 +298,8 @@ namespace wearlink::fe
       gather(const std::vector<unsigned int> &positions)
       {
         reserve(positions);
-        const auto fill_range = [&](const unsigned int begin, const unsigned int end) {
+        const ScopedSeconds timer(work.timings.gather);
+        const auto          fill_range = [&](const unsigned int begin, const unsigned int end) {
           std::vector<double> fx(n_rows), fy(n_rows);
           for (unsigned int i = begin; i < end; ++i)
             fill(positions[i], fx.data(), fy.data());
@@ -528,6 +560,7 @@ namespace wearlink::fe
                    Workspace               &work,
                    const bool               single)
         : A(A)
+        , timings(work.timings)
         , single(single)
         , factor_single(work.factor_single, A.size())
         , factor_double(work.factor, A.size())
@@ -590,7 +623,8 @@ namespace wearlink::fe
         if (c == order.size())
           return ok;
         A.ensure(order);
-        const auto entry = [&](const unsigned int r, const unsigned int s) {
+        const ScopedSeconds timer(timings.factorization);
+        const auto          entry = [&](const unsigned int r, const unsigned int s) {
           return A.column(order[s])[order[r]];
         };
         ok = single ? factor_single.refactor_from(c, order.size(), entry) :
@@ -612,6 +646,7 @@ namespace wearlink::fe
       void
       forward(const ContactKinematics &kin, const bool with_normals)
       {
+        const ScopedSeconds timer(timings.substitutions);
         for (unsigned int d = 0; with_normals && d < 2; ++d)
           forward_rows([&](unsigned int p) { return kin.normal[p][d]; }, normals_valid, yf[d], y[d]);
         if (with_normals)
@@ -643,6 +678,7 @@ namespace wearlink::fe
       void
       forward_full(std::vector<double> &x)
       {
+        const ScopedSeconds timer(timings.substitutions);
         if (!single)
           return factor_double.forward_rows(x.data(), order.size(), 0);
         std::vector<float> v(x.begin(), x.end());
@@ -654,6 +690,7 @@ namespace wearlink::fe
       void
       backward(std::vector<double> &x) const
       {
+        const ScopedSeconds timer(timings.substitutions);
         if (!single)
           return factor_double.backward(x.data(), order.size());
         std::vector<float> v(x.begin(), x.end());
@@ -692,6 +729,7 @@ namespace wearlink::fe
       }
 
       WindowCompliance                  &A;
+      CondensedTimings                  &timings;
       bool                               single;
       Cholesky<float>                    factor_single;
       Cholesky<double>                   factor_double;
@@ -823,6 +861,7 @@ namespace wearlink::fe
       gap.resize(w);
       for (const auto p : active)
         A.ensure(p);
+      const ScopedSeconds timer(A.timings().gaps);
       std::vector<double> x(A.n_slots(), 0.0);
       std::vector<char>   skip(w, rows_wanted == Rows::active);
       for (const auto p : active)
@@ -1232,6 +1271,13 @@ namespace wearlink::fe
   CondensedContactSolver::~CondensedContactSolver() = default;
 
 
+  const CondensedTimings &
+  CondensedContactSolver::timings() const
+  {
+    return workspace->timings;
+  }
+
+
   // The window: every candidate whose initial gap is below T. A candidate outside it
   // stays open unless the elastic deformation closes the gap there by more than
   // T − |U|. Near a compressive contact the elastic part of the gap (A λ) opens it; it
@@ -1387,6 +1433,8 @@ namespace wearlink::fe
                                 const double        closure_estimate,
                                 ContactKinematics  &kin)
   {
+    const condensed_detail::ScopedSeconds timer(workspace->timings.total);
+    ++workspace->timings.solves;
     double                    T = 0.5 * std::max(closure_estimate, 0.0);
     std::vector<unsigned int> warm;
     ContactSolution           sol;

@@ -152,6 +152,19 @@ namespace wearlink::fe
   double
   predicted_approach(double load_per_length, double effective_modulus, double radial_clearance);
 
+  /**
+   * Where the condensed solver's time goes, summed over its load states [s]: gathering
+   * the window's compliance columns (the bore and pin columns themselves excluded when
+   * they are computed on first use), factoring the active block, the products of the
+   * gathered columns with the multipliers (the gaps), and the triangular substitutions
+   * with the factor; `total` is the whole of CondensedContactSolver::solve().
+   */
+  struct CondensedTimings
+  {
+    double        total = 0, gather = 0, factorization = 0, gaps = 0, substitutions = 0;
+    unsigned long solves = 0;
+  };
+
   class CondensedContactSolver
   {
   public:
@@ -191,6 +204,10 @@ namespace wearlink::fe
      */
     dealii::Vector<double>
     displacement_field(const ContactKinematics &kinematics, const ContactSolution &solution) const;
+
+    /** The time of the load states solved so far, by phase. */
+    const CondensedTimings &
+    timings() const;
 
     /** Load states that needed the monotone phase (see solve()). */
     unsigned long

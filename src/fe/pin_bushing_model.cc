@@ -430,6 +430,13 @@ namespace wearlink::fe
     return impl->compliance ? impl->compliance->column_time() : 0.0;
   }
 
+  const CondensedTimings &
+  PinBushingModel::condensed_timings() const
+  {
+    static const CondensedTimings none;
+    return impl->condensed ? impl->condensed->timings() : none;
+  }
+
   unsigned long
   PinBushingModel::n_compliance_solves() const
   {

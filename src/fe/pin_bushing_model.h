@@ -32,6 +32,8 @@
 
 namespace wearlink::fe
 {
+  struct CondensedTimings; // fe/contact_solver.h
+
   enum class SolverKind
   {
     condensed,
@@ -129,6 +131,10 @@ namespace wearlink::fe
     /** Number of compliance columns computed so far (back substitutions). */
     unsigned long
     n_compliance_solves() const;
+
+    /** The condensed solver's time by phase so far (fe/contact_solver.h; zero before its first solve). */
+    const CondensedTimings &
+    condensed_timings() const;
 
     const SetupStatistics &
     statistics() const;
