@@ -11,7 +11,8 @@
 // Measured (2026-11-26): the kept mesh's peak pressure within 1.30 % of the fresh 25 µm
 // mesh's (largest at 10 kN on the 50/10 µm pair), its contact half-angle within 0.06°;
 // the fresh meshes' own peak pressures spread by 0.27–11.0 % (the peak is a nodal value
-// and moves with the node layout, most at light loads on conformal pairs). Asserted:
+// and moves with the node layout, most at light loads on conformal pairs; the kept
+// mesh's error exceeds that spread in 3 of the 15 cases, by at most 0.74 points). Asserted:
 // the kept mesh within 1.5 % and 0.1°, and equilibrium.
 #include "fe_test_support.h"
 
@@ -27,7 +28,7 @@ using namespace wearlink;
 using namespace wearlink::fe;
 using namespace wearlink::fe::testing;
 
-TEST(FeKeptMeshValidation, TwoElementsOfDriftStayWithinTheMeshToMeshSpread)
+TEST(FeKeptMeshValidation, KeptMeshAtTwoElementsOfDriftMatchesAFreshMesh)
 {
   constexpr double h = 25e-6;
   for (const double pin_depth : {0.0, 10e-6, 25e-6})
