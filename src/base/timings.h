@@ -35,6 +35,27 @@ namespace wearlink
     std::chrono::steady_clock::time_point start;
   };
 
+  /** Adds the wall time from its construction to its destruction to a running sum [s]. */
+  class ScopedSeconds
+  {
+  public:
+    explicit ScopedSeconds(double &sum)
+      : sum(sum)
+    {
+    }
+    ~ScopedSeconds()
+    {
+      sum += clock.seconds();
+    }
+    ScopedSeconds(const ScopedSeconds &) = delete;
+    ScopedSeconds &
+    operator=(const ScopedSeconds &) = delete;
+
+  private:
+    double         &sum;
+    const Stopwatch clock;
+  };
+
   /**
    * Wall time spent in the phases of a (wear) run [s]. Pressure models fill the FE
    * phases (meshing, set-up, compliance); the wear loop and the workflows the rest.

@@ -179,17 +179,17 @@ namespace wearlink::fe
     // The two bodies' factorizations are independent: one task each (each CHOLMOD
     // factor has its own workspace) where the BLAS allows several threads.
     const auto factor = [&](const unsigned int begin, const unsigned int end) {
-      for (unsigned int body = begin; body < end; ++body)
-        if (body == 0)
-          factor_body(problem.stiffness_matrix, reduced_index, is_pin, 1, n_pin, pin_factor->matrix, pin_factor->llt);
-        else
+      for (unsigned int body = begin; body < end; ++body) // 0: the pin, 1: the ring
+        {
+          Factorization &f = body == 0 ? *pin_factor : *ring_factor;
           factor_body(problem.stiffness_matrix,
                       reduced_index,
                       is_pin,
-                      0,
-                      n_ring,
-                      ring_factor->matrix,
-                      ring_factor->llt);
+                      body == 0,
+                      body == 0 ? n_pin : n_ring,
+                      f.matrix,
+                      f.llt);
+        }
     };
     if (blas_is_thread_safe())
       parallel::apply_to_subranges(0u, 2u, factor, 1);

@@ -4,6 +4,7 @@
 // the active block updated row by row from the first change.
 #include "base/exceptions.h"
 #include "base/text.h"
+#include "base/timings.h"
 #include "fe/active_set_rules.h"
 #include "fe/blas_threads.h"
 #include "fe/boundary_ids.h"
@@ -15,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -38,28 +38,6 @@ namespace wearlink::fe
      * more than the float factor saves.
      */
     constexpr unsigned int single_precision_from = 160;
-
-    /** Adds the seconds from its construction to its end to @p into. */
-    class ScopedSeconds
-    {
-    public:
-      explicit ScopedSeconds(double &into)
-        : into(into)
-        , start(std::chrono::steady_clock::now())
-      {
-      }
-      ~ScopedSeconds()
-      {
-        into += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      }
-      ScopedSeconds(const ScopedSeconds &) = delete;
-      ScopedSeconds &
-      operator=(const ScopedSeconds &) = delete;
-
-    private:
-      double                                     &into;
-      const std::chrono::steady_clock::time_point start;
-    };
 
     /** Memory that the window solves keep from one load state to the next. */
     struct Workspace
@@ -1433,7 +1411,7 @@ namespace wearlink::fe
                                 const double        closure_estimate,
                                 ContactKinematics  &kin)
   {
-    const condensed_detail::ScopedSeconds timer(workspace->timings.total);
+    const ScopedSeconds timer(workspace->timings.total);
     ++workspace->timings.solves;
     double                    T = 0.5 * std::max(closure_estimate, 0.0);
     std::vector<unsigned int> warm;

@@ -454,9 +454,8 @@ namespace wearlink::fe
     // pair at the default 25 µm mesh, FeBenchmark.FullInfluenceMatrixOfAWornPair).
     // So, too, the one sector of columns that a periodic (round) pair keeps, which a
     // table of one direction asks for all of over its load levels.
-    const auto     &mesh = model->statistics().mesh;
     const Stopwatch columns;
-    if (directions.size() > 1 || (mesh.pin_sectors > 1 && mesh.bore_sectors > 1))
+    if (directions.size() > 1 || model->compliance_is_periodic())
       model->precompute_compliance();
     const double        column_seconds = columns.seconds();
     std::vector<double> approach       = solve_table(*model, g, forces, directions, build);

@@ -424,6 +424,13 @@ namespace wearlink::fe
     impl->compliance->precompute_all();
   }
 
+  bool
+  PinBushingModel::compliance_is_periodic()
+  {
+    impl->prepare_condensed();
+    return impl->compliance->pin_periodic() && impl->compliance->bore_periodic();
+  }
+
   double
   PinBushingModel::compliance_time() const
   {

@@ -124,6 +124,14 @@ namespace wearlink::fe
     void
     precompute_compliance();
 
+    /**
+     * True when both bodies' compliance columns are rotations of one sector's
+     * (BoundaryCompliance; a periodic mesh that passed its symmetry check), so that
+     * precompute_compliance() computes only that sector.
+     */
+    bool
+    compliance_is_periodic();
+
     /** Time spent computing compliance columns so far [s]. */
     double
     compliance_time() const;
