@@ -7,6 +7,7 @@
 #include "base/timings.h"
 #include "fe/active_set_rules.h"
 #include "fe/blas_threads.h"
+#include "fe/blas_trsm.h"
 #include "fe/boundary_ids.h"
 #include "fe/contact_solver.h"
 #include "fe/window_kernels.h"
@@ -367,18 +368,36 @@ namespace wearlink::fe
       /**
        * Rows c … k − 1 of the factor of the k × k matrix whose entry (r, s), r ≥ s, is
        * @p entry(r, s): L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ). A whole factor of
-       * many rows (c = 0) is built as two such steps, so that the second one's panel
-       * solve and update can run as two tasks each (refactor_rows()). False if the
-       * matrix is not positive definite (in this precision).
+       * many rows (c = 0) is built block column by block column (right-looking), each
+       * block's panel solve and trailing update as two tasks, so that both cores work on
+       * it. False if the matrix is not positive definite (in this precision).
        */
       template <typename Entry>
       bool
       refactor_from(const unsigned int c, const unsigned int k, const Entry &entry)
       {
-        constexpr unsigned int split_from = 256; // rows; below it one step does all
-        if (c == 0 && k >= split_from)
-          return refactor_rows(0, k / 2, entry) && refactor_rows(k / 2, k, entry);
-        return refactor_rows(c, k, entry);
+        if (c == k)
+          return true;
+        copy_rows(c, k, entry);
+        if (c > 0) // the rows after an unchanged leading factor: one step
+          {
+            solve_panel(0, c, k);
+            update_trailing(0, c, k);
+            return factor_block(c, k);
+          }
+        constexpr unsigned int block = 128; // rows; the BLAS's own block size for potrf
+        for (unsigned int j0 = 0; j0 < k; j0 += block)
+          {
+            const unsigned int j1 = std::min(j0 + block, k);
+            if (!factor_block(j0, j1))
+              return false;
+            if (j1 < k)
+              {
+                solve_panel(j0, j1, k);
+                update_trailing(j0, j1, k);
+              }
+          }
+        return true;
       }
 
       /** Rows valid … k − 1 of v := L⁻¹ v (k entries), the rows before valid being done. */
@@ -414,75 +433,67 @@ namespace wearlink::fe
         return L[r + static_cast<std::size_t>(s) * ld];
       }
 
-      /** Rows c … k − 1 (see refactor_from()): panel, trailing block, update, its factor. */
+      /** Entries (r, s), s ≤ r, of rows c … k − 1 from @p entry (see refactor_from()). */
       template <typename Entry>
-      bool
-      refactor_rows(const unsigned int c, const unsigned int k, const Entry &entry)
+      void
+      copy_rows(const unsigned int c, const unsigned int k, const Entry &entry)
       {
-        const blas_int t = k - c, ldb = ld;
+        for (unsigned int s = 0; s < k; ++s)
+          for (unsigned int r = std::max(c, s); r < k; ++r)
+            at(r, s) = entry(r, s);
+      }
+
+      /** The diagonal block of rows j0 … j1 − 1, updated by the columns before j0: its factor. */
+      bool
+      factor_block(const unsigned int j0, const unsigned int j1)
+      {
+        const blas_int t = j1 - j0, ldb = ld;
         blas_int       info = 0;
-        if (t == 0)
-          return true;
-        if (c > 0 && !solve_panel(c, k, entry))
-          return false;
-        for (blas_int j = 0; j < t; ++j)
-          for (blas_int i = j; i < t; ++i)
-            at(c + i, c + j) = entry(c + i, c + j);
-        if (c > 0)
-          update_trailing(c, k);
-        potrf("L", &t, &at(c, c), &ldb, &info);
+        potrf("L", &t, &at(j0, j0), &ldb, &info);
         return info == 0;
       }
 
       /**
-       * L21 = A21 L11⁻ᵀ for rows c … k − 1, as L11⁻¹ A21ᵀ (LAPACK trtrs on a transposed
-       * copy); in two tasks of half the rows each when the panel is large.
+       * The panel of rows j1 … k − 1 in the columns j0 … j1 − 1, whose diagonal block is
+       * factored: L21 := L21 L11⁻ᵀ in place (BLAS trsm from the right), in two tasks of
+       * half the rows each when it is large.
        */
-      template <typename Entry>
-      bool
-      solve_panel(const unsigned int c, const unsigned int k, const Entry &entry)
+      void
+      solve_panel(const unsigned int j0, const unsigned int j1, const unsigned int k)
       {
-        const unsigned int t     = k - c;
-        const unsigned int parts = t * c >= parallel_from && blas_is_thread_safe() ? 2 : 1;
-        bool               ok[2] = {true, true};
+        const unsigned int t     = k - j1;
+        const unsigned int parts = t * (j1 - j0) >= parallel_from && blas_is_thread_safe() ? 2 : 1;
         const auto         part  = [&](const unsigned int begin, const unsigned int end) {
           for (unsigned int n = begin; n < end; ++n)
             {
-              const unsigned int  j0 = c + n * t / parts, j1 = c + (n + 1) * t / parts;
-              const blas_int      cc = c, nj = j1 - j0, ldb = ld;
-              blas_int            info = 0;
-              std::vector<Number> X(static_cast<std::size_t>(c) * nj);
-              for (unsigned int s = 0; s < c; ++s)
-                for (unsigned int j = j0; j < j1; ++j)
-                  X[s + static_cast<std::size_t>(j - j0) * c] = entry(j, s);
-              trtrs("L", "N", "N", &cc, &nj, L, &ldb, X.data(), &cc, &info);
-              ok[n] = info == 0;
-              for (unsigned int j = j0; j < j1; ++j)
-                for (unsigned int s = 0; s < c; ++s)
-                  at(j, s) = X[s + static_cast<std::size_t>(j - j0) * c];
+              const unsigned int r0 = j1 + n * t / parts, r1 = j1 + (n + 1) * t / parts;
+              const blas_int     rows = r1 - r0, cols = j1 - j0, ldb = ld;
+              const Number       one = 1;
+              blas::trsm("R", "L", "T", "N", &rows, &cols, &one, &at(j0, j0), &ldb, &at(r0, j0), &ldb);
             }
         };
         parallel::apply_to_subranges(0u, parts, part, 1);
-        return ok[0] && ok[1];
       }
 
       /**
-       * A22 −= L21 L21ᵀ (lower triangle) for rows c … k − 1: when large, as two tasks of
-       * equal work, the first m = t/√2 rows (syrk) and the others (gemm, syrk).
+       * A22 −= L21 L21ᵀ (lower triangle) for the rows j1 … k − 1 and the panel's columns
+       * j0 … j1 − 1: when large, as two tasks of equal work, the first m = t/√2 rows
+       * (syrk) and the others (gemm, syrk).
        */
       void
-      update_trailing(const unsigned int c, const unsigned int k)
+      update_trailing(const unsigned int j0, const unsigned int j1, const unsigned int k)
       {
-        const blas_int     t = k - c, cc = c, ldb = ld;
+        const blas_int     t = k - j1, cc = j1 - j0, ldb = ld;
         const Number       minus_one = -1, one = 1;
-        const bool         two  = static_cast<unsigned int>(t) * c >= parallel_from && blas_is_thread_safe();
+        const bool         two  = static_cast<unsigned int>(t) * cc >= parallel_from && blas_is_thread_safe();
         const unsigned int m    = two ? static_cast<unsigned int>(t / std::sqrt(2.0)) : t;
+        const unsigned int c    = j1;
         const auto         part = [&](const unsigned int begin, const unsigned int end) {
           for (unsigned int n = begin; n < end; ++n)
             if (n == 0)
               {
                 const blas_int mm = m;
-                syrk("L", "N", &mm, &cc, &minus_one, &at(c, 0), &ldb, &one, &at(c, c), &ldb);
+                syrk("L", "N", &mm, &cc, &minus_one, &at(c, j0), &ldb, &one, &at(c, c), &ldb);
               }
             else
               {
@@ -493,14 +504,14 @@ namespace wearlink::fe
                      &mm,
                      &cc,
                      &minus_one,
-                     &at(c + m, 0),
+                     &at(c + m, j0),
                      &ldb,
-                     &at(c, 0),
+                     &at(c, j0),
                      &ldb,
                      &one,
                      &at(c + m, c),
                      &ldb);
-                syrk("L", "N", &rest, &cc, &minus_one, &at(c + m, 0), &ldb, &one, &at(c + m, c + m), &ldb);
+                syrk("L", "N", &rest, &cc, &minus_one, &at(c + m, j0), &ldb, &one, &at(c + m, c + m), &ldb);
               }
         };
         parallel::apply_to_subranges(0u, two ? 2u : 1u, part, 1);
