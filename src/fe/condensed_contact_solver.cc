@@ -832,6 +832,9 @@ namespace wearlink::fe
       active    ///< the residual of the active system (refine())
     };
 
+    /** Products window_gaps() does of at least this many entries (rows × columns) are two tasks. */
+    constexpr std::size_t gaps_parallel_from = 256 * 256;
+
     /**
      * g = g0 − n·U + A λ over the window, for the multipliers @p lambda (per position)
      * of @p active, at the positions @p rows names; the others keep their values. One
@@ -858,17 +861,33 @@ namespace wearlink::fe
           x[A.slot_of(p)] = lambda[p];
           skip[p]         = rows_wanted == Rows::inactive;
         }
+      std::vector<std::pair<unsigned int, unsigned int>> runs; // [q0, q1) of wanted rows
       for (unsigned int q0 = 0; q0 < w;)
         {
           unsigned int q1 = q0;
           for (; q1 < w && !skip[q1]; ++q1)
             gap[q1] = kin.g0[q1] - kin.normal[q1] * U;
-          const blas_int rows = q1 - q0, cols = x.size(), ld = w, one = 1;
-          const double   alpha = 1, beta = 1;
-          if (rows > 0 && cols > 0)
-            gemv("N", &rows, &cols, &alpha, A.data() + q0, &ld, x.data(), &one, &beta, gap.data() + q0, &one);
+          if (q1 > q0)
+            runs.emplace_back(q0, q1);
           q0 = q1 + 1;
         }
+      // Each run's rows in two halves, the first halves one task, the second the other.
+      std::size_t rows_total = 0;
+      for (const auto &[q0, q1] : runs)
+        rows_total += q1 - q0;
+      const unsigned int parts = rows_total * x.size() >= gaps_parallel_from && blas_is_thread_safe() ? 2 : 1;
+      const auto         part  = [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int n = begin; n < end; ++n)
+          for (const auto &[q0, q1] : runs)
+            {
+              const unsigned int r0 = q0 + n * (q1 - q0) / parts, r1 = q0 + (n + 1) * (q1 - q0) / parts;
+              const blas_int     rows = r1 - r0, cols = x.size(), ld = w, one = 1;
+              const double       alpha = 1, beta = 1;
+              if (rows > 0 && cols > 0)
+                gemv("N", &rows, &cols, &alpha, A.data() + r0, &ld, x.data(), &one, &beta, gap.data() + r0, &one);
+            }
+      };
+      parallel::apply_to_subranges(0u, parts, part, 1);
     }
 
     /** Everything one window solve carries between its phases. */
