@@ -225,27 +225,58 @@ namespace wearlink::fe
       void
       bore_field(const unsigned int p, double *field_x, double *field_y) const
       {
-        if (kin.n_masters[p] == 0)
+        const unsigned int n_masters = kin.n_masters[p];
+        if (n_masters == 0)
           {
             std::fill(field_x, field_x + n_rows, 0.0);
             std::fill(field_y, field_y + n_rows, 0.0);
           }
-        for (unsigned int m = 0; m < kin.n_masters[p]; ++m)
+        // The first two face nodes in one pass, further ones (quadratic faces) added.
+        for (unsigned int m0 = 0; m0 < n_masters; m0 += m0 == 0 && n_masters >= 2 ? 2 : 1)
           {
-            const auto    column = compliance.bore_column(kin.masters[p][m]);
-            const double  gx = vx[m][p], gy = vy[m][p];
-            const double *xx = column.base, *yx = xx + n_bore, *xy = yx + n_bore, *yy = xy + n_bore;
-            for (const auto &[r0, b0, n] : runs)
+            const bool         two = m0 == 0 && n_masters >= 2;
+            const unsigned int m1  = two ? 1 : m0;
+            const auto         c0  = compliance.bore_column(kin.masters[p][m0]);
+            const auto         c1  = compliance.bore_column(kin.masters[p][m1]);
+            const double      *x0 = c0.base, *x1 = c1.base;
+            for (const auto &[r0, b_first, n] : runs)
               {
                 unsigned int r = r0, left = n;
-                unsigned int b = (b0 + n_bore - column.shift) % n_bore;
-                while (left > 0)
+                unsigned int b = (b_first + n_bore - c0.shift) % n_bore, d = (b_first + n_bore - c1.shift) % n_bore;
+                while (left > 0) // each column wraps at most once
                   {
-                    const unsigned int len = std::min(left, n_bore - b);
-                    kernels::field(field_x + r, field_y + r, xx + b, yx + b, xy + b, yy + b, gx, gy, len, m > 0);
+                    const unsigned int len = std::min({left, n_bore - b, n_bore - d});
+                    if (two)
+                      kernels::field_two(field_x + r,
+                                         field_y + r,
+                                         x0 + b,
+                                         x0 + n_bore + b,
+                                         x0 + 2 * n_bore + b,
+                                         x0 + 3 * n_bore + b,
+                                         vx[0][p],
+                                         vy[0][p],
+                                         x1 + d,
+                                         x1 + n_bore + d,
+                                         x1 + 2 * n_bore + d,
+                                         x1 + 3 * n_bore + d,
+                                         vx[1][p],
+                                         vy[1][p],
+                                         len);
+                    else
+                      kernels::field(field_x + r,
+                                     field_y + r,
+                                     x0 + b,
+                                     x0 + n_bore + b,
+                                     x0 + 2 * n_bore + b,
+                                     x0 + 3 * n_bore + b,
+                                     vx[m0][p],
+                                     vy[m0][p],
+                                     len,
+                                     m0 > 0);
                     r += len;
                     left -= len;
-                    b = 0;
+                    b = b + len == n_bore ? 0 : b + len;
+                    d = d + len == n_bore ? 0 : d + len;
                   }
               }
           }

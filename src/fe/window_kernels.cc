@@ -39,6 +39,31 @@ namespace wearlink::fe::kernels
 
 
   WEARLINK_VECTOR_CLONES void
+  field_two(double *__restrict fx,
+            double *__restrict fy,
+            const double *__restrict xx0,
+            const double *__restrict yx0,
+            const double *__restrict xy0,
+            const double *__restrict yy0,
+            const double a0,
+            const double b0,
+            const double *__restrict xx1,
+            const double *__restrict yx1,
+            const double *__restrict xy1,
+            const double *__restrict yy1,
+            const double       a1,
+            const double       b1,
+            const unsigned int n)
+  {
+    for (unsigned int t = 0; t < n; ++t)
+      {
+        fx[t] = a0 * xx0[t] + b0 * xy0[t] + a1 * xx1[t] + b1 * xy1[t];
+        fy[t] = a0 * yx0[t] + b0 * yy0[t] + a1 * yx1[t] + b1 * yy1[t];
+      }
+  }
+
+
+  WEARLINK_VECTOR_CLONES void
   read_two(double *__restrict out,
            const double *__restrict pin,
            const double *__restrict vx0,

@@ -25,6 +25,28 @@ namespace wearlink::fe::kernels
         bool          accumulate);
 
   /**
+   * The bore field of two face nodes over n rows in one pass: fx = a0·xx0 + b0·xy0 +
+   * a1·xx1 + b1·xy1, fy likewise with yx, yy (what field() twice gives, the second
+   * accumulating, without storing and reading back the first node's field).
+   */
+  void
+  field_two(double       *fx,
+            double       *fy,
+            const double *xx0,
+            const double *yx0,
+            const double *xy0,
+            const double *yy0,
+            double        a0,
+            double        b0,
+            const double *xx1,
+            const double *yx1,
+            const double *xy1,
+            const double *yy1,
+            double        a1,
+            double        b1,
+            unsigned int  n);
+
+  /**
    * out = pin + vx0·fx0 + vy0·fy0 + vx1·fx1 + vy1·fy1 over n positions (a face of two
    * nodes: its readers and the field at their rows).
    */
