@@ -4,8 +4,6 @@
 #include "base/numbers.h"
 #include "contact/gap.h"
 
-#include <deal.II/base/parallel.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -294,29 +292,22 @@ namespace wearlink::fe
     if (threshold_used != nullptr)
       *threshold_used = threshold;
 
-    // The candidates below the threshold, with their rays, in increasing order: the
-    // blocks on the threads deal.II allows (TBB; the rays are independent).
-    std::vector<std::vector<std::pair<unsigned int, Ray>>> found(n_blocks);
-    const auto                                             scan = [&](const unsigned int j0, const unsigned int j1) {
-      for (unsigned int j = j0; j < j1; ++j)
-        {
-          const unsigned int a = j * B;
-          const unsigned int b = std::min(a + B, m); // b = m: the block ends at candidate 0
-          double             da = nodes[b % m].angle - nodes[a].angle;
-          da -= two_pi * std::floor(da / two_pi);
-          const double lower = 0.5 * (sampled[j] + sampled[(j + 1) % n_blocks]) - 0.5 * L * da;
-          if (sampled[j] <= threshold)
-            found[j].emplace_back(a, rays.cast(a));
-          if (lower <= threshold)
-            for (unsigned int i = a + 1; i < b; ++i)
-              if (Ray ray = rays.cast(i); ray.g0 <= threshold)
-                found[j].emplace_back(i, ray);
-        }
-    };
-    dealii::parallel::apply_to_subranges(0u, n_blocks, scan, 16);
+    // The candidates below the threshold, with their rays, in increasing order.
     std::vector<std::pair<unsigned int, Ray>> below;
-    for (const auto &f : found)
-      below.insert(below.end(), f.begin(), f.end());
+    for (unsigned int j = 0; j < n_blocks; ++j)
+      {
+        const unsigned int a  = j * B;
+        const unsigned int b  = std::min(a + B, m); // b = m: the block ends at candidate 0
+        double             da = nodes[b % m].angle - nodes[a].angle;
+        da -= two_pi * std::floor(da / two_pi);
+        const double lower = 0.5 * (sampled[j] + sampled[(j + 1) % n_blocks]) - 0.5 * L * da;
+        if (sampled[j] <= threshold)
+          below.emplace_back(a, rays.cast(a));
+        if (lower <= threshold)
+          for (unsigned int i = a + 1; i < b; ++i)
+            if (Ray ray = rays.cast(i); ray.g0 <= threshold)
+              below.emplace_back(i, ray);
+      }
     // Padded by one candidate on either side, so that every contact node's neighbours
     // (the ends of its tributary arc) are in the window.
     std::vector<char> in(m, 0);
