@@ -6,6 +6,8 @@
 
 #include <deal.II/lac/lapack_support.h>
 
+#include <type_traits>
+
 extern "C"
 {
   void
@@ -36,7 +38,8 @@ extern "C"
 
 namespace wearlink::fe::blas
 {
-  /** B := alpha B op(A)⁻¹ (side "R") or alpha op(A)⁻¹ B (side "L"), A triangular. */
+  /** B := alpha B op(A)⁻¹ (side "R") or alpha op(A)⁻¹ B (side "L"), A triangular (float or double). */
+  template <typename Number>
   inline void
   trsm(const char                    *side,
        const char                    *uplo,
@@ -44,28 +47,16 @@ namespace wearlink::fe::blas
        const char                    *diag,
        const dealii::types::blas_int *m,
        const dealii::types::blas_int *n,
-       const float                   *alpha,
-       const float                   *a,
+       const Number                  *alpha,
+       const Number                  *a,
        const dealii::types::blas_int *lda,
-       float                         *b,
+       Number                        *b,
        const dealii::types::blas_int *ldb)
   {
-    strsm_(side, uplo, transa, diag, m, n, alpha, a, lda, b, ldb);
-  }
-
-  inline void
-  trsm(const char                    *side,
-       const char                    *uplo,
-       const char                    *transa,
-       const char                    *diag,
-       const dealii::types::blas_int *m,
-       const dealii::types::blas_int *n,
-       const double                  *alpha,
-       const double                  *a,
-       const dealii::types::blas_int *lda,
-       double                        *b,
-       const dealii::types::blas_int *ldb)
-  {
-    dtrsm_(side, uplo, transa, diag, m, n, alpha, a, lda, b, ldb);
+    static_assert(std::is_same_v<Number, float> || std::is_same_v<Number, double>);
+    if constexpr (std::is_same_v<Number, float>)
+      strsm_(side, uplo, transa, diag, m, n, alpha, a, lda, b, ldb);
+    else
+      dtrsm_(side, uplo, transa, diag, m, n, alpha, a, lda, b, ldb);
   }
 } // namespace wearlink::fe::blas

@@ -221,6 +221,13 @@ namespace wearlink::fe
           }
       }
 
+      /** The four blocks of the bore column at @p base from row @p b on. */
+      kernels::BlockRows
+      block_rows(const double *base, const unsigned int b) const
+      {
+        return {base + b, base + n_bore + b, base + 2 * n_bore + b, base + 3 * n_bore + b};
+      }
+
       /** The bore field f over the window's rows for the force n_p at p's face (see the class). */
       void
       bore_field(const unsigned int p, double *field_x, double *field_y) const
@@ -249,30 +256,15 @@ namespace wearlink::fe
                     if (two)
                       kernels::field_two(field_x + r,
                                          field_y + r,
-                                         x0 + b,
-                                         x0 + n_bore + b,
-                                         x0 + 2 * n_bore + b,
-                                         x0 + 3 * n_bore + b,
+                                         block_rows(x0, b),
                                          vx[0][p],
                                          vy[0][p],
-                                         x1 + d,
-                                         x1 + n_bore + d,
-                                         x1 + 2 * n_bore + d,
-                                         x1 + 3 * n_bore + d,
+                                         block_rows(x1, d),
                                          vx[1][p],
                                          vy[1][p],
                                          len);
                     else
-                      kernels::field(field_x + r,
-                                     field_y + r,
-                                     x0 + b,
-                                     x0 + n_bore + b,
-                                     x0 + 2 * n_bore + b,
-                                     x0 + 3 * n_bore + b,
-                                     vx[m0][p],
-                                     vy[m0][p],
-                                     len,
-                                     m0 > 0);
+                      kernels::field(field_x + r, field_y + r, block_rows(x0, b), vx[m0][p], vy[m0][p], len, m0 > 0);
                     r += len;
                     left -= len;
                     b = b + len == n_bore ? 0 : b + len;

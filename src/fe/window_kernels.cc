@@ -14,15 +14,13 @@ namespace wearlink::fe::kernels
   WEARLINK_VECTOR_CLONES void
   field(double *__restrict fx,
         double *__restrict fy,
-        const double *__restrict xx,
-        const double *__restrict yx,
-        const double *__restrict xy,
-        const double *__restrict yy,
+        const BlockRows   &k,
         const double       a,
         const double       b,
         const unsigned int n,
         const bool         accumulate)
   {
+    const double *__restrict xx = k.xx, *__restrict yx = k.yx, *__restrict xy = k.xy, *__restrict yy = k.yy;
     if (accumulate)
       for (unsigned int t = 0; t < n; ++t)
         {
@@ -41,20 +39,16 @@ namespace wearlink::fe::kernels
   WEARLINK_VECTOR_CLONES void
   field_two(double *__restrict fx,
             double *__restrict fy,
-            const double *__restrict xx0,
-            const double *__restrict yx0,
-            const double *__restrict xy0,
-            const double *__restrict yy0,
-            const double a0,
-            const double b0,
-            const double *__restrict xx1,
-            const double *__restrict yx1,
-            const double *__restrict xy1,
-            const double *__restrict yy1,
+            const BlockRows   &k0,
+            const double       a0,
+            const double       b0,
+            const BlockRows   &k1,
             const double       a1,
             const double       b1,
             const unsigned int n)
   {
+    const double *__restrict xx0 = k0.xx, *__restrict yx0 = k0.yx, *__restrict xy0 = k0.xy, *__restrict yy0 = k0.yy;
+    const double *__restrict xx1 = k1.xx, *__restrict yx1 = k1.yx, *__restrict xy1 = k1.xy, *__restrict yy1 = k1.yy;
     for (unsigned int t = 0; t < n; ++t)
       {
         fx[t] = a0 * xx0[t] + b0 * xy0[t] + a1 * xx1[t] + b1 * xy1[t];

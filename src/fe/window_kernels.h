@@ -8,43 +8,34 @@
 
 namespace wearlink::fe::kernels
 {
+  /** Rows of the four blocks of a bore column (BoundaryCompliance::BoreColumn), from one row on. */
+  struct BlockRows
+  {
+    const double *xx, *yx, *xy, *yy;
+  };
+
   /**
    * The bore field of one face node over n rows: fx = a·xx + b·xy, fy = a·yx + b·yy,
    * or (@p accumulate) added to fx, fy.
    */
   void
-  field(double       *fx,
-        double       *fy,
-        const double *xx,
-        const double *yx,
-        const double *xy,
-        const double *yy,
-        double        a,
-        double        b,
-        unsigned int  n,
-        bool          accumulate);
+  field(double *fx, double *fy, const BlockRows &k, double a, double b, unsigned int n, bool accumulate);
 
   /**
-   * The bore field of two face nodes over n rows in one pass: fx = a0·xx0 + b0·xy0 +
-   * a1·xx1 + b1·xy1, fy likewise with yx, yy (what field() twice gives, the second
-   * accumulating, without storing and reading back the first node's field).
+   * The bore field of two face nodes over n rows in one pass: the sum of field() for
+   * (@p k0, a0, b0) and (@p k1, a1, b1), without storing and reading back the first
+   * node's field.
    */
   void
-  field_two(double       *fx,
-            double       *fy,
-            const double *xx0,
-            const double *yx0,
-            const double *xy0,
-            const double *yy0,
-            double        a0,
-            double        b0,
-            const double *xx1,
-            const double *yx1,
-            const double *xy1,
-            const double *yy1,
-            double        a1,
-            double        b1,
-            unsigned int  n);
+  field_two(double          *fx,
+            double          *fy,
+            const BlockRows &k0,
+            double           a0,
+            double           b0,
+            const BlockRows &k1,
+            double           a1,
+            double           b1,
+            unsigned int     n);
 
   /**
    * out = pin + vx0·fx0 + vy0·fy0 + vx1·fx1 + vy1·fy1 over n positions (a face of two
