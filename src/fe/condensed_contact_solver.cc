@@ -238,38 +238,50 @@ namespace wearlink::fe
             std::fill(field_x, field_x + n_rows, 0.0);
             std::fill(field_y, field_y + n_rows, 0.0);
           }
-        // The first two face nodes in one pass, further ones (quadratic faces) added.
-        for (unsigned int m0 = 0; m0 < n_masters; m0 += m0 == 0 && n_masters >= 2 ? 2 : 1)
+        // The first two face nodes in one pass, a third one (quadratic faces) added.
+        unsigned int m = 0;
+        if (n_masters >= 2)
           {
-            const bool         two = m0 == 0 && n_masters >= 2;
-            const unsigned int m1  = two ? 1 : m0;
-            const auto         c0  = compliance.bore_column(kin.masters[p][m0]);
-            const auto         c1  = compliance.bore_column(kin.masters[p][m1]);
-            const double      *x0 = c0.base, *x1 = c1.base;
-            for (const auto &[r0, b_first, n] : runs)
+            add_field(p, 0, 1, field_x, field_y);
+            m = 2;
+          }
+        for (; m < n_masters; ++m)
+          add_field(p, m, m, field_x, field_y);
+      }
+
+      /**
+       * The field of p's face nodes m0 and m1 over the window's rows, in one pass
+       * (field_two()); of node m0 alone if m1 = m0, added to the field when m0 > 0.
+       */
+      void
+      add_field(const unsigned int p, const unsigned int m0, const unsigned int m1, double *fx, double *fy) const
+      {
+        const auto    c0 = compliance.bore_column(kin.masters[p][m0]);
+        const auto    c1 = compliance.bore_column(kin.masters[p][m1]);
+        const double *x0 = c0.base, *x1 = c1.base;
+        for (const auto &[r0, b_first, n] : runs)
+          {
+            unsigned int r = r0, left = n;
+            unsigned int b = (b_first + n_bore - c0.shift) % n_bore, d = (b_first + n_bore - c1.shift) % n_bore;
+            while (left > 0) // each column wraps at most once
               {
-                unsigned int r = r0, left = n;
-                unsigned int b = (b_first + n_bore - c0.shift) % n_bore, d = (b_first + n_bore - c1.shift) % n_bore;
-                while (left > 0) // each column wraps at most once
-                  {
-                    const unsigned int len = std::min({left, n_bore - b, n_bore - d});
-                    if (two)
-                      kernels::field_two(field_x + r,
-                                         field_y + r,
-                                         block_rows(x0, b),
-                                         vx[0][p],
-                                         vy[0][p],
-                                         block_rows(x1, d),
-                                         vx[1][p],
-                                         vy[1][p],
-                                         len);
-                    else
-                      kernels::field(field_x + r, field_y + r, block_rows(x0, b), vx[m0][p], vy[m0][p], len, m0 > 0);
-                    r += len;
-                    left -= len;
-                    b = b + len == n_bore ? 0 : b + len;
-                    d = d + len == n_bore ? 0 : d + len;
-                  }
+                const unsigned int len = std::min({left, n_bore - b, n_bore - d});
+                if (m1 != m0)
+                  kernels::field_two(fx + r,
+                                     fy + r,
+                                     block_rows(x0, b),
+                                     vx[m0][p],
+                                     vy[m0][p],
+                                     block_rows(x1, d),
+                                     vx[m1][p],
+                                     vy[m1][p],
+                                     len);
+                else
+                  kernels::field(fx + r, fy + r, block_rows(x0, b), vx[m0][p], vy[m0][p], len, m0 > 0);
+                r += len;
+                left -= len;
+                b = b + len == n_bore ? 0 : b + len;
+                d = d + len == n_bore ? 0 : d + len;
               }
           }
       }
@@ -391,25 +403,23 @@ namespace wearlink::fe
       /**
        * Rows c … k − 1 of the factor of the k × k matrix whose entry (r, s), r ≥ s, is
        * @p entry(r, s): L21 = A21 L11⁻ᵀ, L22 = chol(A22 − L21 L21ᵀ). A whole factor of
-       * many rows (c = 0) is built block column by block column (right-looking), each
-       * block's panel solve and trailing update as two tasks, so that both cores work on
-       * it. False if the matrix is not positive definite (in this precision).
+       * many rows is built block column by block column (right-looking; the rows before
+       * c, already factored, are the first block column), each block's panel solve and
+       * trailing update as two tasks, so that both cores work on it. False if the matrix
+       * is not positive definite (in this precision).
        */
       template <typename Entry>
       bool
       refactor_from(const unsigned int c, const unsigned int k, const Entry &entry)
       {
-        if (c == k)
-          return true;
         copy_rows(c, k, entry);
-        if (c > 0) // the rows after an unchanged leading factor: one step
+        if (c > 0 && c < k) // the unchanged leading factor acts as one block column
           {
             solve_panel(0, c, k);
             update_trailing(0, c, k);
-            return factor_block(c, k);
           }
         constexpr unsigned int block = 128; // rows; the BLAS's own block size for potrf
-        for (unsigned int j0 = 0; j0 < k; j0 += block)
+        for (unsigned int j0 = c; j0 < k; j0 += block)
           {
             const unsigned int j1 = std::min(j0 + block, k);
             if (!factor_block(j0, j1))
@@ -510,13 +520,12 @@ namespace wearlink::fe
         const Number       minus_one = -1, one = 1;
         const bool         two  = static_cast<unsigned int>(t) * cc >= parallel_from && blas_is_thread_safe();
         const unsigned int m    = two ? static_cast<unsigned int>(t / std::sqrt(2.0)) : t;
-        const unsigned int c    = j1;
         const auto         part = [&](const unsigned int begin, const unsigned int end) {
           for (unsigned int n = begin; n < end; ++n)
             if (n == 0)
               {
                 const blas_int mm = m;
-                syrk("L", "N", &mm, &cc, &minus_one, &at(c, j0), &ldb, &one, &at(c, c), &ldb);
+                syrk("L", "N", &mm, &cc, &minus_one, &at(j1, j0), &ldb, &one, &at(j1, j1), &ldb);
               }
             else
               {
@@ -527,14 +536,14 @@ namespace wearlink::fe
                      &mm,
                      &cc,
                      &minus_one,
-                     &at(c + m, j0),
+                     &at(j1 + m, j0),
                      &ldb,
-                     &at(c, j0),
+                     &at(j1, j0),
                      &ldb,
                      &one,
-                     &at(c + m, c),
+                     &at(j1 + m, j1),
                      &ldb);
-                syrk("L", "N", &rest, &cc, &minus_one, &at(c + m, j0), &ldb, &one, &at(c + m, c + m), &ldb);
+                syrk("L", "N", &rest, &cc, &minus_one, &at(j1 + m, j0), &ldb, &one, &at(j1 + m, j1 + m), &ldb);
               }
         };
         parallel::apply_to_subranges(0u, two ? 2u : 1u, part, 1);
