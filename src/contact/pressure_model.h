@@ -17,6 +17,7 @@
 #include "base/validity_warnings.h"
 
 #include <array>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -91,6 +92,43 @@ namespace wearlink::contact
     std::vector<double> pin;  ///< [Pa] at the pin profile's sample angles
   };
 
+  /**
+   * How deep each surface wears per unit contact pressure during one load state of a
+   * wear iteration: c = f k_D |v_t| Δt [m/Pa], with f the iteration's extrapolation
+   * factor (wear/archard.h, the sequential wear update).
+   */
+  struct WearCompliance
+  {
+    double bore = 0; ///< [m/Pa]
+    double pin  = 0; ///< [m/Pa]
+
+    double
+    total() const
+    {
+      return bore + pin;
+    }
+  };
+
+  /**
+   * Material removed from the discrete areas of both surfaces by one load state: area
+   * bore_areas[i] of the bore deepens by bore_depth[i] (its radius grows), area
+   * pin_areas[i] of the pin by pin_depth[i] (its radius shrinks) [m].
+   */
+  struct SurfaceWear
+  {
+    std::vector<unsigned int> bore_areas, pin_areas;
+    std::vector<double>       bore_depth, pin_depth;
+
+    void
+    clear()
+    {
+      bore_areas.clear();
+      pin_areas.clear();
+      bore_depth.clear();
+      pin_depth.clear();
+    }
+  };
+
   class PressureModel
   {
   public:
@@ -110,6 +148,42 @@ namespace wearlink::contact
      */
     virtual void
     evaluate(const ContactLoad &load, SurfacePressure &out) = 0;
+
+    /**
+     * The pressure of a load state during which the surfaces wear by @p c × p: the
+     * sequential wear update (wear/archard.h) removes c × p after the state, so that the
+     * next state meets the worn surfaces. A model that solves the contact with the wear
+     * in series with its own compliance returns the pressure at the state's end (the
+     * backward-Euler step, stable for any c: winkler, fe); the default returns
+     * evaluate()'s pressure, which is a stable step while c.total() ≤
+     * stable_compliance(load) (the caller splits a state that exceeds it).
+     */
+    virtual void
+    evaluate_wearing(const ContactLoad &load, const WearCompliance & /*c*/, SurfacePressure &out)
+    {
+      evaluate(load, out);
+    }
+
+    /**
+     * The largest wear compliance c.total() [m/Pa] for which evaluate_wearing() of
+     * @p load is a stable explicit step: about the reciprocal of the contact's stiffness
+     * against a change of shape of the worn surfaces at the contact width. +∞ for models
+     * whose evaluate_wearing() is implicit. Call after evaluate_wearing() of the same
+     * load (models may keep what they computed there).
+     */
+    virtual double
+    stable_compliance(const ContactLoad & /*load*/) const
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+
+    /**
+     * Remove @p wear from the model's current profiles (the sequential wear update, after
+     * each load state), as a cheap local update; update_geometry() with the iteration's
+     * end profiles follows at the end of the iteration.
+     */
+    virtual void
+    remove_material(const SurfaceWear &wear) = 0;
 
     /**
      * Wall time spent so far in the model's heavy phases (the fe model: meshing, FE

@@ -70,11 +70,13 @@ namespace wearlink::fe
     class WindowCompliance
     {
     public:
-      WindowCompliance(const ElasticityProblem &problem,
-                       BoundaryCompliance      &compliance,
-                       const ContactKinematics &kin,
-                       Workspace               &work)
+      WindowCompliance(const ElasticityProblem   &problem,
+                       BoundaryCompliance        &compliance,
+                       const ContactKinematics   &kin,
+                       Workspace                 &work,
+                       const std::vector<double> &wear_diagonal)
         : kin(kin)
+        , wear_diagonal(wear_diagonal)
         , compliance(compliance)
         , w(kin.candidates.size())
         , n_pin(problem.pin_nodes.size())
@@ -367,13 +369,16 @@ namespace wearlink::fe
                 i = 0;
               }
           }
+        if (!wear_diagonal.empty())
+          col[p] += wear_diagonal[kin.candidates[p]];
       }
 
-      const ContactKinematics &kin;
-      BoundaryCompliance      &compliance;
-      const unsigned int       w, n_pin, n_bore;
-      unsigned int             n_rows = 0;
-      std::vector<int>         row_of; ///< row of each bore node in the field, −1 outside the window
+      const ContactKinematics   &kin;
+      const std::vector<double> &wear_diagonal; ///< CondensedContactSolver::set_wear_diagonal()
+      BoundaryCompliance        &compliance;
+      const unsigned int         w, n_pin, n_bore;
+      unsigned int               n_rows = 0;
+      std::vector<int>           row_of; ///< row of each bore node in the field, −1 outside the window
       /** Runs of consecutive bore nodes: (first row, first node, length). */
       std::vector<std::tuple<unsigned int, unsigned int, unsigned int>> runs;
       std::array<std::vector<unsigned int>, 3>                          row; ///< per face node m: its row, per position
@@ -1484,7 +1489,7 @@ namespace wearlink::fe
       {
         double threshold = 0;
         kin              = load_bracketing_window(paired, force_control, load, T, threshold);
-        WindowCompliance A(problem, compliance, kin, *workspace);
+        WindowCompliance A(problem, compliance, kin, *workspace, wear_diagonal);
         WindowState      st;
         st.lambda.assign(kin.g0.size(), 0.0);
         st.active = starting_set(kin, clearance, warm, force_control, load);

@@ -209,6 +209,19 @@ namespace wearlink::fe
     const CondensedTimings &
     timings() const;
 
+    /**
+     * Gap opened per unit force per length at each pin candidate by the surfaces' wear
+     * during the load state [m²/N] (indexed by pin node; empty: none): the diagonal the
+     * sequential wear update adds to the compliance, c / ∫N_i ds for a wear compliance
+     * c [m/Pa] (so that A λ includes the worn depth c p_i and the state is solved at the
+     * end of its own wear: backward Euler). Set before solve(); clear after.
+     */
+    void
+    set_wear_diagonal(std::vector<double> diagonal)
+    {
+      wear_diagonal = std::move(diagonal);
+    }
+
     /** Load states that needed the monotone phase (see solve()). */
     unsigned long
     n_monotone_solves() const
@@ -288,6 +301,7 @@ namespace wearlink::fe
     unsigned long            n_monotone = 0;
     /** Memory the load states reuse (gathered columns, factor). */
     std::unique_ptr<condensed_detail::Workspace> workspace;
+    std::vector<double>                          wear_diagonal; ///< see set_wear_diagonal()
   };
 
   class ReferenceContactSolver

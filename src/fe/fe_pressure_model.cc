@@ -98,11 +98,13 @@ namespace wearlink::fe
   // body angles to 17 digits), so that `wearlink contact` with the worn profiles of the
   // run's checkpoint reproduces it.
   ContactResult
-  FePressureModel::solve_or_explain(const contact::ContactLoad &load)
+  FePressureModel::solve_or_explain(const contact::ContactLoad &load, const double wear_compliance)
   {
     try
       {
-        return model->solve(load_case(load), SolverKind::condensed);
+        auto lc            = load_case(load);
+        lc.wear_compliance = wear_compliance;
+        return model->solve(lc, SolverKind::condensed);
       }
     catch (const NumericalError &e)
       {
@@ -145,5 +147,30 @@ namespace wearlink::fe
       return;
     use_profiles(*model, geometry);
     out = model->surface_pressure(solve_or_explain(load));
+  }
+
+  void
+  FePressureModel::evaluate_wearing(const contact::ContactLoad    &load,
+                                    const contact::WearCompliance &c,
+                                    contact::SurfacePressure      &out)
+  {
+    AssertThrow(model != nullptr, dealii::ExcMessage("The fe pressure model was evaluated before update_geometry()."));
+    out.pin.assign(geometry.pin.n_points(), 0.0);
+    out.bore.assign(geometry.bore.n_points(), 0.0);
+    if (load.force[0] == 0 && load.force[1] == 0)
+      return;
+    use_profiles(*model, geometry);
+    out = model->surface_pressure(solve_or_explain(load, c.total()));
+  }
+
+  void
+  FePressureModel::remove_material(const contact::SurfaceWear &w)
+  {
+    auto &bore = geometry.bore.samples();
+    auto &pin  = geometry.pin.samples();
+    for (std::size_t i = 0; i < w.bore_areas.size(); ++i)
+      bore[w.bore_areas[i]] += w.bore_depth[i];
+    for (std::size_t i = 0; i < w.pin_areas.size(); ++i)
+      pin[w.pin_areas[i]] -= w.pin_depth[i];
   }
 } // namespace wearlink::fe

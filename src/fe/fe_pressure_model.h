@@ -35,6 +35,20 @@ namespace wearlink::fe
     void
     evaluate(const contact::ContactLoad &load, contact::SurfacePressure &out) override;
 
+    /**
+     * The condensed solve with the state's wear in series with the FE compliance (the
+     * gap at each pin node opens by c × its pressure): the pressure at the end of the
+     * state's wear, a backward-Euler step stable for any c.
+     */
+    void
+    evaluate_wearing(const contact::ContactLoad    &load,
+                     const contact::WearCompliance &c,
+                     contact::SurfacePressure      &out) override;
+
+    /** The worn areas enter the current profiles (and the kept mesh's gaps at the next solve). */
+    void
+    remove_material(const contact::SurfaceWear &wear) override;
+
     bool
     requires_fe_geometry() const override
     {
@@ -67,7 +81,7 @@ namespace wearlink::fe
   private:
     /** The condensed solve of @p load; NumericalError naming the load state if it fails. */
     ContactResult
-    solve_or_explain(const contact::ContactLoad &load);
+    solve_or_explain(const contact::ContactLoad &load, double wear_compliance = 0);
 
     const FeSettings                 settings;
     unsigned int                     mesh_counter = 0;

@@ -3,6 +3,7 @@
 
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "fe/boundary_compliance.h"
 #include "fe/contact_solver.h"
 #include "fe/elasticity_problem.h"
@@ -162,10 +163,11 @@ namespace wearlink::fe
           const Tensor<1, 2> F = rotate(tensor(load.load), -load.bushing_angle);
           if (!(F.norm() > 0) || !std::isfinite(F.norm()))
             throw InputError("A force-controlled load state needs a finite, non-zero load.");
-          P                    = F / L;
-          closure              = predicted_approach(P.norm(),
+          P       = F / L;
+          closure = predicted_approach(P.norm(),
                                        problem->effective_modulus(),
-                                       geometry.bore.mean_radius() - geometry.pin.mean_radius());
+                                       geometry.bore.mean_radius() - geometry.pin.mean_radius()) +
+                    wear_closure(load.wear_compliance, P.norm());
           const Tensor<1, 2> d = F / F.norm();
           e                    = rigid_rest_position(geometry.bore, geometry.pin, relative_angle, d) + closure * d;
         }
@@ -178,8 +180,29 @@ namespace wearlink::fe
       pose.eccentricity   = e;
       pose.pin_offsets    = pin_offsets.empty() ? nullptr : &pin_offsets;
       ContactKinematics kin;
-      ContactSolution   sol = kind == SolverKind::condensed ? condensed->solve(pose, force_control, P, closure, kin) :
-                                                              reference_solve(pose, force_control, P, kin);
+      if (load.wear_compliance > 0)
+        {
+          AssertThrow(kind == SolverKind::condensed && force_control,
+                      ExcMessage("A load state's wear compliance needs the condensed solver under force control."));
+          std::vector<double> diagonal(problem->pin_nodes.size());
+          for (unsigned int i = 0; i < diagonal.size(); ++i)
+            diagonal[i] = load.wear_compliance / problem->pin_nodes[i].weight;
+          condensed->set_wear_diagonal(std::move(diagonal));
+        }
+      ContactSolution sol;
+      try
+        {
+          sol = kind == SolverKind::condensed ? condensed->solve(pose, force_control, P, closure, kin) :
+                                                reference_solve(pose, force_control, P, kin);
+        }
+      catch (...)
+        {
+          if (condensed)
+            condensed->set_wear_diagonal({});
+          throw;
+        }
+      if (load.wear_compliance > 0)
+        condensed->set_wear_diagonal({});
       ++n_solves;
       ContactResult r = result(load, kin, sol, e);
       r.iterations    = sol.iterations;
@@ -193,6 +216,20 @@ namespace wearlink::fe
         }
       r.solve_time = seconds_since(start);
       return r;
+    }
+
+    // How much deeper the pin goes into surfaces that wear by c p during the state: the
+    // worn depth under the mean pressure of the nominal Hertz strip, c P/(2b). An
+    // estimate for the start and the first window only (the window widens if the
+    // solution needs it).
+    double
+    wear_closure(const double c, const double line_load) const
+    {
+      if (!(c > 0))
+        return 0;
+      const double r1 = geometry.bore.mean_radius(), r2 = geometry.pin.mean_radius();
+      const double b = std::sqrt(4 * line_load * r1 * r2 / (r1 - r2) / (numbers::pi * problem->effective_modulus()));
+      return c * line_load / (2 * b);
     }
 
     // The reference solver's path: every candidate, the same linearizations and

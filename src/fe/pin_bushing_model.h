@@ -56,6 +56,12 @@ namespace wearlink::fe
     std::array<double, 2> load{};
     /** Displacement control: pin centre − bore centre, global [m]. */
     std::array<double, 2> eccentricity{};
+    /**
+     * Depth both surfaces together wear per unit pressure during the state [m/Pa]
+     * (the sequential wear update; condensed solver only): the state is solved at the
+     * end of its own wear, the gap at each pin node opened by this × its pressure.
+     */
+    double wear_compliance = 0;
   };
 
   /** Result of one load state. */

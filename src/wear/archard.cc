@@ -38,6 +38,8 @@ namespace wearlink::wear
   {
     bore_depth_.assign(geometry.bore.n_points(), 0.0);
     pin_depth_.assign(geometry.pin.n_points(), 0.0);
+    pending_bore = {std::vector<double>(geometry.bore.n_points(), 0.0), {}};
+    pending_pin  = {std::vector<double>(geometry.pin.n_points(), 0.0), {}};
     bore_volume = pin_volume = bore_archard = pin_archard = sliding_distance = 0;
   }
 
@@ -61,22 +63,84 @@ namespace wearlink::wear
     if (!(s.load.normal_force > 0) || !(std::abs(s.sliding_speed) > 0) || !(s.weight > 0))
       return;
     ++pressure_evaluations;
-    model.evaluate(s.load, pressure);
-    deposit(s, pressure.bore, pressure.pin);
+    if (!(sequential_factor > 0))
+      {
+        model.evaluate(s.load, pressure);
+        deposit(s, pressure.bore, pressure.pin);
+        return;
+      }
+    const auto c = compliance(s, 1.0);
+    model.evaluate_wearing(s.load, c, pressure);
+    const unsigned int n    = parts(s.load, c);
+    LoadSample         part = s;
+    part.weight             = s.weight / n;
+    for (unsigned int m = 0; m < n; ++m)
+      {
+        if (m > 0)
+          {
+            ++pressure_evaluations;
+            model.evaluate_wearing(s.load, compliance(part, 1.0), pressure);
+          }
+        deposit(part, pressure.bore, pressure.pin);
+        flush();
+      }
+  }
+
+  contact::WearCompliance
+  ArchardAccumulator::compliance(const LoadSample &s, const double scale) const
+  {
+    const double ds = sequential_factor * std::abs(s.sliding_speed) * s.weight * scale;
+    return {k_bore * ds, k_pin * ds};
+  }
+
+  unsigned int
+  ArchardAccumulator::parts(const contact::ContactLoad &load, const contact::WearCompliance &c)
+  {
+    constexpr double max_parts = 4096; // a bound, far above what a scene needs (split_states counts them)
+    const double     stable    = model.stable_compliance(load);
+    if (!(c.total() > stable))
+      return 1;
+    ++split_states;
+    return static_cast<unsigned int>(std::min(max_parts, std::ceil(c.total() / stable)));
+  }
+
+  void
+  ArchardAccumulator::flush()
+  {
+    removed.clear();
+    for (const unsigned int k : pending_bore.areas)
+      {
+        removed.bore_areas.push_back(k);
+        removed.bore_depth.push_back(sequential_factor * pending_bore.depth[k]);
+        pending_bore.depth[k] = 0;
+      }
+    for (const unsigned int k : pending_pin.areas)
+      {
+        removed.pin_areas.push_back(k);
+        removed.pin_depth.push_back(sequential_factor * pending_pin.depth[k]);
+        pending_pin.depth[k] = 0;
+      }
+    pending_bore.areas.clear();
+    pending_pin.areas.clear();
+    if (!removed.bore_areas.empty() || !removed.pin_areas.empty())
+      model.remove_material(removed);
   }
 
   void
   ArchardAccumulator::deposit(const LoadSample &s, const std::vector<double> &bore, const std::vector<double> &pin)
   {
-    const double speed  = std::abs(s.sliding_speed);
-    const double f_bore = s.weight * k_bore * speed;
-    const double f_pin  = s.weight * k_pin * speed;
+    const double speed      = std::abs(s.sliding_speed);
+    const double f_bore     = s.weight * k_bore * speed;
+    const double f_pin      = s.weight * k_pin * speed;
+    const bool   sequential = sequential_factor > 0;
     for (unsigned int k = 0; k < bore_depth_.size(); ++k)
       if (bore[k] > 0)
         {
           const double dh = f_bore * bore[k];
           bore_depth_[k] += dh;
           bore_volume += dh * bore_area(k);
+          if (sequential && dh > 0)
+            pending_bore.add(k, dh);
         }
     for (unsigned int k = 0; k < pin_depth_.size(); ++k)
       if (pin[k] > 0)
@@ -84,6 +148,8 @@ namespace wearlink::wear
           const double dh = f_pin * pin[k];
           pin_depth_[k] += dh;
           pin_volume += dh * pin_area(k);
+          if (sequential && dh > 0)
+            pending_pin.add(k, dh);
         }
     bore_archard += f_bore * s.load.normal_force;
     pin_archard += f_pin * s.load.normal_force;
@@ -150,12 +216,57 @@ namespace wearlink::wear
               key = end;
             ++end;
           }
-        ++pressure_evaluations;
-        model.evaluate(h[key].load, pressure);
+        add_window(h, begin, end, key);
+        begin = end;
+      }
+  }
+
+  // Sequentially, the window's wear is one load state of the key's pressure shape: its
+  // compliance is the sum of the samples' compliances, each scaled by F_n/F_n,key (the
+  // shape is scaled to each sample's load), and the surfaces are worn after the window.
+  void
+  ArchardAccumulator::add_window(const std::vector<LoadSample> &h,
+                                 const std::size_t              begin,
+                                 const std::size_t              end,
+                                 const std::size_t              key)
+  {
+    const auto &k = h[key];
+    ++pressure_evaluations;
+    if (!(sequential_factor > 0))
+      {
+        model.evaluate(k.load, pressure);
         const contact::SurfacePressure key_pressure = pressure;
         for (std::size_t i = begin; i < end; ++i)
-          add_shaped(h[i], h[key], key_pressure);
-        begin = end;
+          add_shaped(h[i], k, key_pressure);
+        return;
+      }
+    if (!(k.load.normal_force > 0))
+      return;
+    contact::WearCompliance c;
+    for (std::size_t i = begin; i < end; ++i)
+      if (h[i].load.normal_force > 0 && h[i].weight > 0)
+        {
+          const auto ci = compliance(h[i], h[i].load.normal_force / k.load.normal_force);
+          c.bore += ci.bore;
+          c.pin += ci.pin;
+        }
+    model.evaluate_wearing(k.load, c, pressure);
+    const unsigned int n = parts(k.load, c);
+    for (unsigned int m = 0; m < n; ++m)
+      {
+        if (m > 0)
+          {
+            ++pressure_evaluations;
+            model.evaluate_wearing(k.load, {c.bore / n, c.pin / n}, pressure);
+          }
+        const contact::SurfacePressure key_pressure = pressure;
+        for (std::size_t i = begin; i < end; ++i)
+          {
+            LoadSample part = h[i];
+            part.weight /= n;
+            add_shaped(part, k, key_pressure);
+          }
+        flush();
       }
   }
 } // namespace wearlink::wear

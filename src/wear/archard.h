@@ -17,6 +17,22 @@
 //     the equilibrium tolerance for fe; for wide conformal arcs the load is the vector
 //     sum of the pressures and Σ p A > F_n, which is why the local form is the one that
 //     is removed from the profiles).
+//
+// Two ways to apply an iteration's wear (Wear/Wear update):
+//   - simultaneous: every state of the history is evaluated on the iteration's start
+//     geometry and the sum is extrapolated by f at the end (the seed's route). Where a
+//     load dwells, one explicit step × f digs far deeper than the contact's elastic
+//     approach (tens of µm against ~0.1 µm): the next iteration's contact sits on the
+//     trench's edges, and the profile grows saw-tooth spikes between neighbouring areas.
+//   - sequential: the states are taken in time order and each state's wear, × f, is
+//     removed from the pressure model's surfaces at once (PressureModel::remove_material),
+//     so that the next state meets the worn surfaces, as the wear of f repetitions of the
+//     history would. Each state is a step of the wear–pressure feedback with the wear
+//     compliance c = f k_D |v_t| Δt [m/Pa]: implicit models (winkler, fe) take it in one
+//     step; an explicit one (hertz-strip) splits a state whose c exceeds its
+//     stable_compliance() into equal parts evaluated one after the other. The depths
+//     kept here are still per factor 1 (the update applies f × them), so the volumes
+//     and the records are as in the simultaneous update.
 #pragma once
 
 #include "contact/pressure_model.h"
@@ -47,6 +63,16 @@ namespace wearlink::wear
                        double                        pin_coefficient,
                        contact::PressureModel       &model);
 
+    /**
+     * Apply the wear sequentially with extrapolation factor @p factor (> 0; see the file
+     * comment), or simultaneously (0, the default). Set before adding samples.
+     */
+    void
+    set_sequential_factor(double factor)
+    {
+      sequential_factor = factor;
+    }
+
     /** Add the wear of one sample: weight × k_D p |v_t| on every area. */
     void
     add(const LoadSample &sample);
@@ -55,7 +81,8 @@ namespace wearlink::wear
      * Add the wear of @p sample with the pressure shape the model computed for
      * @p key (@p key_pressure): scaled by F_n/F_n,key and turned, on each surface, by
      * the change of the contact direction in that surface's frame (fractional shift by
-     * linear interpolation, which conserves Σ p on a periodic grid). No model call.
+     * linear interpolation, which conserves Σ p on a periodic grid). No model call;
+     * the sequential update wears the surfaces after the whole window (add_history).
      */
     void
     add_shaped(const LoadSample &sample, const LoadSample &key, const contact::SurfacePressure &key_pressure);
@@ -104,15 +131,50 @@ namespace wearlink::wear
     double pin_archard          = 0; ///< the same with the pin's k_D [m³]
     double sliding_distance     = 0; ///< ∫ |v_t| dt over the loaded samples [m]
     long   pressure_evaluations = 0;
+    /** Sequential update: load states split because their wear compliance exceeded the model's stable one. */
+    long split_states = 0;
 
   private:
     void
     deposit(const LoadSample &s, const std::vector<double> &bore, const std::vector<double> &pin);
+
+    /** The wear compliance of @p s scaled by @p scale, for the sequential factor. */
+    contact::WearCompliance
+    compliance(const LoadSample &s, double scale) const;
+
+    /** Sequential update: remove factor × the pending depths from the model's surfaces. */
+    void
+    flush();
+
+    /** Into how many parts a state of wear compliance @p c is split (sequential update). */
+    unsigned int
+    parts(const contact::ContactLoad &load, const contact::WearCompliance &c);
+
+    /** One window of the history (samples update): its key's shape on every sample. */
+    void
+    add_window(const std::vector<LoadSample> &h, std::size_t begin, std::size_t end, std::size_t key);
+
+    /** Depth added since the last flush, per area, and the areas it touched. */
+    struct Pending
+    {
+      std::vector<double>       depth;
+      std::vector<unsigned int> areas;
+      void
+      add(unsigned int k, double dh)
+      {
+        if (depth[k] == 0)
+          areas.push_back(k);
+        depth[k] += dh;
+      }
+    };
 
     contact::JointGeometry   geometry;
     const double             k_bore, k_pin;
     contact::PressureModel  &model;
     contact::SurfacePressure pressure;
     std::vector<double>      bore_depth_, pin_depth_, shifted_bore, shifted_pin;
+    double                   sequential_factor = 0;
+    Pending                  pending_bore, pending_pin;
+    contact::SurfaceWear     removed; ///< scratch of flush()
   };
 } // namespace wearlink::wear

@@ -133,11 +133,14 @@ namespace wearlink::wear
     throw_if_interrupted();
     const double t_start    = st.time;
     const auto   loads      = record_loads(extra_observers, t_start + settings.cycles_per_iteration * period);
-    const auto   increments = archard_increments(*loads, t_start);
+    const double planned    = planned_factor(*loads, t_start);
+    auto         increments = archard_increments(*loads, t_start, planned);
     Stopwatch    bookkeeping;
     double       factor = extrapolation_factor(increments);
     if (factor_limit)
       factor = std::max(0.0, std::min(factor, factor_limit(preview(increments, factor))));
+    if (settings.update == WearUpdate::sequential && factor < planned * (1 - 1e-9))
+      increments = archard_increments(*loads, t_start, factor); // the wear took its path at the planned factor
     for (unsigned int i = 0; i < wearing.size(); ++i)
       update_profiles(i, *increments[i], *loads, factor);
     st.factors.push_back(factor);
@@ -173,8 +176,21 @@ namespace wearlink::wear
     return loads;
   }
 
+  double
+  WearLoop::planned_factor(const LoadRecorder &loads, const double t_start)
+  {
+    if (settings.update != WearUpdate::sequential)
+      return 0;
+    if (settings.extrapolation != Extrapolation::adaptive)
+      return settings.extrapolation_factor;
+    const double remaining = (settings.target_revolutions - st.revolutions) / settings.cycles_per_iteration;
+    if (!st.factors.empty() && st.factors.back() > 0)
+      return std::min(st.factors.back(), remaining);
+    return extrapolation_factor(archard_increments(loads, t_start, 0)); // the first: as a simultaneous step says
+  }
+
   std::vector<std::unique_ptr<ArchardAccumulator>>
-  WearLoop::archard_increments(const LoadRecorder &loads, const double t_start)
+  WearLoop::archard_increments(const LoadRecorder &loads, const double t_start, const double sequential_factor)
   {
     std::vector<std::unique_ptr<ArchardAccumulator>> increments;
     peaks.assign(wearing.size(), contact::ContactLoad());
@@ -184,11 +200,13 @@ namespace wearlink::wear
           if (s.load.normal_force > peaks[i].normal_force)
             peaks[i] = s.load;
         const auto &w = *wearing[i].wear;
-        increments.push_back(std::make_unique<ArchardAccumulator>(geometry(i, st.joints[i].bore, st.joints[i].pin),
-                                                                  w.archard.bushing_coefficient,
-                                                                  w.archard.pin_coefficient,
-                                                                  *w.model));
-        Stopwatch evaluation;
+        const auto  g = geometry(i, st.joints[i].bore, st.joints[i].pin);
+        Stopwatch   evaluation;
+        if (sequential_factor > 0) // the surfaces of the iteration's start (a second pass meets worn ones)
+          w.model->update_geometry(g);
+        increments.push_back(
+          std::make_unique<ArchardAccumulator>(g, w.archard.bushing_coefficient, w.archard.pin_coefficient, *w.model));
+        increments[i]->set_sequential_factor(sequential_factor);
         increments[i]->add_history(loads.samples(i),
                                    settings.evaluation == PressureEvaluation::every_step,
                                    period / settings.samples_per_cycle,

@@ -226,9 +226,21 @@ namespace wearlink::wear
     std::unique_ptr<LoadRecorder>
     record_loads(const std::vector<mbs::StepObserver *> &extra_observers, double t_end);
 
-    /** Step 2. Archard depths and volumes of this iteration, per wearing joint. */
+    /**
+     * The factor the sequential update wears the surfaces with (0 for the simultaneous
+     * update): the fixed factor; adaptive, the previous iteration's (within Target
+     * revolutions), or for the first iteration what a simultaneous step chooses.
+     */
+    double
+    planned_factor(const LoadRecorder &loads, double t_start);
+
+    /**
+     * Step 2. Archard depths and volumes of this iteration, per wearing joint, with the
+     * sequential update at @p sequential_factor (0: simultaneous; wear/archard.h). If
+     * step 3 then takes a smaller factor, the sequential pass is made again with it.
+     */
     std::vector<std::unique_ptr<ArchardAccumulator>>
-    archard_increments(const LoadRecorder &loads, double t_start);
+    archard_increments(const LoadRecorder &loads, double t_start, double sequential_factor);
 
     /** Step 3. The factor this iteration stands for (see WearLoopSettings). */
     double

@@ -161,6 +161,21 @@ namespace wearlink::wear
               "affordable setting for fe).",
               "none");
       declare(prm,
+              "Wear update",
+              "sequential",
+              P::Selection("sequential|simultaneous"),
+              "How an iteration's wear reaches the surfaces. 'sequential': the load states "
+              "of the iteration are taken in time order and each one's wear, × the "
+              "extrapolation factor, is removed from the pressure model's surfaces at once, "
+              "so that the next state meets the worn surfaces (as f repetitions of the "
+              "history would); each state is a step of the wear–pressure feedback, implicit "
+              "for winkler and fe, split into stable parts for hertz-strip. 'simultaneous': "
+              "every state is evaluated on the iteration's start geometry and the sum is "
+              "extrapolated at the end (the seed's route): where a load dwells, one step × "
+              "f digs far deeper than the contact's elastic approach and the profile grows "
+              "saw-tooth spikes between neighbouring areas.",
+              "none");
+      declare(prm,
               "Load samples per cycle",
               "100",
               P::Integer(8, 100000),
@@ -306,6 +321,7 @@ namespace wearlink::wear
       r.get("Clearance model") == "exact" ? contact::ClearanceForm::exact : contact::ClearanceForm::per_area;
     s.evaluation =
       r.get("Pressure evaluation") == "every step" ? PressureEvaluation::every_step : PressureEvaluation::samples;
+    s.update               = r.get("Wear update") == "sequential" ? WearUpdate::sequential : WearUpdate::simultaneous;
     s.samples_per_cycle    = static_cast<unsigned int>(r.get_integer("Load samples per cycle"));
     s.smoothing_wavelength = r.get_double("Smoothing wavelength");
     s.response_cycles      = r.get_double("Response cycles");

@@ -52,6 +52,13 @@ namespace wearlink::wear
     samples     ///< once per 1/N cycle; the window's steps reuse that shape
   };
 
+  /** How an iteration's wear is applied (wear/archard.h). */
+  enum class WearUpdate
+  {
+    sequential,  ///< each load state's wear × f at once, in time order
+    simultaneous ///< every state on the start geometry, × f at the end (the seed's route)
+  };
+
   /** The wear loop of a scene ("Wear" section). */
   struct WearLoopSettings
   {
@@ -65,6 +72,7 @@ namespace wearlink::wear
     double                 target_revolutions   = 0; ///< adaptive: stop there [-]
     contact::ClearanceForm clearance_form       = contact::ClearanceForm::exact;
     PressureEvaluation     evaluation           = PressureEvaluation::every_step;
+    WearUpdate             update               = WearUpdate::sequential;
     unsigned int           samples_per_cycle    = 100;
     double                 smoothing_wavelength = 0; ///< low-pass of the depth increments [m]; 0: none
     double                 response_cycles      = 1; ///< before/after response [cycles]

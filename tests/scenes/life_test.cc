@@ -71,10 +71,11 @@ TEST(Life, ReachesTheAnalyticRevolutionsOfAConstantWearRate)
       EXPECT_NEAR(json_number(o.at("hours")), n * 0.2 / 3600, 1e-12 * n) << "T = 0.2 s per revolution";
     }
   EXPECT_EQ(life.at("first_criterion").get<std::string>(), "pin_mass_loss");
-  // The run ends at the last criterion (its iteration lands on it, to rounding), not at
-  // Life/Maximum revolutions (1e9).
+  // The run ends at the last criterion, not at Life/Maximum revolutions (1e9): its
+  // iteration lands on it to within what the sequential update's increments change
+  // between the factor planned and the one landed (here ~1e-7 of the life).
   const double last = json_number(life.at("criteria").at("bushing_mass_loss").at("revolutions"));
-  EXPECT_NEAR(json_number(life.at("revolutions_run")), last, 1e-9 * last);
+  EXPECT_NEAR(json_number(life.at("revolutions_run")), last, 1e-6 * last);
   EXPECT_TRUE(std::filesystem::exists(dir + "/life_history.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/life.png"));
 }

@@ -1,19 +1,39 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// `hertz-strip`: the seed's simplified pressure model. The normal force F_n of the
-// multibody contact law is spread over a Hertz line-contact strip (REFERENCE.md §5,
-// Johnson ch. 4) centred on the contact direction φ*:
-//     P = F_n / L,  1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2,  R* = R1 R2/(R1 − R2),
+// `hertz-strip`: the multibody normal force F_n spread over a Hertz line-contact strip
+// (Johnson, Contact Mechanics ch. 4; doc/models.md):
+//     P = F_n / L,  1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2,
 //     b = √(4 P R*/(π E*)),  p0 = 2P/(π b),  p(s) = p0 √(1 − s²/b²), |s| ≤ b,
-// with s the arc length from the contact point. R1, R2 are the profiles' radii at the
-// contact direction (the worn per-area radii of seed eqs 28–31). Each discrete area
-// receives the average of p over its arc, integrated in closed form
+// with s the arc length from the strip's centre. Each discrete area receives the
+// average of p over its arc, integrated in closed form
 //     ∫ p ds = p0 b/2 [u √(1 − u²) + asin u],  u = s/b,
-// so Σ p̄_k L R Δψ = F_n exactly even when the strip is narrower than one area (a fresh
-// joint: b ≈ 0.1 mm against 0.2 mm areas at 360 areas). The worn shape enters only
-// through the local radii: that is this model's limitation (Mukras et al. 2010).
+// so Σ p̄_k L R Δψ = F_n exactly even when the strip is narrower than one area.
+//
+// Where the strip sits and how wide it is (entry "Relative radius"):
+//  - conforming (default): from the worn surfaces over the strip's own width. Between
+//    the pin pushed along the contact direction φ0 and the bore, the radial gap is
+//    g(φ) = h(φ) − h(φ0) cos(φ − φ0), h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p); its
+//    least-squares parabola over the strip's half-angle (exact Legendre moments of the
+//    piecewise-linear profiles) gives the curvature of the gap, g'' = h(φ0) + h''
+//    [m/rad²], hence 1/R* = g''/(R1 R2) (= 1/R2 − 1/R1 for round profiles: the classic
+//    internal R*), and the vertex, where the strip is centred. The half-width and the
+//    window are made consistent (b from the curvature over ±b). A worn pocket whose
+//    curvature approaches the pin's spreads the pressure, as an elastic contact of a
+//    conforming pair does; features shorter than the contact width are averaged out
+//    instead of deciding where a rigid contact touches (a 1 µm saw-tooth between 1°
+//    areas moves a rigid contact point by several degrees).
+//  - local radii: the seed's route (its eqs 28–31): R* = R1 R2/(R1 − R2) from the
+//    radii at φ0, the strip centred at φ0. A pocket worn deeper reads as a larger bore
+//    radius, hence a narrower strip and a higher peak: wear concentrates where there is
+//    most. Kept to compare with the seed.
 // Hertz's theory assumes a contact narrow against the radii; a half-angle b/R2 past 90°
-// (a strip wider than half the pin: soft materials, high loads, a conforming worn pair)
-// is far outside it, and check_validity() warns with the worst half-angle evaluated.
+// (a strip wider than half the pin: soft materials, high loads, a fully conforming worn
+// pair) is far outside it, and check_validity() warns with the worst half-angle.
+//
+// The model is explicit: evaluate_wearing() returns the strip of the current surfaces.
+// Against a change of the surfaces' shape at the contact width its stiffness is E*/(2b)
+// (a dent of depth δ at the centre widens the strip and lowers p0 by δ E*/(2b)), so a
+// load state is a stable step of the sequential wear update while its wear compliance is
+// below 2b/E* (stable_compliance()).
 #include "base/numbers.h"
 #include "base/parameters.h"
 #include "base/text.h"
@@ -21,6 +41,7 @@
 #include "contact/pressure_model.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace wearlink::contact
@@ -28,6 +49,7 @@ namespace wearlink::contact
   namespace
   {
     using numbers::pi;
+    using numbers::two_pi;
 
     /** ∫_{-b}^{x} p0 √(1 − s²/b²) ds / (p0 b), clamped to the strip. */
     double
@@ -47,41 +69,109 @@ namespace wearlink::contact
       return a - pi;
     }
 
+    /**
+     * Legendre coefficients (c0, c1, c2) of a profile's radius less @p ref over
+     * [ψc − w, ψc + w]: R(ψc + w t) − ref ≈ c0 + c1 t + c2 (3t² − 1)/2, the least-squares
+     * parabola. The profile is linear between its samples, so each segment's moments are
+     * integrated exactly (two Gauss points per segment: the integrand is a cubic).
+     * @p w ≤ π. With ref the mean radius the moments of a round profile are exactly 0
+     * (the curvature 3 c2/w² would otherwise carry the rounding of R/w²).
+     */
+    std::array<double, 3>
+    legendre_moments(const std::vector<double> &r, const double centre, const double w, const double ref)
+    {
+      const long   n  = static_cast<long>(r.size());
+      const double d  = two_pi / n;
+      const double lo = centre - w, hi = centre + w;
+      const double g  = 1 / std::sqrt(3.0);
+      long         k  = static_cast<long>(std::floor(lo / d)); // the segment [k d, (k + 1) d] holds lo
+      long         i  = ((k % n) + n) % n;
+      double       a  = lo;
+      double       m0 = 0, m1 = 0, m2 = 0;
+      while (a < hi)
+        {
+          const long   j   = i + 1 == n ? 0 : i + 1;
+          const double x0  = k * d;
+          const double b   = std::min(hi, x0 + d);
+          const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+          const double r0 = r[i] - ref, slope = (r[j] - r[i]) / d;
+          for (const double x : {mid - g * half, mid + g * half})
+            {
+              const double t   = (x - centre) / w;
+              const double rad = r0 + slope * (x - x0);
+              m0 += half * rad;
+              m1 += half * rad * t;
+              m2 += half * rad * (1.5 * t * t - 0.5);
+            }
+          a = b;
+          ++k;
+          i = j;
+        }
+      // c_n = (2n + 1)/2 ∫_{-1}^{1} R P_n dt, and dt = dψ / w.
+      return {{0.5 * m0 / w, 1.5 * m1 / w, 2.5 * m2 / w}};
+    }
+
+    /** Where the strip sits: centre φc (global), half-width b, and the radii there. */
+    struct Strip
+    {
+      double centre = 0, half_width = 0, peak = 0;
+      double bore_radius = 0, pin_radius = 0;
+    };
+
     class HertzStrip : public PressureModel
     {
     public:
-      explicit HertzStrip(ParameterReader &)
+      explicit HertzStrip(ParameterReader &r)
+        : conforming(r.get("Relative radius") == "conforming")
       {
       }
 
       void
       update_geometry(const JointGeometry &g) override
       {
-        geometry = g;
+        geometry    = g;
+        radius_bore = g.bore.mean_radius();
+        radius_pin  = g.pin.mean_radius();
+        // The most conforming gap admitted: R* at most 1e4 × the nominal one.
+        curvature_floor = 1e-4 * std::max(radius_bore - radius_pin, 1e-9 * radius_bore);
+        min_window      = two_pi / std::min(g.bore.n_points(), g.pin.n_points());
+      }
+
+      void
+      remove_material(const SurfaceWear &w) override
+      {
+        auto &bore = geometry.bore.samples();
+        auto &pin  = geometry.pin.samples();
+        for (std::size_t i = 0; i < w.bore_areas.size(); ++i)
+          bore[w.bore_areas[i]] += w.bore_depth[i];
+        for (std::size_t i = 0; i < w.pin_areas.size(); ++i)
+          pin[w.pin_areas[i]] -= w.pin_depth[i];
       }
 
       void
       evaluate(const ContactLoad &load, SurfacePressure &out) override
       {
-        const auto &bore = geometry.bore;
-        const auto &pin  = geometry.pin;
-        out.bore.assign(bore.n_points(), 0.0);
-        out.pin.assign(pin.n_points(), 0.0);
+        out.bore.assign(geometry.bore.n_points(), 0.0);
+        out.pin.assign(geometry.pin.n_points(), 0.0);
+        last_half_width = 0;
         if (!(load.normal_force > 0))
           return;
-        const double phi       = load.contact_angle;
-        const double r1        = bore.radius(phi - load.bushing_angle);
-        const double r2        = pin.radius(phi - load.pin_angle);
-        const double e_star    = effective_modulus(geometry.bushing, geometry.pin_material);
-        const double r_star    = r1 * r2 / std::max(r1 - r2, 1e-12 * r1);
-        const double line_load = load.normal_force / geometry.axial_length;
-        const auto   hertz     = hertz_line_contact(line_load, r_star, e_star);
-        const double b         = hertz.half_width;
-        const double p0        = hertz.peak_pressure;
-        if (b / r2 > worst.half_angle)
-          worst = {b / r2, load.normal_force};
-        spread(bore, load.bushing_angle, r1, phi, b, p0, out.bore);
-        spread(pin, load.pin_angle, r2, phi, b, p0, out.pin);
+        const Strip s   = conforming ? conforming_strip(load) : local_radii_strip(load);
+        last_half_width = s.half_width;
+        if (s.half_width / s.pin_radius > worst.half_angle)
+          worst = {s.half_width / s.pin_radius, load.normal_force};
+        spread(geometry.bore, load.bushing_angle, s.bore_radius, s.centre, s.half_width, s.peak, out.bore);
+        spread(geometry.pin, load.pin_angle, s.pin_radius, s.centre, s.half_width, s.peak, out.pin);
+      }
+
+      double
+      stable_compliance(const ContactLoad &) const override
+      {
+        // The profile resolves no dent narrower than one area, so the fit's stiffness is
+        // that of a strip at least that wide.
+        if (!(last_half_width > 0))
+          return std::numeric_limits<double>::infinity();
+        return 2 * std::max(last_half_width, radius_pin * min_window) / modulus();
       }
 
       void
@@ -99,6 +189,161 @@ namespace wearlink::contact
       }
 
     private:
+      /** The seed's strip: R* from the radii at φ0, centred at φ0. */
+      Strip
+      local_radii_strip(const ContactLoad &load) const
+      {
+        Strip s;
+        s.centre        = load.contact_angle;
+        s.bore_radius   = geometry.bore.radius(s.centre - load.bushing_angle);
+        s.pin_radius    = geometry.pin.radius(s.centre - load.pin_angle);
+        const double r1 = s.bore_radius, r2 = s.pin_radius;
+        const double r_star = r1 * r2 / std::max(r1 - r2, 1e-12 * r1);
+        const auto   h      = hertz_line_contact(load.normal_force / geometry.axial_length, r_star, modulus());
+        s.half_width        = h.half_width;
+        s.peak              = h.peak_pressure;
+        return s;
+      }
+
+      /**
+       * The conforming strip (file comment). The half-angle w of a Hertz strip satisfies
+       * w² g''(w) = T := 4 P R1 R2/(π E* R2²), with g''(w) the gap's curvature fitted over
+       * ±w; round profiles give the classic strip at once. A worn pocket that conforms
+       * to the pin (g'' → 0 inside it) pushes the root out to where the fit takes in
+       * the pocket's flanks. The root is bracketed from the nominal strip (doubling or
+       * halving w) and found by Illinois regula falsi in w², then the strip is centred at
+       * the fitted vertex of the gap (once more if that moved it by more than a tenth
+       * of w). The fit window is at least one discrete area on each side (a parabola
+       * through fewer samples would read a single kink as a curvature), and w at most π
+       * (the whole pin; past 90° the validity warning says so).
+       */
+      Strip
+      conforming_strip(const ContactLoad &load) const
+      {
+        const double line   = load.normal_force / geometry.axial_length;
+        const double target = 4 * line * radius_bore * radius_pin / (pi * modulus() * radius_pin * radius_pin);
+        double       centre = load.contact_angle;
+        Fit          fit;
+        double       w = 0;
+        for (int pass = 0; pass < 2; ++pass)
+          {
+            w                  = half_angle(load, centre, target, fit);
+            const double shift = std::clamp(-fit.slope / fit.curvature, -fit.window, fit.window);
+            centre += shift;
+            if (std::abs(shift) <= 0.1 * w)
+              break;
+          }
+        Strip s;
+        s.centre      = centre;
+        s.bore_radius = geometry.bore.radius(centre - load.bushing_angle);
+        s.pin_radius  = geometry.pin.radius(centre - load.pin_angle);
+        const auto h  = hertz_line_contact(line, s.bore_radius * s.pin_radius / fit.curvature, modulus());
+        s.half_width  = h.half_width;
+        s.peak        = h.peak_pressure;
+        return s;
+      }
+
+      /** The gap's parabola over a window: curvature g'' [m/rad²] and slope g' [m/rad] at its centre. */
+      struct Fit
+      {
+        double curvature = 0, slope = 0, window = 0;
+      };
+
+      /** The fit of the gap over ±max(@p w, one area) around @p centre. */
+      Fit
+      fit_gap(const ContactLoad &load, const double centre, const double w) const
+      {
+        Fit f;
+        f.window        = std::clamp(w, min_window, pi);
+        const auto   mb = legendre_moments(geometry.bore.samples(), centre - load.bushing_angle, f.window, radius_bore);
+        const auto   mp = legendre_moments(geometry.pin.samples(), centre - load.pin_angle, f.window, radius_pin);
+        const double h0 =
+          (radius_bore - radius_pin) + (mb[0] - 0.5 * mb[2]) - (mp[0] - 0.5 * mp[2]); // h at the centre [m]
+        f.slope     = (mb[1] - mp[1]) / f.window;
+        f.curvature = std::max(h0 + 3 * (mb[2] - mp[2]) / (f.window * f.window), curvature_floor);
+        return f;
+      }
+
+      /**
+       * The root of w² g''(w) = @p target (see conforming_strip), to 1e-12 of the target
+       * (the strip's width then carries no error of its own into the depths); @p fit is
+       * the fit there.
+       */
+      double
+      half_angle(const ContactLoad &load, const double centre, const double target, Fit &fit) const
+      {
+        constexpr double tight  = 1e-12;
+        const auto       excess = [&](const double w, Fit &f) {
+          f = fit_gap(load, centre, w);
+          return w * w * f.curvature - target;
+        };
+        double w_lo = std::sqrt(target / (radius_bore - radius_pin)), w_hi = w_lo;
+        Fit    f_lo, f_hi;
+        double e_lo = excess(w_lo, f_lo), e_hi = e_lo;
+        f_hi = f_lo;
+        if (std::abs(e_lo) <= tight * target) // round profiles: the nominal strip
+          {
+            fit = f_lo;
+            return w_lo;
+          }
+        for (int k = 0; k < 40 && e_hi < 0 && w_hi < pi; ++k)
+          {
+            w_lo = w_hi, e_lo = e_hi, f_lo = f_hi;
+            w_hi = std::min(pi, 2 * w_hi);
+            e_hi = excess(w_hi, f_hi);
+          }
+        for (int k = 0; k < 40 && e_lo > 0 && w_lo > 1e-9; ++k)
+          {
+            w_hi = w_lo, e_hi = e_lo, f_hi = f_lo;
+            w_lo = 0.5 * w_lo;
+            e_lo = excess(w_lo, f_lo);
+          }
+        if (!(e_hi >= 0)) // a strip as wide as the pin
+          {
+            fit = f_hi;
+            return w_hi;
+          }
+        if (!(e_lo <= 0))
+          {
+            fit = f_lo;
+            return w_lo;
+          }
+        // Illinois regula falsi on w² (w² g'' is linear in w² where g'' is constant).
+        double x_lo = w_lo * w_lo, x_hi = w_hi * w_hi;
+        int    side = 0;
+        fit         = std::abs(e_lo) < std::abs(e_hi) ? f_lo : f_hi;
+        double w    = std::abs(e_lo) < std::abs(e_hi) ? w_lo : w_hi;
+        for (int k = 0; k < 100 && x_hi - x_lo > tight * x_hi; ++k)
+          {
+            const double x = e_hi == e_lo ? 0.5 * (x_lo + x_hi) : (x_lo * e_hi - x_hi * e_lo) / (e_hi - e_lo);
+            w              = std::sqrt(x);
+            const double e = excess(w, fit);
+            if (std::abs(e) <= tight * target)
+              break;
+            if (e > 0)
+              {
+                x_hi = x, e_hi = e;
+                if (side == 1)
+                  e_lo *= 0.5;
+                side = 1;
+              }
+            else
+              {
+                x_lo = x, e_lo = e;
+                if (side == -1)
+                  e_hi *= 0.5;
+                side = -1;
+              }
+          }
+        return w;
+      }
+
+      double
+      modulus() const
+      {
+        return effective_modulus(geometry.bushing, geometry.pin_material);
+      }
+
       /** Area averages of the strip on the areas of @p profile (body angle @p theta). */
       static void
       spread(const Profile       &profile,
@@ -140,7 +385,12 @@ namespace wearlink::contact
         return p0 * b * (strip_primitive(s1, b) - strip_primitive(s0, b)) / (radius * width);
       }
 
+      const bool    conforming;
       JointGeometry geometry;
+      double        radius_bore = 0, radius_pin = 0; ///< mean radii of the geometry [m]
+      double        curvature_floor = 0;             ///< smallest gap curvature admitted [m/rad²]
+      double        min_window      = 0;             ///< one discrete area [rad]
+      double        last_half_width = 0;             ///< b of the last evaluation [m]
       /** The widest strip evaluated so far: half-angle b / R2 [rad], and its F_n [N]. */
       struct WidestStrip
       {
@@ -154,11 +404,25 @@ namespace wearlink::contact
   void
   register_hertz_strip()
   {
-    pressure_models().add("hertz-strip",
-                          "the multibody normal force spread over a Hertz line-contact "
-                          "strip at the contact direction (the seed's simplified route; "
-                          "REFERENCE.md §5).",
-                          {},
-                          [](ParameterReader &r) { return std::make_unique<HertzStrip>(r); });
+    pressure_models().add(
+      "hertz-strip",
+      "the multibody normal force spread over a Hertz line-contact strip at the contact "
+      "direction, its width from the curvature of the worn surfaces over the strip "
+      "(or, as the seed, from the local radii).",
+      [](dealii::ParameterHandler &prm) {
+        declare(prm,
+                "Relative radius",
+                "conforming",
+                dealii::Patterns::Selection("conforming|local radii"),
+                "How the strip's relative radius R* and centre are found. 'conforming': from "
+                "the least-squares curvature and vertex of the gap between the worn surfaces "
+                "over the strip's own width (a worn pocket that conforms to the pin spreads the "
+                "pressure; features shorter than the contact width are averaged out); 'local "
+                "radii': the seed's R* = R1 R2/(R1 − R2) from the radii at the contact "
+                "direction, the strip centred there (a deeper area reads as a larger bore "
+                "radius and concentrates the pressure: kept to compare with the seed).",
+                "none");
+      },
+      [](ParameterReader &r) { return std::make_unique<HertzStrip>(r); });
   }
 } // namespace wearlink::contact

@@ -13,11 +13,19 @@
 // The overlap is integrated on a sub-grid (8 points per discrete area) and averaged per
 // area on both surfaces. Mukras et al. (J. Tribol. 132, 2010): foundation and FE give
 // similar wear volumes but different profiles — `wearlink compare-pressure` shows it.
+// Wear of the load state (the sequential wear update, wear/archard.h): a surface that
+// wears by c p while it carries p acts as a second layer of compliance c in series with
+// the foundation, so evaluate_wearing() solves the same force balance with the linear
+// layer's stiffness k replaced by 1/(1/k + c) and returns the pressure at the state's end
+// (backward Euler: stable for any c; the worn depth c p carries the state's Archard
+// volume exactly). The nonlinear layer is stepped explicitly, stable while c is below
+// the reciprocal of its stiffness at the deepest overlap.
 // Cost: the sub-grid's directions and bore radii are computed once per geometry in the
 // bushing's frame, and the sums of the solve run over a window of the samples that can
 // overlap (checked against the whole grid at the end, so the result is the whole grid's
 // balance); an evaluation takes ~10 µs instead of ~2.5 ms, which made a winkler wear run
 // 40× slower than hertz-strip (issue 15: its accuracy-study row ran for > 17 minutes).
+#include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/numbers.h"
 #include "base/parameters.h"
@@ -126,6 +134,49 @@ namespace wearlink::contact
           }
       }
 
+      void
+      evaluate_wearing(const ContactLoad &load, const WearCompliance &c, SurfacePressure &out) override
+      {
+        wear_compliance = nonlinear ? 0.0 : c.total();
+        try
+          {
+            evaluate(load, out);
+          }
+        catch (...)
+          {
+            wear_compliance = 0;
+            throw;
+          }
+        wear_compliance = 0;
+      }
+
+      double
+      stable_compliance(const ContactLoad &) const override
+      {
+        return nonlinear ? 1 / slope(deepest_overlap) : std::numeric_limits<double>::infinity();
+      }
+
+      /** New radii for the worn areas, and the sub-grid's bore radii around them. */
+      void
+      remove_material(const SurfaceWear &w) override
+      {
+        auto &bore = geometry.bore.samples();
+        auto &pin  = geometry.pin.samples();
+        for (std::size_t i = 0; i < w.pin_areas.size(); ++i)
+          pin[w.pin_areas[i]] -= w.pin_depth[i];
+        for (std::size_t i = 0; i < w.bore_areas.size(); ++i)
+          bore[w.bore_areas[i]] += w.bore_depth[i];
+        // Sub-sample j of area k sits at ψ_k + (j mod sub + 1/2 − sub/2) dφ, so the
+        // radius of sample k reaches the sub-samples of areas k − 1 … k + 1.
+        const long n = static_cast<long>(grid.n);
+        for (const unsigned int k : w.bore_areas)
+          for (long j = (static_cast<long>(k) - 1) * sub; j < (static_cast<long>(k) + 2) * sub; ++j)
+            {
+              const long jj = ((j % n) + n) % n;
+              grid.r1[jj]   = geometry.bore.radius(grid.offset + jj * grid.dp);
+            }
+      }
+
       /**
        * The pressure that carries @p load: the eccentricity at which the foundation's
        * resultant equals the load (force control), found in three steps — the load on
@@ -144,6 +195,7 @@ namespace wearlink::contact
         if (!(load.normal_force > floor_force))
           return;
         set_up_load(load);
+        single_sample     = -1;
         Eigen::Vector2d e = start_in_contact(load);
         e                 = equilibrium(load, e);
         area_averages(e, load, out);
@@ -322,6 +374,11 @@ namespace wearlink::contact
             grid.window_around(e, base_slack);
             f = residual(e, nullptr);
           }
+        if (!(f.norm() <= 1e-6 * load.normal_force + floor_force) && overlapping_samples(e) <= 2)
+          {
+            carry_on_one_sample(load);
+            return e;
+          }
         if (!(f.norm() <= 1e-6 * load.normal_force + floor_force))
           {
             std::ostringstream os;
@@ -331,6 +388,32 @@ namespace wearlink::contact
             throw NumericalError(os.str());
           }
         return e;
+      }
+
+      /** How many samples of the window overlap at @p e. */
+      unsigned int
+      overlapping_samples(const Eigen::Vector2d &e) const
+      {
+        unsigned int n = 0;
+        for (const unsigned int j : grid.window)
+          n += grid.overlap(j, e) > 0 ? 1 : 0;
+        return n;
+      }
+
+      /**
+       * The limit of the sub-grid's resolution: a load so light that at most two samples
+       * overlap, and whose direction those samples cannot match (their directions are
+       * dφ apart), is carried by the one sample nearest its direction, with its
+       * magnitude exact and its direction within dφ/2. The effect ledger counts them.
+       */
+      void
+      carry_on_one_sample(const ContactLoad &load)
+      {
+        const double psi = std::atan2(target[1], target[0]) - grid.offset;
+        const double x   = psi / grid.dp - std::floor(psi / (2 * pi)) * grid.n;
+        single_sample    = static_cast<int>(std::lround(x)) % static_cast<int>(grid.n);
+        single_pressure  = load.normal_force / (geometry.axial_length * grid.r1[single_sample] * grid.dp);
+        EffectLedger::instance().add_calls("winkler light loads on one sample", 1);
       }
 
       /**
@@ -368,15 +451,26 @@ namespace wearlink::contact
 
       /** The sub-grid pressures at eccentricity @p e, averaged over both surfaces' areas. */
       void
-      area_averages(const Eigen::Vector2d &e, const ContactLoad &load, SurfacePressure &out) const
+      area_averages(const Eigen::Vector2d &e, const ContactLoad &load, SurfacePressure &out)
       {
         const double turn = load.bushing_angle - load.pin_angle;
+        deepest_overlap   = 0;
+        if (single_sample >= 0)
+          {
+            const auto j = static_cast<unsigned int>(single_sample);
+            out.bore[j / sub] += single_pressure / sub;
+            const double r1 = grid.r1[j], r2 = grid.gap[j] + r1;
+            out.pin[pin_area(grid.offset + j * grid.dp + load.bushing_angle - load.pin_angle)] +=
+              single_pressure * r1 / r2 * grid.dp / (2 * pi / geometry.pin.n_points());
+            return;
+          }
         for (const unsigned int j : grid.window)
           {
             const double d = grid.overlap(j, e);
             if (d <= 0)
               continue;
-            const double p = pressure(d);
+            deepest_overlap = std::max(deepest_overlap, d);
+            const double p  = pressure(d);
             out.bore[j / sub] += p / sub;
             // The same load on the pin: the sub-arc's length on the pin is r2/r1 of the
             // bore's; distribute the force (p r1 dφ) over the pin area it falls in.
@@ -386,11 +480,18 @@ namespace wearlink::contact
           }
       }
 
+      /** The linear layer's stiffness in series with the state's wear compliance [Pa/m]. */
+      double
+      series_stiffness() const
+      {
+        return wear_compliance > 0 ? 1 / (1 / stiffness + wear_compliance) : stiffness;
+      }
+
       double
       pressure(double d) const
       {
         if (!nonlinear)
-          return stiffness * d;
+          return series_stiffness() * d;
         return -modulus * std::log(1 - std::min(d / thickness, 1 - 1e-12));
       }
 
@@ -399,7 +500,7 @@ namespace wearlink::contact
       stored_energy(double d) const
       {
         if (!nonlinear)
-          return 0.5 * stiffness * d * d;
+          return 0.5 * series_stiffness() * d * d;
         const double x = std::min(d / thickness, 1 - 1e-12);
         return modulus * thickness * ((1 - x) * std::log(1 - x) + x);
       }
@@ -408,7 +509,7 @@ namespace wearlink::contact
       slope(double d) const
       {
         if (!nonlinear)
-          return stiffness;
+          return series_stiffness();
         return modulus / thickness / std::max(1 - d / thickness, 1e-12);
       }
 
@@ -425,6 +526,10 @@ namespace wearlink::contact
       const bool      nonlinear;
       JointGeometry   geometry;
       double          stiffness = 0, modulus = 0;
+      double          wear_compliance = 0;  ///< c of the state being worn (linear layer) [m/Pa]
+      double          deepest_overlap = 0;  ///< of the last evaluation [m]
+      int             single_sample   = -1; ///< see carry_on_one_sample(); −1: none
+      double          single_pressure = 0;  ///< [Pa]
       SubGrid         grid;
       Eigen::Vector2d target;         ///< the load vector, bushing frame [N]
       Eigen::Vector2d eccentricity;   ///< the rigid-body eccentricity, bushing frame [m]
