@@ -157,6 +157,10 @@ namespace wearlink::io
                             "_mass_loss_bushing_mg",
                             "_max_depth_pin_um",
                             "_max_depth_bushing_um",
+                            "_envelope_depth_pin_um",
+                            "_envelope_depth_bushing_um",
+                            "_roughness_pin",
+                            "_roughness_bushing",
                             "_archard_volume_pin_mm3",
                             "_archard_volume_bushing_mm3",
                             "_mean_normal_force_N",
@@ -174,8 +178,9 @@ namespace wearlink::io
             const auto &a = scene.wear[i]->archard;
             os << ',' << r.volume_pin * 1e9 << ',' << r.volume_bore * 1e9 << ',' << r.volume_pin * a.pin_density * 1e6
                << ',' << r.volume_bore * a.bushing_density * 1e6 << ',' << r.max_depth_pin * 1e6 << ','
-               << r.max_depth_bore * 1e6 << ',' << r.archard_pin * 1e9 << ',' << r.archard_bore * 1e9 << ','
-               << r.mean_normal_force << ',' << r.sliding_distance;
+               << r.max_depth_bore * 1e6 << ',' << r.envelope_depth_pin * 1e6 << ',' << r.envelope_depth_bore * 1e6
+               << ',' << r.roughness_pin << ',' << r.roughness_bore << ',' << r.archard_pin * 1e9 << ','
+               << r.archard_bore * 1e9 << ',' << r.mean_normal_force << ',' << r.sliding_distance;
           }
         os << '\n';
       }

@@ -5,6 +5,8 @@
 #include "base/exceptions.h"
 #include "base/interrupt.h"
 #include "base/numbers.h"
+#include "base/text.h"
+#include "wear/depth_measures.h"
 
 #include <algorithm>
 #include <cmath>
@@ -199,6 +201,7 @@ namespace wearlink::wear
         for (const auto &s : loads.samples(i))
           if (s.load.normal_force > peaks[i].normal_force)
             peaks[i] = s.load;
+        set_contact_width(i);
         const auto &w = *wearing[i].wear;
         const auto  g = geometry(i, st.joints[i].bore, st.joints[i].pin);
         Stopwatch   evaluation;
@@ -297,7 +300,57 @@ namespace wearlink::wear
       r.depth_bore[k] = js.bore[k] - js.initial_bore[k];
     r.max_depth_pin  = max_of(r.depth_pin);
     r.max_depth_bore = max_of(r.depth_bore);
+    depth_measures(i, r);
     js.history.push_back(std::move(r));
+  }
+
+  void
+  WearLoop::set_contact_width(const unsigned int i)
+  {
+    auto &js = st.joints[i];
+    if (js.contact_width > 0 || !(peaks[i].normal_force > 0))
+      return;
+    const auto &g    = wearing[i].joint->get_description().geometry;
+    js.contact_width = hertz_contact_width(peaks[i].normal_force,
+                                           js.initial_bore.mean_radius(),
+                                           js.initial_pin.mean_radius(),
+                                           contact::effective_modulus(g.bushing, g.pin_material),
+                                           g.axial_length);
+  }
+
+  // The envelope depths and the roughness of the cumulative depths.
+  void
+  WearLoop::depth_measures(const unsigned int i, IterationRecord &r) const
+  {
+    const auto        &js     = st.joints[i];
+    const unsigned int w_pin  = window_areas(js.contact_width, js.initial_pin.mean_radius(), js.pin.n_points());
+    const unsigned int w_bore = window_areas(js.contact_width, js.initial_bore.mean_radius(), js.bore.n_points());
+    r.envelope_depth_pin      = envelope_depth(r.depth_pin, w_pin);
+    r.envelope_depth_bore     = envelope_depth(r.depth_bore, w_bore);
+    r.roughness_pin           = roughness(r.depth_pin, w_pin);
+    r.roughness_bore          = roughness(r.depth_bore, w_bore);
+  }
+
+  void
+  check_roughness(const WearState &state, ValidityWarnings &warnings)
+  {
+    for (const auto &js : state.joints)
+      {
+        if (js.history.empty())
+          continue;
+        const auto &r = js.history.back();
+        for (const auto &[surface, value] : {std::pair<std::string, double>{"pin", r.roughness_pin},
+                                             std::pair<std::string, double>{"bore", r.roughness_bore}})
+          warnings.check({"joint " + js.name + ": roughness of the worn " + surface,
+                          100 * value,
+                          100 * roughness_limit,
+                          "%",
+                          "the largest deviation of the depth from its local parabola over the contact width (" +
+                            format_number(js.contact_width * 1e3, 3) + " mm), relative to the largest depth",
+                          "the worn profile is not resolved at its discrete areas (steps or a saw-tooth between "
+                          "neighbouring areas), and its largest depth is not a result; use Wear/Wear update = "
+                          "sequential, more discrete areas or a smaller extrapolation factor"});
+      }
   }
 
   void

@@ -101,6 +101,15 @@ namespace wearlink::wear
   std::vector<double>
   smoothed(const std::vector<double> &depth, double wavelength, double radius);
 
+  /**
+   * Warn (in @p warnings) about every final worn profile of @p state whose roughness
+   * exceeds roughness_limit (wear/depth_measures.h): such a profile is not resolved.
+   * The run's end calls it; an early iteration's profile, a few thousand revolutions of
+   * chaotic impacts, is not a result.
+   */
+  void
+  check_roughness(const WearState &state, ValidityWarnings &warnings);
+
   class WearLoop
   {
   public:
@@ -253,6 +262,14 @@ namespace wearlink::wear
     /** Step 4. New profiles and the cumulative records of joint @p i. */
     void
     update_profiles(unsigned int i, const ArchardAccumulator &increment, const LoadRecorder &loads, double factor);
+
+    /** The contact width of joint @p i (JointWearState::contact_width), from the iteration's peak, once. */
+    void
+    set_contact_width(unsigned int i);
+
+    /** The depth measures of joint @p i's record @p r (wear/depth_measures.h). */
+    void
+    depth_measures(unsigned int i, IterationRecord &r) const;
 
     /** Step 5. Gap and pressure-model geometry from the new profiles. */
     void

@@ -17,7 +17,7 @@ namespace wearlink::wear
   namespace
   {
     constexpr const char *format_name    = "wearlink wear checkpoint";
-    constexpr int         format_version = 4;
+    constexpr int         format_version = 5;
     constexpr const char *payload_key    = "\"payload\": ";
     constexpr const char *refused =
       " Resume is refused; start the run afresh (`--overwrite`) or restore an intact copy of the checkpoint.";
@@ -38,6 +38,10 @@ namespace wearlink::wear
       j["archard_bore"]         = r.archard_bore;
       j["max_depth_pin"]        = r.max_depth_pin;
       j["max_depth_bore"]       = r.max_depth_bore;
+      j["envelope_depth_pin"]   = r.envelope_depth_pin;
+      j["envelope_depth_bore"]  = r.envelope_depth_bore;
+      j["roughness_pin"]        = r.roughness_pin;
+      j["roughness_bore"]       = r.roughness_bore;
       j["mean_normal_force"]    = r.mean_normal_force;
       j["sliding_distance"]     = r.sliding_distance;
       j["relative_revolutions"] = r.relative_revolutions;
@@ -49,15 +53,16 @@ namespace wearlink::wear
     Json
     to_json(const JointWearState &js)
     {
-      Json j            = Json::object();
-      j["name"]         = js.name;
-      j["initial_bore"] = to_json(js.initial_bore.samples());
-      j["initial_pin"]  = to_json(js.initial_pin.samples());
-      j["bore"]         = to_json(js.bore.samples());
-      j["pin"]          = to_json(js.pin.samples());
-      j["meshed_bore"]  = to_json(js.meshed_bore.samples());
-      j["meshed_pin"]   = to_json(js.meshed_pin.samples());
-      j["history"]      = Json::array();
+      Json j             = Json::object();
+      j["name"]          = js.name;
+      j["initial_bore"]  = to_json(js.initial_bore.samples());
+      j["initial_pin"]   = to_json(js.initial_pin.samples());
+      j["bore"]          = to_json(js.bore.samples());
+      j["pin"]           = to_json(js.pin.samples());
+      j["meshed_bore"]   = to_json(js.meshed_bore.samples());
+      j["meshed_pin"]    = to_json(js.meshed_pin.samples());
+      j["contact_width"] = js.contact_width;
+      j["history"]       = Json::array();
       for (const auto &r : js.history)
         j["history"].push_back(to_json(r));
       return j;
@@ -251,6 +256,10 @@ namespace wearlink::wear
       rec.archard_bore         = r.number(j, "archard_bore", where);
       rec.max_depth_pin        = r.number(j, "max_depth_pin", where);
       rec.max_depth_bore       = r.number(j, "max_depth_bore", where);
+      rec.envelope_depth_pin   = r.number(j, "envelope_depth_pin", where);
+      rec.envelope_depth_bore  = r.number(j, "envelope_depth_bore", where);
+      rec.roughness_pin        = r.number(j, "roughness_pin", where);
+      rec.roughness_bore       = r.number(j, "roughness_bore", where);
       rec.mean_normal_force    = r.number(j, "mean_normal_force", where);
       rec.sliding_distance     = r.number(j, "sliding_distance", where);
       rec.relative_revolutions = r.number(j, "relative_revolutions", where);
@@ -270,6 +279,7 @@ namespace wearlink::wear
       js.pin              = r.profile(j, "pin", where);
       js.meshed_bore      = r.profile(j, "meshed_bore", where);
       js.meshed_pin       = r.profile(j, "meshed_pin", where);
+      js.contact_width    = r.number(j, "contact_width", where);
       const Json &history = r.list(j, "history", where);
       for (std::size_t k = 0; k < history.size(); ++k)
         js.history.push_back(read_record(r, history[k], where + "history[" + std::to_string(k) + "]."));

@@ -8,9 +8,9 @@
 // whole run, the effect ledger, the phase timings and the validity warnings up to the
 // checkpoint.
 //
-// The checkpoint (format version 4; 4 added the warnings) is JSON in two parts: a
-// header line
-//   {"format": "wearlink wear checkpoint", "version": 4, "payload_bytes": N,
+// The checkpoint (format version 5; 4 added the warnings, 5 the contact width and the
+// depth measures) is JSON in two parts: a header line
+//   {"format": "wearlink wear checkpoint", "version": 5, "payload_bytes": N,
 //    "payload_crc32": "89abcdef",
 // and the payload, `"payload": {...}}`, whose N bytes carry zlib's CRC-32. Reading
 // checks, before anything is used: the header, the version, the length (a truncated
@@ -42,8 +42,12 @@ namespace wearlink::wear
     double              volume_bore          = 0; ///< cumulative, bore [m³]
     double              archard_pin          = 0; ///< cumulative k_D ∫ F_n |v_t| dt, pin k_D [m³]
     double              archard_bore         = 0;
-    double              max_depth_pin        = 0; ///< cumulative [m]
-    double              max_depth_bore       = 0; ///< cumulative [m]
+    double              max_depth_pin        = 0; ///< cumulative, deepest area [m]
+    double              max_depth_bore       = 0; ///< cumulative, deepest area [m]
+    double              envelope_depth_pin   = 0; ///< cumulative, at the contact width [m] (wear/depth_measures.h)
+    double              envelope_depth_bore  = 0; ///< cumulative, at the contact width [m]
+    double              roughness_pin        = 0; ///< of the cumulative depth [-] (wear/depth_measures.h)
+    double              roughness_bore       = 0; ///< [-]
     double              mean_normal_force    = 0; ///< over the simulated cycles [N]
     double              sliding_distance     = 0; ///< cumulative, extrapolated [m]
     double              relative_revolutions = 0; ///< cumulative, extrapolated [-]
@@ -58,6 +62,11 @@ namespace wearlink::wear
     Profile     bore, pin;                 ///< current worn profiles
     Profile     meshed_bore, meshed_pin;   ///< geometry of the pressure model's mesh (fe; else = bore, pin)
     std::vector<IterationRecord> history;  ///< one per finished iteration
+    /**
+     * The contact width the depth measures use [m]: 2b of the Hertz line contact of the
+     * unworn radii at the largest normal force of the first iteration (0 before it).
+     */
+    double contact_width = 0;
   };
 
   /** What the scene of a resuming run needs of a state (WearState::check_shape). */

@@ -259,23 +259,28 @@ namespace wearlink::workflows
       auto &cj = summary["clearance_joints"];
       for (unsigned int i = 0; i < st.joints.size(); ++i)
         {
-          const auto                 &js = st.joints[i];
-          const auto                 &w  = *scene.wear[i];
-          const wear::IterationRecord r  = js.history.empty() ? wear::IterationRecord() : js.history.back();
-          auto                       &o  = cj[js.name];
-          o["pressure_model"]            = w.pressure_model;
-          o["wear_volume_pin_m3"]        = r.volume_pin;
-          o["wear_volume_bushing_m3"]    = r.volume_bore;
-          o["archard_volume_pin_m3"]     = r.archard_pin;
-          o["archard_volume_bushing_m3"] = r.archard_bore;
-          o["max_wear_depth_pin_m"]      = r.max_depth_pin;
-          o["max_wear_depth_bushing_m"]  = r.max_depth_bore;
-          o["mass_loss_pin_mg"]          = r.volume_pin * w.archard.pin_density * 1e6;
-          o["mass_loss_bushing_mg"]      = r.volume_bore * w.archard.bushing_density * 1e6;
-          o["revolutions"]               = st.revolutions;
-          o["relative_revolutions"]      = r.relative_revolutions;
-          o["sliding_distance_m"]        = r.sliding_distance;
-          o["mean_normal_force_N"]       = r.mean_normal_force;
+          const auto                 &js     = st.joints[i];
+          const auto                 &w      = *scene.wear[i];
+          const wear::IterationRecord r      = js.history.empty() ? wear::IterationRecord() : js.history.back();
+          auto                       &o      = cj[js.name];
+          o["pressure_model"]                = w.pressure_model;
+          o["wear_volume_pin_m3"]            = r.volume_pin;
+          o["wear_volume_bushing_m3"]        = r.volume_bore;
+          o["archard_volume_pin_m3"]         = r.archard_pin;
+          o["archard_volume_bushing_m3"]     = r.archard_bore;
+          o["max_wear_depth_pin_m"]          = r.max_depth_pin;
+          o["max_wear_depth_bushing_m"]      = r.max_depth_bore;
+          o["envelope_wear_depth_pin_m"]     = r.envelope_depth_pin;
+          o["envelope_wear_depth_bushing_m"] = r.envelope_depth_bore;
+          o["roughness_pin"]                 = r.roughness_pin;
+          o["roughness_bushing"]             = r.roughness_bore;
+          o["contact_width_m"]               = js.contact_width;
+          o["mass_loss_pin_mg"]              = r.volume_pin * w.archard.pin_density * 1e6;
+          o["mass_loss_bushing_mg"]          = r.volume_bore * w.archard.bushing_density * 1e6;
+          o["revolutions"]                   = st.revolutions;
+          o["relative_revolutions"]          = r.relative_revolutions;
+          o["sliding_distance_m"]            = r.sliding_distance;
+          o["mean_normal_force_N"]           = r.mean_normal_force;
         }
       summary["wear_iterations"]  = st.iterations_done;
       summary["wear_revolutions"] = st.revolutions;
@@ -356,6 +361,7 @@ namespace wearlink::workflows
       result.summary = run_scene(scene, ro);
       if (options.more_warnings)
         result.warnings.merge(*options.more_warnings);
+      wear::check_roughness(st, result.warnings);
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);

@@ -7,7 +7,7 @@
 //    shipped params/nine_bar_wear.prm (10 mm, b ≈ 0.2 mm, half-angle ≈ 1°) does not warn;
 //  - a wear run stopped after its first iteration and resumed from the checkpoint
 //    reports the same `warnings` list as an uninterrupted run: the warnings raised
-//    before the checkpoint are kept in it (format version 4).
+//    before the checkpoint are kept in it (format version 5).
 #include "io/json_file.h"
 #include "scene_support.h"
 #include "wear/wear_state.h"

@@ -9,18 +9,17 @@
 // so Σ p̄_k L R Δψ = F_n exactly even when the strip is narrower than one area.
 //
 // Where the strip sits and how wide it is (entry "Relative radius"):
-//  - conforming (default): from the worn surfaces over the strip's own width. Between
-//    the pin pushed along the contact direction φ0 and the bore, the radial gap is
-//    g(φ) = h(φ) − h(φ0) cos(φ − φ0), h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p); its
-//    least-squares parabola over the strip's half-angle (exact Legendre moments of the
-//    piecewise-linear profiles) gives the curvature of the gap, g'' = h(φ0) + h''
+//  - conforming (default): the width from the worn surfaces over the strip's own
+//    width. Between the pin pushed along the contact direction φ0 and the bore, the
+//    radial gap is g(φ) = h(φ) − h(φ0) cos(φ − φ0), h(φ) = R1*(φ − θ_b) − R2*(φ − θ_p);
+//    its least-squares parabola over the strip's half-angle (exact Legendre moments of
+//    the piecewise-linear profiles) gives the curvature of the gap, g'' = h(φ0) + h''
 //    [m/rad²], hence 1/R* = g''/(R1 R2) (= 1/R2 − 1/R1 for round profiles: the classic
-//    internal R*), and the vertex, where the strip is centred. The half-width and the
-//    window are made consistent (b from the curvature over ±b). A worn pocket whose
-//    curvature approaches the pin's spreads the pressure, as an elastic contact of a
-//    conforming pair does; features shorter than the contact width are averaged out
-//    instead of deciding where a rigid contact touches (a 1 µm saw-tooth between 1°
-//    areas moves a rigid contact point by several degrees).
+//    internal R*). The half-width and the window are made consistent (b from the
+//    curvature over ±b). A worn pocket whose curvature approaches the pin's spreads
+//    the pressure, as an elastic contact of a conforming pair does; a feature shorter
+//    than the contact width is averaged out. The strip is centred at φ0, the direction
+//    of the multibody model's normal force.
 //  - local radii: the seed's route (its eqs 28–31): R* = R1 R2/(R1 − R2) from the
 //    radii at φ0, the strip centred at φ0. A pocket worn deeper reads as a larger bore
 //    radius, hence a narrower strip and a higher peak: wear concentrates where there is
@@ -210,43 +209,32 @@ namespace wearlink::contact
        * w² g''(w) = T := 4 P R1 R2/(π E* R2²), with g''(w) the gap's curvature fitted over
        * ±w; round profiles give the classic strip at once. A worn pocket that conforms
        * to the pin (g'' → 0 inside it) pushes the root out to where the fit takes in
-       * the pocket's flanks. The root is bracketed from the nominal strip (doubling or
-       * halving w) and found by Illinois regula falsi in w², then the strip is centred at
-       * the fitted vertex of the gap (once more if that moved it by more than a tenth
-       * of w). The fit window is at least one discrete area on each side (a parabola
-       * through fewer samples would read a single kink as a curvature), and w at most π
-       * (the whole pin; past 90° the validity warning says so).
+       * the pocket's flanks. The strip stays centred at the contact direction, along
+       * which the multibody model's force acts (a strip centred elsewhere would not
+       * carry that force; moved to the fitted vertex of the gap, it followed the kinks
+       * of the worn profile and left steps of 5–10 % of the depth on a pocket's flanks).
        */
       Strip
       conforming_strip(const ContactLoad &load) const
       {
         const double line   = load.normal_force / geometry.axial_length;
         const double target = 4 * line * radius_bore * radius_pin / (pi * modulus() * radius_pin * radius_pin);
-        double       centre = load.contact_angle;
         Fit          fit;
-        double       w = 0;
-        for (int pass = 0; pass < 2; ++pass)
-          {
-            w                  = half_angle(load, centre, target, fit);
-            const double shift = std::clamp(-fit.slope / fit.curvature, -fit.window, fit.window);
-            centre += shift;
-            if (std::abs(shift) <= 0.1 * w)
-              break;
-          }
+        half_angle(load, load.contact_angle, target, fit);
         Strip s;
-        s.centre      = centre;
-        s.bore_radius = geometry.bore.radius(centre - load.bushing_angle);
-        s.pin_radius  = geometry.pin.radius(centre - load.pin_angle);
+        s.centre      = load.contact_angle;
+        s.bore_radius = geometry.bore.radius(s.centre - load.bushing_angle);
+        s.pin_radius  = geometry.pin.radius(s.centre - load.pin_angle);
         const auto h  = hertz_line_contact(line, s.bore_radius * s.pin_radius / fit.curvature, modulus());
         s.half_width  = h.half_width;
         s.peak        = h.peak_pressure;
         return s;
       }
 
-      /** The gap's parabola over a window: curvature g'' [m/rad²] and slope g' [m/rad] at its centre. */
+      /** The gap's parabola over a window: its curvature g'' at the centre [m/rad²]. */
       struct Fit
       {
-        double curvature = 0, slope = 0, window = 0;
+        double curvature = 0, window = 0;
       };
 
       /** The fit of the gap over ±max(@p w, one area) around @p centre. */
@@ -259,7 +247,6 @@ namespace wearlink::contact
         const auto   mp = legendre_moments(geometry.pin.samples(), centre - load.pin_angle, f.window, radius_pin);
         const double h0 =
           (radius_bore - radius_pin) + (mb[0] - 0.5 * mb[2]) - (mp[0] - 0.5 * mp[2]); // h at the centre [m]
-        f.slope     = (mb[1] - mp[1]) / f.window;
         f.curvature = std::max(h0 + 3 * (mb[2] - mp[2]) / (f.window * f.window), curvature_floor);
         return f;
       }

@@ -3,7 +3,7 @@
 // or missing checkpoint is an InputError naming the file: a changed byte (checksum), a
 // cut file (length), an older format version (3: no warnings), entries of the wrong type,
 // sizes that do not agree with each other, and (check_shape) sizes that do not fit the
-// scene. The validity warnings round-trip too (format version 4), an infinite value as well.
+// scene. The validity warnings round-trip too (format version 5), an infinite value as well.
 #include "base/exceptions.h"
 #include "support/test_support.h"
 #include "wear/wear_state.h"
@@ -117,8 +117,8 @@ TEST(Checkpoint, DamagedEntriesAreRefusedNamingTheEntry)
   std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // Each edit of the valid text, and the words the message must contain.
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
-    {{"\"version\":4", "\"version\":5"}, "format version 5, this wearlink reads version 4"},
-    {{"\"version\":4", "\"version\":3"}, "format version 3, this wearlink reads version 4"},
+    {{"\"version\":5", "\"version\":6"}, "format version 6, this wearlink reads version 5"},
+    {{"\"version\":5", "\"version\":4"}, "format version 4, this wearlink reads version 5"},
     {{"\"quantity\": \"joint A", "\"quantity\": 4, \"x\": \"joint A"}, "'warnings[0].quantity' is not text"},
     {{"\"warnings\": [", "\"warnings\": 3, \"w\": ["}, "'warnings' is not a list"},
     {{"\"value\": \"inf\"", "\"value\": 0.001"}, "'warnings[1].value' does not exceed its limit"},
@@ -192,7 +192,7 @@ TEST(Checkpoint, ChangedByteTruncationAndOldVersionAreRefused)
       EXPECT_NE(m.find(path), std::string::npos) << m;
     }
   std::ofstream(path, std::ios::binary) << "{\n \"format\": \"wearlink wear checkpoint\",\n \"version\": 2\n}\n";
-  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 4"), std::string::npos) << refusal(path);
+  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 5"), std::string::npos) << refusal(path);
 }
 
 // check_shape: each size that differs from the scene's is named with both values.
