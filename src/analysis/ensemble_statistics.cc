@@ -3,6 +3,7 @@
 
 #include "base/numbers.h"
 
+#include <algorithm>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
@@ -60,6 +61,21 @@ namespace wearlink::analysis
     for (const auto &[name, v] : values)
       out[name] = ensemble_figure(v);
     return out;
+  }
+
+  double
+  percentile(std::vector<double> values, const double p)
+  {
+    values.erase(std::remove_if(values.begin(), values.end(), [](const double v) { return !std::isfinite(v); }),
+                 values.end());
+    if (values.empty())
+      return std::numeric_limits<double>::quiet_NaN();
+    std::sort(values.begin(), values.end());
+    const double      h     = (static_cast<double>(values.size()) - 1) * std::clamp(p, 0.0, 1.0);
+    const std::size_t below = static_cast<std::size_t>(std::floor(h));
+    if (below + 1 >= values.size())
+      return values.back();
+    return values[below] + (h - static_cast<double>(below)) * (values[below + 1] - values[below]);
   }
 
   std::vector<double>

@@ -12,6 +12,10 @@
 //  - ensemble_figure(): mean, sample standard deviation (n − 1) and the 95 % confidence
 //    interval of the mean, mean ± t(0.975, n − 1) s/√n with Student's t for n members
 //    (boost::math; t = 12.706 for 2 members, 2.365 for 8, → 1.960).
+//  - percentile(): P_p of the members by linear interpolation between the order
+//    statistics (Hyndman & Fan's type 7, the default of R and NumPy): with the values
+//    sorted x_1 ≤ … ≤ x_n and h = (n − 1) p, P_p = x_{⌊h⌋+1} + (h − ⌊h⌋)(x_{⌊h⌋+2} − x_{⌊h⌋+1});
+//    P_0 the smallest, P_1 the largest value. For 4 members P10 = x_1 + 0.3 (x_2 − x_1).
 #pragma once
 
 #include <cstddef>
@@ -46,6 +50,13 @@ namespace wearlink::analysis
    */
   std::map<std::string, EnsembleFigure>
   ensemble_figures(const std::vector<std::map<std::string, double>> &members);
+
+  /**
+   * The @p p-quantile (0 ≤ p ≤ 1) of the finite @p values, type 7 (see above); NaN
+   * without a finite value.
+   */
+  double
+  percentile(std::vector<double> values, double p);
 
   /** @p count standard normal numbers of member @p member of seed @p seed (see above). */
   std::vector<double>

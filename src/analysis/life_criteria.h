@@ -1,47 +1,73 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // When is a joint worn out? The stop criteria of `wearlink life` (issue 15), the values
-// they take during a wear run, and how far each wear iteration may extrapolate so that
-// every criterion is located within a stated tolerance.
+// they take during a wear run, how far each wear iteration may extrapolate so that every
+// wear criterion is located within a stated tolerance, and how a noisy criterion is
+// decided on its trend with a confidence band.
 //
 // Criteria (scene section "Life"; a limit of 0 switches one off):
-//   wear_depth        the largest wear depth of any surface (pin or bore) of any wearing
-//                     joint [m];
-//   clearance_growth  the growth of the largest radial clearance of a joint: its deepest
-//                     bore wear plus its deepest pin wear, which face each other once per
-//                     relative revolution of pin and bushing [m];
+//   wear_depth        the largest envelope depth of any surface (pin or bore) of any
+//                     wearing joint [m];
+//   clearance_growth  the growth of a joint's radial clearance: the envelope depth of its
+//                     bore plus that of its pin, which face each other once per relative
+//                     revolution of pin and bushing [m];
 //   pin_mass_loss     the mass worn off a joint's pin (volume × density) [mg];
 //   bushing_mass_loss the same of a bushing [mg];
 //   response_rise     the rise of the response measure's trend over its value with the
 //                     fresh profiles [%]. The measure: the mean over `Response cycles`
 //                     driving cycles of the per-cycle peak |a| of the response body (every
 //                     accepted integrator step, analysis/cycle_peaks.h), in a run from the
-//                     initial assembly with the current profiles after one settling cycle.
-//                     It scatters by ~10 % from one measurement to the next (the impacts
-//                     of a chaotic clearance mechanism: a rise is reached by noise long
-//                     before the joint has changed), so the criterion follows its trend:
-//                     the least-squares line through every measurement so far (the fresh
-//                     one included) against revolutions, rise = line(N)/line(0) − 1; it
-//                     counts from the 4th measurement on.
+//                     initial assembly with the current profiles after one settling cycle,
+//                     measured before the first iteration and after each.
 // A joint criterion is reached when any wearing joint reaches it (the summary names it).
 //
-// Locating a crossing. An iteration extrapolates its simulated wear by a factor f: the
-// depths become h + f Δh, the volumes V + f ΔV, so each wear criterion is a
-// non-decreasing, piecewise-linear function of f, known before the step
-// (wear::StepPreview); the factor at which it reaches its limit is found by bisection to
-// 1e-12. The response is measured after each iteration; its next crossing is predicted
-// from the trend of the last two measurements. With tolerance τ the iteration that
-// crosses must represent at most τ × the revolutions at its end: if the predicted
-// crossing is farther, the iteration stops short of it by half such a step (room for the
-// rate to change by up to a factor of 2), and the next one lands on it. The life is reported as the revolutions at the crossing (linear
-// interpolation between the two iterations that bracket it; for the wear criteria the
-// landing makes the crossing the iteration's end) with the bracket, whose width is then
-// ≤ τ × life unless a response measurement jumped past its prediction (then the summary
-// says that the bracket is wider than the tolerance).
+// The envelope depth (wear/depth_measures.h): the largest running median of a surface's
+// depth over the joint's contact width (JointWearState::contact_width, 2b of the Hertz
+// strip at the first iteration's peak force; the window of the wear loop's own depth
+// measures). A spike of one discrete area deeper than its neighbours is no clearance the
+// contact meets and does not reach a depth limit; a pocket as wide as the contact does.
+//
+// Locating a wear crossing. An iteration extrapolates its simulated wear by a factor f:
+// the depths become h + f Δh, the volumes V + f ΔV, so each wear criterion is a known
+// function of f before the step (wear::StepPreview), non-decreasing (a running median of
+// values that each grow with f grows with f; so does a maximum or a sum of them); the
+// factor at which it reaches its limit is found by bisection to 1e-12. With tolerance τ
+// the iteration that crosses must represent at most τ × the revolutions at its end: if
+// the predicted crossing is farther, the iteration stops short of it by half such a step
+// (room for the rate to change by up to a factor of 2), and the next one lands on it. The
+// life is the crossing (interpolated between the two iterations that bracket it; the
+// landing makes it the iteration's end) with that bracket, ≤ τ × life wide. A wear
+// criterion is decided when it is reached.
+//
+// Deciding a noisy criterion on its trend. The response measure scatters by 10–30 % from
+// one measurement to the next (the impacts of a chaotic clearance mechanism): one sample
+// above the limit says nothing. The criterion follows the least-squares line
+// y = a + b N through every measurement (the fresh one included; a measurement at the
+// revolutions of an earlier one, an iteration that wore nothing, is the same run and is
+// counted once) and its rise r(N) = line(N)/line(0) − 1 = b N / a. With ℓ the limit as a
+// fraction, r(N) ≥ ℓ ⇔ g(N) = b N − ℓ a ≥ 0, a linear combination of the line's
+// coefficients, so its 95 % confidence band is exact for normal scatter (Fieller):
+//   g(N) ± t s √(ℓ²/n + (N + ℓ x̄)² / Sxx),  t = t(0.975, n − 2) (Student),
+// s the residuals' standard deviation (n − 2 degrees of freedom), x̄ the mean revolutions,
+// Sxx = Σ (N_i − x̄)². At the revolutions of the last measurement the criterion is
+//   reached      if the lower bound of the band is ≥ 0 (the lower 95 % bound of the rise
+//                is at or above the limit),
+//   not reached  if the upper bound is < 0 (the upper 95 % bound of the rise is below it),
+//   undecided    otherwise (the band contains the limit),
+// and it counts from the 4th measurement (min_response_points). Where it crosses: the
+// line's crossing N̂ = ℓ a / b, with the 95 % interval of the revolutions where the band's
+// bounds cross the limit (inverse regression: the roots of g(N)² = t² s² (…) above; a
+// bounded interval only if the slope is significant, b² > t² s² / Sxx). The criterion is
+// decided when it is reached and that interval is at most Response tolerance × N̂ wide;
+// a reached criterion with a wider interval, like one whose band contains the limit, is
+// undecided and reported with what is known (N̂, the interval if bounded). An undecided
+// criterion is never a life: the headline is the decided criterion with the fewest
+// revolutions (headline_criterion).
 #pragma once
 
 #include "wear/wear_loop.h"
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,16 +85,17 @@ namespace wearlink::analysis
   /** The scene's "Life" section (declared and read by io/life_parameters.h). */
   struct LifeSettings
   {
-    double       max_wear_depth    = 0;  ///< [m]; 0: off
-    double       clearance_growth  = 0;  ///< [m]; 0: off
-    double       pin_mass_loss     = 0;  ///< [mg]; 0: off
-    double       bushing_mass_loss = 0;  ///< [mg]; 0: off
-    double       response_rise     = 0;  ///< [%]; 0: off
-    std::string  response_body;          ///< "" : Wear/Response body
-    unsigned int response_cycles = 3;    ///< cycles averaged (after one settling cycle)
-    double       tolerance       = 0.02; ///< τ [-]
-    double       max_revolutions = 1e8;  ///< the run ends there at the latest [-]
-    unsigned int max_iterations  = 1000; ///< and after this many iterations
+    double       max_wear_depth    = 0;     ///< [m]; 0: off
+    double       clearance_growth  = 0;     ///< [m]; 0: off
+    double       pin_mass_loss     = 0;     ///< [mg]; 0: off
+    double       bushing_mass_loss = 0;     ///< [mg]; 0: off
+    double       response_rise     = 0;     ///< [%]; 0: off
+    std::string  response_body;             ///< "" : Wear/Response body
+    unsigned int response_cycles    = 3;    ///< cycles averaged (after one settling cycle)
+    double       response_tolerance = 0.5;  ///< largest width of the trend's 95 % interval / its crossing [-]
+    double       tolerance          = 0.02; ///< τ [-]
+    double       max_revolutions    = 1e8;  ///< the run ends there at the latest [-]
+    unsigned int max_iterations     = 1000; ///< and after this many iterations
   };
 
   /** One active criterion. */
@@ -84,6 +111,22 @@ namespace wearlink::analysis
   /** The criteria switched on by @p settings, in the order above. */
   std::vector<CriterionSpec>
   active_criteria(const LifeSettings &settings);
+
+  /** True for a criterion decided on its trend (response_rise), false for a wear criterion. */
+  bool
+  is_trend(const CriterionSpec &criterion);
+
+  /** Where a criterion stands at the end of a run (see the file comment). */
+  enum class CriterionStatus
+  {
+    decided,
+    undecided,
+    not_reached
+  };
+
+  /** "decided", "undecided", "not reached": the status in summary.json. */
+  std::string
+  status_name(CriterionStatus status);
 
   /** Densities of a wearing joint's pin and bushing [kg/m³], for the mass losses. */
   struct JointDensities
@@ -101,6 +144,9 @@ namespace wearlink::analysis
   /**
    * The value of the wear criterion @p c after extrapolating @p preview's iteration by
    * @p factor (0: the wear before the iteration). @p densities: per joint of the preview.
+   * The depth criteria take the envelope of h + f Δh over the window of the joint's
+   * contact width (StepPreview::Joint::state; a joint without its state has no contact
+   * width and takes one area, the raw largest depth).
    */
   CriterionValue
   wear_criterion_value(const CriterionSpec               &c,
@@ -108,7 +154,10 @@ namespace wearlink::analysis
                        const std::vector<JointDensities> &densities,
                        double                             factor);
 
-  /** The value of the wear criterion @p c in @p state (after its last iteration). */
+  /**
+   * The value of the wear criterion @p c in @p state (after its last iteration); the depth
+   * criteria from the records' envelope depths (IterationRecord::envelope_depth_pin/bore).
+   */
   CriterionValue
   wear_criterion_value(const CriterionSpec               &c,
                        const wear::WearState             &state,
@@ -134,7 +183,7 @@ namespace wearlink::analysis
   double
   approach_factor(double f_reach, double cycles, double revolutions, double tolerance);
 
-  /** Where a criterion was crossed, from the values after each iteration. */
+  /** Where a wear criterion was crossed, from the values after each iteration. */
   struct Crossing
   {
     bool   reached     = false;
@@ -146,22 +195,100 @@ namespace wearlink::analysis
   /** How many response measurements the trend needs before the response criterion counts. */
   constexpr std::size_t min_response_points = 4;
 
-  /** The least-squares line of the response measures [m/s²] against revolutions. */
+  /** A 95 % confidence interval; NaN bounds where it is not bounded. */
+  struct Interval
+  {
+    double low  = std::numeric_limits<double>::quiet_NaN();
+    double high = std::numeric_limits<double>::quiet_NaN();
+
+    bool
+    bounded() const;
+  };
+
+  /**
+   * The least-squares line of the response measures [m/s²] against revolutions, with
+   * what its Student-t confidence statements need (see the file comment).
+   */
   struct ResponseTrend
   {
-    double      fresh   = std::numeric_limits<double>::quiet_NaN(); ///< the line at 0 revolutions [m/s²]
-    double      slope   = std::numeric_limits<double>::quiet_NaN(); ///< [m/s² per revolution]
-    double      scatter = std::numeric_limits<double>::quiet_NaN(); ///< residuals' standard deviation / fresh [-]
-    std::size_t points  = 0;
+    double      fresh            = std::numeric_limits<double>::quiet_NaN(); ///< a, the line at 0 revolutions [m/s²]
+    double      slope            = std::numeric_limits<double>::quiet_NaN(); ///< b [m/s² per revolution]
+    double      scatter          = std::numeric_limits<double>::quiet_NaN(); ///< s / a [-]
+    std::size_t points           = 0;                                        ///< n
+    double      residual_std     = std::numeric_limits<double>::quiet_NaN(); ///< s (n − 2 dof) [m/s²]
+    double      mean_revolutions = std::numeric_limits<double>::quiet_NaN(); ///< x̄
+    double      sxx              = std::numeric_limits<double>::quiet_NaN(); ///< Σ (N_i − x̄)² [rev²]
+    double      t95              = std::numeric_limits<double>::quiet_NaN(); ///< t(0.975, n − 2)
 
     /** The rise of the line at @p revolutions over its fresh value [%] (0 with one point). */
     double
     rise(double revolutions) const;
+
+    /**
+     * The 95 % confidence interval of the rise at @p revolutions [%] (Fieller's interval
+     * of the ratio b N / a); unbounded (NaN) without 3 points or a significant fresh value.
+     */
+    Interval
+    rise_interval(double revolutions) const;
+
+    /**
+     * The 95 % band of g(N) = b N − ℓ a at @p revolutions for the limit @p limit [%]
+     * (ℓ = limit / 100) [m/s²]: its lower bound ≥ 0 ⇔ the lower bound of the rise ≥ the
+     * limit; unbounded (NaN) without 3 points.
+     */
+    Interval
+    excess_band(double revolutions, double limit) const;
+
+    /**
+     * Where the line crosses the limit @p limit [%], N̂ = ℓ a / b (NaN unless the slope is
+     * > 0), and in @p interval the 95 % interval of that crossing (where the band's bounds
+     * cross it; bounded only if the slope is significant and positive; its low end ≥ 0).
+     */
+    double
+    limit_crossing(double limit, Interval &interval) const;
   };
 
-  /** The trend of the finite @p measures at @p revolutions (the first @p count rows). */
+  /**
+   * The trend of the finite @p measures at @p revolutions (the first @p count rows; a row
+   * at the revolutions of an earlier counted one is left out).
+   */
   ResponseTrend
   response_trend(const std::vector<double> &revolutions, const std::vector<double> &measures, std::size_t count);
+
+  /** Where a trend criterion stands (see the file comment). */
+  struct TrendCrossing
+  {
+    CriterionStatus status      = CriterionStatus::undecided;
+    bool            reached     = false; ///< the lower 95 % bound of the rise at the last measurement ≥ the limit
+    double          revolutions = std::numeric_limits<double>::quiet_NaN(); ///< N̂ (slope > 0)
+    Interval        interval;                                               ///< of the crossing [revolutions]
+    Interval        rise_at_end; ///< 95 % interval of the rise at the last measurement [%]
+    std::string     reason;      ///< why it is not decided ("" if it is)
+  };
+
+  /**
+   * Where the trend criterion of limit @p limit [%] stands after measurements up to
+   * @p revolutions_run: decided if reached with an interval at most @p tolerance × N̂
+   * wide, not reached if the upper 95 % bound of the rise there is below the limit,
+   * else undecided (also with fewer than min_response_points measurements).
+   */
+  TrendCrossing
+  trend_crossing(const ResponseTrend &trend, double limit, double revolutions_run, double tolerance);
+
+  /** What the headline needs of a criterion's result. */
+  struct CriterionOutcome
+  {
+    CriterionStatus status      = CriterionStatus::not_reached;
+    double          revolutions = std::numeric_limits<double>::quiet_NaN(); ///< its life, if decided
+  };
+
+  /**
+   * The headline: the index of the decided criterion with the fewest revolutions (the
+   * first of equal ones); none if no criterion is decided. An undecided criterion is
+   * never the headline, however early its estimate.
+   */
+  std::optional<std::size_t>
+  headline_criterion(const std::vector<CriterionOutcome> &outcomes);
 
   /**
    * What a life run knows after each iteration: one row per iteration (row 0: the start,

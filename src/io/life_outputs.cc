@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "io/life_outputs.h"
 
+#include "analysis/ensemble_statistics.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "io/csv.h"
 #include "io/plot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -93,6 +96,101 @@ namespace wearlink::io
     return h;
   }
 
+  namespace
+  {
+    /**
+     * The value axis autoscaled within −1 … 5 limits: a rise of a response far from its
+     * limit (thousands of percent from a near-zero fresh value) would flatten the rest.
+     */
+    const std::string y_range = "set yrange [-1<*:*<5]\n";
+
+    /** Line colours of the criteria, in order. */
+    const char *const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
+
+    /** A closed polygon from @p low to @p high over @p x (forward along low, back along high). */
+    PlotSeries
+    band_series(const std::string         &title,
+                const std::vector<double> &x,
+                const std::vector<double> &low,
+                const std::vector<double> &high,
+                const std::string         &colour)
+    {
+      PlotSeries band{title,
+                      {},
+                      {},
+                      "filledcurves closed",
+                      "fs transparent solid 0.25 noborder lc rgb '" + colour + "'"};
+      for (std::size_t k = 0; k < x.size(); ++k)
+        if (std::isfinite(low[k]) && std::isfinite(high[k]))
+          {
+            band.x.push_back(x[k]);
+            band.y.push_back(low[k]);
+          }
+      for (std::size_t k = x.size(); k-- > 0;)
+        if (std::isfinite(low[k]) && std::isfinite(high[k]))
+          {
+            band.x.push_back(x[k]);
+            band.y.push_back(high[k]);
+          }
+      return band;
+    }
+
+    /** @p n + 1 equally spaced revolutions from 0 to @p end. */
+    std::vector<double>
+    grid(const double end, const std::size_t n)
+    {
+      std::vector<double> x(n + 1);
+      for (std::size_t k = 0; k <= n; ++k)
+        x[k] = end * static_cast<double>(k) / static_cast<double>(n);
+      return x;
+    }
+
+    /**
+     * The response criterion's final trend (rise / limit) and its 95 % band over the
+     * run, and the 95 % interval of its crossing at 1 (series appended to @p spec).
+     */
+    void
+    add_trend(PlotSpec                      &spec,
+              const analysis::LifeHistory   &h,
+              const analysis::CriterionSpec &c,
+              const std::string             &colour)
+    {
+      const auto trend = analysis::response_trend(h.revolutions, h.response, h.rows());
+      if (trend.points < 3 || h.revolutions.empty())
+        return;
+      const auto          x = grid(h.revolutions.back(), 100);
+      std::vector<double> line, low, high;
+      for (const double n : x)
+        {
+          const auto band = trend.rise_interval(n);
+          line.push_back(trend.rise(n) / c.limit);
+          low.push_back(band.low / c.limit);
+          high.push_back(band.high / c.limit);
+        }
+      spec.series.push_back(band_series("95 % band of the " + c.name + " trend", x, low, high, colour));
+      spec.series.push_back({c.name + " trend (least squares)", x, line, "lines", "dt 3 lw 2 lc rgb '" + colour + "'"});
+      analysis::Interval interval;
+      const double       crossing = trend.limit_crossing(c.limit, interval);
+      if (interval.bounded())
+        spec.series.push_back({"95 % interval of the " + c.name + " crossing (line at " +
+                                 std::to_string(static_cast<long>(std::lround(crossing))) + " rev)",
+                               {interval.low, interval.high},
+                               {1.0, 1.0},
+                               "linespoints",
+                               "pt 13 ps 1.5 lw 5 lc rgb '" + colour + "'"});
+    }
+
+    /** The value of a history's column at @p at revolutions (linear; NaN past its end). */
+    double
+    value_at(const std::vector<double> &x, const std::vector<double> &y, const double at)
+    {
+      for (std::size_t k = 1; k < x.size() && k < y.size(); ++k)
+        if (at <= x[k])
+          return x[k] > x[k - 1] ? y[k - 1] + (at - x[k - 1]) / (x[k] - x[k - 1]) * (y[k] - y[k - 1]) : y[k];
+      return x.size() == 1 && at == x[0] ? y[0] : std::numeric_limits<double>::quiet_NaN();
+    }
+  } // namespace
+
   bool
   plot_life(const std::string &path, const analysis::LifeHistory &h, const std::string &title)
   {
@@ -100,23 +198,32 @@ namespace wearlink::io
     spec.title   = title;
     spec.x_label = "revolutions";
     spec.y_label = "criterion value / its limit (1: reached)";
-    spec.extra   = "set key inside top left box opaque\nset grid\n";
+    spec.extra   = "set key inside bottom right box opaque\nset grid\n" + y_range;
     int point    = 4;
     for (std::size_t c = 0; c < h.criteria.size(); ++c)
       {
-        const auto        &cr = h.criteria[c];
+        const auto        &cr     = h.criteria[c];
+        const std::string  colour = colours[c % std::size(colours)];
         std::ostringstream name;
         name << cr.name << " (limit " << cr.limit << ' ' << cr.unit << ')';
-        PlotSeries s{name.str(), h.revolutions, {}, "linespoints", "pt " + std::to_string(point++) + " ps 1.5 lw 2"};
+        PlotSeries s{name.str(),
+                     h.revolutions,
+                     {},
+                     "linespoints",
+                     "pt " + std::to_string(point++) + " ps 1.5 lw 2 lc rgb '" + colour + "'"};
         for (std::size_t r = 0; r < h.rows(); ++r)
           s.y.push_back(h.values[r][c] / cr.limit);
         spec.series.push_back(s);
+        if (analysis::is_trend(cr))
+          add_trend(spec, h, cr, colour);
       }
     if (!h.revolutions.empty())
       spec.series.push_back({"limit", {0.0, h.revolutions.back()}, {1.0, 1.0}, "lines", "dt 2 lw 1.5 lc rgb 'black'"});
-    PlotSeries crossings{"crossing (revolutions to the criterion)", {}, {}, "points", "pt 7 ps 2 lc rgb 'red'"};
+    PlotSeries crossings{"wear crossing (revolutions to the criterion)", {}, {}, "points", "pt 7 ps 2 lc rgb 'red'"};
     for (std::size_t c = 0; c < h.criteria.size(); ++c)
       {
+        if (analysis::is_trend(h.criteria[c]))
+          continue;
         const auto x = analysis::first_crossing(h.revolutions, h.column(c), h.criteria[c].limit);
         if (x.reached)
           {
@@ -126,6 +233,53 @@ namespace wearlink::io
       }
     if (!crossings.x.empty())
       spec.series.push_back(crossings);
+    return plot_png(spec, path);
+  }
+
+  bool
+  plot_life_ensemble(const std::string                        &path,
+                     const std::vector<analysis::LifeHistory> &members,
+                     const std::vector<CrossingSpread>        &spreads,
+                     const std::string                        &title)
+  {
+    PlotSpec spec;
+    spec.title   = title;
+    spec.x_label = "revolutions";
+    spec.y_label = "criterion value / its limit (1: reached)";
+    spec.extra   = "set key inside top left box opaque\nset grid\n" + y_range;
+    if (members.empty())
+      return plot_png(spec, path);
+    double end = 0;
+    for (const auto &m : members)
+      end = m.revolutions.empty() ? end : std::max(end, m.revolutions.back());
+    const auto x = grid(end, 200);
+    for (std::size_t c = 0; c < members.front().criteria.size(); ++c)
+      {
+        const auto         &cr     = members.front().criteria[c];
+        const std::string   colour = colours[c % std::size(colours)];
+        std::vector<double> low, high, median;
+        for (const double at : x)
+          {
+            std::vector<double> v;
+            for (const auto &m : members)
+              if (c < m.criteria.size() && std::isfinite(value_at(m.revolutions, m.column(c), at)))
+                v.push_back(value_at(m.revolutions, m.column(c), at) / cr.limit);
+            low.push_back(v.empty() ? NAN : *std::min_element(v.begin(), v.end()));
+            high.push_back(v.empty() ? NAN : *std::max_element(v.begin(), v.end()));
+            median.push_back(v.empty() ? NAN : analysis::percentile(v, 0.5));
+          }
+        spec.series.push_back(band_series(cr.name + ": smallest … largest of the members", x, low, high, colour));
+        spec.series.push_back(
+          {cr.name + ": median of the members", x, median, "lines", "lw 2 lc rgb '" + colour + "'"});
+        for (const auto &s : spreads)
+          if (s.criterion == cr.name)
+            spec.series.push_back({cr.name + ": crossings P10 … P90, P50",
+                                   {s.p10, s.p50, s.p90},
+                                   {1.0, 1.0, 1.0},
+                                   "linespoints",
+                                   "pt 9 ps 1.8 lw 5 lc rgb '" + colour + "'"});
+      }
+    spec.series.push_back({"limit", {0.0, end}, {1.0, 1.0}, "lines", "dt 2 lw 1.5 lc rgb 'black'"});
     return plot_png(spec, path);
   }
 } // namespace wearlink::io

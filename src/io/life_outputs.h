@@ -6,7 +6,12 @@
 //                     criterion the response measure (response_measure_m_s2); doubles to
 //                     17 digits, so that a resumed run reads its history back exactly;
 //   life.png          every criterion's value as a fraction of its limit against
-//                     revolutions (1: reached), the crossings marked.
+//                     revolutions (1: reached), the wear crossings marked; the response
+//                     criterion with its final trend line and the line's 95 % confidence
+//                     band (Fieller) and the 95 % interval of its crossing;
+//   the ensemble's life.png: per criterion the band (smallest to largest) of the members'
+//                     value / limit against revolutions, their median, and the spread
+//                     P10 … P90 of the members' decided crossings.
 #pragma once
 
 #include "analysis/life_criteria.h"
@@ -28,4 +33,23 @@ namespace wearlink::io
   /** life.png; false (and a note on stderr) without gnuplot. */
   bool
   plot_life(const std::string &path, const analysis::LifeHistory &history, const std::string &title);
+
+  /** One criterion's decided crossings over an ensemble's members [revolutions]. */
+  struct CrossingSpread
+  {
+    std::string criterion; ///< CriterionSpec::name
+    double      p10 = 0, p50 = 0, p90 = 0;
+  };
+
+  /**
+   * The ensemble's life.png from the members' histories (the same criteria, in the same
+   * order): per criterion the band of value / limit over the members that ran that far,
+   * its median (percentile type 7), and @p spreads at the limit. False (and a note on
+   * stderr) without gnuplot.
+   */
+  bool
+  plot_life_ensemble(const std::string                        &path,
+                     const std::vector<analysis::LifeHistory> &members,
+                     const std::vector<CrossingSpread>        &spreads,
+                     const std::string                        &title);
 } // namespace wearlink::io

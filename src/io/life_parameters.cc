@@ -19,17 +19,19 @@ namespace wearlink::io
               "Maximum wear depth",
               "0",
               P::Double(0, 0.1),
-              "Stop criterion of `wearlink life`: the largest wear depth of any surface (pin or "
-              "bore) of any wearing joint, 0 … 0.1 m (a wear depth beyond 10 cm is no joint's); 0: "
-              "off.",
+              "Stop criterion of `wearlink life`: the largest envelope depth of any surface (pin or "
+              "bore) of any wearing joint — the largest running median of the depth over the "
+              "joint's contact width (2b of the Hertz strip at the first iteration's peak force), so "
+              "a one-area spike does not reach it and a pocket as wide as the contact does — 0 … "
+              "0.1 m (a wear depth beyond 10 cm is no joint's); 0: off.",
               "m");
       declare(prm,
               "Radial clearance growth",
               "0",
               P::Double(0, 0.1),
-              "Stop criterion: the growth of a joint's largest radial clearance, its deepest bore "
-              "wear plus its deepest pin wear (they face each other once per relative revolution), "
-              "0 … 0.1 m; 0: off.",
+              "Stop criterion: the growth of a joint's radial clearance, the envelope depth of its "
+              "bore plus that of its pin (see Maximum wear depth; they face each other once per "
+              "relative revolution), 0 … 0.1 m; 0: off.",
               "m");
       declare(prm,
               "Pin mass loss",
@@ -52,7 +54,11 @@ namespace wearlink::io
               "the per-cycle peak acceleration magnitude of Response body, over every accepted "
               "integrator step, in a run from the initial assembly with the current profiles after "
               "one settling cycle, measured after every wear iteration — over its value with the "
-              "fresh profiles, 0 … 1e4 %; 0: off (and no response runs).",
+              "fresh profiles, 0 … 1e4 %; 0: off (and no response runs). The measure scatters, so "
+              "the criterion is decided on the least-squares line through all measurements: reached "
+              "when the lower 95 % confidence bound of the line's rise is at the limit (Student t), "
+              "located where the line crosses it, with the 95 % interval of that crossing (see "
+              "Response tolerance); an undecided criterion is never the life.",
               "%");
     }
 
@@ -76,13 +82,23 @@ namespace wearlink::io
               "a steadier measure, at 1 + this many cycles of dynamics per wear iteration.",
               "cycles");
       declare(prm,
+              "Response tolerance",
+              "0.5",
+              P::Double(1e-3, 100),
+              "The Response rise criterion counts as decided only if the 95 % interval of its "
+              "crossing (the revolutions where the confidence band of the response trend crosses "
+              "the limit) is at most this fraction of the crossing's revolutions wide; 1e-3 … 100. "
+              "A reached criterion with a wider interval is reported as undecided (with its "
+              "interval) and is not the life. Default 0.5: the crossing known to about ±25 %.",
+              "none");
+      declare(prm,
               "Tolerance",
               "0.02",
               P::Double(1e-6, 0.5),
-              "The wear iteration that crosses a criterion represents at most this fraction of the "
-              "revolutions at its end, so each life is located within Tolerance × life (the "
-              "bracket in summary.json); 1e-6 … 0.5. Smaller: one more, shorter iteration near each "
-              "crossing.",
+              "The wear iteration that crosses a wear criterion (depth, clearance growth, mass "
+              "loss) represents at most this fraction of the revolutions at its end, so each such "
+              "life is located within Tolerance × life (the bracket in summary.json); 1e-6 … 0.5. "
+              "Smaller: one more, shorter iteration near each crossing.",
               "none");
       declare(prm,
               "Maximum revolutions",
@@ -116,16 +132,17 @@ namespace wearlink::io
     analysis::LifeSettings s;
     ParameterReader        r(prm, scene.file);
     r.enter("Life");
-    s.max_wear_depth    = r.get_double("Maximum wear depth");
-    s.clearance_growth  = r.get_double("Radial clearance growth");
-    s.pin_mass_loss     = r.get_double("Pin mass loss");
-    s.bushing_mass_loss = r.get_double("Bushing mass loss");
-    s.response_rise     = r.get_double("Response rise");
-    s.response_body     = r.get("Response body");
-    s.response_cycles   = static_cast<unsigned int>(r.get_integer("Response cycles"));
-    s.tolerance         = r.get_double("Tolerance");
-    s.max_revolutions   = r.get_double("Maximum revolutions");
-    s.max_iterations    = static_cast<unsigned int>(r.get_integer("Maximum iterations"));
+    s.max_wear_depth     = r.get_double("Maximum wear depth");
+    s.clearance_growth   = r.get_double("Radial clearance growth");
+    s.pin_mass_loss      = r.get_double("Pin mass loss");
+    s.bushing_mass_loss  = r.get_double("Bushing mass loss");
+    s.response_rise      = r.get_double("Response rise");
+    s.response_body      = r.get("Response body");
+    s.response_cycles    = static_cast<unsigned int>(r.get_integer("Response cycles"));
+    s.response_tolerance = r.get_double("Response tolerance");
+    s.tolerance          = r.get_double("Tolerance");
+    s.max_revolutions    = r.get_double("Maximum revolutions");
+    s.max_iterations     = static_cast<unsigned int>(r.get_integer("Maximum iterations"));
     if (!s.response_body.empty())
       {
         bool known = false;

@@ -9,6 +9,7 @@
 #include "base/text.h"
 #include "base/timings.h"
 #include "io/json_file.h"
+#include "io/life_outputs.h"
 #include "io/plot.h"
 
 #include <deal.II/base/mpi.h>
@@ -123,6 +124,125 @@ namespace wearlink::workflows
 
   namespace
   {
+    constexpr const char *percentile_definition =
+      "linear interpolation between the order statistics (Hyndman & Fan type 7, the default of R and NumPy): "
+      "sorted x_1 … x_n, h = (n - 1) p, P = x_(floor(h)+1) + (h - floor(h)) (x_(floor(h)+2) - x_(floor(h)+1))";
+
+    /** A finite number as JSON, else null. */
+    Json
+    number_or_null(const double v)
+    {
+      return std::isfinite(v) ? Json(v) : Json();
+    }
+
+    /** What the ensemble needs of a member's life block: per criterion status, revolutions, hours. */
+    Json
+    member_life(const Json &life)
+    {
+      Json criteria = Json::object();
+      for (auto it = life.at("criteria").begin(); it != life.at("criteria").end(); ++it)
+        {
+          const Json &o = it.value();
+          // A summary of an earlier version has no status: reached was then its decision.
+          const std::string status =
+            o.contains("status") ? o.at("status").get<std::string>() :
+                                   (o.at("reached").get<bool>() ? std::string("decided") : std::string("not reached"));
+          criteria[it.key()] = {{"status", status}, {"revolutions", o.at("revolutions")}, {"hours", o.at("hours")}};
+        }
+      return {{"criteria", criteria}, {"headline", life.value("first_criterion", Json())}};
+    }
+
+    /** Mean, std, 95 % interval of the mean and P10 / P50 / P90 of @p values. */
+    Json
+    spread_of(const std::vector<double> &values)
+    {
+      const auto f = analysis::ensemble_figure(values);
+      return {{"mean", number_or_null(f.mean)},
+              {"std", number_or_null(f.std)},
+              {"ci95_low", number_or_null(f.ci95_low)},
+              {"ci95_high", number_or_null(f.ci95_high)},
+              {"p10", number_or_null(analysis::percentile(values, 0.1))},
+              {"p50", number_or_null(analysis::percentile(values, 0.5))},
+              {"p90", number_or_null(analysis::percentile(values, 0.9))}};
+    }
+
+    /** One criterion over the members' life blocks @p lives: how many decided it, and the spread of their lives. */
+    Json
+    criterion_over_members(const std::string &name, const std::vector<Json> &lives)
+    {
+      std::vector<double> revolutions, hours;
+      std::size_t         undecided = 0, not_reached = 0;
+      for (const auto &l : lives)
+        {
+          const Json       &o      = l.at("criteria").at(name);
+          const std::string status = o.at("status").get<std::string>();
+          if (status == "decided")
+            {
+              revolutions.push_back(json_number(o.at("revolutions")));
+              hours.push_back(json_number(o.at("hours")));
+            }
+          undecided += status == "undecided" ? 1 : 0;
+          not_reached += status == "not reached" ? 1 : 0;
+        }
+      return {{"members_decided", revolutions.size()},
+              {"members_undecided", undecided},
+              {"members_not_reached", not_reached},
+              {"revolutions", spread_of(revolutions)},
+              {"hours", spread_of(hours)}};
+    }
+  } // namespace
+
+  Json
+  ensemble_life(const std::vector<Json> &members)
+  {
+    std::vector<Json> lives;
+    for (const auto &m : members)
+      if (m.at("status").get<std::string>() == "ok" && m.contains("life"))
+        lives.push_back(m.at("life"));
+    Json out                     = Json::object();
+    out["percentile_definition"] = percentile_definition;
+    out["members"]               = lives.size();
+    Json criteria                = Json::object();
+    if (!lives.empty())
+      for (auto it = lives.front().at("criteria").begin(); it != lives.front().at("criteria").end(); ++it)
+        criteria[it.key()] = criterion_over_members(it.key(), lives);
+    out["criteria"] = criteria;
+    // The life: of the criteria every member decided, the one with the smallest P10.
+    std::string        best;
+    std::ostringstream excluded;
+    for (auto it = criteria.begin(); it != criteria.end(); ++it)
+      {
+        const std::size_t decided = it.value().at("members_decided").get<std::size_t>();
+        if (decided < lives.size() || decided == 0)
+          excluded << "; " << it.key() << " was decided by " << decided << " of " << lives.size()
+                   << " members and is not a life of the ensemble";
+        else if (best.empty() || json_number(it.value().at("revolutions").at("p10")) <
+                                   json_number(criteria.at(best).at("revolutions").at("p10")))
+          best = it.key();
+      }
+    out["criterion"] = best.empty() ? Json() : Json(best);
+    if (best.empty())
+      {
+        out["reason"] = "no criterion was decided by every member" + excluded.str();
+        return out;
+      }
+    const Json &r                = criteria.at(best).at("revolutions");
+    const Json &h                = criteria.at(best).at("hours");
+    out["p10_revolutions"]       = r.at("p10");
+    out["p10_hours"]             = h.at("p10");
+    out["p50_revolutions"]       = r.at("p50");
+    out["p90_revolutions"]       = r.at("p90");
+    out["p50_hours"]             = h.at("p50");
+    out["p90_hours"]             = h.at("p90");
+    out["mean_revolutions"]      = r.at("mean");
+    out["ci95_mean_revolutions"] = Json::array({r.at("ci95_low"), r.at("ci95_high")});
+    out["members_decided"]       = criteria.at(best).at("members_decided");
+    out["reason"]                = best + " has the smallest P10 of the criteria every member decided" + excluded.str();
+    return out;
+  }
+
+  namespace
+  {
     /** What one member produced (serialised to gather it on rank 0). */
     Json
     run_member(const EnsembleOptions &o, const MemberRun &run, const unsigned int k, const int rank)
@@ -145,6 +265,8 @@ namespace wearlink::workflows
             summary = run(scene, dir, prefix, o.resume && std::filesystem::exists(dir + "/checkpoint.json"));
           m["status"]  = "ok";
           m["figures"] = summary_figures(summary);
+          if (summary.contains("life"))
+            m["life"] = member_life(summary.at("life"));
         }
       catch (const Interrupted &) // SIGINT/SIGTERM stops the ensemble, not this member
         {
@@ -286,6 +408,33 @@ namespace wearlink::workflows
       spec.height  = 800;
       io::plot_png(spec, path);
     }
+
+    /**
+     * The ensemble's life.png: the band of the members' criteria against revolutions
+     * (their life_history.csv) and the P10 … P90 of their decided crossings.
+     */
+    void
+    plot_life_band(const Json &summary, const std::vector<analysis::CriterionSpec> &criteria, const std::string &path)
+    {
+      std::vector<analysis::LifeHistory> histories;
+      for (const auto &m : summary.at("members"))
+        if (m.at("status").get<std::string>() == "ok")
+          histories.push_back(
+            io::read_life_history(m.at("directory").get<std::string>() + "/life_history.csv", criteria));
+      std::vector<io::CrossingSpread> spreads;
+      const Json                     &life = summary.at("ensemble_life").at("criteria");
+      for (auto it = life.begin(); it != life.end(); ++it)
+        {
+          const Json &r = it.value().at("revolutions");
+          if (r.at("p10").is_number())
+            spreads.push_back({it.key(), json_number(r.at("p10")), json_number(r.at("p50")), json_number(r.at("p90"))});
+        }
+      io::plot_life_ensemble(path,
+                             histories,
+                             spreads,
+                             "Life criteria of " + std::to_string(histories.size()) +
+                               " members: smallest … largest (band) and median against revolutions");
+    }
   } // namespace
 
   Json
@@ -298,9 +447,12 @@ namespace wearlink::workflows
     if (o.request.members < 2)
       throw InputError("--ensemble " + std::to_string(o.request.members) +
                        ": an ensemble needs at least 2 members (2 … 1000) for a spread.");
+    std::vector<analysis::CriterionSpec> criteria; // of a life ensemble, for its life.png
     {
       io::Scene base = io::read_scene(o.scene_file, o.overrides);
       member_overrides(base, o.overrides, o.request, 0); // the scene can be perturbed (same on every rank)
+      if (o.command == "life")
+        criteria = analysis::active_criteria(base.life);
     }
     if (rank == 0 && o.progress)
       std::cerr << "[wearlink] ensemble of " << o.request.members << " members (seed " << o.request.seed
@@ -323,7 +475,9 @@ namespace wearlink::workflows
     summary["wall_time_s"]  = wall.seconds();
     summary["members"]      = members;
     summary["ensemble"]     = statistics_of(members);
-    std::size_t ok          = 0;
+    if (o.command == "life")
+      summary["ensemble_life"] = ensemble_life(members);
+    std::size_t ok = 0;
     for (const auto &m : members)
       ok += m.at("status").get<std::string>() == "ok" ? 1 : 0;
     summary["members_ok"] = ok;
@@ -333,6 +487,8 @@ namespace wearlink::workflows
     write_file_atomically(o.output_directory + "/ensemble.csv", members_csv(summary));
     if (ok > 0)
       plot_spread(summary, o.output_directory + "/ensemble.png");
+    if (ok > 0 && o.command == "life")
+      plot_life_band(summary, criteria, o.output_directory + "/life.png");
     return summary;
   }
 
@@ -352,9 +508,44 @@ namespace wearlink::workflows
            << number(f.at("std")) << std::setw(33) << (number(f.at("ci95_low")) + " … " + number(f.at("ci95_high")))
            << json_number(f.at("members")) << "\n";
       }
+    if (summary.contains("ensemble_life"))
+      os << ensemble_life_table(summary.at("ensemble_life"));
     os << json_number(summary.at("members_ok")) << " of " << json_number(summary.at("members_count"))
        << " members ran; seed " << json_number(summary.at("seed")) << ", " << json_number(summary.at("mpi_ranks"))
        << " MPI rank(s), " << std::setprecision(4) << json_number(summary.at("wall_time_s")) << " s wall\n";
+    return os.str();
+  }
+
+  std::string
+  ensemble_life_table(const Json &life)
+  {
+    const auto number = [](const Json &v) {
+      return v.is_number() ? format_number(json_number(v), 6) : std::string("-");
+    };
+    std::ostringstream os;
+    os << "life criterion     decided   mean [rev]   std [rev]    95 % interval of the mean  P10 [rev]    P50 [rev]    "
+          "P90 [rev]    P10 [h]\n";
+    const auto members = json_number(life.at("members"));
+    for (auto it = life.at("criteria").begin(); it != life.at("criteria").end(); ++it)
+      {
+        const Json &r = it.value().at("revolutions");
+        os << std::left << std::setw(19) << it.key() << std::setw(10)
+           << (format_number(json_number(it.value().at("members_decided")), 6) + " of " + format_number(members, 6))
+           << std::setw(13) << number(r.at("mean")) << std::setw(13) << number(r.at("std")) << std::setw(27)
+           << (number(r.at("ci95_low")) + " ... " + number(r.at("ci95_high"))) << std::setw(13) << number(r.at("p10"))
+           << std::setw(13) << number(r.at("p50")) << std::setw(13) << number(r.at("p90"))
+           << number(it.value().at("hours").at("p10")) << "\n";
+      }
+    if (life.at("criterion").is_null())
+      os << "ensemble life: none - " << life.at("reason").get<std::string>() << "\n";
+    else
+      os << "ensemble life: " << life.at("criterion").get<std::string>() << ", P10 "
+         << number(life.at("p10_revolutions")) << " rev (" << number(life.at("p10_hours")) << " h); P50 "
+         << number(life.at("p50_revolutions")) << ", P90 " << number(life.at("p90_revolutions")) << " rev; mean "
+         << number(life.at("mean_revolutions")) << " rev (95 % interval of the mean "
+         << number(life.at("ci95_mean_revolutions")[0]) << " ... " << number(life.at("ci95_mean_revolutions")[1])
+         << ") - " << life.at("reason").get<std::string>() << "\n";
+    os << "percentiles: " << life.at("percentile_definition").get<std::string>() << "\n";
     return os.str();
   }
 } // namespace wearlink::workflows

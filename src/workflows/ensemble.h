@@ -20,7 +20,13 @@
 // the members with their perturbations and figures), DIR/ensemble.csv (one row per
 // member) and DIR/ensemble.png (each figure's members relative to their mean, with the
 // 95 % interval of the mean). A member that fails (a numerical failure) is reported
-// with its message; the statistics are over the members that ran.
+// with its message; the statistics are over the members that ran. A life ensemble adds
+// `ensemble_life` (each criterion's revolutions and hours over the members that decided
+// it: mean, std, 95 % interval of the mean, P10 / P50 / P90; the ensemble's life, the
+// smallest P10 of the criteria every member decided) and DIR/life.png (the band of the
+// members' criteria against revolutions, from their life_history.csv). All of it is
+// computed on rank 0 from the members' summaries and files, which depend on the seed and
+// the member index only: the same on any number of ranks.
 #pragma once
 
 #include "base/json.h"
@@ -66,7 +72,7 @@ namespace wearlink::workflows
    * B_max_abs_ax_m_s2, B_max_abs_ay_m_s2 (of the run after wear, or the plain run); the
    * response body's peak accelerations before and after wear and their ratios
    * (response_*); with a life block life_<criterion>_revolutions and life_revolutions
-   * (criteria not reached are left out).
+   * (criteria not decided are left out).
    */
   std::map<std::string, double>
   summary_figures(const Json &summary);
@@ -98,9 +104,27 @@ namespace wearlink::workflows
   Json
   run_ensemble(const EnsembleOptions &options, const MemberRun &run, bool &all_failed);
 
+  /**
+   * summary.json's `ensemble_life` of a life ensemble from its @p members (run_ensemble's
+   * records: status and the member's condensed life block): per criterion how many members
+   * decided it, left it undecided or did not reach it, and over the members that decided
+   * it the revolutions and hours as mean, std, 95 % interval of the mean and P10 / P50 /
+   * P90 (analysis::percentile, type 7; `percentile_definition` says so); and the
+   * ensemble's life: of the criteria every member decided, the one with the smallest P10
+   * (`criterion`, `p10_revolutions`, `p10_hours`, `p50_*`, `p90_*`, `mean_revolutions`,
+   * `ci95_mean_revolutions`, `members_decided`, `reason`). A criterion some member left
+   * undecided is not the ensemble's life.
+   */
+  Json
+  ensemble_life(const std::vector<Json> &members);
+
   /** The printed table of an ensemble summary: figure, mean, std, 95 % interval, members. */
   std::string
   ensemble_table(const Json &summary);
+
+  /** The printed table of an ensemble_life block: per criterion its spread, then the life. */
+  std::string
+  ensemble_life_table(const Json &life);
 
   /** Sub-folder name of member @p k of @p n ("member_00", …). */
   std::string

@@ -55,8 +55,6 @@ namespace wearlink::workflows
     private:
       double
       factor_limit(const wear::StepPreview &p) const;
-      double
-      response_reach(const wear::StepPreview &p, const analysis::CriterionSpec &c, std::size_t index) const;
       void
       after_iteration(const wear::WearLoop &loop);
       bool
@@ -65,12 +63,24 @@ namespace wearlink::workflows
       reached(std::size_t c) const;
       analysis::Crossing
       crossing(std::size_t c) const;
+      analysis::TrendCrossing
+      trend_state(std::size_t c) const;
+      double
+      earliest_wear_life() const;
+      bool
+      cannot_come_first(std::size_t c) const;
+      bool
+      settled(std::size_t c) const;
       double
       measure_response();
       void
       print_progress() const;
       Json
-      criterion_block(std::size_t c) const;
+      wear_block(std::size_t c, analysis::CriterionOutcome &outcome) const;
+      Json
+      trend_block(std::size_t c, analysis::CriterionOutcome &outcome) const;
+      Json
+      headline(const std::vector<analysis::CriterionOutcome> &outcomes, const Json &criteria) const;
 
       io::Scene                            &scene;
       const LifeRunOptions                 &options;
@@ -160,9 +170,11 @@ namespace wearlink::workflows
     }
 
     /**
-     * The largest factor of the coming iteration: each criterion not yet reached lands
-     * on its crossing within the tolerance (analysis::approach_factor), and the run stays
-     * within Life/Maximum revolutions.
+     * The largest factor of the coming iteration: each wear criterion not yet reached
+     * lands on its crossing within the tolerance (analysis::approach_factor), and the run
+     * stays within Life/Maximum revolutions. A trend criterion does not limit it: its
+     * crossing is the fitted line's, located by the statistics of all measurements, not by
+     * an iteration's end.
      */
     double
     LifeRun::factor_limit(const wear::StepPreview &p) const
@@ -170,33 +182,13 @@ namespace wearlink::workflows
       double limit = (scene.life.max_revolutions - p.revolutions) / p.cycles;
       for (std::size_t c = 0; c < history.criteria.size(); ++c)
         {
-          if (reached(c))
+          const auto &spec = history.criteria[c];
+          if (analysis::is_trend(spec) || reached(c))
             continue;
-          const auto  &spec    = history.criteria[c];
-          const double f_reach = spec.kind == analysis::Criterion::response_rise ?
-                                   response_reach(p, spec, c) :
-                                   analysis::factor_to_reach(spec, p, densities, p.factor);
+          const double f_reach = analysis::factor_to_reach(spec, p, densities, p.factor);
           limit = std::min(limit, analysis::approach_factor(f_reach, p.cycles, p.revolutions, scene.life.tolerance));
         }
       return limit;
-    }
-
-    /**
-     * The factor at which the response criterion @p c (column @p index) is predicted to
-     * cross, from the slope of the response trend; +∞ without a rising trend or before it
-     * has enough points (then the iteration takes the loop's own factor).
-     */
-    double
-    LifeRun::response_reach(const wear::StepPreview &p, const analysis::CriterionSpec &c, const std::size_t index) const
-    {
-      const std::size_t k     = history.rows();
-      const auto        trend = analysis::response_trend(history.revolutions, history.response, k);
-      if (trend.points < analysis::min_response_points - 1)
-        return std::numeric_limits<double>::infinity();
-      const double slope = 100 * trend.slope / trend.fresh; // [% per revolution]
-      if (!(slope > 0) || !std::isfinite(slope))
-        return std::numeric_limits<double>::infinity();
-      return std::max(0.0, (c.limit - history.values[k - 1][index]) / slope / p.cycles);
     }
 
     /** The row of the iteration just done (before its checkpoint), and life_history.csv. */
@@ -235,34 +227,85 @@ namespace wearlink::workflows
         print_progress();
     }
 
-    /**
-     * The first crossing of criterion @p c; the response's counts from its
-     * min_response_points-th measurement (a trend of fewer points is not one).
-     */
+    /** The first crossing of the wear criterion @p c. */
     analysis::Crossing
     LifeRun::crossing(const std::size_t c) const
     {
-      auto         values = history.column(c);
-      const double limit  = history.criteria[c].limit;
-      if (history.criteria[c].kind == analysis::Criterion::response_rise)
-        for (std::size_t k = 0; k + 1 < analysis::min_response_points && k < values.size(); ++k)
-          values[k] = std::min(values[k], limit * (1 - 1e-6));
-      return analysis::first_crossing(history.revolutions, values, limit);
+      return analysis::first_crossing(history.revolutions, history.column(c), history.criteria[c].limit);
+    }
+
+    /** Where the trend criterion @p c stands on every measurement so far. */
+    analysis::TrendCrossing
+    LifeRun::trend_state(const std::size_t c) const
+    {
+      const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
+      return analysis::trend_crossing(trend,
+                                      history.criteria[c].limit,
+                                      history.revolutions.back(),
+                                      scene.life.response_tolerance);
     }
 
     bool
     LifeRun::reached(const std::size_t c) const
     {
-      return crossing(c).reached;
+      return analysis::is_trend(history.criteria[c]) ? trend_state(c).reached : crossing(c).reached;
     }
 
+    /**
+     * The fewest revolutions to a wear criterion if every wear criterion is reached (the
+     * earliest decided life the trend criteria compete with), else NaN.
+     */
+    double
+    LifeRun::earliest_wear_life() const
+    {
+      double earliest = std::numeric_limits<double>::infinity();
+      for (std::size_t c = 0; c < history.criteria.size(); ++c)
+        if (!analysis::is_trend(history.criteria[c]))
+          {
+            const auto x = crossing(c);
+            if (!x.reached)
+              return nan;
+            earliest = std::min(earliest, x.revolutions);
+          }
+      return std::isfinite(earliest) ? earliest : nan;
+    }
+
+    /**
+     * True if the trend criterion @p c can no longer be the life: every wear criterion is
+     * reached and the upper 95 % bound of its rise at the earliest of them is below its
+     * limit (its crossing, if any, comes later).
+     */
+    bool
+    LifeRun::cannot_come_first(const std::size_t c) const
+    {
+      const double life = earliest_wear_life();
+      if (!std::isfinite(life))
+        return false;
+      const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
+      return trend.points >= analysis::min_response_points &&
+             trend.excess_band(life, history.criteria[c].limit).high < 0;
+    }
+
+    /**
+     * A wear criterion is settled when reached; a trend criterion when decided, or when it
+     * cannot come first (going on could not change the life).
+     */
+    bool
+    LifeRun::settled(const std::size_t c) const
+    {
+      if (!analysis::is_trend(history.criteria[c]))
+        return crossing(c).reached;
+      return trend_state(c).status == analysis::CriterionStatus::decided || cannot_come_first(c);
+    }
+
+    /** The run ends when every criterion is settled, or at Life/Maximum revolutions. */
     bool
     LifeRun::done(const wear::WearLoop &loop) const
     {
       if (loop.state().revolutions >= scene.life.max_revolutions * (1 - 1e-12))
         return true;
       for (std::size_t c = 0; c < history.criteria.size(); ++c)
-        if (!reached(c))
+        if (!settled(c))
           return false;
       return true;
     }
@@ -281,27 +324,51 @@ namespace wearlink::workflows
              << " % of " << spec.limit << ' ' << spec.unit;
           if (!history.joints.back()[c].empty())
             os << " (" << history.joints.back()[c] << ')';
-          if (reached(c))
+          if (analysis::is_trend(spec))
+            os << " (" << analysis::status_name(trend_state(c).status) << ')';
+          else if (reached(c))
             os << " reached";
         }
       std::cerr << os.str() << "\n";
     }
 
-    /** One criterion of the `life` block. */
+    /** The entries every criterion's block has. */
     Json
-    LifeRun::criterion_block(const std::size_t c) const
+    common_block(const analysis::CriterionSpec &spec, const double value_at_end)
     {
-      const auto &spec  = history.criteria[c];
-      const auto  x     = analysis::first_crossing(history.revolutions, history.column(c), spec.limit);
-      Json        o     = Json::object();
+      Json o            = Json::object();
       o["entry"]        = "Life/" + spec.entry;
       o["limit"]        = spec.limit;
       o["unit"]         = spec.unit;
-      o["reached"]      = x.reached;
-      o["value_at_end"] = history.values.back()[c];
-      o["revolutions"]  = x.reached ? Json(x.revolutions) : Json();
-      o["hours"]        = x.reached ? Json(x.revolutions * period / 3600) : Json();
-      o["joint"]        = x.reached ? history.joints[x.iteration][c] : history.joints.back()[c];
+      o["value_at_end"] = value_at_end;
+      return o;
+    }
+
+    /** A pair of revolutions as JSON (null if either is not finite). */
+    Json
+    pair_or_null(const double low, const double high)
+    {
+      return std::isfinite(low) && std::isfinite(high) ? Json::array({low, high}) : Json();
+    }
+
+    /** The block of the wear criterion @p c: decided when reached, with its bracket. */
+    Json
+    LifeRun::wear_block(const std::size_t c, analysis::CriterionOutcome &outcome) const
+    {
+      const auto &spec = history.criteria[c];
+      const auto  x    = crossing(c);
+      Json        o    = common_block(spec, history.values.back()[c]);
+      o["located_by"]  = "bracket";
+      if (spec.kind == analysis::Criterion::wear_depth || spec.kind == analysis::Criterion::clearance_growth)
+        o["depth"] = "envelope over the contact width";
+      outcome = {x.reached ? analysis::CriterionStatus::decided : analysis::CriterionStatus::not_reached,
+                 x.reached ? x.revolutions : nan};
+      o["reached"]     = x.reached;
+      o["decided"]     = x.reached;
+      o["status"]      = analysis::status_name(outcome.status);
+      o["revolutions"] = x.reached ? Json(x.revolutions) : Json();
+      o["hours"]       = x.reached ? Json(x.revolutions * period / 3600) : Json();
+      o["joint"]       = x.reached ? history.joints[x.iteration][c] : history.joints.back()[c];
       if (!x.reached)
         {
           o["not_reached_within_revolutions"] = revolutions_run;
@@ -314,32 +381,106 @@ namespace wearlink::workflows
       return o;
     }
 
+    /**
+     * The block of the trend criterion @p c: its status on all measurements, the line's
+     * crossing (the life if decided, else an estimate) and its 95 % interval.
+     */
+    Json
+    LifeRun::trend_block(const std::size_t c, analysis::CriterionOutcome &outcome) const
+    {
+      const auto  &spec    = history.criteria[c];
+      const auto   x       = trend_state(c);
+      const bool   decided = x.status == analysis::CriterionStatus::decided;
+      Json         o       = common_block(spec, history.values.back()[c]);
+      std::string  reason  = x.reason;
+      const double life    = earliest_wear_life();
+      if (!decided && cannot_come_first(c))
+        reason += "; it cannot come before the wear life at " + format_number(std::round(life), 15) +
+                  " rev (the upper 95 % bound of its rise there is below the limit), so the run did not go on";
+      outcome                        = {x.status, decided ? x.revolutions : nan};
+      o["located_by"]                = "trend";
+      o["reached"]                   = x.reached;
+      o["decided"]                   = decided;
+      o["status"]                    = analysis::status_name(x.status);
+      o["revolutions"]               = decided ? Json(x.revolutions) : Json();
+      o["hours"]                     = decided ? Json(x.revolutions * period / 3600) : Json();
+      o["joint"]                     = "";
+      o["line_crossing_revolutions"] = std::isfinite(x.revolutions) ? Json(x.revolutions) : Json();
+      o["interval_revolutions"]      = pair_or_null(x.interval.low, x.interval.high);
+      o["interval_hours"]            = pair_or_null(x.interval.low * period / 3600, x.interval.high * period / 3600);
+      o["interval_relative"] =
+        x.interval.bounded() && x.revolutions > 0 ? Json((x.interval.high - x.interval.low) / x.revolutions) : Json();
+      o["response_tolerance"]           = scene.life.response_tolerance;
+      o["rise_at_end_ci95_percent"]     = pair_or_null(x.rise_at_end.low, x.rise_at_end.high);
+      o["last_measurement_revolutions"] = revolutions_run;
+      if (!decided)
+        o["reason"] = reason;
+      if (x.status == analysis::CriterionStatus::not_reached)
+        o["not_reached_within_revolutions"] = revolutions_run;
+      return o;
+    }
+
+    /**
+     * The headline: the decided criterion with the fewest revolutions, and why (the
+     * criteria that are not a life, with their status).
+     */
+    Json
+    LifeRun::headline(const std::vector<analysis::CriterionOutcome> &outcomes, const Json &criteria) const
+    {
+      const auto         first = analysis::headline_criterion(outcomes);
+      Json               h     = Json::object();
+      std::ostringstream why;
+      if (first)
+        {
+          const auto &name = history.criteria[*first].name;
+          const Json &o    = criteria.at(name);
+          h["criterion"]   = name;
+          h["revolutions"] = outcomes[*first].revolutions;
+          h["hours"]       = outcomes[*first].revolutions * period / 3600;
+          h["located_by"]  = o.at("located_by");
+          h["range_revolutions"] =
+            o.contains("bracket_revolutions") ? o.at("bracket_revolutions") : o.at("interval_revolutions");
+          why << name << " is the decided criterion with the fewest revolutions";
+        }
+      else
+        {
+          h["criterion"] = Json();
+          why << "no criterion was decided within the run's " << format_number(revolutions_run, 6) << " revolutions ("
+              << iterations_run << " iterations)";
+        }
+      for (std::size_t c = 0; c < outcomes.size(); ++c)
+        if (outcomes[c].status != analysis::CriterionStatus::decided)
+          {
+            const Json &o = criteria.at(history.criteria[c].name);
+            why << "; " << history.criteria[c].name << " is " << analysis::status_name(outcomes[c].status)
+                << (o.contains("reason") ? " (" + o.at("reason").get<std::string>() + ")" : std::string())
+                << " and not a life";
+          }
+      h["reason"] = why.str();
+      return h;
+    }
+
     Json
     LifeRun::block() const
     {
-      Json life               = Json::object();
-      life["tolerance"]       = scene.life.tolerance;
-      life["cycle_period_s"]  = period;
-      life["revolutions_run"] = revolutions_run;
-      life["hours_run"]       = revolutions_run * period / 3600;
-      life["iterations"]      = iterations_run;
-      Json        criteria    = Json::object();
-      std::string first;
-      double      first_revolutions = std::numeric_limits<double>::infinity();
+      Json life                                        = Json::object();
+      life["tolerance"]                                = scene.life.tolerance;
+      life["cycle_period_s"]                           = period;
+      life["revolutions_run"]                          = revolutions_run;
+      life["hours_run"]                                = revolutions_run * period / 3600;
+      life["iterations"]                               = iterations_run;
+      Json                                    criteria = Json::object();
+      std::vector<analysis::CriterionOutcome> outcomes(history.criteria.size());
       for (std::size_t c = 0; c < history.criteria.size(); ++c)
-        {
-          const Json o                       = criterion_block(c);
-          criteria[history.criteria[c].name] = o;
-          if (o.at("reached").get<bool>() && json_number(o.at("revolutions")) < first_revolutions)
-            {
-              first             = history.criteria[c].name;
-              first_revolutions = json_number(o.at("revolutions"));
-            }
-        }
+        criteria[history.criteria[c].name] =
+          analysis::is_trend(history.criteria[c]) ? trend_block(c, outcomes[c]) : wear_block(c, outcomes[c]);
       life["criteria"]         = criteria;
-      life["first_criterion"]  = first.empty() ? Json() : Json(first);
-      life["life_revolutions"] = first.empty() ? Json() : Json(first_revolutions);
-      life["life_hours"]       = first.empty() ? Json() : Json(first_revolutions * period / 3600);
+      const Json head          = headline(outcomes, criteria);
+      const bool any           = !head.at("criterion").is_null();
+      life["headline"]         = head;
+      life["first_criterion"]  = head.at("criterion");
+      life["life_revolutions"] = any ? head.at("revolutions") : Json();
+      life["life_hours"]       = any ? head.at("hours") : Json();
       if (scene.life.response_rise > 0)
         {
           const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
@@ -349,7 +490,9 @@ namespace wearlink::workflows
                               {"measured_last_m_s2", history.response.back()},
                               {"trend_fresh_m_s2", trend.fresh},
                               {"trend_slope_percent_per_1000_rev", 1e5 * trend.slope / trend.fresh},
+                              {"residual_std_m_s2", trend.residual_std},
                               {"scatter_percent", 100 * trend.scatter},
+                              {"student_t_975", trend.t95},
                               {"measurements", trend.points}};
         }
       return life;
@@ -378,26 +521,62 @@ namespace wearlink::workflows
     return result;
   }
 
+  namespace
+  {
+    /** "a … b" of a JSON pair of numbers. */
+    std::string
+    range_text(const Json &pair)
+    {
+      return format_number(json_number(pair[0]), 6) + " … " + format_number(json_number(pair[1]), 6);
+    }
+
+    /** The last column of a criterion's row: its bracket, its interval or why it is no life. */
+    std::string
+    range_column(const Json &o)
+    {
+      const std::string status = o.at("status").get<std::string>();
+      if (o.at("located_by") == "bracket")
+        return status == "decided" ?
+                 range_text(o.at("bracket_revolutions")) + " (bracket" +
+                   (o.at("within_tolerance").get<bool>() ? ")" : ", wider than the tolerance)") :
+                 "not reached within " + format_number(json_number(o.at("not_reached_within_revolutions")), 6) + " rev";
+      std::string text = o.at("interval_revolutions").is_null() ? "no bounded interval" :
+                                                                  range_text(o.at("interval_revolutions")) + " (95 %)";
+      if (status != "decided")
+        {
+          if (!o.at("line_crossing_revolutions").is_null())
+            text = "line crosses at " + format_number(json_number(o.at("line_crossing_revolutions")), 6) + ", " + text;
+          text += "; " + o.at("reason").get<std::string>();
+        }
+      return text;
+    }
+  } // namespace
+
   std::string
   life_table(const Json &life)
   {
     std::ostringstream os;
-    os << "criterion            limit            revolutions      hours        joint  bracket (rev)\n";
+    os << "criterion          limit          status       revolutions    hours        joint  bracket or 95 % interval "
+          "(rev)\n";
     for (auto it = life.at("criteria").begin(); it != life.at("criteria").end(); ++it)
       {
         const Json        &o = it.value();
         std::ostringstream limit;
         limit << std::setprecision(4) << json_number(o.at("limit")) << ' ' << o.at("unit").get<std::string>();
-        os << std::left << std::setw(21) << it.key() << std::setw(17) << limit.str() << std::setprecision(6);
-        if (o.at("reached").get<bool>())
-          os << std::setw(17) << json_number(o.at("revolutions")) << std::setw(13) << json_number(o.at("hours"))
-             << std::setw(7) << o.at("joint").get<std::string>() << json_number(o.at("bracket_revolutions")[0]) << " … "
-             << json_number(o.at("bracket_revolutions")[1])
-             << (o.at("within_tolerance").get<bool>() ? "" : "  (wider than the tolerance)");
-        else
-          os << "not reached within " << json_number(o.at("not_reached_within_revolutions")) << " rev";
-        os << "\n";
+        const bool decided = o.at("decided").get<bool>();
+        os << std::left << std::setw(19) << it.key() << std::setw(15) << limit.str() << std::setw(13)
+           << o.at("status").get<std::string>() << std::setw(15)
+           << (decided ? format_number(json_number(o.at("revolutions")), 6) : "-") << std::setw(13)
+           << (decided ? format_number(json_number(o.at("hours")), 6) : "-") << std::setw(7)
+           << o.at("joint").get<std::string>() << range_column(o) << "\n";
       }
+    const Json &h = life.at("headline");
+    if (h.at("criterion").is_null())
+      os << "life: none decided — " << h.at("reason").get<std::string>() << "\n";
+    else
+      os << "life: " << h.at("criterion").get<std::string>() << ", "
+         << format_number(json_number(h.at("revolutions")), 6) << " revolutions ("
+         << format_number(json_number(h.at("hours")), 6) << " h) — " << h.at("reason").get<std::string>() << "\n";
     return os.str();
   }
 } // namespace wearlink::workflows

@@ -12,13 +12,19 @@
 //  - The statistics are the textbook ones: mean of the members, sample standard
 //    deviation, 95 % interval of the mean with Student's t for 3 members,
 //    t(0.975, 2) = 4.303 (table value, to its 3 decimals).
+//  - A life ensemble (`life --ensemble 4` of tests/scenes/life_journal.prm, ~1 s a member)
+//    gives the same `ensemble_life` on 1 and 2 ranks; its percentiles are those of the
+//    members' own summaries (type 7: P10 = x₁ + 0.3 (x₂ − x₁) for 4 members), its life is
+//    the pin's mass loss at the analytic revolutions, and life.png is drawn.
 #include "base/json.h"
 #include "base/output_directory.h"
 #include "io/json_file.h"
 #include "support/test_support.h"
+#include "workflows/ensemble.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -89,6 +95,110 @@ TEST(Ensemble, SeededStatisticsAreReproducibleAndIndependentOfTheRankCount)
   EXPECT_NEAR(json_number(f.at("ci95_high")) - mean, 4.303 * s / std::sqrt(3.0), 5e-4 * s / std::sqrt(3.0));
   EXPECT_GT(s, 1e-3 * mean) << "the members did not part: the perturbation does not reach the dynamics";
   EXPECT_NE(json_number(c.at("ensemble").at(volume).at("mean")), mean) << "another seed, the same members";
+}
+
+namespace
+{
+  std::vector<std::string>
+  life_ensemble_args(const std::string &dir)
+  {
+    return {"life",
+            source_path("tests/scenes/life_journal.prm"),
+            "--ensemble",
+            "4",
+            "--seed",
+            "5",
+            "--output",
+            dir,
+            "--quiet"};
+  }
+
+  /** P_p of @p v by linear interpolation between the order statistics (type 7). */
+  double
+  type7(std::vector<double> v, const double p)
+  {
+    std::sort(v.begin(), v.end());
+    const double      h = (v.size() - 1) * p;
+    const std::size_t k = static_cast<std::size_t>(h);
+    return k + 1 < v.size() ? v[k] + (h - k) * (v[k + 1] - v[k]) : v[k];
+  }
+} // namespace
+
+TEST(Ensemble, LifeStatisticsAreTheSameOnOneAndTwoRanks)
+{
+  if (std::string(WEARLINK_MPIEXEC).empty())
+    GTEST_SKIP() << "no mpiexec";
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string serial = fresh_directory("life_ensemble_serial"), parallel = fresh_directory("life_ensemble_mpi");
+  const auto        r1 = run_wearlink(life_ensemble_args(serial));
+  ASSERT_EQ(r1.exit_status, 0) << r1.output;
+  const auto r2 = run_wearlink_mpi(2, life_ensemble_args(parallel));
+  ASSERT_EQ(r2.exit_status, 0) << r2.output;
+  const Json a = io::read_json_file(serial + "/summary.json"), b = io::read_json_file(parallel + "/summary.json");
+  EXPECT_EQ(json_number(b.at("mpi_ranks")), 2);
+  EXPECT_EQ(a.at("ensemble_life"), b.at("ensemble_life")) << "1 rank and 2 ranks disagree";
+  EXPECT_EQ(a.at("ensemble"), b.at("ensemble"));
+
+  const Json &life = a.at("ensemble_life");
+  ASSERT_EQ(life.at("criterion").get<std::string>(), "pin_mass_loss") << life.at("reason");
+  EXPECT_EQ(json_number(life.at("members_decided")), 4);
+  std::vector<double> n;
+  for (int k = 0; k < 4; ++k)
+    n.push_back(json_number(io::read_json_file(serial + "/member_0" + std::to_string(k) + "/summary.json")
+                              .at("life")
+                              .at("criteria")
+                              .at("pin_mass_loss")
+                              .at("revolutions")));
+  EXPECT_DOUBLE_EQ(json_number(life.at("p10_revolutions")), type7(n, 0.1));
+  EXPECT_DOUBLE_EQ(json_number(life.at("p50_revolutions")), type7(n, 0.5));
+  EXPECT_DOUBLE_EQ(json_number(life.at("p90_revolutions")), type7(n, 0.9));
+  EXPECT_NEAR(json_number(life.at("p10_hours")), type7(n, 0.1) * 0.2 / 3600, 1e-12) << "T = 0.2 s per revolution";
+  // The analytic life of the pin's 10 mg (the scene's header), within its 1 % tolerance.
+  const double analytic = 1e-5 / (7850 * 2e-13 * 98.1 * 2 * 3.14159265358979 * 0.00995);
+  EXPECT_NEAR(json_number(life.at("p50_revolutions")), analytic, 0.01 * analytic);
+  const Json &bushing = life.at("criteria").at("bushing_mass_loss");
+  EXPECT_LE(json_number(bushing.at("revolutions").at("p10")), json_number(bushing.at("revolutions").at("p90")));
+  EXPECT_TRUE(std::filesystem::exists(serial + "/life.png")) << "the ensemble's band of the criteria";
+  EXPECT_NE(r1.output.find("ensemble life: pin_mass_loss, P10"), std::string::npos) << r1.output;
+}
+
+// The ensemble's life from its members' records (workflows::ensemble_life, no run): the
+// response rise crosses early in 3 members (10, 20, 30 rev) but one left it undecided, so
+// it is not a life of the ensemble; the wear depth, decided by all 4 at 100, 110, 120, 130
+// rev, is: P10 = 100 + 0.3 × 10 = 103, P50 = 115, P90 = 127 (type 7), mean 115 with the
+// 95 % interval 115 ± t(0.975, 3) s/2, s = √(500/3). A failed member does not count.
+TEST(Ensemble, AnUndecidedCriterionIsNotTheLifeOfTheEnsemble)
+{
+  std::vector<Json> members;
+  const double      depth[] = {100, 110, 120, 130}, response[] = {10, 20, 30, NAN};
+  for (int k = 0; k < 4; ++k)
+    {
+      const bool decided = std::isfinite(response[k]);
+      Json       life    = {{"criteria",
+                             {{"wear_depth", {{"status", "decided"}, {"revolutions", depth[k]}, {"hours", depth[k] / 7200}}},
+                              {"response_rise",
+                               {{"status", decided ? "decided" : "undecided"},
+                                {"revolutions", decided ? Json(response[k]) : Json()},
+                                {"hours", decided ? Json(response[k] / 7200) : Json()}}}}},
+                            {"headline", decided ? "response_rise" : "wear_depth"}};
+      members.push_back({{"status", "ok"}, {"life", life}});
+    }
+  members.push_back({{"status", "failed"}});
+  const Json e = workflows::ensemble_life(members);
+  EXPECT_EQ(json_number(e.at("members")), 4);
+  ASSERT_EQ(e.at("criterion").get<std::string>(), "wear_depth") << e.at("reason");
+  EXPECT_DOUBLE_EQ(json_number(e.at("p10_revolutions")), 103);
+  EXPECT_DOUBLE_EQ(json_number(e.at("p50_revolutions")), 115);
+  EXPECT_DOUBLE_EQ(json_number(e.at("p90_revolutions")), 127);
+  EXPECT_DOUBLE_EQ(json_number(e.at("p10_hours")), 103.0 / 7200);
+  EXPECT_NEAR(json_number(e.at("ci95_mean_revolutions")[1]) - 115, 3.182446 * std::sqrt(500.0 / 3) / 2, 1e-4);
+  const Json &r = e.at("criteria").at("response_rise");
+  EXPECT_EQ(json_number(r.at("members_decided")), 3);
+  EXPECT_EQ(json_number(r.at("members_undecided")), 1);
+  EXPECT_DOUBLE_EQ(json_number(r.at("revolutions").at("p10")), 12) << "over the members that decided it";
+  EXPECT_NE(e.at("reason").get<std::string>().find("response_rise was decided by 3 of 4"), std::string::npos)
+    << e.at("reason");
 }
 
 // An ensemble on 2 ranks into a folder locked by another process: rank 0 is refused,

@@ -61,6 +61,8 @@ TEST(Life, ReachesTheAnalyticRevolutionsOfAConstantWearRate)
     {
       const Json &o = life.at("criteria").at(c.name);
       ASSERT_TRUE(o.at("reached").get<bool>()) << c.name;
+      EXPECT_TRUE(o.at("decided").get<bool>()) << c.name << ": a wear criterion is decided when reached";
+      EXPECT_EQ(o.at("status").get<std::string>(), "decided") << c.name;
       const double n = json_number(o.at("revolutions"));
       EXPECT_NEAR(n, c.expected, tolerance * c.expected) << c.name << ": expected " << c.expected;
       EXPECT_EQ(o.at("joint").get<std::string>(), c.joint);
@@ -71,6 +73,9 @@ TEST(Life, ReachesTheAnalyticRevolutionsOfAConstantWearRate)
       EXPECT_NEAR(json_number(o.at("hours")), n * 0.2 / 3600, 1e-12 * n) << "T = 0.2 s per revolution";
     }
   EXPECT_EQ(life.at("first_criterion").get<std::string>(), "pin_mass_loss");
+  EXPECT_EQ(life.at("headline").at("criterion").get<std::string>(), "pin_mass_loss");
+  EXPECT_EQ(json_number(life.at("headline").at("revolutions")),
+            json_number(life.at("criteria").at("pin_mass_loss").at("revolutions")));
   // The run ends at the last criterion, not at Life/Maximum revolutions (1e9): its
   // iteration lands on it to within what the sequential update's increments change
   // between the factor planned and the one landed (here ~1e-7 of the life).
@@ -78,6 +83,46 @@ TEST(Life, ReachesTheAnalyticRevolutionsOfAConstantWearRate)
   EXPECT_NEAR(json_number(life.at("revolutions_run")), last, 1e-6 * last);
   EXPECT_TRUE(std::filesystem::exists(dir + "/life_history.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/life.png"));
+}
+
+// A response criterion that is no trend is never the life. The journal's rotor1 peak
+// acceleration jumps from 0.01 m/s² (fresh: the pin settles on its bore) to 2–30 m/s²
+// once worn (it rocks in its pocket): a +5 % limit is exceeded by the first sample after
+// 400 revolutions (+20,000 %), which a one-sample criterion would report as the life. A
+// step is no line: the measurements scatter about the least-squares line by about its
+// fresh value, so the 95 % interval of the crossing is many times wider than
+// Life/Response tolerance (50 %; measured over 30 iterations: 85 … 7,700 revolutions
+// about a crossing at 415) and the criterion is undecided — reported with its interval
+// and why — while the life stays the pin's mass loss at its analytic revolutions. (Life/Maximum iterations = 12:
+// the criterion cannot settle, so the run goes on to its bound.)
+TEST(Life, AnUndecidedResponseIsNeverTheLife)
+{
+  const std::string dir = fresh_directory("life_journal_response");
+  const auto        r   = run_wearlink({"life",
+                                        source_path("tests/scenes/life_journal.prm"),
+                                        "--output",
+                                        dir,
+                                        "--quiet",
+                                        "--set",
+                                        "Life/Response rise=5",
+                                        "--set",
+                                        "Life/Response body=rotor1",
+                                        "--set",
+                                        "Life/Maximum iterations=12"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const Json  life     = life_of(dir);
+  const Json &response = life.at("criteria").at("response_rise");
+  EXPECT_FALSE(response.at("decided").get<bool>());
+  EXPECT_NE(response.at("status").get<std::string>(), "decided");
+  EXPECT_TRUE(response.at("revolutions").is_null()) << "an undecided criterion has no life";
+  EXPECT_FALSE(response.at("reason").get<std::string>().empty());
+  EXPECT_GT(json_number(response.at("value_at_end")), 5) << "its trend is above the limit: a one-sample rule fires";
+  EXPECT_EQ(life.at("first_criterion").get<std::string>(), "pin_mass_loss");
+  const double expected = analytic_revolutions(10, 2e-13, 0.00995);
+  EXPECT_NEAR(json_number(life.at("life_revolutions")), expected, 0.01 * expected);
+  EXPECT_NE(life.at("headline").at("reason").get<std::string>().find("response_rise is undecided"), std::string::npos)
+    << life.at("headline").at("reason");
+  EXPECT_NE(r.output.find("response_rise      5 %            undecided"), std::string::npos) << r.output;
 }
 
 // A life run stopped early (Life/Maximum iterations = 3, criteria not reached) and then

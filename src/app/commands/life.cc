@@ -25,24 +25,48 @@ wearlink life SCENE.prm --resume DIR [--set ...] [--quiet]
 
 When is the joint worn out? Runs the wear loop of a wear scene (section Wear: the
 iterations, their extrapolation, the pressure models; see `wearlink run --help`) until
-the stop criteria of the scene's section Life are reached, and reports the revolutions
+the stop criteria of the scene's section Life are decided, and reports the revolutions
 (and the hours at the scene's driving speed) to each:
-  Life/Maximum wear depth       m   the deepest wear of any pin or bore
-  Life/Radial clearance growth  m   a joint's deepest bore wear + deepest pin wear
+  Life/Maximum wear depth       m   the deepest envelope depth of any pin or bore
+  Life/Radial clearance growth  m   a joint's bore envelope depth + pin envelope depth
   Life/Pin mass loss            mg  the mass worn off a joint's pin
   Life/Bushing mass loss        mg  the mass worn off a joint's bushing
-  Life/Response rise            %   the rise of the mean per-cycle peak acceleration of
-                                    Life/Response body (Life/Response cycles cycles from
-                                    the initial assembly with the current profiles, after
-                                    every iteration) over its value when fresh
-A limit of 0 (the default) switches a criterion off; at least one must be on. Each
-iteration's extrapolation is limited so that the iteration that crosses a criterion
-represents at most Life/Tolerance (default 0.02) of the revolutions at its end: each
-life is located within that fraction (the bracket in summary.json). The run ends when
-every criterion is reached, or at Life/Maximum revolutions or Life/Maximum iterations
-(which replaces Wear/Number of iterations; with adaptive extrapolation Life/Maximum
-revolutions replaces Wear/Target revolutions). `wearlink --print-parameters` documents
-each entry.
+  Life/Response rise            %   the rise of the trend of the mean per-cycle peak
+                                    acceleration of Life/Response body (Life/Response
+                                    cycles cycles from the initial assembly with the
+                                    current profiles, after every iteration) over its
+                                    value when fresh
+A limit of 0 (the default) switches a criterion off; at least one must be on.
+
+The envelope depth is the largest running median of a surface's depth over the joint's
+contact width (2b of the Hertz strip of the unworn radii at the first iteration's peak
+force): a spike of one discrete area does not reach a depth limit, a pocket as wide as
+the contact does.
+
+The wear criteria (depth, clearance growth, mass losses) are deterministic: each
+iteration's extrapolation is limited so that the iteration that crosses one represents
+at most Life/Tolerance (default 0.02) of the revolutions at its end, so each is located
+within that fraction (the bracket) and is decided when reached.
+
+The response measure scatters (the impacts of a chaotic mechanism), so Response rise is
+decided on its trend, never on one sample: the least-squares line through all
+measurements, rise = line(N)/line(0) - 1, with its 95 % confidence band (Student t,
+n - 2 degrees of freedom). It is reached when the band's lower bound of the rise at the
+last measurement is at the limit, not reached when its upper bound is below; located
+where the line crosses the limit, with the 95 % interval of the revolutions where the
+band's bounds cross it. It is decided when reached with that interval at most
+Life/Response tolerance (default 0.5) of the crossing wide, else undecided (reported
+with the line's crossing, the interval if bounded, and why). It counts from the 4th
+measurement. An undecided criterion is never the life: the life (summary.json
+life.headline, first_criterion, life_revolutions) is the decided criterion with the
+fewest revolutions.
+
+The run ends when every criterion is settled (a wear criterion reached; the response
+criterion decided, or unable to come before the wear lives once they are all reached:
+the upper 95 % bound of its rise at the earliest of them below its limit), or at
+Life/Maximum revolutions or Life/Maximum iterations (which replaces Wear/Number of
+iterations; with adaptive extrapolation Life/Maximum revolutions replaces Wear/Target
+revolutions). `wearlink --print-parameters` documents each entry.
 
 Writes into DIR (default: output/<scene name>_life) the files of a wear run
 (summary.json, checkpoint.json, wear_history.csv, wear_depth_<J>.csv/.png, profiles,
@@ -50,10 +74,14 @@ response_before.csv, response_after.csv, response.png, ...; see `wearlink run --
 and
   life_history.csv  per iteration: revolutions, factor, each criterion's value and the
                     joint that has it, the response measure [m/s²]
-  life.png          each criterion's value / its limit against revolutions
-summary.json has a block "life": per criterion its limit, whether it was reached, the
-revolutions and hours to it, the joint, the bracket of revolutions and whether it is
-within the tolerance; the first criterion reached and its life. The table is printed.
+  life.png          each criterion's value / its limit against revolutions; the
+                    response trend with its 95 % band and the interval of its crossing
+summary.json has a block "life": per criterion its limit, status ("decided",
+"undecided", "not reached"), decided, reached, the revolutions and hours to it, the
+joint; a wear criterion its bracket and whether it is within the tolerance; the
+response criterion interval_revolutions [low, high], its line's crossing and, if
+undecided, the reason; "headline" (criterion, revolutions, hours, reason). The table
+is printed.
   --resume DIR        continue the life run in DIR from its last finished iteration
                       (same scene; Life/Maximum revolutions and Life/Maximum iterations
                       may be raised)
@@ -63,8 +91,12 @@ within the tolerance; the first criterion reached and its life. The table is pri
 files is refused unless --overwrite (remove them) or --resume (continue it).
 
 Ensembles (default folder output/<scene name>_life_ensemble; each member a life run in
-DIR/member_<k>/; the revolutions to each criterion get a mean, a standard deviation and
-a 95 % interval, over the members that reached it):
+DIR/member_<k>/): summary.json's "ensemble_life" gives per criterion how many members
+decided it and, over those, its revolutions and hours as mean, standard deviation, 95 %
+interval of the mean and P10 / P50 / P90 (linear interpolation between the order
+statistics, type 7); the ensemble's life is the smallest P10 of the criteria every
+member decided. DIR/life.png draws the band (smallest to largest) and the median of the
+members' criteria against revolutions. The table is printed.
 )") + workflows::ensemble_help() +
       R"(
 Options:

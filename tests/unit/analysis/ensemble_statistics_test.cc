@@ -71,3 +71,19 @@ TEST(EnsembleStatistics, TheIntervalCoversTheMeanNineteenTimesInTwenty)
     }
   EXPECT_NEAR(double(covered) / samples, 0.95, 4 * 0.0034);
 }
+
+// Percentiles of type 7 (linear interpolation between the order statistics; R's and
+// NumPy's default): for 1, 2, 3, 4 (in any order) h = 3 p, so P10 = 1 + 0.3 = 1.3,
+// P50 = 2.5, P90 = 3 + 0.7 = 3.7 (numpy.percentile gives the same); P0 and P100 are the
+// extremes, one value is every percentile, NaN is no value.
+TEST(EnsembleStatistics, PercentilesInterpolateBetweenOrderStatistics)
+{
+  const std::vector<double> v = {4, 1, std::nan(""), 3, 2};
+  EXPECT_DOUBLE_EQ(percentile(v, 0.1), 1.3);
+  EXPECT_DOUBLE_EQ(percentile(v, 0.5), 2.5);
+  EXPECT_DOUBLE_EQ(percentile(v, 0.9), 3.7);
+  EXPECT_EQ(percentile(v, 0), 1);
+  EXPECT_EQ(percentile(v, 1), 4);
+  EXPECT_EQ(percentile({7}, 0.1), 7);
+  EXPECT_TRUE(std::isnan(percentile({}, 0.5)));
+}

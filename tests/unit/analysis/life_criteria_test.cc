@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The stop criteria of a life run (analysis/life_criteria.h) on hand-made wear states:
 // the factor at which a criterion reaches its limit (the depths h + f Δh and volumes
-// V + f ΔV are known before the step), the approach to a crossing within the
-// tolerance, and the interpolated crossing with its bracket.
+// V + f ΔV are known before the step), the envelope depth the depth criteria use, the
+// approach to a crossing within the tolerance, and the interpolated crossing with its
+// bracket. The trend criterion on synthetic measurements (no simulation): the coverage
+// of its 95 % crossing interval, and that pure noise or too few points are never the
+// life (trend_criterion_test.cc).
 #include "analysis/life_criteria.h"
 
 #include <gtest/gtest.h>
@@ -102,4 +105,91 @@ TEST(LifeCriteria, TheResponseTrendIsTheLeastSquaresLine)
   // Residuals ±(−2, 6, −6, 2): s = √(80 / 2) relative to 102.
   EXPECT_NEAR(t.scatter, std::sqrt(40.0) / 102, 1e-12);
   EXPECT_EQ(response_trend({0, 1000}, {100, 120}, 1).rise(1000), 0) << "one point has no trend";
+}
+
+namespace
+{
+  /**
+   * A joint of 36 areas on radii 10 mm (bore) and 9.95 mm (pin) whose contact width,
+   * 8.7 mm, spans 5 areas of 1.745 mm (wear::window_areas rounds 4.99 to 5): the depth
+   * criteria take the running median over 5 areas.
+   */
+  wear::JointWearState
+  joint_of_five_area_contact()
+  {
+    wear::JointWearState js;
+    js.name          = "A";
+    js.initial_bore  = Profile::round(0.010, 36);
+    js.initial_pin   = Profile::round(0.00995, 36);
+    js.bore          = js.initial_bore;
+    js.pin           = js.initial_pin;
+    js.contact_width = 8.7e-3;
+    return js;
+  }
+} // namespace
+
+// The envelope, not the raw deepest area: a one-area spike of 60 µm growing by 10 µm per
+// unit factor never reaches a 50 µm limit (the median over the 5 areas of the contact
+// stays at the 0 of its neighbours), while a pocket of 7 areas — wider than the contact —
+// at 40 µm growing by 5 µm per unit factor reaches it at f = 2, as its raw depth does.
+TEST(LifeCriteria, TheDepthCriteriaUseTheEnvelopeOverTheContactWidth)
+{
+  const auto                        js        = joint_of_five_area_contact();
+  const std::vector<JointDensities> densities = {{7850, 7850}};
+  CriterionSpec                     depth{Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", 50e-6};
+  CriterionSpec growth{Criterion::clearance_growth, "clearance_growth", "Radial clearance growth", "m", 50e-6};
+
+  wear::StepPreview        spike;
+  wear::StepPreview::Joint j;
+  j.state              = &js;
+  j.depth_pin          = std::vector<double>(36, 0.0);
+  j.pin_increment      = std::vector<double>(36, 0.0);
+  j.depth_bore         = std::vector<double>(36, 0.0);
+  j.bore_increment     = std::vector<double>(36, 0.0);
+  j.depth_bore[10]     = 60e-6;
+  j.bore_increment[10] = 10e-6;
+  spike.joints.push_back(j);
+  spike.cycles = 10;
+  EXPECT_EQ(wear_criterion_value(depth, spike, densities, 0).value, 0) << "the raw depth would be 60 µm";
+  EXPECT_TRUE(std::isinf(factor_to_reach(depth, spike, densities, 1000))) << "a spike is no depth the contact meets";
+  EXPECT_TRUE(std::isinf(factor_to_reach(growth, spike, densities, 1000)));
+
+  wear::StepPreview pocket = spike;
+  auto             &p      = pocket.joints[0];
+  for (int k = 20; k < 27; ++k)
+    {
+      p.depth_bore[k]     = 40e-6;
+      p.bore_increment[k] = 5e-6;
+    }
+  EXPECT_NEAR(wear_criterion_value(depth, pocket, densities, 0).value, 40e-6, 1e-18);
+  EXPECT_NEAR(factor_to_reach(depth, pocket, densities, 1000), 2, 2e-12);
+  // Clearance growth: the pin's envelope adds to the bore's. A pin pocket of 5 areas at
+  // 4 µm (+1 µm per unit factor): 40 + 5 f + 4 + f = 50 µm at f = 1.
+  for (int k = 0; k < 5; ++k)
+    {
+      p.depth_pin[k]     = 4e-6;
+      p.pin_increment[k] = 1e-6;
+    }
+  EXPECT_NEAR(factor_to_reach(growth, pocket, densities, 1000), 1, 1e-12);
+  EXPECT_EQ(wear_criterion_value(growth, pocket, densities, 0).joint, "A");
+}
+
+// After an iteration the criteria read the wear loop's own envelope depths of the
+// record, not its raw deepest area.
+TEST(LifeCriteria, AfterAnIterationTheCriteriaReadTheRecordedEnvelope)
+{
+  wear::WearState       state;
+  auto                  js = joint_of_five_area_contact();
+  wear::IterationRecord r;
+  r.max_depth_bore      = 70e-6; // a spike
+  r.envelope_depth_bore = 45e-6;
+  r.max_depth_pin       = 12e-6;
+  r.envelope_depth_pin  = 10e-6;
+  js.history.push_back(r);
+  state.joints.push_back(js);
+  const std::vector<JointDensities> densities = {{7850, 7850}};
+  CriterionSpec                     depth{Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", 50e-6};
+  CriterionSpec growth{Criterion::clearance_growth, "clearance_growth", "Radial clearance growth", "m", 75e-6};
+  EXPECT_DOUBLE_EQ(wear_criterion_value(depth, state, densities).value, 45e-6);
+  EXPECT_DOUBLE_EQ(wear_criterion_value(growth, state, densities).value, 55e-6);
 }
