@@ -587,4 +587,21 @@ namespace wearlink
       }
   }
 
+
+  std::string
+  entry_value(dealii::ParameterHandler &prm, const std::string &path)
+  {
+    std::vector<std::string> parts(1);
+    for (const char c : path)
+      if (c == '/')
+        parts.emplace_back();
+      else
+        parts.back() += c;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+      prm.enter_subsection(parts[i]);
+    const std::string v = prm.get(parts.back());
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+      prm.leave_subsection();
+    return v;
+  }
 } // namespace wearlink

@@ -179,4 +179,8 @@ namespace wearlink
   void
   apply_overrides(dealii::ParameterHandler &prm, const ParameterOverrides &overrides);
 
+  /** The value of entry "Section/Sub/Entry" of @p prm (left at the top level again). */
+  std::string
+  entry_value(dealii::ParameterHandler &prm, const std::string &path);
+
 } // namespace wearlink

@@ -146,9 +146,17 @@ namespace wearlink
   }
 
   double
+  // The deviations from the first sample are summed, so that a round profile's mean is
+  // its radius exactly whatever its sample count (a sum of N equal radii / N is not: the
+  // clearance of a round joint would then differ in its last bit with the number of
+  // discrete areas, and the chaotic dynamics would diverge from it).
   Profile::mean_radius() const
   {
-    return std::accumulate(r.begin(), r.end(), 0.0) / r.size();
+    const double r0        = r.front();
+    double       deviation = 0;
+    for (const double x : r)
+      deviation += x - r0;
+    return r0 + deviation / r.size();
   }
 
   bool

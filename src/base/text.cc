@@ -61,4 +61,23 @@ namespace wearlink
       }
     return true;
   }
+
+  std::vector<std::string>
+  split(const std::string &s, const char sep)
+  {
+    std::vector<std::string> out;
+    std::stringstream        in(s);
+    for (std::string part; std::getline(in, part, sep);)
+      out.push_back(trim(part, " \t"));
+    return out;
+  }
+
+  std::string
+  join(const std::vector<std::string> &parts, const std::string &sep)
+  {
+    std::string s;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      s += (i ? sep : "") + parts[i];
+    return s;
+  }
 } // namespace wearlink

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Small text helpers used across the tree, defined once: trimming and number
-// formatting for messages, tables and files.
+// Small text helpers used across the tree, defined once: trimming, splitting, joining
+// and number formatting for messages, tables and files.
 #pragma once
 
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace wearlink
 {
@@ -27,4 +28,12 @@ namespace wearlink
    */
   bool
   is_valid_utf8(const std::string &s);
+
+  /** The parts of @p s between the separators @p sep, each trimmed of blanks and tabs. */
+  std::vector<std::string>
+  split(const std::string &s, char sep);
+
+  /** @p parts with @p sep between them. */
+  std::string
+  join(const std::vector<std::string> &parts, const std::string &sep);
 } // namespace wearlink

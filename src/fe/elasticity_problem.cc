@@ -378,7 +378,9 @@ namespace wearlink::fe
 
 
   void
-  ElasticityProblem::output_results(const Vector<double> &displacement, const std::string &vtu_path) const
+  ElasticityProblem::output_results(const Vector<double> &displacement,
+                                    const std::string    &vtu_path,
+                                    const Vector<double> *traction) const
   {
     DataOut<2> data_out;
     data_out.attach_dof_handler(dof_handler);
@@ -389,6 +391,11 @@ namespace wearlink::fe
                              std::vector<std::string>(2, "displacement_m"),
                              DataOut<2>::type_dof_data,
                              interpretation);
+    if (traction)
+      data_out.add_data_vector(*traction,
+                               std::vector<std::string>(2, "contact_traction_Pa"),
+                               DataOut<2>::type_dof_data,
+                               interpretation);
     const StressPostprocessor stress(pin_material, bushing_material);
     data_out.add_data_vector(displacement, stress);
     Vector<float> material(triangulation.n_active_cells());

@@ -85,10 +85,14 @@ namespace wearlink::fe
     /**
      * Write displacement, stress (plane strain, incl. σ_zz and von Mises) and the
      * material id of both bodies in their own frames as VTU. The pin's displacement
-     * includes its rigid translation.
+     * includes its rigid translation. With @p traction (a DoF vector like the
+     * displacement), also `contact_traction_Pa`: the contact pressure × the surface's
+     * outward normal at the contact nodes (its magnitude is the pressure).
      */
     void
-    output_results(const dealii::Vector<double> &displacement, const std::string &vtu_path) const;
+    output_results(const dealii::Vector<double> &displacement,
+                   const std::string            &vtu_path,
+                   const dealii::Vector<double> *traction = nullptr) const;
 
     /**
      * The stiffness matrix of one cell: plane-strain elasticity with the Lamé constants

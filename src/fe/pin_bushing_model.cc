@@ -212,10 +212,23 @@ namespace wearlink::fe
         {
           const Vector<double> u =
             kind == SolverKind::reference ? sol.displacement : condensed->displacement_field(kin, sol);
-          problem->output_results(u, vtu_path);
+          problem->output_results(u, vtu_path, &contact_traction(r, u.size()));
         }
       r.solve_time = seconds_since(start);
       return r;
+    }
+
+    // The pin surface's contact pressure × its outward normal on the pin nodes' DoFs,
+    // for the VTU (the bore carries the same forces, spread over the faces the rays
+    // meet; the pin side shows the pressure at its own nodes).
+    const Vector<double> &
+    contact_traction(const ContactResult &r, const std::size_t n_dofs)
+    {
+      traction.reinit(n_dofs);
+      for (unsigned int i = 0; i < problem->pin_nodes.size() && i < r.pressure.size(); ++i)
+        for (unsigned int d = 0; d < 2; ++d)
+          traction[problem->pin_nodes[i].dofs[d]] = r.pressure[i] * problem->pin_nodes[i].normal[d];
+      return traction;
     }
 
     // How much deeper the pin goes into surfaces that wear by c p during the state: the
@@ -420,6 +433,7 @@ namespace wearlink::fe
     const FeSettings                        settings;
     const std::string                       msh_path;
     std::vector<double>                     pin_offsets; ///< current − meshed pin radius per candidate (empty: none)
+    Vector<double>                          traction;    ///< scratch of contact_traction()
     SetupStatistics                         stats;
     std::unique_ptr<ElasticityProblem>      problem;
     std::unique_ptr<BoundaryCompliance>     compliance;

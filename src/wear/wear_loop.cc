@@ -23,16 +23,22 @@ namespace wearlink::wear
   } // namespace
 
   // Periodic Gaussian of standard deviation σ = λ √(2 ln 2) / (2π) (transfer
-  // exp(−q²σ²/2) = 1/2 at q = 2π/λ), in samples of spacing 2πR/n, truncated at 4σ and
-  // renormalized: a circular convolution whose weights sum to 1 keeps the mean.
+  // exp(−q²σ²/2) = 1/2 at q = 2π/λ), in samples of spacing 2πR/n (R the mean of
+  // @p radii), truncated at 4σ and renormalized, then scaled so that Σ h_k R_k (the
+  // volume over L Δψ) is the unfiltered one: a circular convolution whose weights sum to
+  // 1 keeps Σ h_k, and the radii of a worn profile differ from one area to the next.
   std::vector<double>
-  smoothed(const std::vector<double> &depth, const double wavelength, const double radius)
+  smoothed(const std::vector<double> &depth, const double wavelength, const std::vector<double> &radii)
   {
     const auto n = static_cast<long>(depth.size());
-    if (!(wavelength > 0) || n < 3)
+    if (!(wavelength > 0) || n < 3 || radii.size() != depth.size())
       return depth;
-    const double sigma = wavelength * std::sqrt(2 * std::log(2.0)) / (2 * numbers::pi) / (2 * numbers::pi * radius / n);
-    const long   half  = std::min<long>(n / 2, static_cast<long>(std::ceil(4 * sigma)));
+    double mean_radius = 0;
+    for (const double r : radii)
+      mean_radius += r / n;
+    const double sigma =
+      wavelength * std::sqrt(2 * std::log(2.0)) / (2 * numbers::pi) / (2 * numbers::pi * mean_radius / n);
+    const long half = std::min<long>(n / 2, static_cast<long>(std::ceil(4 * sigma)));
     if (half < 1)
       return depth;
     std::vector<double> w(2 * half + 1);
@@ -43,6 +49,15 @@ namespace wearlink::wear
     for (long k = 0; k < n; ++k)
       for (long d = -half; d <= half; ++d)
         out[k] += w[d + half] / sum * depth[((k + d) % n + n) % n];
+    double before = 0, after = 0;
+    for (long k = 0; k < n; ++k)
+      {
+        before += depth[k] * radii[k];
+        after += out[k] * radii[k];
+      }
+    if (after > 0)
+      for (auto &h : out)
+        h *= before / after;
     return out;
   }
 
@@ -251,8 +266,8 @@ namespace wearlink::wear
         j.depth_bore            = r.depth_bore.empty() ? std::vector<double>(js.bore.n_points(), 0.0) : r.depth_bore;
         j.volume_pin            = r.volume_pin;
         j.volume_bore           = r.volume_bore;
-        j.pin_increment  = smoothed(increments[i]->pin_depth(), settings.smoothing_wavelength, js.pin.mean_radius());
-        j.bore_increment = smoothed(increments[i]->bore_depth(), settings.smoothing_wavelength, js.bore.mean_radius());
+        j.pin_increment         = smoothed(increments[i]->pin_depth(), settings.smoothing_wavelength, js.pin.samples());
+        j.bore_increment = smoothed(increments[i]->bore_depth(), settings.smoothing_wavelength, js.bore.samples());
         j.pin_volume_increment  = increments[i]->pin_volume;
         j.bore_volume_increment = increments[i]->bore_volume;
         p.joints.push_back(std::move(j));
@@ -269,8 +284,8 @@ namespace wearlink::wear
     auto      &js         = st.joints[i];
     auto       bore       = js.bore.samples();
     auto       pin        = js.pin.samples();
-    const auto bore_depth = smoothed(increment.bore_depth(), settings.smoothing_wavelength, js.bore.mean_radius());
-    const auto pin_depth  = smoothed(increment.pin_depth(), settings.smoothing_wavelength, js.pin.mean_radius());
+    const auto bore_depth = smoothed(increment.bore_depth(), settings.smoothing_wavelength, js.bore.samples());
+    const auto pin_depth  = smoothed(increment.pin_depth(), settings.smoothing_wavelength, js.pin.samples());
     for (unsigned int k = 0; k < bore.size(); ++k)
       bore[k] += factor * bore_depth[k];
     for (unsigned int k = 0; k < pin.size(); ++k)

@@ -94,12 +94,12 @@ namespace wearlink::wear
   using FactorLimit = std::function<double(const StepPreview &preview)>;
 
   /**
-   * @p depth (periodic samples around a surface of mean radius @p radius [m]) low-pass
-   * filtered at @p wavelength [m] (Wear/Smoothing wavelength: Gaussian, transfer 1/2
-   * there, mean kept); unchanged for a wavelength of 0.
+   * @p depth (periodic samples around a surface of radii @p radii [m]) low-pass filtered
+   * at @p wavelength [m] (Wear/Smoothing wavelength: Gaussian, transfer 1/2 there), with
+   * its volume Σ h_k R_k L Δψ kept to rounding; unchanged for a wavelength of 0.
    */
   std::vector<double>
-  smoothed(const std::vector<double> &depth, double wavelength, double radius);
+  smoothed(const std::vector<double> &depth, double wavelength, const std::vector<double> &radii);
 
   /**
    * Warn (in @p warnings) about every final worn profile of @p state whose roughness

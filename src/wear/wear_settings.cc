@@ -222,9 +222,11 @@ namespace wearlink::wear
               "true",
               P::Bool(),
               "For joints on the fe pressure model: write into the run's folder fe/ the gmsh "
-              "mesh in use after iteration k whenever it changed (mesh_<J>_<k>.msh) and, at the peak-load state of the "
-              "first and of the last iteration, the FE fields (fields_<J>_iteration<k>.vtu: "
-              "displacement, stresses, von Mises; _pressure.csv: contact pressure per node).",
+              "mesh in use after iteration k whenever it changed (mesh_<J>_<k>.msh) and, at the "
+              "peak-load state of every iteration, the FE fields (fields_<J>_iteration<k>.vtu: "
+              "displacement, stresses, von Mises, contact traction; _pressure.csv: contact "
+              "pressure per node) with their ParaView series fields_<J>.pvd (about 10 MB per "
+              "joint and iteration at 25 µm surface elements; false writes none).",
               "none");
       declare(prm,
               "Profile magnification",

@@ -74,6 +74,10 @@ namespace wearlink::workflows
                 m.quantities[js.name + " V_bush"]     = h.volume_bore;
                 m.quantities[js.name + " h_pin"]      = h.max_depth_pin;
                 m.quantities[js.name + " h_bush"]     = h.max_depth_bore;
+                m.quantities[js.name + " he_pin"]     = h.envelope_depth_pin;
+                m.quantities[js.name + " he_bush"]    = h.envelope_depth_bore;
+                m.quantities[js.name + " rough_pin"]  = h.roughness_pin;
+                m.quantities[js.name + " rough_bush"] = h.roughness_bore;
                 m.profiles[js.name + " profile_pin"]  = h.depth_pin;
                 m.profiles[js.name + " profile_bush"] = h.depth_bore;
               }

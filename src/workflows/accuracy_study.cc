@@ -35,41 +35,11 @@ namespace wearlink::workflows
     // ------------------------------------------------------------------------------
     // Small helpers.
 
-    std::vector<std::string>
-    split(const std::string &s, char sep)
-    {
-      std::vector<std::string> out;
-      std::stringstream        in(s);
-      for (std::string part; std::getline(in, part, sep);)
-        {
-          const auto b = part.find_first_not_of(" \t");
-          const auto e = part.find_last_not_of(" \t");
-          out.push_back(b == std::string::npos ? "" : part.substr(b, e - b + 1));
-        }
-      return out;
-    }
-
-    std::string
-    join(const std::vector<std::string> &v, const std::string &sep)
-    {
-      std::string s;
-      for (std::size_t i = 0; i < v.size(); ++i)
-        s += (i ? sep : "") + v[i];
-      return s;
-    }
-
     /** The value of entry "Section/Sub/Entry" of the scene's parameters. */
     std::string
     entry_of(const io::Scene &scene, const std::string &path)
     {
-      auto      &prm   = *scene.parameters;
-      const auto parts = split(path, '/');
-      for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-        prm.enter_subsection(parts[i]);
-      const std::string v = prm.get(parts.back());
-      for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-        prm.leave_subsection();
-      return v;
+      return entry_value(*scene.parameters, path);
     }
 
     double
@@ -107,6 +77,8 @@ namespace wearlink::workflows
         {"simulated-cycles",
          "Wear/Cycles per iteration × Extrapolation factor at fixed revolutions (how much of "
          "the chaotic load history is sampled)"},
+        {"wear-update", "Wear/Wear update: simultaneous (the seed's route) against sequential"},
+        {"smoothing", "Wear/Smoothing wavelength of the depth increments' low-pass filter, against none"},
         {"pressure-model", "Pressure model of every wearing joint"},
         {"fe-element-size", "fe Surface element size"},
         {"fe-degree", "fe Element degree"},
@@ -616,7 +588,14 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
             }
 
           if (!quick)
-            knobs.push_back(pressure_model_knob(c));
+            {
+              knobs.push_back(
+                make_knob("wear-update", {"Wear/Wear update"}, {"simultaneous", "sequential"}, "sequential"));
+              const double w = ws.smoothing_wavelength > 0 ? ws.smoothing_wavelength : 1e-3;
+              knobs.push_back(
+                make_knob("smoothing", {"Wear/Smoothing wavelength"}, {label(2 * w), label(w), "0"}, "no filter"));
+              knobs.push_back(pressure_model_knob(c));
+            }
         }
     }
 

@@ -437,14 +437,20 @@ namespace wearlink::workflows
       auto             &csv   = t.csv;
       auto             &lle   = t.lle;
       const double      ratio = se->after / se->before;
-      md << "| state (simulation) | two-trajectory | – | – | " << format_number(se->before, 3) << " | "
-         << format_number(se->after, 3) << " | " << format_number(ratio, 3) << " | – | –"
-         << (have_published ? " | | |" : "") << " |\n";
+      const auto        cell  = [](const double v) {
+        return std::isfinite(v) ? format_number(v, 3) : std::string("–");
+      };
+      md << "| state (simulation) | two-trajectory | – | – | " << cell(se->before) << " | " << cell(se->after) << " | "
+         << cell(ratio) << " | – | –" << (have_published ? " | | |" : "") << " |\n";
       md << "\nThe two-trajectory row is the exponent of the simulated model itself, no embedding: a "
             "shadow copy d0 = "
          << format_number(se->separation, 3) << " m away, renormalized every " << format_number(se->interval, 3)
          << " s, over " << format_number(se->duration, 3) << " s of each state, relative tolerance "
          << format_number(se->tolerance, 3) << ".\n";
+      for (const auto &[when, failure] : {std::pair<std::string, std::string>{"before", se->failure_before},
+                                          std::pair<std::string, std::string>{"after", se->failure_after}})
+        if (!failure.empty())
+          md << "The two-trajectory run " << when << " wear gave no exponent: " << failure << "\n";
       csv << "state,two-trajectory,,," << se->before << ',' << se->after << ',' << ratio << ",,,1,1,,\n";
       Json r                          = Json::object();
       r["channel"]                    = "state";
@@ -455,7 +461,11 @@ namespace wearlink::workflows
       r["renormalization_interval_s"] = se->interval;
       r["relative_tolerance"]         = se->tolerance;
       r["duration_s"]                 = se->duration;
-      r["unit"]                       = "1/s (natural log)";
+      if (!se->failure_before.empty())
+        r["failure_before"] = se->failure_before;
+      if (!se->failure_after.empty())
+        r["failure_after"] = se->failure_after;
+      r["unit"] = "1/s (natural log)";
       lle.push_back(r);
     }
 

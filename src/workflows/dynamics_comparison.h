@@ -52,6 +52,8 @@ namespace wearlink::workflows
     double interval   = 0.0; ///< renormalization interval τ [s]
     double tolerance  = 0.0; ///< relative tolerance of both runs
     double duration   = 0.0; ///< measured time of each run [s]
+    /** Why a run gave no exponent (NaN above): the integrator's numerical failure; "" if it ran. */
+    std::string failure_before, failure_after;
   };
 
   struct DynamicsComparisonSettings

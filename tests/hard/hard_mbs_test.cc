@@ -321,33 +321,64 @@ TEST(HardCases, SliderCrankAt5000Rpm)
 // ~15,000 impacts). Long runs must not drift: the constraint violation stays bounded
 // (< 1e-5 m), the energy balance holds to 1e-3 of the energy throughput, and no value
 // becomes non-finite. Convergence: the cycle statistics — impacts per revolution and the
-// fraction of time in contact — agree within 5 % at half the tolerance (the trajectory
-// itself is chaotic over 1000 cycles, these averages are not).
+// fraction of time in contact — agree at half the tolerance. The trajectory is chaotic
+// over 1000 cycles and so are these averages, from run to run: 13.5 ± 0.55 impacts per
+// revolution at 5e-7 (6 runs whose crank angles differ by 1e-9 rad; 12.7 … 14.4), so
+// each tolerance runs 3 such members and their means are compared, within 3 % or three
+// standard errors of the difference, whichever is larger.
 TEST(HardCases, ThousandCycleRun)
 {
-  std::vector<double> impacts, contact;
-  for (const double rtol : {1e-6, 5e-7})
+  struct Mean
+  {
+    std::vector<double> values;
+    double
+    mean() const
     {
-      auto        scene = wearlink::testing::scene("params/slider_crank_flores.prm",
-                                            {"Simulation/End time=12",
-                                                    "Integrator/Relative tolerance=" + format_number(rtol),
-                                                    "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
-                                                    "Output/Time series=false"});
-      const Json  s     = wearlink::testing::run(scene);
-      const auto &j     = s.at("clearance_joints").at("B");
-      std::cout << "rtol " << rtol << ": " << json_number(s.at("steps")) << " steps, " << json_number(j.at("impacts"))
-                << " impacts, in contact " << json_number(j.at("fraction_in_contact")) << ", constraint violation "
-                << json_number(s.at("max_constraint_violation_m")) << " m, energy balance "
-                << json_number(s.at("energy_balance_relative_error")) << ", wall " << json_number(s.at("wall_time_s"))
-                << " s\n";
-      expect_finite(s);
-      EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-5);
-      EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e-3);
-      impacts.push_back(json_number(j.at("impacts")) / 1000);
-      contact.push_back(json_number(j.at("fraction_in_contact")));
+      double s = 0;
+      for (const double v : values)
+        s += v / values.size();
+      return s;
     }
-  EXPECT_NEAR(impacts[0], impacts[1], 0.05 * impacts[1]);
-  EXPECT_NEAR(contact[0], contact[1], 0.05 * contact[1]);
+    double
+    variance_of_mean() const
+    {
+      double s = 0;
+      for (const double v : values)
+        s += (v - mean()) * (v - mean()) / (values.size() - 1);
+      return s / values.size();
+    }
+  };
+  std::vector<Mean> impacts(2), contact(2);
+  const double      tolerances[] = {1e-6, 5e-7};
+  for (int i = 0; i < 2; ++i)
+    for (int member = 0; member < 3; ++member)
+      {
+        const double rtol  = tolerances[i];
+        auto         scene = wearlink::testing::scene("params/slider_crank_flores.prm",
+                                              {"Simulation/End time=12",
+                                                       "Integrator/Relative tolerance=" + format_number(rtol),
+                                                       "Integrator/Position tolerance=" + format_number(1e-3 * rtol),
+                                                       "Joint drive/Angle offset=" + format_number(1e-9 * member),
+                                                       "Output/Time series=false"});
+        const Json   s     = wearlink::testing::run(scene);
+        const auto  &j     = s.at("clearance_joints").at("B");
+        std::cout << "rtol " << rtol << ", member " << member << ": " << json_number(s.at("steps")) << " steps, "
+                  << json_number(j.at("impacts")) << " impacts, in contact " << json_number(j.at("fraction_in_contact"))
+                  << ", constraint violation " << json_number(s.at("max_constraint_violation_m"))
+                  << " m, energy balance " << json_number(s.at("energy_balance_relative_error")) << ", wall "
+                  << json_number(s.at("wall_time_s")) << " s\n";
+        expect_finite(s);
+        EXPECT_LT(json_number(s.at("max_constraint_violation_m")), 1e-5);
+        EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e-3);
+        impacts[i].values.push_back(json_number(j.at("impacts")) / 1000);
+        contact[i].values.push_back(json_number(j.at("fraction_in_contact")));
+      }
+  for (const auto *q : {&impacts, &contact})
+    {
+      const double a = (*q)[0].mean(), b = (*q)[1].mean();
+      const double se = std::sqrt((*q)[0].variance_of_mean() + (*q)[1].variance_of_mean());
+      EXPECT_NEAR(a, b, std::max(0.03 * b, 3 * se)) << (q == &impacts ? "impacts per revolution" : "contact fraction");
+    }
 }
 
 // A clearance joint whose pin sits on the ground (Body 1 = ground, the bushing on the

@@ -141,7 +141,8 @@ TEST(StudyAccuracy, QuickStudyVariesTheActiveKnobsAndTimesEveryRun)
   std::set<std::string> got;
   for (const auto &[k, v] : by_knob)
     got.insert(k);
-  EXPECT_EQ(got, expected) << "hertz-strip scene: no fe knobs; quick: no pressure-model, baumgarte";
+  EXPECT_EQ(got, expected)
+    << "hertz-strip scene: no fe knobs; quick: no pressure-model, wear-update, smoothing, baumgarte";
   for (const auto &[knob, rs] : by_knob)
     {
       ASSERT_GE(rs.size(), 2u) << knob;

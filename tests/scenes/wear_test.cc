@@ -284,7 +284,10 @@ TEST(Wear, FeWearRunWritesMeshesAndFields)
                         "fields_A_iteration3.vtu",
                         "fields_A_iteration3_pressure.csv"})
     EXPECT_TRUE(std::filesystem::exists(fe + f)) << f;
-  EXPECT_FALSE(std::filesystem::exists(fe + "fields_A_iteration2.vtu"));
+  EXPECT_TRUE(std::filesystem::exists(fe + "fields_A_iteration2.vtu")) << "the fields of every iteration";
+  EXPECT_TRUE(std::filesystem::exists(fe + "fields_A.pvd")) << "their ParaView series";
+  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/profiles_A.pvd"));
+  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/profiles/profile_B_3.vtu")) << "every joint's profiles";
   EXPECT_FALSE(std::filesystem::exists(fe + "mesh_B_1.msh")) << "joint B is on hertz-strip";
 
   auto kept =

@@ -28,39 +28,15 @@ namespace wearlink::app
   run_files()
   {
     RunFiles f;
-    f.patterns       = {"summary.json",
-                        "parameters.prm",
-                        "time_series.csv",
-                        "checkpoint.json",
-                        "analysis_series.csv",
-                        "phase_portrait_*.png",
-                        "poincare_section.csv",
-                        "poincare_*.png",
-                        "lyapunov_*.csv",
-                        "lyapunov_*.png",
-                        "wear_history.csv",
-                        "wear_depth_*.csv",
-                        "wear_depth_*.png",
-                        "profiles_*.csv",
-                        "profiles_*.msh",
-                        "profile_*_bore.png",
-                        "profile_*_pin.png",
-                        "bore_*.csv",
-                        "pin_*.csv",
-                        "wear_volume.png",
-                        "response_before.csv",
-                        "response_after.csv",
-                        "response.png",
-                        "before_after.md",
-                        "before_after_*.png",
-                        "before_after_*.csv",
-                        "mesh_*.msh",
-                        "fields_*.vtu",
-                        "fields_*_pressure.csv",
-                        "orbit_*.png",
-                        "contact_forces.png",
-                        "accelerations.png"};
-    f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe"};
+    f.patterns = {
+      "summary.json",         "parameters.prm",       "time_series.csv",  "checkpoint.json",    "analysis_series.csv",
+      "phase_portrait_*.png", "poincare_section.csv", "poincare_*.png",   "lyapunov_*.csv",     "lyapunov_*.png",
+      "wear_history.csv",     "wear_depth_*.csv",     "wear_depth_*.png", "profiles_*.csv",     "profiles_*.msh",
+      "profile_*_bore.png",   "profile_*_pin.png",    "bore_*.csv",       "pin_*.csv",          "wear_volume.png",
+      "response_before.csv",  "response_after.csv",   "response.png",     "before_after.md",    "before_after_*.png",
+      "before_after_*.csv",   "mesh_*.msh",           "fields_*.vtu",     "fields_*.pvd",       "fields_*_pressure.csv",
+      "profiles_*.pvd",       "profile_*.vtu",        "orbit_*.png",      "contact_forces.png", "accelerations.png"};
+    f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe", "profiles"};
     return f;
   }
 
@@ -103,7 +79,11 @@ instead (section Wear; one progress line per iteration) and writes, besides
 summary.json (with per-joint wear volumes, depths, mass loss and revolutions) and
 parameters.prm: checkpoint.json, wear_history.csv, wear_depth_<J>.csv/.png,
 profiles_<J>.csv/.msh, profile_<J>_bore.png, profile_<J>_pin.png, wear_volume.png,
-response_before.csv, response_after.csv, response.png.
+response_before.csv, response_after.csv, response.png, and the worn profiles of every
+iteration as a ParaView series, profiles_<J>.pvd with profiles/profile_<J>_<k>.vtu
+(depth, radius, the pressure at the iteration's largest load; "Warp By Vector" on
+wear_displacement_m magnifies the wear); joints on the fe pressure model also fe/
+(meshes, and the FE fields at each iteration's largest load with fields_<J>.pvd).
 If a wear scene lists analyses, they do not run during the wear iterations; instead
 the dynamics is run from Start to End time once with the fresh and once with the worn
 profiles (dynamics_before/, dynamics_after/) and compared (before_after.md, printed;

@@ -3,16 +3,21 @@
 // Every accuracy knob that applies to the scene is varied alone; the error of the
 // quantities that matter against the knob's reference and the wall time of every run
 // go into accuracy.csv, accuracy.md and accuracy_pareto.png.
+// `wearlink study convergence SCENE.prm`: do the worn profiles converge
+// (workflows/convergence_study.h)? The surfaces and the wear step refined together, an
+// ensemble at every level.
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "workflows/accuracy_study.h"
+#include "workflows/convergence_study.h"
 
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace wearlink::app
@@ -20,7 +25,30 @@ namespace wearlink::app
   namespace
   {
     const std::string help_text =
-      std::string(R"(wearlink study accuracy SCENE.prm [--output DIR] [--set "Section/Entry=value" ...]
+      std::string(R"(wearlink study convergence SCENE.prm [--output DIR] [--set "Section/Entry=value" ...]
+                     [--refinements 1,2,4] [--ensemble N] [--seed S] [--perturbation RAD]
+                     [--overwrite] [--quiet]
+mpirun -np R wearlink study convergence ...   (the same, runs spread over R MPI ranks)
+
+Do the worn profiles of a wear scene converge? Each level refines the worn surfaces and
+the wear step together by a factor r (--refinements, default 1,2,4; the scene's own
+settings are 1): r × the Number of discrete areas of joints on hertz-strip or winkler,
+fe Surface element size ÷ r for joints on fe; r × the wear iterations with the
+extrapolation factor ÷ r (the same revolutions), or Maximum depth increment ÷ r with
+adaptive extrapolation. Every level runs an ensemble of N members (--ensemble, default
+4: the scene's own run and N − 1 runs whose initial crank angles are shifted by ~1e-9
+rad, as `run --ensemble` does), because the clearance dynamics are chaotic and one run
+is one sample. Each level's mean profile is compared with the finest level's, point by
+point on the coarser grid: the relative L2 and largest pointwise differences, and the
+changes of the largest depth, the envelope depth (at the contact width) and the worn
+volume, beside the chaos floor (two single runs' L2 difference, the standard error of a
+mean profile) and each level's roughness and wall time. Writes into DIR (default:
+output/<scene name>_convergence; rank 0): convergence.md (the table, also printed),
+convergence.csv, convergence.json, and per joint and surface convergence_<J>_<pin|
+bushing>.csv (each level's mean, smallest and largest depth at each angle) and .png (the
+mean profiles with the members' range as a band).
+
+wearlink study accuracy SCENE.prm [--output DIR] [--set "Section/Entry=value" ...]
                      [--quick] [--knobs a,b,...] [--study STUDY.prm] [--overwrite] [--quiet]
                      [--ensemble N] [--seed S] [--perturbation RAD]
 mpirun -np R wearlink study accuracy ...   (the same, runs spread over R MPI ranks)
@@ -101,24 +129,105 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       return static_cast<unsigned int>(n);
     }
 
-    int
-    run(const std::vector<std::string> &args)
+    /** The file names a convergence study writes, for --overwrite. */
+    RunFiles
+    convergence_files()
     {
-      if (args.empty() || args[0] != "accuracy")
-        throw InputError("`wearlink study` needs a study kind; the only one is `accuracy`: "
-                         "wearlink study accuracy SCENE.prm. See `wearlink study --help`.");
-      const std::vector<std::string> rest(args.begin() + 1, args.end());
-      const auto                     a = parse_arguments(rest,
+      return {{"convergence.md", "convergence.csv", "convergence.json", "convergence_*.csv", "convergence_*.png"}, {}};
+    }
+
+    /** --refinements a,b,c: the levels' factors. */
+    std::vector<double>
+    refinements(const ParsedArguments &a)
+    {
+      if (!a.has("--refinements"))
+        return {1, 2, 4};
+      std::vector<double> r;
+      for (const auto &part : split(a.value("--refinements"), ','))
+        {
+          std::size_t used = 0;
+          double      v    = std::numeric_limits<double>::quiet_NaN();
+          try
+            {
+              v = std::stod(part, &used);
+            }
+          catch (const std::exception &)
+            {
+            }
+          if (part.empty() || used != part.size() || !std::isfinite(v))
+            throw InputError("--refinements " + a.value("--refinements") + ": '" + part +
+                             "' is not a number; give increasing factors separated by commas, e.g. 1,2,4.");
+          r.push_back(v);
+        }
+      return r;
+    }
+
+    /** MPI for a study command only. One thread per rank: the ranks are the parallelism. */
+    struct StudyMpi
+    {
+      int                                      argc            = 1;
+      char                                     program[9]      = "wearlink";
+      char                                    *argv_storage[2] = {program, nullptr};
+      char                                   **argv            = argv_storage;
+      dealii::Utilities::MPI::MPI_InitFinalize mpi{argc, argv, 1};
+    };
+
+    int
+    run_convergence(const std::vector<std::string> &rest)
+    {
+      const auto a = parse_arguments(rest,
                                      {{"--output", true},
-                                                          {"--set", true, true},
-                                                          {"--quick", false},
-                                                          {"--knobs", true},
-                                                          {"--study", true},
-                                                          {"--quiet", false},
-                                                          {"--overwrite", false},
-                                                          {"--ensemble", true},
-                                                          {"--seed", true},
-                                                          {"--perturbation", true}},
+                                      {"--set", true, true},
+                                      {"--refinements", true},
+                                      {"--quiet", false},
+                                      {"--overwrite", false},
+                                      {"--ensemble", true},
+                                      {"--seed", true},
+                                      {"--perturbation", true}},
+                                     "study convergence");
+      if (a.positional.size() != 1)
+        throw InputError("`wearlink study convergence` needs exactly one scene file (given " +
+                         std::to_string(a.positional.size()) + "). See `wearlink study --help`.");
+      const std::string             file = a.positional[0];
+      workflows::ConvergenceRequest request;
+      request.overrides    = a.all("--set");
+      request.progress     = !a.has("--quiet");
+      request.refinements  = refinements(a);
+      request.members      = floor_members(a);
+      request.seed         = static_cast<std::uint64_t>(a.number("--seed", 1));
+      request.perturbation = a.number("--perturbation", 1e-9);
+      if (request.members == 0)
+        throw InputError("--ensemble 0: a convergence study needs 2 … 100 members per level (default 4).");
+      if (!(request.perturbation > 0 && request.perturbation <= 1e-3))
+        throw InputError("--perturbation " + a.value("--perturbation") +
+                         ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (default 1e-9 rad).");
+      const std::string out =
+        a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_convergence");
+      StudyMpi   mpi;
+      const auto claimed = claim_output_directory_on_root(output_claim(out, convergence_files(), a));
+      const auto study   = workflows::run_convergence_study(file, request);
+      if (!study.root)
+        return 0;
+      workflows::write_convergence_study(out, study);
+      std::cout << study.markdown() << "\nwrote " << out
+                << "/convergence.md, convergence.csv, convergence.json, convergence_<J>_<surface>.csv/.png\n";
+      return 0;
+    }
+
+    int
+    run_accuracy(const std::vector<std::string> &rest)
+    {
+      const auto a = parse_arguments(rest,
+                                     {{"--output", true},
+                                      {"--set", true, true},
+                                      {"--quick", false},
+                                      {"--knobs", true},
+                                      {"--study", true},
+                                      {"--quiet", false},
+                                      {"--overwrite", false},
+                                      {"--ensemble", true},
+                                      {"--seed", true},
+                                      {"--perturbation", true}},
                                      "study accuracy");
       if (a.positional.size() != 1)
         throw InputError("`wearlink study accuracy` needs exactly one scene file (given " +
@@ -146,12 +255,7 @@ output that cannot be written or memory that ran out, 1 an internal error (see
         }
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_accuracy");
-      // MPI for this command only. One thread per rank: the ranks are the parallelism.
-      int                                      argc           = 1;
-      char                                     program[]      = "wearlink";
-      char                                    *argv_storage[] = {program, nullptr};
-      char                                   **argv           = argv_storage;
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      StudyMpi   mpi;
       const auto claimed = claim_output_directory_on_root(output_claim(out, study_files(), a));
       const auto study   = workflows::run_accuracy_study(file, request);
       if (!study.root)
@@ -161,12 +265,24 @@ output that cannot be written or memory that ran out, 1 an internal error (see
                 << "/accuracy.csv, accuracy.md, accuracy_floor.csv, accuracy_pareto.png\n";
       return 0;
     }
+
+    int
+    run(const std::vector<std::string> &args)
+    {
+      const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
+      if (!args.empty() && args[0] == "accuracy")
+        return run_accuracy(rest);
+      if (!args.empty() && args[0] == "convergence")
+        return run_convergence(rest);
+      throw InputError("`wearlink study` needs a study kind, `accuracy` or `convergence`: wearlink study accuracy "
+                       "SCENE.prm, wearlink study convergence SCENE.prm. See `wearlink study --help`.");
+    }
   } // namespace
 
   extern const Command study_command;
   const Command        study_command = {"study",
-                                        "study accuracy SCENE.prm [--quick]  what accuracy costs in time "
-                                               "(every accuracy knob in turn: error vs wall time)",
+                                        "study accuracy|convergence SCENE.prm  what accuracy costs in time "
+                                               "(every knob in turn); do the worn profiles converge",
                                         help_text.c_str(),
                                         run};
 } // namespace wearlink::app

@@ -60,6 +60,7 @@ namespace wearlink::contact
       std::vector<double>       ux, uy;     ///< direction of each sample, bushing frame
       std::vector<double>       r1;         ///< bore radius [m]
       std::vector<double>       gap;        ///< r2 − r1 at e = 0 for the current load [m] (< 0)
+      std::vector<unsigned int> candidates; ///< the samples near the load direction (ascending)
       std::vector<unsigned int> window;     ///< the samples the sums run over
       Eigen::Vector2d           centre;     ///< e_w [m]; see above
       double                    slack  = 0; ///< s [m]; 0: the window is not a ball (all, or narrowed)
@@ -76,17 +77,15 @@ namespace wearlink::contact
       void
       use_all()
       {
-        window.resize(n);
-        for (unsigned int j = 0; j < n; ++j)
-          window[j] = j;
-        slack = 0;
+        window = candidates;
+        slack  = 0;
       }
-      /** The window of the samples within @p s of overlapping at @p e. */
+      /** The window of the candidates within @p s of overlapping at @p e. */
       void
       window_around(const Eigen::Vector2d &e, const double s)
       {
         window.clear();
-        for (unsigned int j = 0; j < n; ++j)
+        for (const unsigned int j : candidates)
           if (overlap(j, e) > -s)
             window.push_back(j);
         centre = e;
@@ -115,12 +114,14 @@ namespace wearlink::contact
       {
         geometry = g;
         // Layer moduli in series: d = p h/E_f,bore + p h/E_f,pin.
-        modulus      = series_foundation_modulus(g.bushing, g.pin_material);
-        stiffness    = modulus / thickness;
-        const auto m = g.bore.n_points();
-        grid.n       = m * sub;
-        grid.dp      = 2 * pi / grid.n;
-        grid.offset  = 0.5 * grid.dp - 0.5 * 2 * pi / m;
+        modulus       = series_foundation_modulus(g.bushing, g.pin_material);
+        largest_pin   = g.pin.max_radius();
+        smallest_bore = g.bore.min_radius();
+        stiffness     = modulus / thickness;
+        const auto m  = g.bore.n_points();
+        grid.n        = m * sub;
+        grid.dp       = 2 * pi / grid.n;
+        grid.offset   = 0.5 * grid.dp - 0.5 * 2 * pi / m;
         grid.ux.resize(grid.n);
         grid.uy.resize(grid.n);
         grid.r1.resize(grid.n);
@@ -194,10 +195,17 @@ namespace wearlink::contact
         // fallback model).
         if (!(load.normal_force > floor_force))
           return;
-        set_up_load(load);
-        single_sample     = -1;
-        Eigen::Vector2d e = start_in_contact(load);
-        e                 = equilibrium(load, e);
+        // The samples within ±w of the load direction are the candidates, w doubled
+        // until none outside them can overlap at the solution (candidates_hold()).
+        Eigen::Vector2d e;
+        for (double w = initial_half_window;; w *= 2)
+          {
+            set_up_load(load, w);
+            single_sample = -1;
+            e             = equilibrium(load, start_in_contact(load));
+            if (w >= pi || candidates_hold(e, w))
+              break;
+          }
         area_averages(e, load, out);
       }
 
@@ -207,7 +215,7 @@ namespace wearlink::contact
        * the pin's radii on the sub-grid (pin frame angle = bushing frame angle + θ_b − θ_p).
        */
       void
-      set_up_load(const ContactLoad &load)
+      set_up_load(const ContactLoad &load, const double half_window)
       {
         const double c = std::cos(load.bushing_angle), s = std::sin(load.bushing_angle);
         const double fx   = load.normal_force * std::cos(load.contact_angle);
@@ -216,9 +224,44 @@ namespace wearlink::contact
         eccentricity      = Eigen::Vector2d(c * load.eccentricity[0] + s * load.eccentricity[1],
                                        -s * load.eccentricity[0] + c * load.eccentricity[1]);
         const double turn = load.bushing_angle - load.pin_angle;
-        for (unsigned int j = 0; j < grid.n; ++j)
+        select_candidates(std::atan2(target[1], target[0]), half_window);
+        for (const unsigned int j : grid.candidates)
           grid.gap[j] = geometry.pin.radius(grid.offset + j * grid.dp + turn) - grid.r1[j];
         grid.use_all();
+      }
+
+      /** The sub-grid samples within ±@p w of the direction @p alpha (bushing frame), ascending. */
+      void
+      select_candidates(const double alpha, const double w)
+      {
+        auto &c = grid.candidates;
+        c.clear();
+        if (w >= pi)
+          {
+            for (unsigned int j = 0; j < grid.n; ++j)
+              c.push_back(j);
+            return;
+          }
+        const long n  = static_cast<long>(grid.n);
+        const long lo = static_cast<long>(std::floor((alpha - w - grid.offset) / grid.dp));
+        const long hi = static_cast<long>(std::ceil((alpha + w - grid.offset) / grid.dp));
+        for (long j = lo; j <= hi; ++j)
+          c.push_back(static_cast<unsigned int>(((j % n) + n) % n));
+        std::sort(c.begin(), c.end());
+        c.erase(std::unique(c.begin(), c.end()), c.end());
+      }
+
+      /**
+       * True if no sample farther than @p w from the load direction can overlap at @p e:
+       * there e·u ≤ |e| cos(w − θ), θ the angle between e and the load, so the overlap
+       * is at most max R2 − min R1 + |e| cos(w − θ) (the radii of the geometry given to
+       * update_geometry(): wear only lowers max R2 and raises min R1).
+       */
+      bool
+      candidates_hold(const Eigen::Vector2d &e, const double w) const
+      {
+        const double theta = std::acos(std::clamp(e.dot(target) / (e.norm() * target.norm() + 1e-300), -1.0, 1.0));
+        return largest_pin - smallest_bore + e.norm() * std::cos(std::max(0.0, w - theta)) < 0;
       }
 
       /** R(e) = Σ p_j u_j L R1_j Δφ − F over the window, and its Jacobian if @p jac is set. */
@@ -522,18 +565,21 @@ namespace wearlink::contact
         return std::min(m - 1, static_cast<unsigned int>(std::floor(s * m + 0.5)) % m);
       }
 
-      const double    thickness;
-      const bool      nonlinear;
-      JointGeometry   geometry;
-      double          stiffness = 0, modulus = 0;
-      double          wear_compliance = 0;  ///< c of the state being worn (linear layer) [m/Pa]
-      double          deepest_overlap = 0;  ///< of the last evaluation [m]
-      int             single_sample   = -1; ///< see carry_on_one_sample(); −1: none
-      double          single_pressure = 0;  ///< [Pa]
-      SubGrid         grid;
-      Eigen::Vector2d target;         ///< the load vector, bushing frame [N]
-      Eigen::Vector2d eccentricity;   ///< the rigid-body eccentricity, bushing frame [m]
-      double          base_slack = 0; ///< the window's slack of this solve [m], see equilibrium()
+      const double  thickness;
+      const bool    nonlinear;
+      JointGeometry geometry;
+      double        stiffness = 0, modulus = 0;
+      double        wear_compliance = 0;                ///< c of the state being worn (linear layer) [m/Pa]
+      double        largest_pin = 0, smallest_bore = 0; ///< of the geometry set [m] (candidates_hold())
+      /** The first half-width of the candidates around the load direction [rad] (evaluate()). */
+      static constexpr double initial_half_window = pi / 6;
+      double                  deepest_overlap     = 0;  ///< of the last evaluation [m]
+      int                     single_sample       = -1; ///< see carry_on_one_sample(); −1: none
+      double                  single_pressure     = 0;  ///< [Pa]
+      SubGrid                 grid;
+      Eigen::Vector2d         target;         ///< the load vector, bushing frame [N]
+      Eigen::Vector2d         eccentricity;   ///< the rigid-body eccentricity, bushing frame [m]
+      double                  base_slack = 0; ///< the window's slack of this solve [m], see equilibrium()
     };
   } // namespace
 
