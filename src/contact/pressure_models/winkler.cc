@@ -390,6 +390,10 @@ namespace wearlink::contact
        * (error in direction ≤ dφ, in magnitude ≤ 1e-9 F). Loads so light that the force
        * balance meets the floating-point floor of the overlap (k_foundation × area × ε ×
        * |e| ~ 1e-11 N, more on worn, jagged profiles) are accepted within 10 µN.
+       * A load below resolution_force() compresses no sample by a nanometre: the
+       * foundation's energy changes of the line search then sink into its rounding, and
+       * such a load too, if Newton cannot balance it, is carried by the sample nearest
+       * its direction (carry_on_one_sample()).
        * Anything worse than 1e-6 of the load is a NumericalError, never a silent result
        * (measured on the nine-bar's profiles after 50,000 revolutions, where a line
        * search on |R| stalled at up to 9 % of F).
@@ -417,7 +421,8 @@ namespace wearlink::contact
             grid.window_around(e, base_slack);
             f = residual(e, nullptr);
           }
-        if (!(f.norm() <= 1e-6 * load.normal_force + floor_force) && overlapping_samples(e) <= 2)
+        if (!(f.norm() <= 1e-6 * load.normal_force + floor_force) &&
+            (overlapping_samples(e) <= 2 || load.normal_force < resolution_force()))
           {
             carry_on_one_sample(load);
             return e;
@@ -433,6 +438,13 @@ namespace wearlink::contact
         return e;
       }
 
+      /** The force of the layer over one sub-grid sample compressed by 1 nm [N]. */
+      double
+      resolution_force() const
+      {
+        return stiffness * geometry.axial_length * smallest_bore * grid.dp * 1e-9;
+      }
+
       /** How many samples of the window overlap at @p e. */
       unsigned int
       overlapping_samples(const Eigen::Vector2d &e) const
@@ -446,8 +458,9 @@ namespace wearlink::contact
       /**
        * The limit of the sub-grid's resolution: a load so light that at most two samples
        * overlap, and whose direction those samples cannot match (their directions are
-       * dφ apart), is carried by the one sample nearest its direction, with its
-       * magnitude exact and its direction within dφ/2. The effect ledger counts them.
+       * dφ apart), or so light that it compresses no sample by a nanometre
+       * (resolution_force()), is carried by the one sample nearest its direction, with
+       * its magnitude exact and its direction within dφ/2. The effect ledger counts them.
        */
       void
       carry_on_one_sample(const ContactLoad &load)
