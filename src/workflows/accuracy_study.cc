@@ -500,103 +500,106 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       return k;
     }
 
-    /** Discrete areas, load sampling, wear step, simulated cycles, pressure model. */
+    /** Pressure evaluation at every step or N times per cycle (fe: only sampled). */
+    Knob
+    load_sampling_knob(const KnobContext &c)
+    {
+      Knob k;
+      k.name        = "load-sampling";
+      k.description = description_of("load-sampling");
+      k.targets     = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
+      if (c.fe.empty())
+        {
+          for (const int s : {25, 100})
+            k.values.push_back({"samples per cycle", std::to_string(s)});
+          k.values.push_back({"every step", std::to_string(c.scene.wear_loop.samples_per_cycle)});
+          k.reference = "every step";
+        }
+      else // the fe model at every loaded step is what samples per cycle avoids
+        {
+          for (const int s : {25, 50, 100, 200})
+            k.values.push_back({"samples per cycle", std::to_string(s)});
+          k.reference = "200 samples per cycle";
+        }
+      return k;
+    }
+
+    /** The same revolutions in more, smaller steps (fixed extrapolation), or smaller depth increments (adaptive). */
+    Knob
+    wear_step_knob(const KnobContext &c)
+    {
+      const auto &ws = c.scene.wear_loop;
+      if (ws.extrapolation != wear::Extrapolation::fixed)
+        return make_knob("wear-step",
+                         {"Wear/Maximum depth increment"},
+                         c.scaled(ws.max_depth_increment, false),
+                         "smallest depth increment");
+      Knob k;
+      k.name                  = "wear-step";
+      k.description           = description_of("wear-step");
+      k.targets               = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
+      const double      total = ws.n_iterations * ws.extrapolation_factor;
+      std::vector<long> counts;
+      for (const double f : c.quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.2, 0.5, 1, 2})
+        {
+          const long n = std::max(1L, std::lround(ws.n_iterations * f));
+          if (std::find(counts.begin(), counts.end(), n) == counts.end())
+            counts.push_back(n);
+        }
+      for (const long n : counts)
+        k.values.push_back({std::to_string(n), label(total / n)});
+      k.reference = "most iterations";
+      return k;
+    }
+
+    /** The same revolutions from more simulated cycles per iteration (fixed extrapolation). */
+    Knob
+    simulated_cycles_knob(const KnobContext &c)
+    {
+      const auto &ws = c.scene.wear_loop;
+      Knob        k;
+      k.name                     = "simulated-cycles";
+      k.description              = description_of("simulated-cycles");
+      k.targets                  = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
+      const double per_iteration = ws.cycles_per_iteration * ws.extrapolation_factor;
+      // The reference samples twice the scene's cycles (4× cost 4 times the scene's run
+      // and stayed at the chaos floor in the study's 15 minutes).
+      for (const double f : {0.5, 1.0, 2.0})
+        {
+          const double n = ws.cycles_per_iteration * f;
+          k.values.push_back({label(n), label(per_iteration / n)});
+        }
+      k.reference = "most simulated cycles";
+      return k;
+    }
+
+    /**
+     * Discrete areas, load sampling, wear step, simulated cycles; and unless quick, the
+     * wear update, the smoothing filter and the pressure model.
+     */
     void
     wear_knobs(const KnobContext &c, std::vector<Knob> &knobs)
     {
-      const auto &scene   = c.scene;
-      const auto &fe      = c.fe;
-      const bool  quick   = c.quick;
       const auto &wearing = c.wearing;
-      const bool  wears   = !wearing.empty();
-      if (wears)
-        {
-          const auto &ws = scene.wear_loop;
-          {
-            const double n = number_of(scene, "Joint " + wearing[0] + "/Clearance/Number of discrete areas");
-            std::vector<std::string> v;
-            for (const double f : quick ? std::vector<double>{0.25, 0.5, 1} : std::vector<double>{0.25, 0.5, 1, 2})
-              v.push_back(std::to_string(std::max(8L, std::lround(n * f))));
-            knobs.push_back(make_knob("discrete-areas", paths(wearing, "Number of discrete areas"), v, "most areas"));
-          }
-
-          {
-            Knob k;
-            k.name                   = "load-sampling";
-            k.description            = description_of("load-sampling");
-            k.targets                = {{"Wear/Pressure evaluation"}, {"Wear/Load samples per cycle"}};
-            const std::vector<int> n = {25, 100};
-            if (fe.empty())
-              {
-                for (const int s : n)
-                  k.values.push_back({"samples per cycle", std::to_string(s)});
-                k.values.push_back({"every step", std::to_string(ws.samples_per_cycle)});
-                k.reference = "every step";
-              }
-            else // the fe model at every loaded step is what samples per cycle avoids
-              {
-                for (const int s : {25, 50, 100, 200})
-                  k.values.push_back({"samples per cycle", std::to_string(s)});
-                k.reference = "200 samples per cycle";
-              }
-            knobs.push_back(k);
-          }
-
-          if (ws.extrapolation == wear::Extrapolation::fixed)
-            {
-              // The same revolutions in more, smaller steps.
-              Knob k;
-              k.name                  = "wear-step";
-              k.description           = description_of("wear-step");
-              k.targets               = {{"Wear/Number of iterations"}, {"Wear/Extrapolation factor"}};
-              const double      total = ws.n_iterations * ws.extrapolation_factor;
-              std::vector<long> counts;
-              for (const double f : quick ? std::vector<double>{0.5, 1, 2} : std::vector<double>{0.2, 0.5, 1, 2})
-                {
-                  const long c = std::max(1L, std::lround(ws.n_iterations * f));
-                  if (std::find(counts.begin(), counts.end(), c) == counts.end())
-                    counts.push_back(c);
-                }
-              for (const long c : counts)
-                k.values.push_back({std::to_string(c), label(total / c)});
-              k.reference = "most iterations";
-              knobs.push_back(k);
-            }
-          else
-            knobs.push_back(make_knob("wear-step",
-                                      {"Wear/Maximum depth increment"},
-                                      c.scaled(ws.max_depth_increment, false),
-                                      "smallest depth increment"));
-
-          if (ws.extrapolation == wear::Extrapolation::fixed)
-            {
-              // The same revolutions from more simulated cycles per iteration.
-              Knob k;
-              k.name                     = "simulated-cycles";
-              k.description              = description_of("simulated-cycles");
-              k.targets                  = {{"Wear/Cycles per iteration"}, {"Wear/Extrapolation factor"}};
-              const double per_iteration = ws.cycles_per_iteration * ws.extrapolation_factor;
-              // The reference samples twice the scene's cycles (4× cost 4 times the scene's run
-              // and stayed at the chaos floor: issue 15, the study's 15 minutes).
-              for (const double f : {0.5, 1.0, 2.0})
-                {
-                  const double c = ws.cycles_per_iteration * f;
-                  k.values.push_back({label(c), label(per_iteration / c)});
-                }
-              k.reference = "most simulated cycles";
-              knobs.push_back(k);
-            }
-
-          if (!quick)
-            {
-              knobs.push_back(
-                make_knob("wear-update", {"Wear/Wear update"}, {"simultaneous", "sequential"}, "sequential"));
-              const double w = ws.smoothing_wavelength > 0 ? ws.smoothing_wavelength : 1e-3;
-              knobs.push_back(
-                make_knob("smoothing", {"Wear/Smoothing wavelength"}, {label(2 * w), label(w), "0"}, "no filter"));
-              knobs.push_back(pressure_model_knob(c));
-            }
-        }
+      if (wearing.empty())
+        return;
+      const auto              &ws = c.scene.wear_loop;
+      const double             n  = number_of(c.scene, "Joint " + wearing[0] + "/Clearance/Number of discrete areas");
+      std::vector<std::string> areas;
+      for (const double f : c.quick ? std::vector<double>{0.25, 0.5, 1} : std::vector<double>{0.25, 0.5, 1, 2})
+        areas.push_back(std::to_string(std::max(8L, std::lround(n * f))));
+      knobs.push_back(make_knob("discrete-areas", paths(wearing, "Number of discrete areas"), areas, "most areas"));
+      knobs.push_back(load_sampling_knob(c));
+      knobs.push_back(wear_step_knob(c));
+      if (ws.extrapolation == wear::Extrapolation::fixed)
+        knobs.push_back(simulated_cycles_knob(c));
+      if (c.quick)
+        return;
+      knobs.push_back(make_knob("wear-update", {"Wear/Wear update"}, {"simultaneous", "sequential"}, "sequential"));
+      const double w = ws.smoothing_wavelength > 0 ? ws.smoothing_wavelength : 1e-3;
+      knobs.push_back(
+        make_knob("smoothing", {"Wear/Smoothing wavelength"}, {label(2 * w), label(w), "0"}, "no filter"));
+      knobs.push_back(pressure_model_knob(c));
     }
 
     /**
