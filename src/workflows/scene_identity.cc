@@ -15,7 +15,8 @@ namespace wearlink::workflows
   {
     return entry.rfind("Output/", 0) == 0 || entry == "Wear/Number of iterations" ||
            entry == "Wear/Target revolutions" || entry == "Wear/FE output" || entry == "Wear/Profile magnification" ||
-           entry == "Life/Maximum revolutions" || entry == "Life/Maximum iterations";
+           entry == "Life/Maximum revolutions" || entry == "Life/Maximum iterations" ||
+           entry == "Life/Response tolerance";
   }
 
   std::map<std::string, std::string>

@@ -3,7 +3,7 @@
 // ("Section/Subsection/Entry" → value, --set overrides applied) without those that
 // only say how far to go and what to write (run control: Output/*, Wear/Number of
 // iterations, Wear/Target revolutions, Wear/FE output, Wear/Profile magnification,
-// Life/Maximum revolutions, Life/Maximum iterations), and
+// Life/Maximum revolutions, Life/Maximum iterations, Life/Response tolerance), and
 // a fingerprint of them (64-bit FNV-1a, the same on every platform). A checkpoint keeps
 // both, so that a resume with another scene is refused with the entries that differ.
 #pragma once

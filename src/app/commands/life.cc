@@ -84,7 +84,7 @@ undecided, the reason; "headline" (criterion, revolutions, hours, reason). The t
 is printed.
   --resume DIR        continue the life run in DIR from its last finished iteration
                       (same scene; Life/Maximum revolutions and Life/Maximum iterations
-                      may be raised)
+                      may be raised, Life/Response tolerance changed)
 
 )"
                   R"(The output directory is locked while the command runs; one that holds an earlier run's
