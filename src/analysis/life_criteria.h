@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// When is a joint worn out? The stop criteria of `wearlink life` (issue 15), the values
+// When is a joint worn out? The stop criteria of `wearlink life`, the values
 // they take during a wear run, how far each wear iteration may extrapolate so that every
 // wear criterion is located within a stated tolerance, and how a noisy criterion is
 // decided on its trend with a confidence band.

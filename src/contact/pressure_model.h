@@ -2,7 +2,8 @@
 // The pressure-model family: given the (worn) geometry of one shaft–bushing pair and
 // the contact load that the multibody model computed, return the contact pressure on
 // each discrete area of both surfaces. Members (chosen per joint by name):
-//   hertz-strip : Hertz line-contact half-width around the contact direction (seed route)
+//   hertz-strip : the normal force over a Hertz line-contact strip at the contact direction, its
+//                 width from the worn surfaces (or, as the seed, from the local radii)
 //   winkler     : elastic foundation from the local overlap of the profiles
 //   fe          : 2D plane-strain contact FE of the actual pin and bushing (src/fe)
 // The wear layer integrates Archard's law with these pressures (REFERENCE.md §4–5).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// What a worn profile's depth says as a result (doc/wear.md, "Depth as a result"):
+// What a worn profile's depth says as a result:
 //   - the raw largest depth: the deepest discrete area;
 //   - the envelope depth: the largest running median of the depth over the contact
 //     width — the depth a contact of that width meets. A feature narrower than the

@@ -187,14 +187,12 @@ namespace wearlink::wear
               "0",
               P::Double(0),
               "Low-pass filter of each iteration's depth increments (periodic Gaussian whose "
-              "transfer is 1/2 at this wavelength along the surface; the mean, hence the "
-              "volume, is kept). Why: a pressure model that resolves the worn surface (fe) "
-              "flattens features shorter than the contact width elastically, so in reality "
-              "their wear decays within a small part of an iteration; one explicit "
-              "extrapolated step (× Extrapolation factor) overshoots them instead and the "
-              "depth grows saw-tooth spikes from one discrete area to the next. Set it to "
-              "about the contact width; 0: no filter (the simplified pressure models do not "
-              "see the worn surface's short features and need none).",
+              "transfer is 1/2 at this wavelength along the surface; the volume is kept "
+              "exactly). With Wear update = sequential the surfaces need none: the worn "
+              "pockets conform to the pins and the profiles converge without it. It is kept "
+              "for the simultaneous update, whose one explicit step × Extrapolation factor "
+              "overshoots features shorter than the contact width (saw-tooth spikes between "
+              "neighbouring areas): set it to about the contact width there. 0: no filter.",
               "m");
     }
 

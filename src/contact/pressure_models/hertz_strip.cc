@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `hertz-strip`: the multibody normal force F_n spread over a Hertz line-contact strip
-// (Johnson, Contact Mechanics ch. 4; doc/models.md):
+// (Johnson, Contact Mechanics ch. 4):
 //     P = F_n / L,  1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2,
 //     b = √(4 P R*/(π E*)),  p0 = 2P/(π b),  p(s) = p0 √(1 − s²/b²), |s| ≤ b,
 // with s the arc length from the strip's centre. Each discrete area receives the
