@@ -13,6 +13,7 @@ namespace wearlink::app
   extern const Command study_command;
   extern const Command compare_dynamics_command;
   extern const Command compare_signal_command;
+  extern const Command compare_profile_command;
   extern const Command life_command;
 
   const std::vector<Command> &
@@ -29,6 +30,7 @@ namespace wearlink::app
       study_command,
       compare_dynamics_command,
       compare_signal_command,
+      compare_profile_command,
     };
     return table;
   }

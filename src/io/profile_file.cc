@@ -3,33 +3,96 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "base/parameters.h"
 #include "base/text.h"
 #include "io/csv.h"
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 
 namespace wearlink::io
 {
+  namespace
+  {
+    /** The points of a profile file: angles and radii (each radius > 0) and their lines. */
+    struct ProfilePoints
+    {
+      std::vector<double>      angles, radii;
+      std::vector<std::size_t> lines;
+    };
+
+    ProfilePoints
+    read_points(const std::string &file, const std::string &what)
+    {
+      const CsvTable table = CsvTable::read(file, what);
+      if (table.n_columns() != 2)
+        throw InputError("The " + what + " '" + file + "' has " + std::to_string(table.n_columns()) +
+                         " columns; it needs two, 'angle_rad, radius_m'.");
+      ProfilePoints p;
+      p.angles = table.numbers(0, "Expected two numbers 'angle_rad, radius_m' per line.");
+      p.radii  = table.numbers(1, "Expected two numbers 'angle_rad, radius_m' per line.");
+      for (std::size_t k = 0; k < p.radii.size(); ++k)
+        {
+          p.lines.push_back(table.line_of(k));
+          if (!(p.radii[k] > 0))
+            throw InputError("In " + what + " '" + file + "' line " + std::to_string(p.lines[k]) +
+                             ": the radius must be > 0 m (column 'radius_m' is " + format_number(p.radii[k], 6) + ").");
+        }
+      return p;
+    }
+
+    /** Two measured angles closer than this [rad] after wrapping are the same point. */
+    constexpr double same_angle = 1e-9;
+  } // namespace
+
   Profile
   read_profile_csv(const std::string &file, const unsigned int n_points)
   {
-    const CsvTable table = CsvTable::read(file, "profile file");
-    if (table.n_columns() != 2)
-      throw InputError("The profile file '" + file + "' has " + std::to_string(table.n_columns()) +
-                       " columns; it needs two, 'angle_rad, radius_m'.");
-    const std::vector<double> angles = table.numbers(0, "Expected two numbers 'angle_rad, radius_m' per line.");
-    const std::vector<double> radii  = table.numbers(1, "Expected two numbers 'angle_rad, radius_m' per line.");
-    for (std::size_t k = 0; k < radii.size(); ++k)
+    const ProfilePoints p = read_points(file, "profile file");
+    for (std::size_t k = 1; k < p.angles.size(); ++k)
+      if (!(p.angles[k] > p.angles[k - 1]))
+        throw InputError("In profile file '" + file + "' line " + std::to_string(p.lines[k]) +
+                         ": angles must increase strictly (a profile that turns back "
+                         "on itself is self-intersecting).");
+    return Profile::from_polar_points(p.angles, p.radii, n_points, "profile file '" + file + "'");
+  }
+
+  analysis::PolarTrace
+  read_measured_profile_csv(const std::string &file)
+  {
+    const std::string what = "measured profile";
+    const auto        p    = read_points(file, what);
+    if (p.angles.size() < 8)
+      throw InputError("The " + what + " '" + file + "' has " + std::to_string(p.angles.size()) +
+                       " points; at least 8 are needed to compare a surface.");
+    // Wrap into [0, 2π) and sort, keeping each point's line for the messages.
+    std::vector<std::size_t> order(p.angles.size());
+    std::vector<double>      wrapped(p.angles.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
       {
-        const std::string where = "In profile file '" + file + "' line " + std::to_string(table.line_of(k));
-        if (!(radii[k] > 0))
-          throw InputError(where + ": the radius must be > 0 m.");
-        if (k > 0 && !(angles[k] > angles[k - 1]))
-          throw InputError(where + ": angles must increase strictly (a profile that turns back "
-                                   "on itself is self-intersecting).");
+        order[k]   = k;
+        wrapped[k] = p.angles[k] - numbers::two_pi * std::floor(p.angles[k] / numbers::two_pi);
+        if (wrapped[k] >= numbers::two_pi)
+          wrapped[k] = 0;
       }
-    return Profile::from_polar_points(angles, radii, n_points, "profile file '" + file + "'");
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return wrapped[a] < wrapped[b]; });
+    analysis::PolarTrace t;
+    for (std::size_t s = 0; s < order.size(); ++s)
+      {
+        const std::size_t k = order[s], before = order[s == 0 ? order.size() - 1 : s - 1];
+        const double      gap = s == 0 ? wrapped[k] + numbers::two_pi - wrapped[before] : wrapped[k] - wrapped[before];
+        if (gap <= same_angle)
+          throw InputError("In " + what + " '" + file + "', lines " + std::to_string(p.lines[before]) + " and " +
+                           std::to_string(p.lines[k]) + " give the same angle (column 'angle_rad': " +
+                           format_number(p.angles[before], 10) + " and " + format_number(p.angles[k], 10) +
+                           " rad, the same within 1e-9 rad after wrapping into [0, 2π)): a surface has one "
+                           "radius per angle. Remove one of them.");
+        t.angle.push_back(wrapped[k]);
+        t.radius.push_back(p.radii[k]);
+      }
+    return t;
   }
 
   void

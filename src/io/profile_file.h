@@ -4,6 +4,7 @@
 // and a scene's 'Bore profile file' / 'Pin profile file' reads.
 #pragma once
 
+#include "analysis/profile_comparison.h"
 #include "base/profile.h"
 
 #include <string>
@@ -23,6 +24,18 @@ namespace wearlink::io
    */
   Profile
   read_profile_csv(const std::string &file, unsigned int n_points = 0);
+
+  /**
+   * A measured trace of a surface (a profilometer or CMM record) in the same format:
+   * any number of points at any spacing, angles of any value (wrapped into [0, 2π) and
+   * sorted; the order of the lines does not matter), radii in metres. InputError naming
+   * the file, the line and the column for a missing file, a field that is not a finite
+   * number (NaN included) or a radius ≤ 0; naming both lines for two points at the
+   * same angle (within 1e-9 rad after wrapping, 0 and 2π included); and for fewer than
+   * 8 points.
+   */
+  analysis::PolarTrace
+  read_measured_profile_csv(const std::string &file);
 
   /**
    * Wear only opens a bore and thins a pin: a pin profile whose largest radius reaches the

@@ -1,6 +1,7 @@
 # Run a command that must fail: non-zero exit, output matching EXPECT (a regex), and no
-# files left in OUTPUT_DIR (no half-written outputs).
-#   cmake -DCOMMAND="a;b;c" -DEXPECT=regex -DOUTPUT_DIR=dir -P expect_failure.cmake
+# files left in OUTPUT_DIR (no half-written outputs). With EXPECT_STATUS, exactly that
+# exit status (2 for bad input).
+#   cmake -DCOMMAND="a;b;c" -DEXPECT=regex -DOUTPUT_DIR=dir [-DEXPECT_STATUS=2] -P expect_failure.cmake
 file(REMOVE_RECURSE "${OUTPUT_DIR}")
 execute_process(COMMAND ${COMMAND}
                 RESULT_VARIABLE status
@@ -16,6 +17,9 @@ if(NOT status MATCHES "^[0-9]+$")
 endif()
 if(status EQUAL 1)
   message(FATAL_ERROR "exit status 1 means an internal error, not a user-input error")
+endif()
+if(DEFINED EXPECT_STATUS AND NOT status EQUAL EXPECT_STATUS)
+  message(FATAL_ERROR "expected the exit status ${EXPECT_STATUS}, got ${status}")
 endif()
 if(NOT all MATCHES "${EXPECT}")
   message(FATAL_ERROR "the message does not match the expected regex: ${EXPECT}")

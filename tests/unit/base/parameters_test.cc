@@ -186,6 +186,7 @@ TEST(CommandLine, EmptyOutputIsRefusedByEveryCommand)
                                                           {"compare-contact", scene},
                                                           {"compare-dynamics", "before", "after"},
                                                           {"compare-signal", scene, "measured.csv"},
+                                                          {"compare-profile", "run", "measured.csv"},
                                                           {"study", "accuracy", scene},
                                                           {"sweep", scene},
                                                           {"lyapunov", "series.csv"}};

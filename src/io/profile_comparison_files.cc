@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/profile_comparison_files.h"
+
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/numbers.h"
+#include "base/text.h"
+#include "io/csv.h"
+#include "io/plot.h"
+#include "io/profile_file.h"
+
+#include <filesystem>
+#include <set>
+
+namespace wearlink::io
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    /** The joints whose worn @p surface profile @p dir holds ("A, B"; "none"). */
+    std::string
+    joints_in(const std::string &dir, const std::string &surface)
+    {
+      std::set<std::string> joints;
+      const std::string     prefix = surface + "_";
+      std::error_code       ec;
+      for (const auto &entry : fs::directory_iterator(dir, ec))
+        {
+          const std::string name = entry.path().filename().string();
+          if (name.size() > prefix.size() + 4 && name.compare(0, prefix.size(), prefix) == 0 &&
+              name.compare(name.size() - 4, 4, ".csv") == 0)
+            joints.insert(name.substr(prefix.size(), name.size() - prefix.size() - 4));
+        }
+      std::string list;
+      for (const auto &j : joints)
+        list += (list.empty() ? "" : ", ") + j;
+      return list.empty() ? "none" : list;
+    }
+
+    /** The starting surface of the run: column <surface>_initial_m of profiles_<J>.csv. */
+    analysis::PolarTrace
+    read_unworn(const std::string &file, const std::string &surface)
+    {
+      const CsvTable    table  = CsvTable::read(file, "run's profile table");
+      const std::string column = surface + "_initial_m";
+      const std::size_t a = table.find("angle_rad"), r = table.find(column);
+      if (a == CsvTable::npos || r == CsvTable::npos)
+        throw InputError("The run's profile table '" + file + "' has no columns 'angle_rad' and '" + column +
+                         "' (its columns: " + table.column_list() +
+                         "). It is written by a wear run; was the folder written by another program?");
+      const std::string advice = "The file is a wear run's output; rerun the wear run if it was damaged.";
+      return analysis::PolarTrace::of_profile(Profile::from_polar_points(table.numbers(a, advice),
+                                                                         table.numbers(r, advice),
+                                                                         0,
+                                                                         "run's profile table '" + file + "'"));
+    }
+  } // namespace
+
+  std::string
+  surface_name(const analysis::WornSurface surface)
+  {
+    return surface == analysis::WornSurface::bore ? "bore" : "pin";
+  }
+
+  RunSurface
+  read_run_surface(const std::string &run_directory, const std::string &joint, const analysis::WornSurface surface)
+  {
+    const std::string name = surface_name(surface);
+    if (!fs::is_directory(run_directory))
+      throw InputError("The run folder '" + run_directory + "' does not exist or is not a directory.");
+    RunSurface s;
+    s.worn_file   = (fs::path(run_directory) / (name + "_" + joint + ".csv")).string();
+    s.unworn_file = (fs::path(run_directory) / ("profiles_" + joint + ".csv")).string();
+    for (const auto &file : {s.worn_file, s.unworn_file})
+      if (!fs::exists(file))
+        throw InputError("The run folder '" + run_directory + "' holds no " + fs::path(file).filename().string() +
+                         ": is it the folder of a finished wear run in which joint '" + joint + "' wears? Its worn " +
+                         name + " profiles are of the joints: " + joints_in(run_directory, name) +
+                         " (--joint names one of them).");
+    s.worn   = analysis::PolarTrace::of_profile(read_profile_csv(s.worn_file));
+    s.unworn = read_unworn(s.unworn_file, name);
+    return s;
+  }
+
+  namespace
+  {
+    /** @p s in the plot's units: degrees and micrometres. */
+    PlotSeries
+    series(const analysis::AngleSeries &s,
+           const std::string           &title,
+           const std::string           &style,
+           const std::string           &options)
+    {
+      PlotSeries p{title, {}, {}, style, options};
+      for (std::size_t k = 0; k < s.angle.size(); ++k)
+        {
+          p.x.push_back(s.angle[k] * 180 / numbers::pi);
+          p.y.push_back(s.value[k] * 1e6);
+        }
+      return p;
+    }
+
+    PlotSpec
+    overlay_plot(const Json &json, const analysis::ProfileComparison &c, const ProfileOverlayLabels &labels)
+    {
+      PlotSpec p;
+      p.title = "Joint " + labels.joint + " " + labels.surface + ": measured wear depth (turned by " +
+                format_number(json_number(json.at("rotation_deg")), 4) + " deg) against the prediction";
+      p.x_label = "angle in the body's own frame (the run's) [deg]";
+      p.y_label = "wear depth [um]";
+      p.width   = 1200;
+      p.extra   = "set xrange [0:360]\nset xtics 45\nset key below\n";
+      // A sparse trace shows its points; a dense one would hide the prediction under them.
+      const bool sparse = c.measured_depth.angle.size() <= 400;
+      p.series          = {series(c.predicted_depth, "predicted (run)", "lines", "lw 2 lc rgb '#1f77b4'"),
+                           series(c.measured_depth,
+                         "measured: " + fs::path(labels.measured_file).filename().string(),
+                         sparse ? "linespoints" : "lines",
+                         "lw 1.5 pt 7 ps 0.5 lc rgb '#d62728'"),
+                           series(c.depth_difference, "measured - predicted", "lines", "dt 2 lw 1.5 lc rgb '#2ca02c'")};
+      return p;
+    }
+  } // namespace
+
+  std::vector<std::string>
+  write_profile_comparison(const std::string                 &directory,
+                           const Json                        &json,
+                           const analysis::ProfileComparison &c,
+                           const ProfileOverlayLabels        &labels)
+  {
+    std::vector<std::string> files;
+    const std::string        png = directory + "/profile_comparison.png";
+    if (plot_png(overlay_plot(json, c, labels), png))
+      files.push_back(png);
+    write_file_atomically(directory + "/profile_comparison.json", json.dump(2));
+    files.push_back(directory + "/profile_comparison.json");
+    return files;
+  }
+} // namespace wearlink::io
