@@ -32,23 +32,13 @@ using namespace wearlink::wear::testing;
 namespace
 {
   constexpr double pi = 3.14159265358979323846;
-
-  std::unique_ptr<contact::PressureModel>
-  create(const std::string &name)
-  {
-    dealii::ParameterHandler prm;
-    contact::pressure_models().declare_all(prm);
-    ParameterReader reader(prm, "test");
-    return contact::pressure_models().create(name, reader, "Pressure model");
-  }
-
 } // namespace
 
 TEST(Archard, ConstantLoadOnRotatingPin)
 {
   const unsigned int n_areas = 360, per_area = 8, revolutions = 3;
   const auto         g     = steel_joint(n_areas);
-  auto               model = create("hertz-strip");
+  auto               model = pressure_model("hertz-strip");
   model->update_geometry(g);
   const double             k_pin = 2e-13, k_bore = 5e-14; // m³/(N m): different, to see both
   wear::ArchardAccumulator acc(g, k_bore, k_pin, *model);
@@ -138,7 +128,7 @@ TEST(Archard, LocalVolumeMatchesGlobalForWinkler)
 TEST(Archard, NoLoadOrNoSlidingNoWear)
 {
   const auto g     = steel_joint(64);
-  auto       model = create("hertz-strip");
+  auto       model = pressure_model("hertz-strip");
   model->update_geometry(g);
   wear::ArchardAccumulator acc(g, 1e-13, 1e-13, *model);
   wear::LoadSample         s;
@@ -164,7 +154,7 @@ TEST(Archard, NoLoadOrNoSlidingNoWear)
 TEST(Archard, SampledShapesKeepTheVolume)
 {
   const auto g     = steel_joint(360);
-  auto       model = create("hertz-strip");
+  auto       model = pressure_model("hertz-strip");
   model->update_geometry(g);
   wear::ArchardAccumulator      every(g, 1e-13, 2e-13, *model), sampled(g, 1e-13, 2e-13, *model);
   std::vector<wear::LoadSample> history;

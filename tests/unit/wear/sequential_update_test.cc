@@ -24,18 +24,6 @@ namespace
 {
   constexpr double pi = 3.14159265358979323846;
 
-  std::unique_ptr<contact::PressureModel>
-  create(const std::string &name)
-  {
-    dealii::ParameterHandler prm;
-    contact::pressure_models().declare_all(prm);
-    prm.enter_subsection("winkler");
-    prm.set("Layer thickness", "1e-3");
-    prm.leave_subsection();
-    ParameterReader reader(prm, "test");
-    return contact::pressure_models().create(name, reader, "Pressure model");
-  }
-
   /** Width of the region deeper than half the deepest area [areas]. */
   unsigned int
   width_at_half_depth(const std::vector<double> &h)
@@ -55,7 +43,7 @@ namespace
   dwell(const std::string &model_name, const double factor, const bool sequential)
   {
     const auto g     = steel_joint(360);
-    auto       model = create(model_name);
+    auto       model = pressure_model(model_name);
     model->update_geometry(g);
     const double             k = 4.6e-14, force = 500, omega = 4 * pi, dt = 1e-4;
     wear::ArchardAccumulator acc(g, k, k, *model);

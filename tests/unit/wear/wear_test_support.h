@@ -7,6 +7,7 @@
 #include "contact/pressure_model.h"
 
 #include <memory>
+#include <string>
 
 namespace wearlink::wear::testing
 {
@@ -30,9 +31,9 @@ namespace wearlink::wear::testing
     return steel_joint(Profile::round(0.012, n_areas), Profile::round(0.0115, n_areas));
   }
 
-  /** The winkler pressure model (1 mm layer) on @p g. */
+  /** The pressure model @p name with its defaults (winkler: a 1 mm layer), no geometry yet. */
   inline std::unique_ptr<contact::PressureModel>
-  winkler_on(const contact::JointGeometry &g)
+  pressure_model(const std::string &name)
   {
     dealii::ParameterHandler prm;
     contact::pressure_models().declare_all(prm);
@@ -40,7 +41,14 @@ namespace wearlink::wear::testing
     prm.set("Layer thickness", "1e-3");
     prm.leave_subsection();
     ParameterReader reader(prm, "test");
-    auto            model = contact::pressure_models().create("winkler", reader, "Pressure model");
+    return contact::pressure_models().create(name, reader, "Pressure model");
+  }
+
+  /** The winkler pressure model (1 mm layer) on @p g. */
+  inline std::unique_ptr<contact::PressureModel>
+  winkler_on(const contact::JointGeometry &g)
+  {
+    auto model = pressure_model("winkler");
     model->update_geometry(g);
     return model;
   }
