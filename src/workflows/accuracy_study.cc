@@ -9,6 +9,7 @@
 #include "io/plot.h"
 #include "io/scene.h"
 #include "io/wear_outputs.h"
+#include "wear/periodic_samples.h"
 #include "workflows/accuracy_runs.h"
 #include "workflows/ensemble.h"
 #include "workflows/run.h"
@@ -154,16 +155,6 @@ namespace wearlink::workflows
       return std::abs(value - reference) / std::abs(reference);
     }
 
-    /** @p h (periodic, N samples over 2π) at angle fraction @p s ∈ [0, 1). */
-    double
-    periodic_interpolate(const std::vector<double> &h, double s)
-    {
-      const double x = s * h.size();
-      const auto   i = static_cast<std::size_t>(std::floor(x)) % h.size();
-      const double w = x - std::floor(x);
-      return (1 - w) * h[i] + w * h[(i + 1) % h.size()];
-    }
-
     /** Periodic moving average of @p h over @p window_deg degrees. */
     std::vector<double>
     smoothed(const std::vector<double> &h, double window_deg)
@@ -189,9 +180,7 @@ namespace wearlink::workflows
     {
       if (h.empty() || ref.empty())
         return nan;
-      std::vector<double> v(ref.size()), r = ref;
-      for (std::size_t k = 0; k < ref.size(); ++k)
-        v[k] = periodic_interpolate(h, double(k) / ref.size());
+      std::vector<double> v = wear::periodic_resampled(h, ref.size()), r = ref;
       if (window_deg > 0)
         {
           v = smoothed(v, window_deg);

@@ -6,6 +6,7 @@
 #include "base/text.h"
 #include "io/plot.h"
 #include "io/scene.h"
+#include "wear/periodic_samples.h"
 #include "workflows/ensemble.h"
 
 #include <algorithm>
@@ -23,28 +24,6 @@ namespace wearlink::workflows
     /** The two surfaces of a wearing joint: the measurement's tag and the name shown. */
     const std::vector<std::pair<std::string, std::string>> surface_tags = {{"pin", "pin"}, {"bush", "bushing"}};
 
-    /** @p h (periodic, N samples over 2π) at angle fraction @p s ∈ [0, 1). */
-    double
-    periodic_at(const std::vector<double> &h, const double s)
-    {
-      const double x = s * h.size();
-      const auto   i = static_cast<std::size_t>(std::floor(x)) % h.size();
-      const double w = x - std::floor(x);
-      return (1 - w) * h[i] + w * h[(i + 1) % h.size()];
-    }
-
-    /** @p h on the angles of a profile of @p n samples. */
-    std::vector<double>
-    resampled(const std::vector<double> &h, const std::size_t n)
-    {
-      if (h.size() == n)
-        return h;
-      std::vector<double> out(n);
-      for (std::size_t k = 0; k < n; ++k)
-        out[k] = periodic_at(h, static_cast<double>(k) / n);
-      return out;
-    }
-
     /** ‖a − b‖/‖b‖ on the coarser of the two grids (the finer one interpolated). */
     double
     l2_difference(const std::vector<double> &a, const std::vector<double> &b)
@@ -52,7 +31,7 @@ namespace wearlink::workflows
       const std::size_t n = std::min(a.size(), b.size());
       if (n == 0)
         return nan;
-      const auto x = resampled(a, n), y = resampled(b, n);
+      const auto x = wear::periodic_resampled(a, n), y = wear::periodic_resampled(b, n);
       double     d = 0, r = 0;
       for (std::size_t k = 0; k < n; ++k)
         {
@@ -69,7 +48,7 @@ namespace wearlink::workflows
       const std::size_t n = std::min(a.size(), b.size());
       if (n == 0)
         return nan;
-      const auto x = resampled(a, n), y = resampled(b, n);
+      const auto x = wear::periodic_resampled(a, n), y = wear::periodic_resampled(b, n);
       double     d = 0, top = 0;
       for (std::size_t k = 0; k < n; ++k)
         {
