@@ -198,11 +198,14 @@ namespace wearlink::analysis
       return f_reach;
     const double remaining = f_reach * cycles; // revolutions to the crossing
     const double total     = revolutions + remaining;
-    if (remaining <= tolerance * total)
-      return f_reach;
-    // Leave half the allowed last step, so that the next iteration lands even if the
-    // wear rate changes by up to a factor of 2 meanwhile (else a tiny step may follow).
-    return (remaining - 0.5 * tolerance * total) / cycles;
+    const double step      = 0.9 * tolerance * total; // the longest last step within the tolerance
+    // Close enough: overshoot the predicted crossing by what the tolerance allows, so the
+    // crossing is bracketed even if this iteration wears a little less than predicted.
+    if (remaining <= step)
+      return step / cycles;
+    // Else stop half such a step short, so that the next iteration brackets it even if
+    // the wear rate changes by up to a factor of 2 meanwhile.
+    return (remaining - 0.5 * step) / cycles;
   }
 
   bool

@@ -31,11 +31,13 @@
 // function of f before the step (wear::StepPreview), non-decreasing (a running median of
 // values that each grow with f grows with f; so does a maximum or a sum of them); the
 // factor at which it reaches its limit is found by bisection to 1e-12. With tolerance τ
-// the iteration that crosses must represent at most τ × the revolutions at its end: if
-// the predicted crossing is farther, the iteration stops short of it by half such a step
-// (room for the rate to change by up to a factor of 2), and the next one lands on it. The
-// life is the crossing (interpolated between the two iterations that bracket it; the
-// landing makes it the iteration's end) with that bracket, ≤ τ × life wide. A wear
+// the iteration that crosses must represent at most τ × the revolutions at its end. The
+// last step is 0.9 τ × the revolutions at the predicted crossing: if the crossing is
+// within it, the iteration takes that whole step and overshoots the prediction (a wear
+// rate a little below the predicted one still crosses); if it is farther, the iteration
+// stops half such a step short (room for the rate to change by up to a factor of 2), and
+// the next one takes the last step. The life is the crossing interpolated between the two
+// iterations that bracket it, with that bracket, ≤ τ × life wide. A wear
 // criterion is decided when it is reached.
 //
 // Deciding a noisy criterion on its trend. The response measure scatters by 10–30 % from
@@ -176,9 +178,11 @@ namespace wearlink::analysis
 
   /**
    * The factor of an iteration of @p cycles simulated cycles that starts at
-   * @p revolutions when the crossing is predicted at factor @p f_reach: f_reach if that
-   * step is at most @p tolerance × the revolutions at its end, else the factor that
-   * leaves half such a step to the crossing (see the file comment).
+   * @p revolutions when the crossing is predicted at factor @p f_reach. The last step
+   * may be 0.9 × @p tolerance × the revolutions at the crossing: if the crossing is
+   * within it, the factor of that whole step (it overshoots the prediction, so a slightly
+   * smaller wear rate still brackets the crossing); else the factor that leaves half
+   * such a step to the crossing.
    */
   double
   approach_factor(double f_reach, double cycles, double revolutions, double tolerance);

@@ -60,6 +60,10 @@ namespace wearlink::workflows
       bool
       done(const wear::WearLoop &loop) const;
       bool
+      stop(const wear::WearLoop &loop);
+      void
+      warn_if_undecided_may_come_first();
+      bool
       reached(std::size_t c) const;
       analysis::Crossing
       crossing(std::size_t c) const;
@@ -141,7 +145,7 @@ namespace wearlink::workflows
         after_iteration(loop);
       };
       w.stop = [this](const wear::WearLoop &loop) {
-        return done(loop);
+        return stop(loop);
       };
       w.extend_summary = [this](Json &summary) {
         summary["life"] = block();
@@ -287,15 +291,19 @@ namespace wearlink::workflows
     }
 
     /**
-     * A wear criterion is settled when reached; a trend criterion when decided, or when it
-     * cannot come first (going on could not change the life).
+     * A wear criterion is settled when reached. A trend criterion is settled when decided,
+     * when it cannot come first, or when every wear criterion is reached: measurements past
+     * the earliest wear life only narrow the line's interval under its straight-line model
+     * and cost whole iterations, so a trend still undecided there is reported as undecided
+     * (with a warning if its interval begins before the wear life).
      */
     bool
     LifeRun::settled(const std::size_t c) const
     {
       if (!analysis::is_trend(history.criteria[c]))
         return crossing(c).reached;
-      return trend_state(c).status == analysis::CriterionStatus::decided || cannot_come_first(c);
+      return trend_state(c).status == analysis::CriterionStatus::decided ||
+             std::isfinite(earliest_wear_life()) || cannot_come_first(c);
     }
 
     /** The run ends when every criterion is settled, or at Life/Maximum revolutions. */
@@ -308,6 +316,47 @@ namespace wearlink::workflows
         if (!settled(c))
           return false;
       return true;
+    }
+
+    /** The wear run's stop hook: done(), and the life's warnings once it is. */
+    bool
+    LifeRun::stop(const wear::WearLoop &loop)
+    {
+      if (!done(loop))
+        return false;
+      warn_if_undecided_may_come_first();
+      return true;
+    }
+
+    /**
+     * A validity warning for each trend criterion left undecided whose 95 % interval of
+     * the crossing begins before the earliest wear life: the life may be shorter than the
+     * headline says.
+     */
+    void
+    LifeRun::warn_if_undecided_may_come_first()
+    {
+      const double life = earliest_wear_life();
+      if (!std::isfinite(life))
+        return;
+      for (std::size_t c = 0; c < history.criteria.size(); ++c)
+        {
+          if (!analysis::is_trend(history.criteria[c]) || cannot_come_first(c))
+            continue;
+          const auto x = trend_state(c);
+          if (x.status == analysis::CriterionStatus::decided)
+            continue;
+          const double low = std::isfinite(x.interval.low) ? std::max(x.interval.low, 0.0) : 0.0;
+          response_warnings.check(
+            {"life: " + history.criteria[c].name + " (undecided) against the wear life",
+             life,
+             low,
+             "rev",
+             "the low end of the 95 % interval of " + history.criteria[c].name + "'s crossing",
+             "the wear life exceeds the revolutions from which the undecided " + history.criteria[c].name +
+               " may already have crossed its limit, so the life may be shorter than the headline; decide it with "
+               "more Life/Response cycles or a wider Life/Response tolerance"});
+        }
     }
 
     /** One line: each criterion's value as a percentage of its limit. */
@@ -397,6 +446,9 @@ namespace wearlink::workflows
       if (!decided && cannot_come_first(c))
         reason += "; it cannot come before the wear life at " + format_number(std::round(life), 15) +
                   " rev (the upper 95 % bound of its rise there is below the limit), so the run did not go on";
+      else if (!decided && std::isfinite(life))
+        reason += "; the run stopped when every wear criterion was reached (the wear life " +
+                  format_number(std::round(life), 15) + " rev), which it may precede";
       outcome                        = {x.status, decided ? x.revolutions : nan};
       o["located_by"]                = "trend";
       o["reached"]                   = x.reached;

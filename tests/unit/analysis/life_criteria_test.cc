@@ -65,15 +65,22 @@ TEST(LifeCriteria, FactorToReachEachWearCriterion)
   EXPECT_EQ(factor_to_reach(bushing, p, densities, 100), 0);
 }
 
-TEST(LifeCriteria, ApproachLeavesAShortLastStep)
+TEST(LifeCriteria, ApproachLeavesAShortLastStepAndOvershootsWithIt)
 {
   // 10 cycles per iteration at 1000 revolutions, tolerance 2 %. A crossing 10 factors
-  // away is 100 revolutions: more than 2 % of 1100, so stop 1 % of 1100 = 11 short of it.
-  EXPECT_NEAR(approach_factor(10, 10, 1000, 0.02), (100 - 11) / 10.0, 1e-12);
-  // A crossing 2 factors away (20 rev ≤ 2 % of 1020): land on it.
-  EXPECT_EQ(approach_factor(2, 10, 1000, 0.02), 2);
-  // From the start (0 revolutions) two steps: 99 % of the way, then the rest.
-  EXPECT_NEAR(approach_factor(50, 10, 0, 0.02), 50 * 0.99, 1e-12);
+  // away is 100 revolutions: more than 0.9 × 2 % of 1100 = 19.8, so stop half of that,
+  // 9.9 revolutions, short of it.
+  EXPECT_NEAR(approach_factor(10, 10, 1000, 0.02), (100 - 9.9) / 10.0, 1e-12);
+  // A crossing 1 factor away (10 rev ≤ 0.9 × 2 % of 1010 = 18.18): take that whole last
+  // step, which brackets the crossing within the tolerance.
+  EXPECT_NEAR(approach_factor(1, 10, 1000, 0.02), 1.818, 1e-12);
+  EXPECT_LE(approach_factor(1, 10, 1000, 0.02) * 10, 0.02 * 1010);
+  // From the start (0 revolutions): stop 0.9 % short, then overshoot by 0.9 %.
+  const double first = approach_factor(50, 10, 0, 0.02);
+  EXPECT_NEAR(first, 50 * (1 - 0.009), 1e-12);
+  const double last = approach_factor(50 - first, 10, first * 10, 0.02);
+  EXPECT_GT(last, 50 - first);
+  EXPECT_NEAR(last * 10, 0.018 * 500, 1e-9);
   EXPECT_TRUE(std::isinf(approach_factor(INFINITY, 10, 0, 0.02)));
 }
 
