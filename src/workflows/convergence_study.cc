@@ -143,6 +143,20 @@ namespace wearlink::workflows
       return names;
     }
 
+    /** The standard error of the mean of @p v (NaN below two values). */
+    double
+    standard_error_of_mean(const std::vector<double> &v)
+    {
+      if (v.size() < 2)
+        return nan;
+      double mean = 0, var = 0;
+      for (const double x : v)
+        mean += x / v.size();
+      for (const double x : v)
+        var += (x - mean) * (x - mean) / (v.size() - 1);
+      return std::sqrt(var / v.size());
+    }
+
     /** The statistics of surface @p tag of joint @p joint over the members @p ms. */
     SurfaceLevel
     surface_statistics(const std::vector<const Measurement *> &ms, const std::string &joint, const std::string &tag)
@@ -195,11 +209,51 @@ namespace wearlink::workflows
             }
         return c > 0 ? sum / c : nan;
       };
-      s.largest   = mean_of("h_" + tag);
-      s.envelope  = mean_of("he_" + tag);
-      s.volume    = mean_of("V_" + tag);
-      s.roughness = mean_of("rough_" + tag);
+      const auto error_of = [&](const std::string &q) {
+        std::vector<double> v;
+        for (const auto *m : ms)
+          if (m->quantities.count(joint + " " + q))
+            v.push_back(m->quantities.at(joint + " " + q));
+        return standard_error_of_mean(v);
+      };
+      s.largest        = mean_of("h_" + tag);
+      s.envelope       = mean_of("he_" + tag);
+      s.largest_error  = error_of("h_" + tag);
+      s.envelope_error = error_of("he_" + tag);
+      s.volume         = mean_of("V_" + tag);
+      s.roughness      = mean_of("rough_" + tag);
       return s;
+    }
+
+    /**
+     * The Richardson estimates of every surface's depths from the three finest levels,
+     * if they refine by one ratio.
+     */
+    void
+    extrapolate(ConvergenceStudy &study)
+    {
+      const auto &lv = study.levels;
+      if (lv.size() < 3)
+        return;
+      const std::size_t n = lv.size();
+      const double      r = lv[n - 2].refinement / lv[n - 3].refinement;
+      if (std::abs(lv[n - 1].refinement / lv[n - 2].refinement - r) > 1e-9 * r)
+        return;
+      study.extrapolation_ratio = r;
+      for (std::size_t s = 0; s < study.surfaces.size(); ++s)
+        {
+          analysis::RefinementTriple largest, envelope;
+          largest.ratio = envelope.ratio = r;
+          for (int l = 0; l < 3; ++l)
+            {
+              const auto &x              = lv[n - 3 + l].surfaces[s];
+              largest.value[l]           = x.largest;
+              largest.standard_error[l]  = x.largest_error;
+              envelope.value[l]          = x.envelope;
+              envelope.standard_error[l] = x.envelope_error;
+            }
+          study.extrapolations.push_back({analysis::richardson(largest), analysis::richardson(envelope)});
+        }
     }
 
     /** Each level's statistics, and its differences against the finest. */
@@ -228,6 +282,7 @@ namespace wearlink::workflows
             for (const auto &[tag, name] : surface_tags)
               level.surfaces.push_back(surface_statistics(ok, w->joint, tag));
         }
+      extrapolate(study);
       const auto &finest = study.levels.back();
       for (auto &level : study.levels)
         for (std::size_t s = 0; s < level.surfaces.size(); ++s)
@@ -258,6 +313,57 @@ namespace wearlink::workflows
       std::ostringstream os;
       os << std::setprecision(3) << v * 1e6;
       return os.str();
+    }
+
+    /** One row of the Richardson table. */
+    std::string
+    extrapolation_row(const std::string &surface, const char *depth, const analysis::RichardsonEstimate &e)
+    {
+      std::ostringstream os;
+      os << "| " << surface << " | " << depth << " | ";
+      if (!e.determinable)
+        return os.str() + "— | — | — | — | — | " + e.reason + " |\n";
+      os << std::fixed << std::setprecision(2) << e.order << std::defaultfloat << " | " << micrometres(e.extrapolated)
+         << " | " << percent(e.error[0]) << " | " << percent(e.error[1]) << " | " << percent(e.error[2]) << " | "
+         << e.reason << " |\n";
+      return os.str();
+    }
+
+    /** convergence.md's Richardson section (empty without three levels of one ratio). */
+    std::string
+    extrapolation_markdown(const ConvergenceStudy &study)
+    {
+      if (study.extrapolations.empty())
+        return "";
+      const auto         n = study.levels.size();
+      std::ostringstream os;
+      os << "\n**Extrapolated depths** (Richardson, levels";
+      for (std::size_t l = n - 3; l < n; ++l)
+        os << " ×" << format_number(study.levels[l].refinement);
+      os << "): with the members' mean depth f ≈ f* + C h^p, the observed order p = ln((f₁ − f₂)/(f₂ − f₃))/ln "
+         << format_number(study.extrapolation_ratio)
+         << ", the extrapolated depth f* and each level's error (f − f*)/f*. Not determinable when a difference "
+            "is within twice its noise (the members' standard errors) or the levels do not approach monotonically."
+            "\n\n| surface | depth | order | extrapolated [µm] | error, coarse | error, medium | error, fine | note "
+            "|\n|---|---|---:|---:|---:|---:|---:|---|\n";
+      for (std::size_t s = 0; s < study.surfaces.size(); ++s)
+        os << extrapolation_row(study.surfaces[s], "largest", study.extrapolations[s].largest)
+           << extrapolation_row(study.surfaces[s], "envelope", study.extrapolations[s].envelope);
+      return os.str();
+    }
+
+    /** A Richardson estimate as JSON (nulls where not determinable). */
+    Json
+    estimate_json(const analysis::RichardsonEstimate &e)
+    {
+      const auto number = [&](const double v) {
+        return e.determinable ? Json(v) : Json();
+      };
+      return {{"determinable", e.determinable},
+              {"observed_order", number(e.order)},
+              {"extrapolated_m", number(e.extrapolated)},
+              {"relative_error_of_levels", Json::array({number(e.error[0]), number(e.error[1]), number(e.error[2])})},
+              {"note", e.reason}};
     }
   } // namespace
 
@@ -327,6 +433,7 @@ namespace wearlink::workflows
                << percent(x.standard_error) << " |\n";
           }
       }
+    os << extrapolation_markdown(*this);
     for (const auto &l : levels)
       for (const auto &f : l.failures)
         os << "\nlevel ×" << format_number(l.refinement) << " " << f << "\n";
@@ -363,9 +470,22 @@ namespace wearlink::workflows
                                            {"envelope_depth_change", x.envelope_change},
                                            {"volume_change", x.volume_change},
                                            {"floor_pair_l2", x.pair_difference},
-                                           {"floor_standard_error", x.standard_error}};
+                                           {"floor_standard_error", x.standard_error},
+                                           {"largest_depth_standard_error_m", x.largest_error},
+                                           {"envelope_depth_standard_error_m", x.envelope_error}};
           }
         j["levels"].push_back(lj);
+      }
+    if (!extrapolations.empty())
+      {
+        Json e      = Json::object();
+        e["ratio"]  = extrapolation_ratio;
+        e["levels"] = Json::array(
+          {levels[levels.size() - 3].refinement, levels[levels.size() - 2].refinement, levels.back().refinement});
+        for (std::size_t s = 0; s < surfaces.size(); ++s)
+          e["surfaces"][surfaces[s]] = {{"largest_depth", estimate_json(extrapolations[s].largest)},
+                                        {"envelope_depth", estimate_json(extrapolations[s].envelope)}};
+        j["extrapolation"] = e;
       }
     return j;
   }

@@ -28,6 +28,7 @@
 // 2√2 standard errors is not resolved by the ensemble.
 #pragma once
 
+#include "analysis/richardson.h"
 #include "base/json.h"
 #include "base/parameters.h"
 #include "workflows/accuracy_runs.h"
@@ -53,8 +54,9 @@ namespace wearlink::workflows
   {
     std::vector<double> mean, low, high;                                      ///< depth per area over the members [m]
     double              largest = 0, envelope = 0, volume = 0, roughness = 0; ///< members' means [m, m, m³, -]
-    double              standard_error  = 0; ///< ‖std of the mean profile‖ / ‖mean‖ [-]
-    double              pair_difference = 0; ///< mean relative L2 difference of two members [-]
+    double              standard_error = 0;                    ///< ‖std of the mean profile‖ / ‖mean‖ [-]
+    double              largest_error = 0, envelope_error = 0; ///< standard errors of largest, envelope [m]
+    double              pair_difference = 0;                   ///< mean relative L2 difference of two members [-]
     // Against the finest level (0 for the finest itself):
     double l2 = 0, pointwise = 0, largest_change = 0, envelope_change = 0, volume_change = 0;
   };
@@ -69,14 +71,27 @@ namespace wearlink::workflows
     std::vector<SurfaceLevel> surfaces;      ///< in ConvergenceStudy::surfaces order
   };
 
+  /**
+   * The Richardson estimate of a surface's largest and envelope depths from the three
+   * finest levels (analysis/richardson.h): each level's error against the extrapolated
+   * value, so a reader sees what the scene's own level costs in accuracy.
+   */
+  struct SurfaceExtrapolation
+  {
+    analysis::RichardsonEstimate largest, envelope;
+  };
+
   struct ConvergenceStudy
   {
     std::string                   scene_file;
     std::vector<std::string>      base_overrides;
     unsigned int                  members = 0;
-    std::vector<std::string>      surfaces;    ///< "A pin", "A bushing", …
-    std::vector<ConvergenceLevel> levels;      ///< coarse → fine
-    bool                          root = true; ///< false on MPI ranks other than 0
+    std::vector<std::string>      surfaces; ///< "A pin", "A bushing", …
+    std::vector<ConvergenceLevel> levels;   ///< coarse → fine
+    /** Per surface, from the three finest levels if they refine by one ratio (else empty). */
+    std::vector<SurfaceExtrapolation> extrapolations;
+    double                            extrapolation_ratio = 0;    ///< their ratio (0: none)
+    bool                              root                = true; ///< false on MPI ranks other than 0
 
     /** convergence.md: the table of every level and surface, and the floor. */
     std::string

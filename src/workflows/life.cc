@@ -302,8 +302,8 @@ namespace wearlink::workflows
     {
       if (!analysis::is_trend(history.criteria[c]))
         return crossing(c).reached;
-      return trend_state(c).status == analysis::CriterionStatus::decided ||
-             std::isfinite(earliest_wear_life()) || cannot_come_first(c);
+      return trend_state(c).status == analysis::CriterionStatus::decided || std::isfinite(earliest_wear_life()) ||
+             cannot_come_first(c);
     }
 
     /** The run ends when every criterion is settled, or at Life/Maximum revolutions. */

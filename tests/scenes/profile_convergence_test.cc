@@ -16,8 +16,17 @@
 //    (wear/depth_measures.h) is at most 5 % (measured 0.7–1.7 %; the seed's simultaneous
 //    update gave 25–48 % on the bores). Not cut short: a few thousand revolutions of
 //    a chaotic load history extrapolated stamp single impacts' marks on a pin (5–8 %
-//    after 15,000 revolutions), which later iterations, other impacts, even out.
+//    after 15,000 revolutions), which later iterations, other impacts, even out;
+//  - `wearlink study convergence` on the journals of tests/scenes/life_journal.prm (a
+//    constant wear rate, about a second): three levels of two members, the finest level
+//    its own reference, the worn volume independent of the level (a constant rate makes
+//    it exact to the sequential update's round-off; measured 0.1–0.2 %), and the
+//    Richardson block the same as analysis/richardson.h computes from the levels' figures.
+#include "analysis/richardson.h"
+#include "base/json.h"
+#include "io/json_file.h"
 #include "scene_support.h"
+#include "support/test_support.h"
 #include "wear/depth_measures.h"
 #include "workflows/wear_run.h"
 
@@ -25,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 using namespace wearlink;
 
@@ -133,3 +143,45 @@ INSTANTIATE_TEST_SUITE_P(Scenes,
                                            "nine_bar_wear_fe",
                                            "nine_bar_experiment",
                                            "slider_crank_wear"));
+
+TEST(ConvergenceStudy, LevelsOfAConstantWearRateAndTheirExtrapolation)
+{
+  const std::string dir = wearlink::testing::fresh_directory("convergence_journal");
+  const auto        r   = wearlink::testing::run_wearlink({"study",
+                                                           "convergence",
+                                                           wearlink::testing::source_path("tests/scenes/life_journal.prm"),
+                                                           "--output",
+                                                           dir,
+                                                           "--ensemble",
+                                                           "2",
+                                                           "--quiet"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  for (const char *f : {"convergence.md", "convergence.csv", "convergence.json", "convergence_O1_pin.png"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
+  const Json study = io::read_json_file(dir + "/convergence.json");
+  ASSERT_EQ(study.at("levels").size(), 3u);
+  for (const char *surface : {"O1 pin", "O2 bushing"})
+    {
+      EXPECT_EQ(json_number(study.at("levels")[2].at("surfaces").at(surface).at("l2_to_finest")), 0) << surface;
+      for (int l = 0; l < 2; ++l)
+        EXPECT_LT(std::abs(json_number(study.at("levels")[l].at("surfaces").at(surface).at("volume_change"))), 5e-3)
+          << surface << " level " << l << ": a constant wear rate wears the same volume at every level";
+    }
+  const Json &e = study.at("extrapolation");
+  EXPECT_EQ(e.at("levels"), Json::array({1.0, 2.0, 4.0}));
+  for (const auto &[surface, block] : e.at("surfaces").items())
+    {
+      analysis::RefinementTriple t;
+      t.ratio = 2;
+      for (int l = 0; l < 3; ++l)
+        {
+          const Json &x       = study.at("levels")[l].at("surfaces").at(surface);
+          t.value[l]          = json_number(x.at("largest_depth_m"));
+          t.standard_error[l] = json_number(x.at("largest_depth_standard_error_m"));
+        }
+      const auto expected = analysis::richardson(t);
+      EXPECT_EQ(block.at("largest_depth").at("determinable").get<bool>(), expected.determinable) << surface;
+      EXPECT_EQ(block.at("largest_depth").at("note").get<std::string>(), expected.reason) << surface;
+    }
+  EXPECT_NE(r.output.find("Extrapolated depths"), std::string::npos) << r.output;
+}

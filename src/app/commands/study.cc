@@ -42,7 +42,11 @@ is one sample. Each level's mean profile is compared with the finest level's, po
 point on the coarser grid: the relative L2 and largest pointwise differences, and the
 changes of the largest depth, the envelope depth (at the contact width) and the worn
 volume, beside the chaos floor (two single runs' L2 difference, the standard error of a
-mean profile) and each level's roughness and wall time. Writes into DIR (default:
+mean profile) and each level's roughness and wall time. With three levels of one ratio
+(1,2,4), a Richardson estimate of each surface's largest and envelope depth: the
+observed order, the extrapolated depth and each level's error against it (not given
+where a difference is within the chaos floor or the levels do not converge). Writes
+into DIR (default:
 output/<scene name>_convergence; rank 0): convergence.md (the table, also printed),
 convergence.csv, convergence.json, and per joint and surface convergence_<J>_<pin|
 bushing>.csv (each level's mean, smallest and largest depth at each angle) and .png (the
