@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// "Show what accuracy costs in time" (ARCHITECTURE.md, Accuracy knobs): run one scene
+// "Show what accuracy costs in time" (doc/architecture.md §6): run one scene
 // many times, each time turning one accuracy knob to one of its values while every
 // other entry keeps the scene's value, and measure the wall time of each run and the
 // error of the quantities that matter against a reference run of the same knob.
