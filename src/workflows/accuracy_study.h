@@ -109,7 +109,7 @@ namespace wearlink::workflows
   };
 
   /**
-   * The chaos floor of a study (issue 15): runs at the scene's own settings whose
+   * The chaos floor of a study: runs at the scene's own settings whose
    * initial crank angles differ by ~1e-9 rad differ by what no knob can resolve. Every
    * pair of members is compared as a knob's row is with its reference; the mean and the
    * largest of each error over the pairs are the floor that a knob's error must clear to

@@ -24,7 +24,7 @@
 // bushing's frame, and the sums of the solve run over a window of the samples that can
 // overlap (checked against the whole grid at the end, so the result is the whole grid's
 // balance); an evaluation takes ~10 µs instead of ~2.5 ms, which made a winkler wear run
-// 40× slower than hertz-strip (issue 15: its accuracy-study row ran for > 17 minutes).
+// 40× slower than hertz-strip (its accuracy-study row ran for > 17 minutes).
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/numbers.h"

@@ -22,7 +22,7 @@ namespace ref = wearlink::testing;
 namespace
 {
   /**
-   * 10 % of the reference value: the accuracy the issue asks for. It covers the
+   * 10 % of the reference value: the accuracy required of the estimators. It covers the
    * methods' known biases on finite data (Wolf: a positive bias from the imperfect
    * orientation of each replacement, which shrinks as the data get denser; Rosenstein:
    * the curvature of <ln d(k)> at the ends of the fit region) and the uncertainty of
