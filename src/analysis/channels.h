@@ -10,7 +10,7 @@
 //    the angle is wrapped to [−π, π] (a crank's angle grows without bound; the state
 //    it describes does not), unlike the unwrapped angle in time_series.csv;
 //  - clearance joint, the journal (pin) centre relative to the bushing (bore) centre,
-//    in global axes (REFERENCE.md §1: e = r_pin − r_bushing):
+//    in global axes (doc/models.md §1.1: e = r_pin − r_bushing):
 //                          <joint>_ex_m, <joint>_ey_m         e_x, e_y [m]
 //                          <joint>_vex_m_s, <joint>_vey_m_s   ė_x, ė_y [m/s]
 //    ė is the difference of the two centres' velocities (exact from v, not a finite

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Delay embedding of a scalar series (Takens 1981) and the two methods that choose its
-// parameters (REFERENCE.md §6):
+// parameters (doc/models.md §6.4):
 //  - the delay tau as the first minimum of the average mutual information between x_n
 //    and x_{n+tau} (Fraser & Swinney 1986), estimated with averaged shifted
 //    equal-width histograms (Scott 1985), which keep the curve smooth enough for its

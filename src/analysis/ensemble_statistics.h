@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Ensembles (issue 15): N runs of one scene that differ only by a physically tiny
+// Ensembles: N runs of one scene that differ only by a physically tiny
 // perturbation of the initial conditions sample the chaos of the clearance dynamics;
 // their spread is the floor below which no figure of a single run means anything.
 //

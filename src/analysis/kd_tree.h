@@ -2,7 +2,7 @@
 // A compact kd-tree for nearest-neighbour searches in delay-embedded time series
 // (Friedman, Bentley & Finkel 1977: median splits on the coordinate of largest spread,
 // branch-and-bound search). It exists for the Lyapunov-exponent and false-nearest-
-// neighbour estimators (REFERENCE.md §6), whose searches need two filters that a
+// neighbour estimators (doc/models.md §6.4), whose searches need two filters that a
 // general-purpose library does not offer directly: a Theiler window (points whose
 // time index is within w samples of the query are not neighbours, because they are
 // close only by temporal correlation) and a distance annulus (Wolf et al. 1985 take

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Largest Lyapunov exponent (LLE) of a scalar time series, by two methods
-// (REFERENCE.md §6):
+// (doc/models.md §6.4):
 //  - Wolf, Swift, Swinney & Vastano 1985 (Physica D 16, 285), the fixed-evolution-time
 //    program: follow one neighbour of the reference trajectory for E samples, add
 //    ln(d_end / d_start), then replace the neighbour by a point close to the reference

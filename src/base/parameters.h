@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Declaring and reading .prm entries the wearlink way (STYLE.md B.4):
+// Declaring and reading .prm entries the wearlink way (doc/contributing.md §4):
 //  - every entry is declared once with a bounded pattern, a documented default and its
 //    unit; declare() appends "Units: <unit>." to the documentation so that
 //    --print-parameters always states it;

@@ -3,7 +3,7 @@
 // body's joint centre, sampled at N uniformly spaced body-frame angles ψ_k = 2πk/N.
 // Sample k is the centre of discrete area k (the wear layer accumulates depth per area).
 // Between samples the radius is interpolated linearly and periodically.
-// Round profiles are the special case R*(ψ) = R (REFERENCE.md §1, seed eqs 28–33).
+// Round profiles are the special case R*(ψ) = R (doc/models.md §1.5, seed eqs 28–33).
 #pragma once
 
 #include <string>

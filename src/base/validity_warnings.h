@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Warnings about results that leave the validity of their own model (issue 14): a
+// Warnings about results that leave the validity of their own model: a
 // penetration far beyond what a contact law assumes, a constraint violation far above
 // the integrator's tolerance, an energy balance off by more than the integrator
 // promises, a Hertz half-angle past 90°, a contact-law table evaluated beyond its range.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The clearance revolute joint as a force element (REFERENCE.md §1, seed eqs 1–13):
+// The clearance revolute joint as a force element (doc/models.md §1, seed eqs 1–13):
 // the bore sits in the bushing body, the pin in the pin body; their centres are the
 // joint's attachment points. From the gap (contact/gap.h) it computes the penetration
 // δ, the contact normal n and the contact points Q_bore = P_bushing + R1* n,
@@ -25,7 +25,7 @@
 
 namespace wearlink::contact
 {
-  /** How K's relative radius is formed (REFERENCE.md §1). */
+  /** How K's relative radius is formed (doc/models.md §1.3). */
   enum class EffectiveRadius
   {
     internal,    ///< R* = R1 R2/(R1 − R2): pin inside a bore (default)
@@ -33,7 +33,7 @@ namespace wearlink::contact
   };
 
   /**
-   * How the gap of worn profiles is evaluated (REFERENCE.md §1):
+   * How the gap of worn profiles is evaluated (doc/models.md §1.5):
    *  - exact: g(φ) = R1*(φ − θ_bushing) − R2*(φ − θ_pin) − e·u(φ) minimized over φ,
    *    stiffness K from the nominal radii (default);
    *  - per_area: the seed's eqs 28–31, the area facing e decides: δ*(n) = |e| − c*(n),

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Tangential (friction) laws of the clearance joint (REFERENCE.md §1, seed eqs 12–13):
+// Tangential (friction) laws of the clearance joint (doc/models.md §1.4, seed eqs 12–13):
 //   coulomb           F_t = −μ F_n sign(v_t)
 //   modified-coulomb  F_t = −μ c_d F_n v_t/|v_t|, Ambrósio's dynamic correction c_d:
 //                     0 below v0, linear from v0 to v1, 1 above v1.

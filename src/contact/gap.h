@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The gap between a (worn) bore and a (worn) pin (ARCHITECTURE.md `contact/`):
+// The gap between a (worn) bore and a (worn) pin (doc/models.md §1.5):
 //   g(φ) = R1*(φ − θ_bushing) − R2*(φ − θ_pin) − e·u(φ),   u(φ) = (cos φ, sin φ),
 // φ a global direction, R1* the bore profile in the bushing's frame, R2* the pin profile
 // in the pin's frame, e the eccentricity (pin centre − bore centre). The penetration is

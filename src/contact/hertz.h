@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Hertz line contact of two parallel cylinders (REFERENCE.md §5), the one definition
+// Hertz line contact of two parallel cylinders (doc/models.md §5.1), the one definition
 // used by the `hertz-strip` pressure model and the FE contact case's comparison: for a
 // load per unit length P on a pair of relative radius R* (internal contact: R* = R1 R2 /
 // (R1 − R2)) and effective modulus E*, the contact half-width is b = √(4 P R* / (π E*))

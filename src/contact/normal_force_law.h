@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Normal force laws of the clearance joint (REFERENCE.md §1, seed eqs 9–11):
+// Normal force laws of the clearance joint (doc/models.md §1.2, seed eqs 9–11):
 //   hertz               F = K δⁿ
 //   lankarani-nikravesh F = K δⁿ (1 + 3(1 − c_e²) δ̇ / (4 δ̇⁻))
 //   flores              F = K δⁿ (1 + 8(1 − c_e) δ̇ / (5 c_e δ̇⁻))

@@ -6,7 +6,7 @@
 //                 width from the worn surfaces (or, as the seed, from the local radii)
 //   winkler     : elastic foundation from the local overlap of the profiles
 //   fe          : 2D plane-strain contact FE of the actual pin and bushing (src/fe)
-// The wear layer integrates Archard's law with these pressures (REFERENCE.md §4–5).
+// The wear layer integrates Archard's law with these pressures (doc/models.md §4, §5).
 //
 // Frames: the bore profile and its pressure live in the bushing body's frame, the pin
 // profile and its pressure in the pin body's frame (ψ measured from each body's x-axis).
@@ -39,7 +39,7 @@ namespace wearlink::contact
     }
   };
 
-  /** 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2 [Pa] (REFERENCE.md §5). */
+  /** 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2 [Pa] (doc/models.md §5.1). */
   inline double
   effective_modulus(const Material &a, const Material &b)
   {

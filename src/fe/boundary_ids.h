@@ -3,7 +3,7 @@
 // (pin_bushing_mesher.cc) writes them into the names of its physical groups
 // ("BoundaryID:2", "MaterialID:1"), which deal.II's GridIn::read_msh maps onto
 // boundary and material ids; the elasticity problem reads them back from here.
-// Never use bare literals for these (STYLE.md B.11, step-49).
+// Never use bare literals for these (doc/contributing.md §3; deal.II's step-49 does).
 #pragma once
 
 #include <deal.II/base/types.h>

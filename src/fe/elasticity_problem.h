@@ -104,7 +104,7 @@ namespace wearlink::fe
                    dealii::FEValues<2>                               &fe_values,
                    dealii::FullMatrix<double>                        &matrix) const;
 
-    /** 1/E* = Σ (1 − ν²)/E of the two bodies [Pa] (REFERENCE.md §5). */
+    /** 1/E* = Σ (1 − ν²)/E of the two bodies [Pa] (doc/models.md §5.1). */
     double
     effective_modulus() const
     {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The `fe` pressure model: contact pressure on both surfaces of a shaft–bushing pair from
 // the 2D plane-strain contact FE model of the actual (worn) pin and bushing
-// (REFERENCE.md §5; ARCHITECTURE.md fe/). It is constructed only when a scene selects
+// (doc/models.md §5; doc/architecture.md §3). It is constructed only when a scene selects
 // it; nothing is meshed or factored before update_geometry(), which re-meshes only when
 // the profiles have moved beyond 'Remesh depth' (otherwise the worn profiles enter the
 // gaps of the kept mesh), and shares the model with the joint's `fe` force law

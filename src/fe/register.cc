@@ -13,7 +13,7 @@ namespace wearlink::fe
     contact::pressure_models().add("fe",
                                    "2D plane-strain contact FE model of the actual (worn) pin and bushing: gmsh mesh, "
                                    "deal.II elasticity, condensed frictionless contact solved per load state "
-                                   "(REFERENCE.md §5).",
+                                   "(doc/models.md §5).",
                                    declare_fe_settings,
                                    [](ParameterReader &reader) -> std::unique_ptr<contact::PressureModel> {
                                      return std::make_unique<FePressureModel>(read_fe_settings(reader));

@@ -3,7 +3,7 @@
 // clearance joints as force elements with the laws the scene chose), the numerics, and
 // the outputs it asks for. Mechanisms are data: nothing here knows a particular linkage.
 //
-// Reading follows STYLE.md B.4: pre-scan the body and joint names, declare one
+// Reading follows doc/contributing.md §4: pre-scan the body and joint names, declare one
 // subsection per name (every registry's plugins inside each clearance joint), strict
 // parse (typos are errors with file and line), apply --set overrides, check required
 // entries of the parts that are active, construct only the chosen plugins, cross-check.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Initial assembly (REFERENCE.md §2): positions by Newton's method on Φ(q, t0) = 0 from
+// Initial assembly (doc/models.md §2): positions by Newton's method on Φ(q, t0) = 0 from
 // the rough pose the scene gives, velocities from Φq q̇ = −Φt.
 //
 // The Newton step is the minimum-norm correction Δq = −Φq⁺ Φ (pseudo-inverse through a

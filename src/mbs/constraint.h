@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Kinematic constraints Φ(q, t) = 0 between two bodies (or a body and the ground),
 // each with its Jacobian blocks Φq, its time derivative Φt and the acceleration
-// right-hand side γ = −(Φq q̇)_q q̇ − 2Φqt q̇ − Φtt, so that Φq q̈ = γ (REFERENCE.md §2,
+// right-hand side γ = −(Φq q̇)_q q̇ − 2Φqt q̇ − Φtt, so that Φq q̈ = γ (doc/models.md §2,
 // seed eqs 24–26). The library is generic: mechanisms are assembled from these pieces
 // by the scene, never written out as equations in C++.
 //

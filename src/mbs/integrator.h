@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Time integrators for y' = f(t, y). A closed set (STYLE.md B.3: numerical methods are
+// Time integrators for y' = f(t, y). A closed set (doc/contributing.md §5: numerical methods are
 // an enum + switch whose default throws):
 //   rk4     classical fixed-step Runge–Kutta, the seed's 1e-4 s; cubic Hermite dense
 //           output from (y, f) at both ends.

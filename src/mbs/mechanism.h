@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // A planar rigid multibody system in Cartesian coordinates q = (x_i, y_i, θ_i) per body
-// (REFERENCE.md §2): bodies, kinematic constraints, force elements and gravity, and the
+// (doc/models.md §2): bodies, kinematic constraints, force elements and gravity, and the
 // Baumgarte-stabilized equations of motion (seed eq. 27)
 //
 //     [ M   Φqᵀ ] [ q̈ ]   [ g                       ]

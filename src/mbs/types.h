@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Small planar-kinematics vocabulary shared by the multibody layer and the force
 // elements: 2-vectors, rotation A(θ), its derivative B(θ) = dA/dθ, and read access to the
-// state vector y = [q | v | quadratures] with q = (x_i, y_i, θ_i) per body (REFERENCE.md §2).
+// state vector y = [q | v | quadratures] with q = (x_i, y_i, θ_i) per body (doc/models.md §2).
 #pragma once
 
 #include <Eigen/Core>

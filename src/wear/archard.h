@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Archard's wear law on both surfaces of a clearance joint (REFERENCE.md §4):
+// Archard's wear law on both surfaces of a clearance joint (doc/models.md §4):
 //     dh = k_D p ds,   ds = |v_t| dt,
 // accumulated per discrete area of each surface in its own body frame: the bore's areas
 // are fixed in the bushing body, the pin's in the pin body, and the pressure model maps

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The wear loop (ARCHITECTURE.md "The loop"; seed §4.2). One iteration is six named
+// The wear loop (doc/architecture.md §2; seed §4.2). One iteration is six named
 // steps, in this order:
 //   1. record_loads           simulate Cycles per iteration of the mechanism, continuing
 //                             from the state where the previous iteration ended, while a

@@ -25,7 +25,7 @@ namespace wearlink::wear
             P::Selection("none|archard"),
             "Wear of the pin and bore surfaces. 'none': no wear buffers, no pressure "
             "model, no re-meshing; 'archard': dh = k_D p ds on each surface, accumulated "
-            "at its own material points (REFERENCE.md §4); the run becomes a wear loop "
+            "at its own material points (doc/models.md §4); the run becomes a wear loop "
             "(section Wear).",
             "none");
     declare_required(prm,
@@ -40,7 +40,7 @@ namespace wearlink::wear
     declare_required(prm,
                      "Pin wear coefficient",
                      P::Double(0, max_wear_coefficient),
-                     "Dimensional wear coefficient k_D = K/H of the pin surface (REFERENCE.md "
+                     "Dimensional wear coefficient k_D = K/H of the pin surface (doc/models.md "
                      "§4: 1e-13 … 7e-11 m³/(N m) for Al alloys dry on steel; 1 mm³/(N m) = "
                      "1e-9 m³/(N m)), 0 … 1e-8 m³/(N m): 100 × the most severe dry wear measured; a "
                      "larger value is a mistake of units. Only used if Wear law = archard.",

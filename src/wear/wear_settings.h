@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// What a scene says about wear, declared once with units (STYLE.md B.4):
+// What a scene says about wear, declared once with units (doc/contributing.md §4):
 //  - per clearance joint, inside "Joint <name>/Clearance":
 //      Wear law        none | archard        (none: no buffers, no pressure model)
 //      Pressure model  hertz-strip | winkler | fe   (only used, and only constructed,
@@ -22,7 +22,7 @@
 
 namespace wearlink::wear
 {
-  /** Archard data of one joint (REFERENCE.md §4): dh = k_D p ds on each surface. */
+  /** Archard data of one joint (doc/models.md §4): dh = k_D p ds on each surface. */
   struct ArchardData
   {
     double pin_coefficient     = 0; ///< k_D of the pin surface [m³/(N m)] = [1/Pa]

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The evolving state of a wear run, and its checkpoint (ARCHITECTURE.md wear/):
+// The evolving state of a wear run, and its checkpoint (doc/architecture.md §2):
 // everything needed to continue a run after its last finished iteration exactly as an
 // uninterrupted run would: the mechanism state [q | v | z] and time at the end of the
 // iteration, each joint's contact mode and captured impact velocity, the worn profiles

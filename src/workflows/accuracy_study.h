@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// "Show what accuracy costs in time" (ARCHITECTURE.md, Accuracy knobs): run one scene
+// "Show what accuracy costs in time" (doc/architecture.md §6): run one scene
 // many times, each time turning one accuracy knob to one of its values while every
 // other entry keeps the scene's value, and measure the wall time of each run and the
 // error of the quantities that matter against a reference run of the same knob.
@@ -109,7 +109,7 @@ namespace wearlink::workflows
   };
 
   /**
-   * The chaos floor of a study (issue 15): runs at the scene's own settings whose
+   * The chaos floor of a study: runs at the scene's own settings whose
    * initial crank angles differ by ~1e-9 rad differ by what no knob can resolve. Every
    * pair of members is compared as a knob's row is with its reference; the mean and the
    * largest of each error over the pairs are the floor that a knob's error must clear to

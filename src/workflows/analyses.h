@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The nonlinear-dynamics analyses a scene selects by name (ARCHITECTURE.md: "which
-// analyses to run"; seed §4.4, Figs 9–12):
+// The nonlinear-dynamics analyses a scene selects by name (doc/architecture.md §4;
+// seed §4.4, Figs 9–12):
 //   phase-portrait  journal-centre motion of each analysed clearance joint relative to
 //                   its bushing, e_x vs ė_x and e_y vs ė_y (and x vs ẋ, y vs ẏ, θ vs ω
 //                   of analysed bodies), sampled uniformly on the dense output;

@@ -154,7 +154,7 @@ namespace wearlink::workflows
     }
 
     /**
-     * Hertz numbers per load state (REFERENCE.md §5; internal contact R* = R1 R2/(R1 −
+     * Hertz numbers per load state (doc/models.md §5.1; internal contact R* = R1 R2/(R1 −
      * R2)), the printed table of every solver against them, and the largest
      * condensed-vs-reference pressure difference relative to the peak (0 if only one
      * solver ran).

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // What `wearlink contact` does: the FE contact model of one shaft–bushing pair for every
 // load state of a case, solved with the condensed (production) and the reference
-// solver, with the Hertz line-contact numbers of REFERENCE.md §5 beside them. Writes
+// solver, with the Hertz line-contact numbers of doc/models.md §5.1 beside them. Writes
 // into the output directory: summary.json, pressure_<k>_<solver>.csv per load state,
 // fields_<k>.vtu (displacement and stress for ParaView), the gmsh mesh and the
 // effective case (parameters.prm). Under MPI every rank solves; rank 0 writes.

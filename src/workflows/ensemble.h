@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Ensembles (issue 15): a wear run or a life run repeated N times with initial
+// Ensembles: a wear run or a life run repeated N times with initial
 // conditions perturbed by a physically tiny, seeded amount, spread over the ranks of
 // MPI_COMM_WORLD, and the mean, standard deviation and 95 % confidence interval of every
 // summary figure. The clearance dynamics are chaotic: one run is one sample, and the

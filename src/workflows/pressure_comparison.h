@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// "Validating simplified contact" (ARCHITECTURE.md, user 2): one load history of every
+// "Validating simplified contact" (doc/architecture.md §1, use 2): one load history of every
 // wearing clearance joint, recorded once from the multibody dynamics of the scene, is
 // fed through several pressure models (default: hertz-strip, winkler, fe), each with
 // the joint's own parameters from the scene, into Archard's law on both surfaces.

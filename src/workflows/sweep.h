@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // What `wearlink sweep` does: run one scene per value of one scene entry and draw the
 // bifurcation diagram, the Poincaré points of one channel against the parameter
-// (ARCHITECTURE.md, Scale: MPI for parameter sweeps). Member i runs on rank i mod N
+// (doc/architecture.md §7: MPI for parameter sweeps). Member i runs on rank i mod N
 // (round-robin: neighbouring values, which tend to cost alike, land on different
 // ranks); each rank serialises its results and rank 0 gathers them. The computation of
 // a member does not depend on the rank or on which members ran before it in the same

@@ -1,5 +1,5 @@
-# The tree follows .clang-format (STYLE.md; clang-format 14 as Debian 12 ships it):
-# every C++ file under src/ and tests/ must be unchanged by clang-format.
+# The tree follows .clang-format (doc/contributing.md §9; clang-format 14 as Debian 12
+# ships it): every C++ file under src/ and tests/ must be unchanged by clang-format.
 # Usage: cmake -DROOT=<source root> -DCLANG_FORMAT=<program> -P check_format.cmake
 cmake_minimum_required(VERSION 3.16)
 file(GLOB_RECURSE files "${ROOT}/src/*.h" "${ROOT}/src/*.cc" "${ROOT}/tests/*.h" "${ROOT}/tests/*.cc")

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The fuzz harness (issue 14, item 5): scene files as text, the mutator, the runner that
+// The fuzz harness: scene files as text, the mutator, the runner that
 // spawns the wearlink executable under a timeout, and the checks on what it leaves
 // behind. The harness does not link the wearlink library: it only needs the program,
 // so that building it takes seconds. See fuzz_main.cc for the campaigns.

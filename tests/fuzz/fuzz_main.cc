@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// wearlink_fuzz: two campaigns against the wearlink executable (issue 14, item 5).
+// wearlink_fuzz: two campaigns against the wearlink executable.
 //
 //   wearlink_fuzz mutants --binary WEARLINK --source SRC --work DIR [--seed S] [--first I] [--count N]
 //   wearlink_fuzz scenes  --binary WEARLINK --source SRC --work DIR [--seed S] [--first I] [--count N]

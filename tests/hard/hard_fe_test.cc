@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Hard cases of the FE contact layer (issue 6), on the steel pair of
+// Hard cases of the FE contact layer, on the steel pair of
 // params/pin_bushing.prm (R1 = 12 mm, ring to 24 mm, L = 10 mm) with coarse meshes:
 //  - a vanishing load (1 mN): the contact shrinks to a few candidates; the answer must
 //    stay finite, in equilibrium, and on the Hertz curve as far as the mesh resolves it;

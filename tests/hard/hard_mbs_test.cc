@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Hard cases of the multibody and contact layers (issue 6). The pendulum of
+// Hard cases of the multibody and contact layers. The pendulum of
 // tests/hard/pendulum_clearance.prm (a 1 kg bob hanging on one clearance joint, steel
 // pin R2 = 9.5 mm in a steel bore R1 = 10 mm, L = 40 mm, c = 0.5 mm; no ideal joint)
 // gives cases with analytic answers; the nine-bar scenes give the extreme clearances.

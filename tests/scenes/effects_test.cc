@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Effects are switched on by the scene and cost nothing when off (ARCHITECTURE.md):
+// Effects are switched on by the scene and cost nothing when off (doc/architecture.md §4):
 // the effect ledger of a run proves what was constructed and evaluated.
 //  - all joints ideal: no clearance joint, no normal/friction law constructed, zero
 //    contact-law evaluations;

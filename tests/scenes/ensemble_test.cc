@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Ensembles (issue 15): `wearlink run SCENE --ensemble N --seed S` of a wear scene
+// Ensembles: `wearlink run SCENE --ensemble N --seed S` of a wear scene
 // (params/nine_bar_wear.prm cut to 1 wear iteration of 1 cycle × 500, hertz-strip, so
 // that a member takes about a second).
 //  - Independent of the rank count and reproducible: the same seed on 1 and on 2 MPI

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// `wearlink life` (issue 15) on tests/scenes/life_journal.prm: two journals that wear at
+// `wearlink life` on tests/scenes/life_journal.prm: two journals that wear at
 // a constant, known rate (see the scene's header for the derivation), so each mass-loss
 // criterion is reached after N = M / (ρ k_D m g 2π R) revolutions:
 //   O1 pin, M = 10 mg:     1038.5 rev      O2 bushing, M = 10 mg:  2066.7 rev.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The nine-bar press mechanism (params/nine_bar_*.prm, REFERENCE.md §3):
+// The nine-bar press mechanism (params/nine_bar_*.prm, doc/models.md §3):
 //  1. Ideal joints: the constraints hold to 1e-10 m over a crank cycle, and the
 //     slider's position agrees to 1e-8 m with an independent position analysis written
-//     here (loop closure by circle intersections from REFERENCE.md's data, not from the
+//     here (loop closure by circle intersections from the data of doc/models.md §3, not from the
 //     scene file). 1e-8 m is ~100× the integrator's position tolerance.
 //  2. Energy: ΔT + ΔV = driver work − contact damping − friction dissipation, to the
 //     integrator tolerance with ideal joints and to 1e-3 relative with clearance.
@@ -43,7 +43,7 @@ namespace
     return (s1 - near).norm() < (s2 - near).norm() ? s1 : s2;
   }
 
-  /** Slider height of the nine-bar at time t by loop closure (REFERENCE.md §3 data). */
+  /** Slider height of the nine-bar at time t by loop closure (doc/models.md §3 data). */
   class NineBarPositionAnalysis
   {
   public:

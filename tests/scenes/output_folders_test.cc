@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Every command that writes an output folder holds it like `wearlink run` does (issue 14,
-// app/output_claim.h; the run command's own tests are in run_robustness_test.cc):
+// Every command that writes an output folder holds it like `wearlink run` does
+// (app/output_claim.h; the run command's own tests are in run_robustness_test.cc):
 //  - a folder locked by another process (this test process holds the lock) is refused
 //    with exit status 2, naming the holder's pid, and nothing in it is touched: sweep,
 //    study accuracy, contact, compare-pressure, compare-contact, compare-dynamics,

@@ -4,7 +4,7 @@
 //    revolutions, the bores ~30 µm deep): at 360 and at 1440 discrete areas the depth
 //    profiles of every surface agree within 2 % point by point (relative L2 on the 360
 //    areas, each the mean of the four 1440 areas it holds) and in the largest and the
-//    envelope depth (measured: 0.1–0.3 %; the bound is 5 %). One iteration, so
+//    envelope depth (measured: 0.1–0.3 %; the required bound is 5 %). One iteration, so
 //    that both see the same load history (the profiles are round while it is simulated,
 //    and a round profile's radius does not depend on its sample count) and the
 //    difference is the discretization's alone; with more iterations the worn profiles

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Nothing crashes, nothing is silently lost (issue 14), on real scenes:
+// Nothing crashes, nothing is silently lost, on real scenes:
 //  - a checkpoint with a changed byte, cut short, with a state of another length, or
 //    written for another Title is refused with a message naming what is wrong (both
 //    values of a changed entry), and the output directory is left exactly as it was;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The Flores slider-crank benchmark (params/slider_crank_flores.prm, REFERENCE.md §6).
+// The Flores slider-crank benchmark (params/slider_crank_flores.prm, doc/models.md §6.1).
 //  - Ideal joints: the slider's peak acceleration is r ω² (1 + r/l) at crank angle 0
 //    (exact for the slider-crank kinematics: ẍ(0) = −rω² − r²ω²/l), 19,419 m/s² for
 //    r = 0.05 m, l = 0.12 m, 5000 rpm; it is reached at t = 0 and every revolution, so

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The accuracy study's chaos floor and its runs over MPI (issue 15): a quick study of
+// The accuracy study's chaos floor and its runs over MPI: a quick study of
 // params/nine_bar_wear.prm (wear-step knob only, 2 iterations of 0.5 cycles) with a floor
 // of 3 members, once on 1 rank and once on 2 ranks.
 //  - The runs are the same whichever rank takes them: every error and the floor are equal

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Validity warnings of wear runs (issue 14, base/validity_warnings.h):
+// Validity warnings of wear runs (base/validity_warnings.h):
 //  - the hertz-strip pressure model warns, once per joint with the worst value and the
 //    limit, when its Hertz strip is wider than half the pin (half-angle past 90°). Here
 //    provoked by an axial length of 1 µm on the nine-bar (the line load of a ~100 N

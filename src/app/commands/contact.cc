@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink contact CASE.prm`: the FE contact model of one shaft–bushing pair for a list
 // of load states, solved with both the condensed (production) and the reference solver,
-// with the Hertz line-contact numbers of REFERENCE.md §5 for comparison. Writes into
+// with the Hertz line-contact numbers of doc/models.md §5.1 for comparison. Writes into
 // the output directory: summary.json, pressure_<k>_<solver>.csv per load state,
 // fields_<k>.vtu (displacement and stress for ParaView) and the gmsh mesh.
 #include "app/command_line.h"
@@ -30,7 +30,7 @@ wearlink contact --print-parameters
 Solves the 2D plane-strain frictionless contact of one pin in its bushing (gmsh mesh of
 the actual, possibly worn, profiles; deal.II elasticity) for every load state of the
 case, with the condensed production solver and the uncondensed reference solver (see
-'FE model/Solvers'), and compares with Hertz line contact (REFERENCE.md §5).
+'FE model/Solvers'), and compares with Hertz line contact (doc/models.md §5.1).
 Example: params/pin_bushing.prm. Writes into DIR (default: output/<case name>):
   summary.json               per solver: setup time, mean time per load state, and per
                              load state load_N, half_angle_deg, half_width_m,

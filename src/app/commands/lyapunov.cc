@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink lyapunov SERIES.csv --column NAME ...`: the largest Lyapunov exponent of one
-// column of a CSV file by Wolf et al. 1985 or Rosenstein et al. 1993 (REFERENCE.md §6,
+// column of a CSV file by Wolf et al. 1985 or Rosenstein et al. 1993 (doc/models.md §6.4,
 // analysis/lyapunov.h), with the delay and embedding dimension given or chosen by
 // mutual information and false nearest neighbours (analysis/embedding.h). Prints the
 // exponent with its units and the embedding used, and writes a convergence plot (PNG)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `winkler`: elastic-foundation pressure from the local overlap of the (worn) profiles
-// (REFERENCE.md §5; Bei & Fregly 2004). Each surface carries an elastic layer of
+// (doc/models.md §5.3; Bei & Fregly 2004). Each surface carries an elastic layer of
 // thickness h; a layer of modulus E_f = E(1 − ν)/((1 + ν)(1 − 2ν)) compressed by d
 // carries p = E_f d/h (linear) or p = −E_f ln(1 − d/h) (nonlinear). Two layers in
 // series share the overlap, d = d_bore + d_pin, so
@@ -24,7 +24,7 @@
 // bushing's frame, and the sums of the solve run over a window of the samples that can
 // overlap (checked against the whole grid at the end, so the result is the whole grid's
 // balance); an evaluation takes ~10 µs instead of ~2.5 ms, which made a winkler wear run
-// 40× slower than hertz-strip (issue 15: its accuracy-study row ran for > 17 minutes).
+// 40× slower than hertz-strip (its accuracy-study row ran for > 17 minutes).
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "base/numbers.h"

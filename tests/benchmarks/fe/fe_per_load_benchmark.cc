@@ -6,7 +6,7 @@
 // direction turns by 5° per state (a full turn) and the pin by 2.5° against the bushing,
 // the magnitude varies by ±10 % about the level. The first pass over the path computes
 // the compliance columns it needs (reported as set-up); the figure is the mean (and the
-// largest) time per state of the second pass. Issue 13's target: < 1 ms at every level.
+// largest) time per state of the second pass. The target: < 1 ms at every level.
 // Next to the wall time, the CPU time of this thread per state: on a machine that others
 // share, the wall time includes the waits for a core, the CPU time far less.
 // Next to them, where the second pass's time goes (CondensedTimings, per state): the

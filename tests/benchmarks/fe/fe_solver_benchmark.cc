@@ -6,7 +6,7 @@
 //   setup      mesh + assembly (both), + factorization + the influence columns the load
 //              states need (condensed), + the full influence matrix of every candidate
 //   per state  mean wall time per load state (condensed: after the columns exist)
-// and their ratio. Targets of issue 3: condensed ≥ 100× faster than the reference and
+// and their ratio. Targets: condensed ≥ 100× faster than the reference and
 // under 1 ms per load state. Only the agreement of the two solvers is asserted.
 #include "fe_test_support.h"
 

@@ -5,12 +5,12 @@
 // is evaluated at 24 load samples per cycle (each window of 1/24 cycle reuses its shape,
 // wear/archard.h); FE surface element 0.2 mm. Prints the total wall time and its
 // breakdown (dynamics, meshing, FE set-up, FE compliance columns, FE solves, wear
-// bookkeeping, outputs). Target (issue 4): under 5 minutes on the 2-core development
+// bookkeeping, outputs). Target: under 5 minutes on the 2-core development
 // machine. Asserts only that the run did what it says (10 iterations, 50,000
 // revolutions, 21 meshes), never a time.
 // 2. The shipped FE scene params/nine_bar_wear_fe.prm as it is (fe pressure and fe
 // contact law on both joints, 25 µm, meshes kept over 2 elements of wear): the same breakdown plus the contact
-// law's tables. Target (issue 13): < 300 s, goal < 60 s.
+// law's tables. Target: < 300 s, goal < 60 s.
 #include "base/effect_ledger.h"
 #include "base/json.h"
 #include "contact/clearance_joint.h"

@@ -57,7 +57,7 @@ namespace
     return s;
   }
 
-  constexpr double lorenz_exponent = 0.906; // per time unit (REFERENCE.md §6)
+  constexpr double lorenz_exponent = 0.906; // per time unit (doc/models.md §6.3)
 } // namespace
 
 TEST(DynamicsComparison, LorenzRunTwiceAsFastHasTwiceTheExponentPerSecond)

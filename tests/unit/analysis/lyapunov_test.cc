@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Largest Lyapunov exponent (analysis/lyapunov.h) against the reference values of
-// REFERENCE.md §6, on series generated here (reference_series.h), with the delay and
+// doc/models.md §6.3, on series generated here (reference_series.h), with the delay and
 // dimension chosen automatically (mutual information, false nearest neighbours) and
 // every other setting at its default:
 //   Lorenz (sigma 10, rho 28, beta 8/3)  0.906 per time unit,
@@ -22,7 +22,7 @@ namespace ref = wearlink::testing;
 namespace
 {
   /**
-   * 10 % of the reference value: the accuracy the issue asks for. It covers the
+   * 10 % of the reference value: the accuracy required of the estimators. It covers the
    * methods' known biases on finite data (Wolf: a positive bias from the imperfect
    * orientation of each replacement, which shrinks as the data get denser; Rosenstein:
    * the curvature of <ln d(k)> at the ends of the fit region) and the uncertainty of
@@ -96,7 +96,7 @@ TEST(LargestLyapunovExponent, Roessler)
 {
   // Rössler x(t), dt = 0.1, 1e5 samples (1e4 time units, ~1700 orbits); automatic
   // embedding gives tau = 14 samples (a quarter of the 5.9-unit orbit), m = 3.
-  // Reference 0.0714 per time unit (REFERENCE.md: ~0.071). The weakest exponent of the
+  // Reference 0.0714 per time unit (doc/models.md §6.3: ~0.071). The weakest exponent of the
   // three: the separation grows only e^0.42 per orbit, so the orbital ripple of
   // <ln d(k)> matters (Rosenstein fits over several orbits after smoothing over one).
   const BothMethods b = estimate_both(ref::roessler_x(100000, 0.1), 0.1);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Reference series for the Lyapunov tests, generated inside the tests (REFERENCE.md §6):
+// Reference series for the Lyapunov tests, generated inside the tests (doc/models.md §6.3):
 // the Lorenz (sigma 10, rho 28, beta 8/3) and Rössler (a = b = 0.2, c = 5.7) flows
 // integrated with classical fourth-order Runge-Kutta, the Hénon map (a 1.4, b 0.3), a
 // sine and the Van der Pol limit cycle. Each generator discards a transient so the

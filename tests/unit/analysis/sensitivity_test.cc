@@ -223,7 +223,7 @@ TEST(Sensitivity, IshigamiIndicesMatchTheAnalyticValues)
   const auto  truth = ishigami_truth(7, 0.1);
   ASSERT_EQ(r.method, SensitivityMethod::sobol_indices) << "N = 4096 allows indices";
   EXPECT_EQ(r.samples, 4096u);
-  // The criterion: within 0.02 at N = 2^12. The bootstrap intervals below, which
+  // The required accuracy: within 0.02 at N = 2^12. The bootstrap intervals below, which
   // treat the rows as independent draws, are ±0.015 … ±0.03 around the estimates: plain
   // Monte Carlo rows would miss 0.02 now and then. The Sobol rows do much better
   // (measured: every index within 5e-4), so 0.02 fails any estimator that is wrong in

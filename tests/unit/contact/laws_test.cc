@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Contract tests instantiated over every registered law (STYLE.md B.8), and the
+// Contract tests instantiated over every registered law (doc/contributing.md §8), and the
 // restitution each dissipative normal law actually produces.
 //
 // Normal laws: zero force at zero penetration, never tensile, continuous in δ, and

@@ -13,7 +13,7 @@
 //     unstructured interior mesh is not symmetric, which perturbs nodal pressures by the
 //     discretization error (the same ~1–2 % seen against Hertz), so mirrored nodal
 //     pressures must agree to 3 % of the peak and the pin must not move sideways.
-//   - Hertz limit (REFERENCE.md §5): at 100 N the contact half-angle is 0.84°, deep in
+//   - Hertz limit (doc/models.md §5.1): at 100 N the contact half-angle is 0.84°, deep in
 //     the small-load regime where the FE pair must reproduce Hertz line contact; the
 //     error must decrease with the surface element size and be below 2 % at the finest
 //     of three levels (100, 50, 25 µm: 1.8, 3.5, 7 elements per half-width). The long
@@ -176,7 +176,7 @@ TEST(FeContact, HertzLimitErrorDecreasesWithMeshSize)
 
 TEST(FeContact, WornPocketWidensArcAndLowersPeak)
 {
-  // A smooth pocket of depth d0 worn into the bottom of the bore (REFERENCE.md §1 worn
+  // A smooth pocket of depth d0 worn into the bottom of the bore (doc/models.md §1.5 worn
   // profiles): wear depth w(φ) = d0 (1 − φ²/φw²)² for |φ| < φw about −y, with
   // φw² = 4 d0 / c so that the pocket's curvature matches the pin's at its centre
   // (c = R1 − R2). With the pin resting in the pocket the gap is

@@ -74,7 +74,7 @@ namespace
 // The law evaluated between its table nodes against FE solves on the same mesh: at the
 // geometric mid-point of every pair of load levels (10 N … 100 kN, 16 levels) the FE
 // approach is computed directly and the table's force there must be the load within
-// 0.5 % from 100 N up (the range; below, the contact arc spans one or two
+// 0.5 % from 100 N up (the required range; below, the contact arc spans one or two
 // 50 µm elements and the FE response itself is not smooth in F: 1 % was measured at
 // 3 N). Also: the table is monotone and its force derives from its potential.
 TEST(FeForceLaw, TableMatchesTheFeSolverBetweenNodes)
@@ -100,7 +100,7 @@ TEST(FeForceLaw, TableMatchesTheFeSolverBetweenNodes)
       const double Ft    = table.evaluate(delta, 0.0, 0.0).force;
       std::cout << "  F = " << Fm << " N: table / FE = " << Ft / Fm << '\n';
       if (Fm < 100)
-        continue; // below the range: the contact arc spans one or two elements there
+        continue; // below the required range: the contact arc spans one or two elements there
       worst = std::max(worst, std::abs(Ft / Fm - 1));
       EXPECT_NEAR(Ft / Fm, 1.0, 5e-3) << "between levels " << k << " and " << k + 1 << " (δ = " << delta << " m)";
     }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Shared set-up of the FE tests: the example pair of params/pin_bushing.prm (steel bore
 // R1 = 12 mm in a ring of outer radius 24 mm, steel pin R2 = 11.5 mm, L = 10 mm) and the
-// Hertz line-contact numbers of REFERENCE.md §5 for it.
+// Hertz line-contact numbers of doc/models.md §5.1 for it.
 #pragma once
 
 #include "contact/pressure_model.h"
@@ -78,7 +78,7 @@ namespace wearlink::fe::testing
     return lc;
   }
 
-  /** Hertz internal line contact (REFERENCE.md §5): half-width b [m] and peak p0 [Pa]. */
+  /** Hertz internal line contact (doc/models.md §5.1): half-width b [m] and peak p0 [Pa]. */
   struct Hertz
   {
     double b, p0;

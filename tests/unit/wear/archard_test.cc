@@ -8,8 +8,8 @@
 // v = ω R2, so the sliding distance is s = ω R2 T.
 // Expected:
 //  - both volumes Σ_k h_k A_k equal k_D F s: the strip's area averages are integrated
-//    in closed form, so Σ_k p_k A_k = F at every sample (tolerance 1e-6 relative as the
-//    issue asks; the actual error is rounding, ~1e-13);
+//    in closed form, so Σ_k p_k A_k = F at every sample (tolerance 1e-6 relative as
+//    required; the actual error is rounding, ~1e-13);
 //  - the pin wears uniformly around its circumference: every pin area passes through
 //    the fixed contact the same way, h = k_D F s/(2π R2 L) on every area (the samples
 //    are periodic with 8 per area, so each area sees the same strip positions; 1e-9

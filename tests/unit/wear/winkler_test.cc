@@ -76,7 +76,7 @@ TEST(Winkler, ReachesEquilibriumOnWornJaggedProfiles)
 // rims at s = c/cos 30° = 0.577 mm, the floor only at s = c + 0.1 mm = 0.6 mm: the rims
 // carry it. A load at 10° lies inside the cone of the two rim normals (±30°), so both
 // rims must carry a share — the lateral slide of the pin from the first rim to the
-// second is what the solver's window must follow (issue 15: the sums run over a window
+// second is what the solver's window must follow (the sums run over a window
 // of the sub-grid; a window that missed the second rim would leave the pin penetrating
 // it, with all pressure on one rim). Equilibrium: the bore pressures integrate to the
 // load within the area discretization (1e-2 F, see the test above). The rims' shares

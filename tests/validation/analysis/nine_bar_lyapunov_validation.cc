@@ -6,7 +6,7 @@
 // delay and dimension chosen automatically; Wolf (the seed's method) and Rosenstein.
 //
 // Printed next to the seed's values, 0.041 (A) and 0.030 (B) before wear. The seed
-// gives no unit and no sample interval; REFERENCE.md §6 reads them as per sample of
+// gives no unit and no sample interval; doc/models.md §6.2 reads them as per sample of
 // its series. wearlink's exponents are natural-log rates per second of simulated time;
 // per sample they are that times the sample interval, so a per-sample number can only
 // be compared at the same sampling.
@@ -87,7 +87,7 @@ TEST(NineBarLyapunov, JointsAAndBBeforeWear)
       << l[k].at("channel").get<std::string>();
   std::printf("Units: wearlink gives natural-log rates per second of simulated time, also per 1-ms\n"
               "sample and per 0.5-s crank cycle. The seed prints 0.041 and 0.030 with no unit or\n"
-              "sample interval (likely per sample of its series, REFERENCE.md §6), so only the\n"
+              "sample interval (likely per sample of its series, doc/models.md §6.2), so only the\n"
               "per-sample column is comparable, and only at the seed's sampling; both agree that\n"
               "the motion is chaotic (positive exponent). After-wear values wait for the wear loop.\n\n");
 }

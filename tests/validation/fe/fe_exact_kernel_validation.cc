@@ -3,7 +3,7 @@
 // (exact_kernel_contact.h: exact Fourier kernels of the two rings, no FE): the steel
 // pair of params/pin_bushing.prm (R1 = 12 mm, R2 = 11.5 mm, rigid pin core 0.4 R2,
 // ring clamped at 24 mm, L = 10 mm) at 100 N, 1 kN, 10 kN and 100 kN along −y.
-// Issue 13 asks for the peak pressure and the contact half-angle within 1 % at all four
+// The target: the peak pressure and the contact half-angle within 1 % at all four
 // loads. Checked on the production mesh (FeSettings defaults: both surfaces at 25 µm
 // all around) and printed with the approach.
 #include "exact_kernel_contact.h"

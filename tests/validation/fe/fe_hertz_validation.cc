@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Mesh convergence of the FE contact model against Hertz internal line contact
-// (REFERENCE.md §5) for the steel pair of params/pin_bushing.prm at 100 N, where the
+// (doc/models.md §5.1) for the steel pair of params/pin_bushing.prm at 100 N, where the
 // contact half-angle is 0.84°: deep in the small-load regime in which a conforming
 // pin–bore pair must reproduce Hertz (b = 0.1758 mm, p0 = 36.22 MPa). Five surface
 // element sizes, 100 µm → 6.25 µm (1.8 → 28 elements per half-width), refined on ±10°

@@ -8,7 +8,7 @@
 // revolutions): a cos² dent of 50 µm over ±30° in the bore with 0, 10 and 25 µm on the
 // pin, loaded into the dent at 0.3–20 kN (the scene's joints peak at 2.9 and 5.4 kN).
 //
-// Measured (2026-11-26): the kept mesh's peak pressure within 1.30 % of the fresh 25 µm
+// Measured: the kept mesh's peak pressure within 1.30 % of the fresh 25 µm
 // mesh's (largest at 10 kN on the 50/10 µm pair), its contact half-angle within 0.06°;
 // the fresh meshes' own peak pressures spread by 0.27–11.0 % (the peak is a nodal value
 // and moves with the node layout, most at light loads on conformal pairs; the kept

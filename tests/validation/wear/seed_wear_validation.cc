@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The seed's wear results, as far as they can be checked (REFERENCE.md §4, §6):
+// The seed's wear results, as far as they can be checked (doc/models.md §4, §6.2):
 //  1. Experiment (§4.3, params/nine_bar_experiment.prm): the Al pin of joint A lost
 //     6.3 mg over 50,000 revolutions at ±90 rpm. The seed gives no wear coefficient.
 //     The literature range for dry sliding of aluminium alloys against steel is
-//     k_D ≈ 1e-4 … 7e-2 mm³/(N m) (REFERENCE.md §4 [lit]: mild to severe regimes);
+//     k_D ≈ 1e-4 … 7e-2 mm³/(N m) (doc/models.md §4 [lit]: mild to severe regimes);
 //     nothing in this test is taken from the 6.3 mg. Two runs at the literature's
 //     lower end k_lo = 1e-4 and at 2 k_lo give the mass loss per unit k_D, s, and
 //     check Archard's proportionality through the coupled dynamics (the worn geometry
