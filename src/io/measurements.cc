@@ -148,7 +148,7 @@ namespace wearlink::io
                    "comes from the chaos of the dynamics alone).");
           if (!(uncertainty >= 0))
             fail(name + " uncertainty", "is " + format_number(uncertainty, 6) + "; it must be ≥ 0 [mg, 1σ].");
-          out.push_back({joint, surface, revolutions, loss, uncertainty, line_of(name)});
+          out.push_back({joint, surface, revolutions, loss, uncertainty});
         }
       if (out.empty())
         throw InputError(where(file, layout.lines.empty() ? 0u : line_of("Revolutions")) + "'Joint " + joint +
@@ -178,6 +178,12 @@ namespace wearlink::io
     read_prm_file(prm, file);
     Measurements m;
     m.file = file;
+    for (std::size_t i = 0; i < layout.joints.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (layout.joints[i].first == layout.joints[j].first)
+          throw InputError(where(file, layout.joints[i].second) + "'Joint " + layout.joints[i].first +
+                           "' appears a second time (first in line " + std::to_string(layout.joints[j].second) +
+                           "); give each joint's measurements in one subsection.");
     for (const auto &[joint, line] : layout.joints)
       for (auto &s : joint_measurements(prm, file, layout, joint))
         m.surfaces.push_back(std::move(s));

@@ -27,11 +27,10 @@ namespace wearlink::io
   struct SurfaceMeasurement
   {
     std::string joint;
-    std::string surface;            ///< "pin" | "bushing"
-    double      revolutions    = 0; ///< of the test [-]
-    double      mass_loss      = 0; ///< [mg]
-    double      uncertainty    = 0; ///< of the mass loss, 1σ [mg]
-    unsigned    mass_loss_line = 0; ///< line of the mass loss in the file (0: unknown)
+    std::string surface;         ///< "pin" | "bushing"
+    double      revolutions = 0; ///< of the test [-]
+    double      mass_loss   = 0; ///< [mg]
+    double      uncertainty = 0; ///< of the mass loss, 1σ [mg]
   };
 
   struct Measurements

@@ -28,6 +28,16 @@ namespace wearlink::workflows
       throw InputError("`wearlink calibrate` identifies wear coefficients, but no clearance joint of " +
                        options.scene_file + " has 'Wear law = archard'.");
     p.measurements = io::read_measurements(options.measurements_file, p.scene);
+    // A fixed wear loop reaches R revolutions with the factor R / (simulated cycles) ≥ 1.
+    const auto  &w         = p.scene.wear_loop;
+    const double simulated = w.cycles_per_iteration * w.n_iterations;
+    for (const auto &m : p.measurements.surfaces)
+      if (w.extrapolation == wear::Extrapolation::fixed && m.revolutions < simulated)
+        throw InputError("In " + p.measurements.file + ": 'Joint " + m.joint + "/Revolutions' is " +
+                         format_number(m.revolutions, 6) + ", fewer than the " + format_number(simulated, 6) +
+                         " cycles " + options.scene_file +
+                         " simulates (Wear/Cycles per iteration × Number of iterations): the extrapolation factor "
+                         "would be < 1. Lower those with --set.");
     return p;
   }
 
@@ -71,15 +81,7 @@ namespace wearlink::workflows
         o.set(io::wear_coefficient_entry(c.surfaces()[s].joint, c.surfaces()[s].surface), k[s]);
       const auto &w = c.problem.scene.wear_loop;
       if (w.extrapolation == wear::Extrapolation::fixed)
-        {
-          const double simulated = w.cycles_per_iteration * w.n_iterations;
-          if (revolutions < simulated)
-            throw InputError("In " + c.problem.measurements.file + ": 'Revolutions' " + format_number(revolutions, 6) +
-                             " is fewer than the " + format_number(simulated, 6) + " cycles " + c.options.scene_file +
-                             " simulates (Wear/Cycles per iteration × Number of iterations); the extrapolation "
-                             "factor would be < 1.");
-          o.set("Wear/Extrapolation factor", revolutions / simulated);
-        }
+        o.set("Wear/Extrapolation factor", revolutions / (w.cycles_per_iteration * w.n_iterations));
       else
         o.set("Wear/Target revolutions", revolutions);
       return o;
@@ -91,9 +93,15 @@ namespace wearlink::workflows
     {
       io::Scene      scene = io::read_scene(c.options.scene_file, overrides);
       WearRunOptions w;
-      w.progress            = false;
-      w.final_outputs       = false;
-      const auto          r = run_wear(scene, w);
+      w.progress      = false;
+      w.final_outputs = false;
+      const auto r    = run_wear(scene, w);
+      if (r.state.revolutions < revolutions * (1 - 1e-9))
+        throw InputError("The wear loop of " + c.options.scene_file + " ended at " +
+                         format_number(r.state.revolutions, 6) + " revolutions, before the measured " +
+                         format_number(revolutions, 6) +
+                         " (Wear/Number of iterations caps the adaptive loop); raise "
+                         "it with --set \"Wear/Number of iterations=...\".");
       std::vector<double> m(c.surfaces().size(), NAN);
       for (std::size_t s = 0; s < m.size(); ++s)
         for (std::size_t j = 0; j < r.state.joints.size(); ++j)

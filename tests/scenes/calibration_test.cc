@@ -9,6 +9,8 @@
 //    coefficients finds both inside their 95 % intervals, writes calibration.json,
 //    calibrated.prm (a scene that validates and holds the calibrated values) and
 //    calibration.png, and counts its forward runs (secant runs + members).
+//  - MPI: the same calibration on 1 and on 2 ranks (the members spread over them) gives
+//    the same calibration.json joints to the last bit.
 //  - Coverage: 12 seeded cases whose measured mass losses are the truth's prediction with
 //    a normal error of known σ (3 %, drawn with analysis::member_normals): the 95 %
 //    intervals cover the true coefficient in ≥ 20 of the 12 cases' 24 coefficients (the
@@ -25,6 +27,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 
 using namespace wearlink;
@@ -114,6 +117,39 @@ TEST(CalibrateCommand, RecoversKnownCoefficientsFromTheToolsOwnPrediction)
   EXPECT_NE(prm.find(format_number(json_number(k.at("value")))), std::string::npos);
   const auto check = run_wearlink({"run", "--validate", dir + "/out/calibrated.prm"});
   EXPECT_EQ(check.exit_status, 0) << check.output;
+}
+
+TEST(CalibrateCommand, SerialAndTwoRanksAgree)
+{
+  if (std::string(WEARLINK_MPIEXEC).empty())
+    GTEST_SKIP() << "no mpiexec";
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const auto [pin, bushing] = true_mass_losses();
+  const std::string dir     = fresh_directory("calibration_mpi");
+  const std::string meas    = measurements(dir, pin, 0.02 * pin, bushing, 0.02 * bushing);
+  const auto        args    = [&](const std::string &out) {
+    std::vector<std::string> a = {"calibrate",
+                                  source_path("params/slider_crank_wear.prm"),
+                                  "--measurements",
+                                  meas,
+                                  "--ensemble",
+                                  "3",
+                                  "--output",
+                                  dir + "/" + out,
+                                  "--quiet"};
+    for (const auto &c : cut)
+      a.insert(a.end(), {"--set", c});
+    return a;
+  };
+  const auto serial = run_wearlink(args("serial"));
+  ASSERT_EQ(serial.exit_status, 0) << serial.output;
+  const auto parallel = run_wearlink_mpi(2, args("mpi"));
+  ASSERT_EQ(parallel.exit_status, 0) << parallel.output;
+  const Json a = io::read_json_file(dir + "/serial/calibration.json"),
+             b = io::read_json_file(dir + "/mpi/calibration.json");
+  EXPECT_EQ(json_number(b.at("ensemble").at("mpi_ranks")), 2);
+  EXPECT_EQ(a.at("joints"), b.at("joints"));
 }
 
 TEST(CalibrateCommand, IntervalsCoverTheTruthOverSeededNoisyMeasurements)
