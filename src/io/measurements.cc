@@ -4,6 +4,7 @@
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "base/text.h"
+#include "io/profile_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,7 +27,11 @@ namespace wearlink::io
                                    "Pin mass loss",
                                    "Pin mass loss uncertainty",
                                    "Bushing mass loss",
-                                   "Bushing mass loss uncertainty"};
+                                   "Bushing mass loss uncertainty",
+                                   "Pin profile file",
+                                   "Bore profile file",
+                                   "Profile uncertainty",
+                                   "Profile angle search"};
 
     /** What the pre-scan finds: the joints' subsections and the lines of their entries. */
     struct Layout
@@ -153,11 +158,56 @@ namespace wearlink::io
       if (out.empty())
         throw InputError(where(file, layout.lines.empty() ? 0u : line_of("Revolutions")) + "'Joint " + joint +
                          "' has no measurement; set 'Pin mass loss' or 'Bushing mass loss' [mg] with its "
-                         "uncertainty, or remove the subsection.");
+                         "uncertainty (a profile alone is compared, not fitted), or remove the subsection.");
       if (std::isnan(revolutions))
         fail("Revolutions", "is not set; give the mechanism revolutions of the test (> 0).");
       if (!(revolutions > 0))
         fail("Revolutions", "is " + format_number(revolutions, 6) + "; it must be > 0 (the test's revolutions).");
+      return out;
+    }
+  } // namespace
+
+  namespace
+  {
+    /** The measured profiles of joint @p joint (files read; checked). */
+    std::vector<ProfileMeasurement>
+    joint_profiles(dealii::ParameterHandler &prm,
+                   const std::string        &file,
+                   const Layout             &layout,
+                   const std::string        &joint,
+                   const double              revolutions)
+    {
+      const auto fail = [&](const std::string &entry, const std::string &what) {
+        const std::string path = "Joint " + joint + "/" + entry;
+        throw InputError(where(file, layout.lines.count(path) ? layout.lines.at(path) : 0u) + "'" + path + "' " + what);
+      };
+      const double                    sigma  = number(prm, file, layout, joint, "Profile uncertainty");
+      const double                    search = number(prm, file, layout, joint, "Profile angle search");
+      std::vector<ProfileMeasurement> out;
+      for (const std::string surface : {"pin", "bore"})
+        {
+          const std::string entry = surface == "pin" ? "Pin profile file" : "Bore profile file";
+          const std::string name  = trim(entry_value(prm, "Joint " + joint + "/" + entry));
+          if (name.empty())
+            continue;
+          if (!(sigma > 0))
+            fail("Profile uncertainty", "must be set > 0 [m, 1σ per point] with a profile file.");
+          if (!std::isnan(search) && !(search >= 0 && search <= 180))
+            fail("Profile angle search", "is " + format_number(search, 6) + "; it must lie in [0, 180] [deg].");
+          const auto path = std::filesystem::path(name).is_absolute() ?
+                              std::filesystem::path(name) :
+                              std::filesystem::path(file).parent_path() / name;
+          out.push_back({joint,
+                         surface,
+                         path.string(),
+                         revolutions,
+                         sigma,
+                         std::isnan(search) ? 180. : search,
+                         read_measured_profile_csv(path.string())});
+        }
+      if (out.empty() && !(std::isnan(sigma) && std::isnan(search)))
+        fail(std::isnan(sigma) ? "Profile angle search" : "Profile uncertainty",
+             "is given without a profile file ('Pin profile file' or 'Bore profile file').");
       return out;
     }
   } // namespace
@@ -185,8 +235,12 @@ namespace wearlink::io
                            "' appears a second time (first in line " + std::to_string(layout.joints[j].second) +
                            "); give each joint's measurements in one subsection.");
     for (const auto &[joint, line] : layout.joints)
-      for (auto &s : joint_measurements(prm, file, layout, joint))
-        m.surfaces.push_back(std::move(s));
+      {
+        for (auto &s : joint_measurements(prm, file, layout, joint))
+          m.surfaces.push_back(std::move(s));
+        for (auto &p : joint_profiles(prm, file, layout, joint, m.surfaces.back().revolutions))
+          m.profiles.push_back(std::move(p));
+      }
     if (m.surfaces.empty())
       throw InputError("In " + file + ": no measurement. Give, per wearing joint J of " + scene.file +
                        ", 'subsection Joint J' with 'Revolutions' and 'Pin mass loss' and/or 'Bushing mass loss' [mg] "

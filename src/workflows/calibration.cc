@@ -3,6 +3,7 @@
 
 #include "analysis/ensemble_statistics.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "base/text.h"
 #include "base/timings.h"
 #include "io/calibration_files.h"
@@ -87,28 +88,37 @@ namespace wearlink::workflows
       return o;
     }
 
-    /** One wear run with @p overrides → the mass loss [mg] of each surface measured after @p revolutions (else NaN). */
-    std::vector<double>
-    mass_losses(const Calibration &c, const ParameterOverrides &overrides, const double revolutions)
+    /** One wear run (nothing written) with @p overrides that must reach @p revolutions: its final state. */
+    wear::WearState
+    run_forward(const Calibration &c, const ParameterOverrides &overrides, const double revolutions)
     {
       io::Scene      scene = io::read_scene(c.options.scene_file, overrides);
       WearRunOptions w;
       w.progress      = false;
       w.final_outputs = false;
-      const auto r    = run_wear(scene, w);
+      auto r          = run_wear(scene, w);
       if (r.state.revolutions < revolutions * (1 - 1e-9))
         throw InputError("The wear loop of " + c.options.scene_file + " ended at " +
                          format_number(r.state.revolutions, 6) + " revolutions, before the measured " +
                          format_number(revolutions, 6) +
                          " (Wear/Number of iterations caps the adaptive loop); raise "
                          "it with --set \"Wear/Number of iterations=...\".");
+      return std::move(r.state);
+    }
+
+    /** One wear run with @p overrides → the mass loss [mg] of each surface measured after @p revolutions (else NaN). */
+    std::vector<double>
+    mass_losses(const Calibration &c, const ParameterOverrides &overrides, const double revolutions)
+    {
+      const auto          state = run_forward(c, overrides, revolutions);
       std::vector<double> m(c.surfaces().size(), NAN);
       for (std::size_t s = 0; s < m.size(); ++s)
-        for (std::size_t j = 0; j < r.state.joints.size(); ++j)
-          if (c.surfaces()[s].revolutions == revolutions && r.state.joints[j].name == c.surfaces()[s].joint)
+        for (std::size_t j = 0; j < state.joints.size(); ++j)
+          if (c.surfaces()[s].revolutions == revolutions && state.joints[j].name == c.surfaces()[s].joint)
             {
-              const auto &h   = r.state.joints[j].history;
-              const auto &a   = scene.wear[j]->archard;
+              // The densities are data of the scene, not calibrated: the prior scene's.
+              const auto &h   = state.joints[j].history;
+              const auto &a   = c.problem.scene.wear[j]->archard;
               const bool  pin = c.surfaces()[s].surface == "pin";
               m[s]            = h.empty() ?
                                   0. :
@@ -332,6 +342,62 @@ namespace wearlink::workflows
       scene.parameters->print_parameters(os, dealii::ParameterHandler::ShortText);
       return os.str();
     }
+
+    /** joints.<J>.<surface>_profile of one measured profile against the worn surface of @p state. */
+    Json
+    profile_report(const io::ProfileMeasurement &p, const wear::WearState &state)
+    {
+      for (const auto &j : state.joints)
+        if (j.name == p.joint)
+          {
+            const bool pin = p.surface == "pin";
+            const auto cmp =
+              analysis::compare_profile(p.trace,
+                                        analysis::PolarTrace::of_profile(pin ? j.pin : j.bore),
+                                        analysis::PolarTrace::of_profile(pin ? j.initial_pin : j.initial_bore),
+                                        pin ? analysis::WornSurface::pin : analysis::WornSurface::bore,
+                                        p.angle_search * numbers::pi / 180);
+            return {{"file", p.file},
+                    {"uncertainty_m", p.uncertainty},
+                    {"rotation_deg", cmp.alignment.rotation * 180 / numbers::pi},
+                    {"rms_difference_m", cmp.alignment.difference.rms},
+                    {"rms_over_uncertainty", cmp.alignment.difference.rms / p.uncertainty},
+                    {"largest_difference_m", cmp.alignment.difference.largest},
+                    {"worn_area_measured_m2", cmp.worn_area_measured},
+                    {"worn_area_predicted_m2", cmp.worn_area_predicted},
+                    {"max_depth_measured_m", cmp.max_depth_measured},
+                    {"max_depth_predicted_m", cmp.max_depth_predicted}};
+          }
+      return Json();
+    }
+
+    /**
+     * The measured profiles against one unperturbed run at the calibrated coefficients per
+     * revolution count (a check, not part of the fit), into joints.<J>.<surface>_profile.
+     */
+    void
+    add_profiles(Json &report, Calibration &c)
+    {
+      std::vector<double> k;
+      for (const auto &m : c.surfaces())
+        k.push_back(json_number(report.at("joints").at(m.joint).at(m.surface + "_wear_coefficient").at("value")));
+      for (const double r : c.revolutions)
+        {
+          bool any = false;
+          for (const auto &p : c.problem.measurements.profiles)
+            any = any || p.revolutions == r;
+          if (!any)
+            continue;
+          const auto state = run_forward(c, forward_overrides(c, k, r), r);
+          ++c.forward_runs;
+          for (const auto &p : c.problem.measurements.profiles)
+            if (p.revolutions == r)
+              report["joints"][p.joint][p.surface + "_profile"] = profile_report(p, state);
+        }
+      if (c.options.progress && c.root && !c.problem.measurements.profiles.empty())
+        std::cerr << "[wearlink] calibrate: profiles compared at the calibrated coefficients (" << std::setprecision(3)
+                  << c.wall.seconds() << " s so far)\n";
+    }
   } // namespace
 
   Json
@@ -362,6 +428,7 @@ namespace wearlink::workflows
                                members.front().at("failed").get<std::string>());
         add_surface(report["joints"], c, s, fit, values, prior[s]);
       }
+    add_profiles(report, c);
     report["forward_runs"] = c.forward_runs;
     report["wall_time_s"]  = c.wall.seconds();
     if (c.root && !options.output_directory.empty())

@@ -21,7 +21,11 @@
 //     m̄ the secant's own run at k*, s not estimated (0);
 //  3. the calibrated value k = k* (m / m̄)^(1/S) (the mean of the ensemble, not one
 //     chaotic sample, meets the measurement; one secant step on the mean), and its 95 %
-//     interval from σ_m and σ_c = s / √N (the standard error of the mean) through S.
+//     interval from σ_m and σ_c = s / √N (the standard error of the mean) through S;
+//  4. measured profiles, if any: one unperturbed run per revolution count at the
+//     calibrated coefficients, its worn surfaces compared with them
+//     (analysis::compare_profile: aligned within the angle search; RMS difference,
+//     worn areas). A check of the calibration, not part of the fit.
 // The secant runs are the same on every rank (each rank runs them: no communication, the
 // same k* everywhere); the members are spread over the ranks and gathered on rank 0,
 // which writes the outputs.

@@ -34,7 +34,15 @@ MEAS.prm (deal.II parameter syntax, like a scene), per measured joint J:
     set Pin mass loss uncertainty     = 0.1    # [mg, 1 sigma], >= 0
     set Bushing mass loss             = ...    # [mg] (either surface, or both)
     set Bushing mass loss uncertainty = ...    # [mg, 1 sigma]
+    set Pin profile file              = ...    # optional measured worn surfaces,
+    set Bore profile file             = ...    # 'angle_rad,radius_m' as runs write
+                                               # pin_<J>.csv (relative to MEAS.prm)
+    set Profile uncertainty           = 2e-6   # [m, 1 sigma per point], > 0
+    set Profile angle search          = 180    # [deg], 0 ... 180 (default 180)
   end
+Profiles are not fitted: after the calibration one run at the calibrated coefficients
+is compared with them (aligned within the angle search, as `wearlink compare-profile`
+does): RMS difference, RMS / Profile uncertainty, worn areas, deepest wear.
 Each forward run is the scene with the coefficients set and its wear loop stretched to
 the measured revolutions (fixed extrapolation: 'Wear/Extrapolation factor' = R /
 (cycles per iteration x iterations); adaptive: 'Wear/Target revolutions' = R).
@@ -65,7 +73,10 @@ Written into DIR, each file atomically, only when the calibration succeeded:
                     [m^3/(N m)], .{pin,bushing}_mass_loss_mg.{measured,
                     measured_uncertainty,predicted_mean,predicted_std,
                     predicted_std_of_mean,predicted_members,...}, the secant's runs
-                    and residuals, iterations, forward_runs, wall_time_s
+                    and residuals, iterations, forward_runs, wall_time_s; with
+                    profiles .{pin,bore}_profile.{rms_difference_m,
+                    rms_over_uncertainty,rotation_deg,worn_area_measured_m2,
+                    worn_area_predicted_m2,max_depth_measured_m,...}
   calibrated.prm    the effective scene (includes resolved, --set applied) with the
                     calibrated coefficients; a comment on top names the measurements
                     and the intervals
@@ -74,8 +85,9 @@ Written into DIR, each file atomically, only when the calibration succeeded:
                                   R"(  --overwrite        replace the files of an earlier calibration in DIR
 
 Exit status: 0 success; 2 bad input (a missing or malformed measurements file, an entry
-that is not a finite number, Revolutions <= 0, a negative uncertainty, a joint that
-does not exist or does not wear, no measurement; a scene that does not wear or predicts
+that is not a finite number, Revolutions <= 0 or fewer than the scene simulates, a
+negative uncertainty, a joint that does not exist or does not wear, no measurement, a
+profile file that cannot be read or has no uncertainty; a scene that does not wear or predicts
 no wear of a measured surface; also: output directory in use, earlier files) - the
 message names the file, the line and the entry, and nothing is written; 3 a forward
 run that failed numerically; 4 an output that cannot be written; 1 an internal error.
