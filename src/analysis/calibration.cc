@@ -48,6 +48,24 @@ namespace wearlink::analysis
     }
   } // namespace
 
+  namespace
+  {
+    /** The largest log k of a run below the root and the smallest of a run above it (±inf if none). */
+    std::pair<double, double>
+    bracket(const std::vector<SecantPoint> &points)
+    {
+      double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+      for (const auto &p : points)
+        {
+          if (p.residual < 0)
+            lo = std::max(lo, p.log_k);
+          else if (p.residual > 0)
+            hi = std::min(hi, p.log_k);
+        }
+      return {lo, hi};
+    }
+  } // namespace
+
   double
   next_log_k(const std::vector<SecantPoint> &points, const SecantSettings &settings)
   {
@@ -56,18 +74,17 @@ namespace wearlink::analysis
       return last.log_k;
     const double step = std::clamp(-last.residual / log_slope(points, settings), -settings.max_step, settings.max_step);
     double       x    = last.log_k + step;
-    // The bracket: the largest log k below the root and the smallest above it.
-    double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
-    for (const auto &p : points)
-      {
-        if (p.residual < 0)
-          lo = std::max(lo, p.log_k);
-        else if (p.residual > 0)
-          hi = std::min(hi, p.log_k);
-      }
+    const auto [lo, hi] = bracket(points);
     if (std::isfinite(lo) && std::isfinite(hi) && lo < hi && !(x > lo && x < hi))
       x = 0.5 * (lo + hi);
     return x;
+  }
+
+  double
+  bracket_width(const std::vector<SecantPoint> &points)
+  {
+    const auto [lo, hi] = bracket(points);
+    return std::isfinite(lo) && std::isfinite(hi) && lo < hi ? hi - lo : std::numeric_limits<double>::infinity();
   }
 
   namespace
@@ -124,11 +141,13 @@ namespace wearlink::analysis
         if (after_run)
           after_run(fit.runs, k, predicted);
         ++fit.runs;
-        if (worst_residual(fit, fit.runs - 1) < settings.tolerance)
-          {
-            fit.converged = true;
-            break;
-          }
+        fit.converged = worst_residual(fit, fit.runs - 1) < settings.tolerance;
+        fit.located   = true;
+        for (const auto &h : fit.history)
+          fit.located = fit.located && (relative_residual(h.back().residual) < settings.tolerance ||
+                                        bracket_width(h) < settings.tolerance);
+        if (fit.converged || fit.located)
+          break;
         for (std::size_t s = 0; s < k.size(); ++s)
           k[s] = std::exp(next_log_k(fit.history[s], settings));
       }

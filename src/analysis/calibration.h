@@ -21,7 +21,10 @@
 //    root exist (f < 0 and f > 0; m_pred grows with k), a step leaving that bracket is
 //    replaced by the bracket's midpoint (bisection in log k);
 //  - a surface whose relative residual |m_pred/m − 1| is below the tolerance keeps its k;
-//    the loop stops when every surface is below it, or after the maximum number of runs.
+//    the loop stops when every surface is below it (converged), or when every surface is
+//    below it or bracketed within the tolerance in log k (located: the root lies between
+//    two runs closer than the tolerance, and further runs would only sample the chaotic
+//    scatter, which a non-monotone m_pred(k) shows), or after the maximum number of runs.
 //    The run kept is the one with the smallest largest relative residual.
 // The dynamics are chaotic: one run is one sample, so m_pred(k) carries a scatter of a
 // few per cent for multi-iteration wear runs, and a tolerance below it is reached by
@@ -76,6 +79,14 @@ namespace wearlink::analysis
   double
   next_log_k(const std::vector<SecantPoint> &points, const SecantSettings &settings);
 
+  /**
+   * The width in log k of the narrowest bracket of @p points' root: hi − lo for the
+   * largest log k with a residual < 0 and the smallest with a residual > 0, if lo < hi;
+   * otherwise (no bracket, or runs that contradict a rising m_pred) infinity.
+   */
+  double
+  bracket_width(const std::vector<SecantPoint> &points);
+
   /** The predicted mass losses [mg] of the surfaces at the coefficients k [m³/(N m)]. */
   using ForwardModel = std::function<std::vector<double>(const std::vector<double> &k)>;
 
@@ -88,6 +99,7 @@ namespace wearlink::analysis
     std::vector<std::vector<SecantPoint>> history;   ///< per surface, every run
     unsigned int                          runs      = 0;
     bool                                  converged = false; ///< every surface below the tolerance
+    bool located = false; ///< every surface below the tolerance or bracketed within it in log k
   };
 
   /**

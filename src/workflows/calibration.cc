@@ -302,7 +302,13 @@ namespace wearlink::workflows
                {{"tolerance", c.options.secant.tolerance},
                 {"max_runs", c.options.secant.max_runs},
                 {"runs", fit.runs},
-                {"converged", fit.converged}}},
+                {"converged", fit.converged},
+                {"located", fit.located},
+                {"stop",
+                 fit.converged ? "every relative residual below the tolerance" :
+                 fit.located   ? "every root bracketed within the tolerance in log k (the chaotic scatter of single "
+                                 "runs is larger than the tolerance)" :
+                                 "the run limit"}}},
               {"ensemble",
                {{"members", c.options.members},
                 {"seed", c.options.seed},
@@ -458,7 +464,7 @@ namespace wearlink::workflows
                << " runs at k " << json_number(k.at("secant_value")) << ")\n";
           }
     os << "  " << json_number(report.at("forward_runs")) << " forward runs (" << json_number(report.at("iterations"))
-       << " secant, " << (report.at("secant").at("converged").get<bool>() ? "converged" : "not converged") << "), "
+       << " secant, stopped at " << report.at("secant").at("stop").get<std::string>() << "), "
        << json_number(report.at("wall_time_s")) << " s\n";
     return os.str();
   }
