@@ -32,12 +32,14 @@
 // interval take care of that.
 //
 // The interval (coefficient_interval): with the measurement's 1σ uncertainty σ_m [mg],
-// the uncertainty of the predicted mean σ_c [mg] (the ensemble's standard error, std/√N)
-// and the local sensitivity S = d log m / d log k,
+// the chaos term σ_c [mg] and the local sensitivity S = d log m / d log k,
 //     σ_log k = sqrt((σ_m / m)² + (σ_c / m_pred)²) / |S|,
 //     95 % interval = [k exp(−1.96 σ_log k), k exp(+1.96 σ_log k)],
 // first-order propagation in log k (a relative error of the mass maps to a relative
-// error of k divided by S), normal errors.
+// error of k divided by S), normal errors. The caller chooses σ_c; the workflow's
+// (workflows/calibration.h) is σ_c = s sqrt(1 + 1/N) for an ensemble of N runs with
+// sample std s: the measured test is itself one sample of the chaotic wear (it scatters
+// about the mean by s) and the ensemble's mean is known to s/√N.
 #pragma once
 
 #include <functional>

@@ -248,12 +248,14 @@ namespace wearlink::workflows
                 const std::vector<double>      &values,
                 const double                    prior)
     {
-      const auto  &meas = c.surfaces()[s];
-      const auto   f    = analysis::ensemble_figure(values);
+      const auto &meas = c.surfaces()[s];
+      const auto  f    = analysis::ensemble_figure(values);
+      // σ_c: the measured test is one chaotic sample (scatter s about the mean), the mean is known to s/√N.
       const double std = values.size() > 1 ? f.std : 0, sigma_mean = std / std::sqrt(double(values.size()));
-      const double k = analysis::corrected_coefficient(fit.k[s], meas.mass_loss, f.mean, fit.slope[s]);
+      const double sigma_chaos = std::hypot(std, sigma_mean);
+      const double k           = analysis::corrected_coefficient(fit.k[s], meas.mass_loss, f.mean, fit.slope[s]);
       const auto   ci =
-        analysis::coefficient_interval(k, meas.mass_loss, meas.uncertainty, f.mean, sigma_mean, fit.slope[s]);
+        analysis::coefficient_interval(k, meas.mass_loss, meas.uncertainty, f.mean, sigma_chaos, fit.slope[s]);
       Json secant = Json::array();
       for (const auto &p : fit.history[s])
         secant.push_back({{"k", std::exp(p.log_k)},
@@ -274,6 +276,7 @@ namespace wearlink::workflows
                                                {"predicted_mean", f.mean},
                                                {"predicted_std", std},
                                                {"predicted_std_of_mean", sigma_mean},
+                                               {"chaos_uncertainty", sigma_chaos},
                                                {"predicted_members", values},
                                                {"relative_residual_of_mean", f.mean / meas.mass_loss - 1},
                                                {"predicted_at_value", f.mean * std::pow(k / fit.k[s], fit.slope[s])}};
@@ -296,8 +299,9 @@ namespace wearlink::workflows
                "secant on log k from the prior with whole wear runs of the unperturbed scene, then an "
                "ensemble at the secant's k; value = k_secant (measured / ensemble mean)^(1/slope)"},
               {"interval",
-               "95 %: value exp(±1.96 σ), σ = sqrt((σ_m/m)² + (σ_c/m̄)²) / |slope|, σ_m the "
-               "measurement's 1σ, σ_c = ensemble std/√N (standard error of the mean; 0 without ensemble)"},
+               "95 %: value exp(±1.96 σ), σ = sqrt((σ_m/m)² + (σ_c/m̄)²) / |slope|, σ_m the measurement's 1σ, "
+               "σ_c = s sqrt(1 + 1/N) (chaos_uncertainty) with s the std of the N ensemble runs: the measured test "
+               "is one chaotic sample (scatter s), the mean is known to s/√N; 0 without ensemble"},
               {"secant",
                {{"tolerance", c.options.secant.tolerance},
                 {"max_runs", c.options.secant.max_runs},

@@ -21,7 +21,9 @@
 //     m̄ the secant's own run at k*, s not estimated (0);
 //  3. the calibrated value k = k* (m / m̄)^(1/S) (the mean of the ensemble, not one
 //     chaotic sample, meets the measurement; one secant step on the mean), and its 95 %
-//     interval from σ_m and σ_c = s / √N (the standard error of the mean) through S;
+//     interval from σ_m and σ_c = s sqrt(1 + 1/N) through S: the measured test is itself
+//     one sample of the chaotic wear (it scatters about the mean by s) and the mean is
+//     known to s/√N;
 //  4. measured profiles, if any: one unperturbed run per revolution count at the
 //     calibrated coefficients, its worn surfaces compared with them
 //     (analysis::compare_profile: aligned within the angle search; RMS difference,

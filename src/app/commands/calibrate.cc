@@ -55,7 +55,9 @@ the measured revolutions (fixed extrapolation: 'Wear/Extrapolation factor' = R /
      --ensemble` (over the MPI ranks with mpirun); N = 1: none;
   3. value = k (m_measured / mean)^(1/slope); 95 % interval value exp(+-1.96 s),
      s = sqrt((sigma_m/m)^2 + (sigma_c/mean)^2) / slope, sigma_m the measurement's
-     1 sigma, sigma_c = std of the N runs / sqrt(N) (0 for N = 1).
+     1 sigma, sigma_c = s sqrt(1 + 1/N) with s the std of the N runs (the measured
+     test is one chaotic sample, scatter s; the mean is known to s/sqrt(N)); 0 for
+     N = 1, whose chaotic scatter is not estimated.
 
   --measurements MEAS the measured mass losses (required)
   --ensemble N        runs at the final k (1 ... 1000, default 4; 1: no ensemble)
@@ -72,7 +74,8 @@ Written into DIR, each file atomically, only when the calibration succeeded:
                     ci95_high,sigma_log_k,prior,secant_value,slope_dlogm_dlogk}
                     [m^3/(N m)], .{pin,bushing}_mass_loss_mg.{measured,
                     measured_uncertainty,predicted_mean,predicted_std,
-                    predicted_std_of_mean,predicted_members,...}, the secant's runs
+                    predicted_std_of_mean,chaos_uncertainty,predicted_members,...},
+                    the secant's runs
                     and residuals, iterations, forward_runs, wall_time_s; with
                     profiles .{pin,bore}_profile.{rms_difference_m,
                     rms_over_uncertainty,rotation_deg,worn_area_measured_m2,
