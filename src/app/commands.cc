@@ -15,6 +15,7 @@ namespace wearlink::app
   extern const Command compare_signal_command;
   extern const Command compare_profile_command;
   extern const Command life_command;
+  extern const Command calibrate_command;
 
   const std::vector<Command> &
   commands()
@@ -31,6 +32,7 @@ namespace wearlink::app
       compare_dynamics_command,
       compare_signal_command,
       compare_profile_command,
+      calibrate_command,
     };
     return table;
   }

@@ -189,7 +189,8 @@ TEST(CommandLine, EmptyOutputIsRefusedByEveryCommand)
                                                           {"compare-profile", "run", "measured.csv"},
                                                           {"study", "accuracy", scene},
                                                           {"sweep", scene},
-                                                          {"lyapunov", "series.csv"}};
+                                                          {"lyapunov", "series.csv"},
+                                                          {"calibrate", scene, "--measurements", "m.prm"}};
   for (auto args : commands)
     {
       const std::string name = args[0] == "study" ? "study accuracy" : args[0];

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "io/calibration_files.h"
+
+#include "base/atomic_file.h"
+#include "io/plot.h"
+
+#include <cmath>
+
+namespace wearlink::io
+{
+  RunFiles
+  calibration_files()
+  {
+    return {{"calibration.json", "calibrated.prm", "calibration.png"}, {}};
+  }
+
+  namespace
+  {
+    /** A vertical bar at @p x from @p low to @p high into @p s (NaN-separated segments). */
+    void
+    add_bar(PlotSeries &s, const double x, const double low, const double high)
+    {
+      s.x.insert(s.x.end(), {x, x, NAN});
+      s.y.insert(s.y.end(), {low, high, NAN});
+    }
+
+    /** calibration.png's plot (see the header). */
+    PlotSpec
+    mass_loss_plot(const Json &report)
+    {
+      PlotSpec p;
+      p.title   = "Measured and predicted mass loss (bars: 95 %)";
+      p.x_label = "surface";
+      p.y_label = "mass loss [mg]";
+      PlotSeries  measured{"measured", {}, {}, "points", "pt 5 ps 1.6 lc rgb 'black'"};
+      PlotSeries  measured_bar{"", {}, {}, "lines", "lw 2 lc rgb 'black'"};
+      PlotSeries  members{"runs at the secant's k", {}, {}, "points", "pt 6 ps 0.8 lc rgb '#1f77b4'"};
+      PlotSeries  mean{"their mean", {}, {}, "points", "pt 7 ps 1.6 lc rgb '#d62728'"};
+      PlotSeries  mean_bar{"", {}, {}, "lines", "lw 2 lc rgb '#d62728'"};
+      std::string tics = "set xtics noenhanced (";
+      double      x    = 0;
+      for (auto j = report.at("joints").begin(); j != report.at("joints").end(); ++j)
+        for (const std::string surface : {"pin", "bushing"})
+          if (j.value().contains(surface + "_mass_loss_mg"))
+            {
+              const Json  &m  = j.value().at(surface + "_mass_loss_mg");
+              const double mm = json_number(m.at("measured")), sm = json_number(m.at("measured_uncertainty"));
+              const double pm = json_number(m.at("predicted_mean")), sp = json_number(m.at("predicted_std_of_mean"));
+              tics += (x > 0 ? ", \"" : "\"") + j.key() + " " + surface + "\" " + std::to_string(x);
+              measured.x.push_back(x - 0.1);
+              measured.y.push_back(mm);
+              add_bar(measured_bar, x - 0.1, mm - 1.96 * sm, mm + 1.96 * sm);
+              for (const auto &v : m.at("predicted_members"))
+                {
+                  members.x.push_back(x + 0.1);
+                  members.y.push_back(json_number(v));
+                }
+              mean.x.push_back(x + 0.1);
+              mean.y.push_back(pm);
+              add_bar(mean_bar, x + 0.1, pm - 1.96 * sp, pm + 1.96 * sp);
+              x += 1;
+            }
+      p.extra  = tics + ")\nset xrange [-0.5:" + std::to_string(x - 0.5) + "]\nset yrange [0:*]\n";
+      p.series = {measured_bar, mean_bar, measured, members, mean};
+      return p;
+    }
+  } // namespace
+
+  std::vector<std::string>
+  write_calibration_files(const std::string &directory, const Json &report, const std::string &calibrated_prm)
+  {
+    std::vector<std::string> files;
+    write_file_atomically(directory + "/calibration.json", report.dump(2));
+    files.push_back(directory + "/calibration.json");
+    write_file_atomically(directory + "/calibrated.prm", calibrated_prm);
+    files.push_back(directory + "/calibrated.prm");
+    if (plot_png(mass_loss_plot(report), directory + "/calibration.png"))
+      files.push_back(directory + "/calibration.png");
+    return files;
+  }
+} // namespace wearlink::io
