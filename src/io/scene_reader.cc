@@ -11,6 +11,7 @@
 #include "io/life_parameters.h"
 #include "io/profile_file.h"
 #include "io/scene.h"
+#include "io/uncertainty_parameters.h"
 #include "mbs/assembly.h"
 
 #include <filesystem>
@@ -442,6 +443,7 @@ namespace wearlink::io
       declare_analyses(prm);
       wear::declare_wear_loop(prm);
       declare_life(prm);
+      declare_uncertainty(prm);
     }
 
     // ------------------------------------------------------------------------------
@@ -847,8 +849,9 @@ namespace wearlink::io
     check_active_required_entries(prm, file, inactive);
 
     build_scene(scene, prm, bodies, joints);
-    scene.analyses = parse_analyses(prm, scene);
-    scene.life     = parse_life(prm, scene);
+    scene.analyses    = parse_analyses(prm, scene);
+    scene.life        = parse_life(prm, scene);
+    scene.uncertainty = parse_uncertainty(prm, file, inactive);
     return scene;
   }
 
