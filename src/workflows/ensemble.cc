@@ -474,6 +474,34 @@ namespace wearlink::workflows
     }
   } // namespace
 
+  namespace
+  {
+    /** DIR/summary.json, ensemble.csv and the plots of the members that ran (rank 0). */
+    void
+    write_ensemble_files(const EnsembleOptions                      &o,
+                         const Json                                 &summary,
+                         const std::vector<Json>                    &members,
+                         const std::vector<analysis::CriterionSpec> &criteria)
+    {
+      const auto ok = static_cast<std::size_t>(json_number(summary.at("members_ok")));
+      make_output_directory(o.output_directory);
+      write_file_atomically(o.output_directory + "/summary.json", summary.dump(2) + "\n");
+      write_file_atomically(o.output_directory + "/ensemble.csv", members_csv(summary));
+      if (ok == 0)
+        return;
+      plot_spread(summary, o.output_directory + "/ensemble.png");
+      if (o.command == "life")
+        {
+          plot_life_band(summary, criteria, o.output_directory + "/life.png");
+          io::plot_life_cdf(decided_revolutions(members),
+                            o.output_directory + "/life_cdf.png",
+                            "Life criteria of " + std::to_string(ok) + " members: empirical CDF of the revolutions");
+        }
+      if (summary.contains("sensitivity"))
+        io::plot_sensitivity(summary.at("sensitivity"), o.output_directory + "/sensitivity.png");
+    }
+  } // namespace
+
   Json
   run_ensemble(const EnsembleOptions &o, const MemberRun &run, bool &all_failed)
   {
@@ -529,20 +557,7 @@ namespace wearlink::workflows
       ok += m.at("status").get<std::string>() == "ok" ? 1 : 0;
     summary["members_ok"] = ok;
     all_failed            = ok == 0;
-    make_output_directory(o.output_directory);
-    write_file_atomically(o.output_directory + "/summary.json", summary.dump(2) + "\n");
-    write_file_atomically(o.output_directory + "/ensemble.csv", members_csv(summary));
-    if (ok > 0)
-      plot_spread(summary, o.output_directory + "/ensemble.png");
-    if (ok > 0 && o.command == "life")
-      {
-        plot_life_band(summary, criteria, o.output_directory + "/life.png");
-        io::plot_life_cdf(decided_revolutions(members),
-                          o.output_directory + "/life_cdf.png",
-                          "Life criteria of " + std::to_string(ok) + " members: empirical CDF of the revolutions");
-      }
-    if (ok > 0 && summary.contains("sensitivity"))
-      io::plot_sensitivity(summary.at("sensitivity"), o.output_directory + "/sensitivity.png");
+    write_ensemble_files(o, summary, members, criteria);
     return summary;
   }
 

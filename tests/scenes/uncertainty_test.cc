@@ -18,6 +18,7 @@
 #include "io/json_file.h"
 #include "io/plot.h"
 #include "support/test_support.h"
+#include "workflows/uncertain_inputs.h"
 
 #include <gtest/gtest.h>
 
@@ -117,4 +118,50 @@ TEST(UncertainEnsemble, TheWearCoefficientDrivesTheWornVolumeOnAnyRankCount)
   EXPECT_EQ(a.at("ensemble"), b.at("ensemble"));
   EXPECT_EQ(a.at("sensitivity"), b.at("sensitivity"));
   EXPECT_EQ(a.at("uncertainty"), b.at("uncertainty"));
+}
+
+// The Saltelli layout (--sensitivity saltelli) from the members' records, no run: 64 base
+// rows of 2 inputs (256 members, member k = design point k) and a figure
+// y = x₁ + 0.1 x₂ with x₁, x₂ ~ U(0, 1), whose variance shares are 1 / 1.01 = 0.990 and
+// 0.01 / 1.01 = 0.0099 (first order = total: no interaction). The same members without
+// the layout give rank correlations; a failed member is left out (its base row dropped).
+TEST(UncertainEnsemble, ASaltelliLayoutGivesSobolIndices)
+{
+  analysis::UncertaintySettings u;
+  u.inputs = {{"Body crank1/Mass", analysis::InputDistribution::uniform(0, 1)},
+              {"Body rod2/Mass", analysis::InputDistribution::uniform(0, 1)}};
+  workflows::EnsembleRequest request;
+  request.members  = 256;
+  request.saltelli = true;
+  std::vector<Json> members;
+  for (unsigned int k = 0; k < request.members; ++k)
+    {
+      const auto x = analysis::member_inputs(u, analysis::InputSampling::saltelli, request.members, k);
+      members.push_back({{"status", k == 17 ? "failed" : "ok"},
+                         {"inputs", {{u.inputs[0].entry, x[0]}, {u.inputs[1].entry, x[1]}}},
+                         {"figures", {{"A_wear_volume_pin_m3", x[0] + 0.1 * x[1]}}}});
+    }
+  const Json statistics = {{"A_wear_volume_pin_m3", Json::object()}, {"A_sliding_distance_m", Json::object()}};
+  const Json s          = workflows::ensemble_sensitivity(u, request, statistics, members);
+  ASSERT_EQ(s.at("method").get<std::string>(), "sobol-indices") << s.dump(2);
+  EXPECT_FALSE(s.at("figures").contains("A_sliding_distance_m")) << "not a headline figure";
+  const Json &f = s.at("figures").at("A_wear_volume_pin_m3");
+  EXPECT_EQ(json_number(f.at("dropped")), 1);
+  const Json &x1 = f.at("inputs").at("Body crank1/Mass"), &x2 = f.at("inputs").at("Body rod2/Mass");
+  EXPECT_NEAR(json_number(x1.at("first_order").at("value")), 0.990, 0.05);
+  EXPECT_NEAR(json_number(x1.at("total").at("value")), 0.990, 0.05);
+  EXPECT_NEAR(json_number(x2.at("total").at("value")), 0.0099, 0.005);
+  EXPECT_LT(json_number(x2.at("first_order").at("ci95_low")), 0.0099);
+  EXPECT_GT(json_number(x1.at("first_order").at("ci95_high")), json_number(x1.at("first_order").at("ci95_low")));
+
+  request.saltelli = false; // the same values as plain members: rank correlations
+  const Json r     = workflows::ensemble_sensitivity(u, request, statistics, members);
+  EXPECT_EQ(r.at("method").get<std::string>(), "rank-correlation");
+  EXPECT_GT(json_number(r.at("figures")
+                          .at("A_wear_volume_pin_m3")
+                          .at("inputs")
+                          .at("Body crank1/Mass")
+                          .at("rank_correlation")
+                          .at("value")),
+            0.9);
 }
