@@ -109,7 +109,9 @@ namespace wearlink::app
     const Json summary    = workflows::run_ensemble(o, run, all_failed);
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << workflows::ensemble_table(summary) << "wrote " << o.output_directory
-                << "/summary.json, ensemble.csv, ensemble.png and member_*/\n";
+                << "/summary.json, ensemble.csv, ensemble.png"
+                << (summary.contains("sensitivity") ? ", sensitivity.png" : "")
+                << (command == "life" ? ", life.png, life_cdf.png" : "") << " and member_*/\n";
     return all_failed ? 3 : 0;
   }
 } // namespace wearlink::app
