@@ -17,15 +17,19 @@ namespace wearlink::io
     }
 
     /**
-     * A bar from 0 to the estimate's value at height @p y (thick) and its 95 % interval
+     * A bar from 0 to the estimate's value at height @p y and its 95 % interval
      * (thin, just below), each a segment ended by a gap.
      */
     void
     add_bar(const Json &estimate, const double y, PlotSeries &bars, PlotSeries &intervals)
     {
+      // The bar as thin parallel lines 0.24 high: a thick line's caps would jut out at 0.
       const double v = number_or_nan(estimate.at("value"));
-      bars.x.insert(bars.x.end(), {0.0, v, NAN});
-      bars.y.insert(bars.y.end(), {y, y, NAN});
+      for (int j = -6; j <= 6; ++j)
+        {
+          bars.x.insert(bars.x.end(), {0.0, v, NAN});
+          bars.y.insert(bars.y.end(), {y + 0.02 * j, y + 0.02 * j, NAN});
+        }
       intervals.x.insert(intervals.x.end(),
                          {number_or_nan(estimate.at("ci95_low")), number_or_nan(estimate.at("ci95_high")), NAN});
       intervals.y.insert(intervals.y.end(), {y - 0.18, y - 0.18, NAN});
@@ -37,13 +41,14 @@ namespace wearlink::io
     {
       PlotSpec    spec;
       const bool  sobol = f.at("method").get<std::string>() == "sobol-indices";
-      PlotSeries  first{sobol ? "first-order index" : "rank correlation", {}, {}, "lines", "lw 14 lc rgb '#4060a0'"};
-      PlotSeries  total{"total index", {}, {}, "lines", "lw 6 lc rgb '#c06040'"};
+      PlotSeries  first{sobol ? "first-order index" : "rank correlation", {}, {}, "lines", "lw 2 lc rgb '#4060a0'"};
+      PlotSeries  total{"total index", {}, {}, "lines", "lw 2 lc rgb '#c06040'"};
       PlotSeries  interval{"95 % interval", {}, {}, "lines", "lw 2 lc rgb 'black'"};
       std::string tics = "set ytics noenhanced (";
-      int         i    = 0;
+      int         i = 0, margin = 10; // the left margin fits the longest entry path [characters]
       for (auto it = f.at("inputs").begin(); it != f.at("inputs").end(); ++it, ++i)
         {
+          margin = std::max(margin, static_cast<int>(it.key().size()) + 2);
           tics += (i ? ", " : "") + std::string("\"") + it.key() + "\" " + std::to_string(i);
           if (sobol)
             {
@@ -54,12 +59,11 @@ namespace wearlink::io
           else
             add_bar(it.value().at("rank_correlation"), i, first, interval);
         }
-      spec.title = figure + (sobol ? " (bars: first-order and total index" : " (bar: rank correlation") +
-                   "; black: 95 % interval)";
+      spec.title   = figure;
       spec.x_label = sobol ? "Sobol index [-]" : "Spearman rank correlation [-]";
       spec.series  = sobol ? std::vector<PlotSeries>{first, total, interval} : std::vector<PlotSeries>{first, interval};
       spec.extra   = tics + ")\nset yrange [-0.7:" + std::to_string(i - 0.3) + "]\nset xrange [" +
-                   (sobol ? "-0.1" : "-1.05") + ":1.05]\nset lmargin 48\nunset key\n";
+                   (sobol ? "-0.1" : "-1.05") + ":1.05]\nset lmargin " + std::to_string(margin) + "\nunset key\n";
       return spec;
     }
   } // namespace
@@ -75,12 +79,14 @@ namespace wearlink::io
       return false;
     const unsigned int columns = panels.size() > 1 ? 2 : 1;
     const auto         rows    = static_cast<int>((panels.size() + columns - 1) / columns);
-    return plot_panels_png(panels,
-                           columns,
-                           "Sensitivity of the headline figures to the uncertain inputs",
-                           path,
-                           columns == 1 ? 1000 : 1800,
-                           std::max(500, 330 * rows));
+    return plot_panels_png(
+      panels,
+      columns,
+      "Sensitivity of the headline figures to the uncertain inputs: rank correlation (blue) or first-order "
+      "(blue) and total (red) Sobol index, 95 % interval (black)",
+      path,
+      columns == 1 ? 1000 : 1800,
+      std::max(500, 330 * rows));
   }
 
   bool
