@@ -3,6 +3,8 @@
 
 #include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "io/scene.h"
+#include "workflows/uncertain_inputs.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -15,7 +17,7 @@ namespace wearlink::app
   std::vector<OptionSpec>
   ensemble_options()
   {
-    return {{"--ensemble", true}, {"--seed", true}, {"--perturbation", true}};
+    return {{"--ensemble", true}, {"--seed", true}, {"--perturbation", true}, {"--sensitivity", true}};
   }
 
   workflows::EnsembleRequest
@@ -24,8 +26,9 @@ namespace wearlink::app
     workflows::EnsembleRequest r;
     if (!a.has("--ensemble"))
       {
-        if (a.has("--seed") || a.has("--perturbation"))
-          throw InputError("--seed and --perturbation belong to an ensemble: add --ensemble N (2 … 1000).");
+        if (a.has("--seed") || a.has("--perturbation") || a.has("--sensitivity"))
+          throw InputError(
+            "--seed, --perturbation and --sensitivity belong to an ensemble: add --ensemble N (2 … 1000).");
         return r;
       }
     const double n = a.number("--ensemble", 0);
@@ -42,6 +45,11 @@ namespace wearlink::app
       throw InputError("--perturbation " + a.value("--perturbation") +
                        ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (it is meant to be "
                        "physically tiny; default 1e-9 rad).");
+    if (a.has("--sensitivity") && a.value("--sensitivity") != "saltelli")
+      throw InputError("--sensitivity " + a.value("--sensitivity") +
+                       ": the only layout is 'saltelli' (a Saltelli design for Sobol indices); leave the option "
+                       "out for rank correlations over Sobol points.");
+    r.saltelli = a.has("--sensitivity");
     return r;
   }
 
@@ -52,7 +60,7 @@ namespace wearlink::app
     ensemble_files(const std::string &dir, const unsigned int members, const RunFiles &member_files)
     {
       RunFiles f = member_files;
-      for (const char *name : {"summary.json", "ensemble.csv", "ensemble.png"})
+      for (const char *name : {"summary.json", "ensemble.csv", "ensemble.png", "sensitivity.png", "life_cdf.png"})
         f.patterns.push_back(name);
       for (unsigned int k = 0; k < members; ++k)
         f.subdirectories.push_back(workflows::member_directory_name(k, members));
@@ -88,6 +96,8 @@ namespace wearlink::app
     o.output_directory     = o.resume ?
                                a.value("--resume") :
                                a.value("--output", "output/" + stem + (command == "life" ? "_life" : "") + "_ensemble");
+    // Every member's uncertain inputs are checked before the folder is claimed: a bad input writes nothing.
+    workflows::check_uncertain_members(o, io::read_scene(file, o.overrides));
     OutputClaim claim =
       output_claim(o.output_directory, ensemble_files(o.output_directory, o.request.members, member_files), a);
     if (o.resume)
@@ -99,7 +109,9 @@ namespace wearlink::app
     const Json summary    = workflows::run_ensemble(o, run, all_failed);
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << workflows::ensemble_table(summary) << "wrote " << o.output_directory
-                << "/summary.json, ensemble.csv, ensemble.png and member_*/\n";
+                << "/summary.json, ensemble.csv, ensemble.png"
+                << (summary.contains("sensitivity") ? ", sensitivity.png" : "")
+                << (command == "life" ? ", life.png, life_cdf.png" : "") << " and member_*/\n";
     return all_failed ? 3 : 0;
   }
 } // namespace wearlink::app

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "analysis/analyses_settings.h"
+#include "analysis/input_distributions.h"
 #include "analysis/life_criteria.h"
 #include "base/parameters.h"
 #include "contact/clearance_joint.h"
@@ -64,6 +65,8 @@ namespace wearlink::io
     wear::WearLoopSettings wear_loop;
     /** The "Life" section: the stop criteria of `wearlink life` (io/life_parameters.h). */
     analysis::LifeSettings life;
+    /** The "Uncertainty" section: the uncertain inputs of an ensemble (io/uncertainty_parameters.h). */
+    analysis::UncertaintySettings uncertainty;
 
     /** The parsed parameters (for echoing the effective scene next to the results). */
     std::unique_ptr<dealii::ParameterHandler> parameters;

@@ -8,6 +8,7 @@
 #include "contact/normal_force_law.h"
 #include "io/analyses_parameters.h"
 #include "io/life_parameters.h"
+#include "io/uncertainty_parameters.h"
 #include "wear/wear_settings.h"
 
 namespace wearlink::io
@@ -424,5 +425,6 @@ namespace wearlink::io
     declare_analyses(prm);
     wear::declare_wear_loop(prm);
     declare_life(prm);
+    declare_uncertainty(prm);
   }
 } // namespace wearlink::io

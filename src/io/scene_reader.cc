@@ -12,6 +12,7 @@
 #include "io/profile_file.h"
 #include "io/scene.h"
 #include "io/scene_declarations.h"
+#include "io/uncertainty_parameters.h"
 #include "mbs/assembly.h"
 
 #include <filesystem>
@@ -427,8 +428,9 @@ namespace wearlink::io
     check_active_required_entries(prm, file, inactive);
 
     build_scene(scene, prm, bodies, joints);
-    scene.analyses = parse_analyses(prm, scene);
-    scene.life     = parse_life(prm, scene);
+    scene.analyses    = parse_analyses(prm, scene);
+    scene.life        = parse_life(prm, scene);
+    scene.uncertainty = parse_uncertainty(prm, file, inactive);
     return scene;
   }
 

@@ -11,6 +11,8 @@
 #include "io/json_file.h"
 #include "io/life_outputs.h"
 #include "io/plot.h"
+#include "io/uncertainty_plots.h"
+#include "workflows/uncertain_inputs.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -34,9 +36,17 @@ namespace wearlink::workflows
                       ensemble.<figure>.{mean,std,ci95_low,ci95_high,members} (95 %
                       interval of the mean, Student t for the member count) for every
                       figure of the members' summaries, and the members; DIR/ensemble.csv
-                      one row per member, DIR/ensemble.png each figure's spread.
+                      one row per member, DIR/ensemble.png each figure's spread; the
+                      figures' P05 / P50 / P95 too. A scene with `subsection Uncertainty`
+                      also samples its uncertain inputs (member k: Sobol point k through
+                      each input's inverse CDF) and reports the headline figures'
+                      sensitivities to them (summary.json `sensitivity`, sensitivity.png).
   --seed S            seed of the perturbations (default 1): the same seed, the same members
   --perturbation RAD  σ of the initial-angle shifts (default 1e-9 rad)
+  --sensitivity saltelli
+                      lay the uncertain inputs out as a Saltelli design (N = n (inputs + 2)
+                      members): first-order and total Sobol indices from n ≥ 64 base rows,
+                      rank correlations below; default: Sobol points and rank correlations
 )";
   }
 
@@ -152,7 +162,7 @@ namespace wearlink::workflows
       return {{"criteria", criteria}, {"headline", life.value("first_criterion", Json())}};
     }
 
-    /** Mean, std, 95 % interval of the mean and P10 / P50 / P90 of @p values. */
+    /** Mean, std, 95 % interval of the mean and P05 / P10 / P50 / P90 / P95 of @p values. */
     Json
     spread_of(const std::vector<double> &values)
     {
@@ -161,9 +171,11 @@ namespace wearlink::workflows
               {"std", number_or_null(f.std)},
               {"ci95_low", number_or_null(f.ci95_low)},
               {"ci95_high", number_or_null(f.ci95_high)},
+              {"p05", number_or_null(analysis::percentile(values, 0.05))},
               {"p10", number_or_null(analysis::percentile(values, 0.1))},
               {"p50", number_or_null(analysis::percentile(values, 0.5))},
-              {"p90", number_or_null(analysis::percentile(values, 0.9))}};
+              {"p90", number_or_null(analysis::percentile(values, 0.9))},
+              {"p95", number_or_null(analysis::percentile(values, 0.95))}};
     }
 
     /** One criterion over the members' life blocks @p lives: how many decided it, and the spread of their lives. */
@@ -255,9 +267,17 @@ namespace wearlink::workflows
         {
           io::Scene                     base = io::read_scene(o.scene_file, o.overrides);
           std::map<std::string, double> shifts;
-          const auto                    mine  = member_overrides(base, o.overrides, o.request, k, &shifts);
+          std::map<std::string, double> inputs;
+          const auto                    mine  = with_uncertain_inputs(base,
+                                                  member_overrides(base, o.overrides, o.request, k, &shifts),
+                                                  o.request,
+                                                  k,
+                                                  shifts,
+                                                  &inputs);
           io::Scene                     scene = io::read_scene(o.scene_file, mine);
           m["perturbation_rad"]               = shifts;
+          if (!inputs.empty())
+            m["inputs"] = inputs;
           Json summary;
           if (o.resume && std::filesystem::exists(dir + "/summary.json"))
             summary = io::read_json_file(dir + "/summary.json");
@@ -324,11 +344,20 @@ namespace wearlink::workflows
           figures.push_back(m.at("figures").get<std::map<std::string, double>>());
       Json out = Json::object();
       for (const auto &[name, f] : analysis::ensemble_figures(figures))
-        out[name] = {{"mean", f.mean},
-                     {"std", f.std},
-                     {"ci95_low", f.ci95_low},
-                     {"ci95_high", f.ci95_high},
-                     {"members", f.members}};
+        {
+          std::vector<double> values;
+          for (const auto &m : figures)
+            if (m.count(name))
+              values.push_back(m.at(name));
+          out[name] = {{"mean", f.mean},
+                       {"std", f.std},
+                       {"ci95_low", f.ci95_low},
+                       {"ci95_high", f.ci95_high},
+                       {"p05", number_or_null(analysis::percentile(values, 0.05))},
+                       {"p50", number_or_null(analysis::percentile(values, 0.5))},
+                       {"p95", number_or_null(analysis::percentile(values, 0.95))},
+                       {"members", f.members}};
+        }
       return out;
     }
 
@@ -346,6 +375,12 @@ namespace wearlink::workflows
           drivers.push_back(it.key());
       for (const auto &d : drivers)
         os << ",perturbation_" << d << "_rad";
+      std::vector<std::string> inputs; // the uncertain inputs' entry paths, in the scene's order
+      if (summary.contains("uncertainty"))
+        for (const auto &in : summary.at("uncertainty").at("inputs"))
+          inputs.push_back(in.at("entry").get<std::string>());
+      for (const auto &e : inputs)
+        os << ',' << e;
       for (auto it = stats.begin(); it != stats.end(); ++it)
         os << ',' << it.key();
       os << '\n' << std::setprecision(17);
@@ -355,6 +390,8 @@ namespace wearlink::workflows
              << json_number(m.at("rank")) << ',' << json_number(m.at("wall_time_s"));
           for (const auto &d : drivers)
             os << ',' << (m.contains("perturbation_rad") ? json_number(m.at("perturbation_rad").at(d)) : NAN);
+          for (const auto &e : inputs)
+            os << ',' << (m.contains("inputs") ? json_number(m.at("inputs").at(e)) : NAN);
           for (auto it = stats.begin(); it != stats.end(); ++it)
             os << ','
                << (m.contains("figures") && m.at("figures").contains(it.key()) ?
@@ -437,6 +474,34 @@ namespace wearlink::workflows
     }
   } // namespace
 
+  namespace
+  {
+    /** DIR/summary.json, ensemble.csv and the plots of the members that ran (rank 0). */
+    void
+    write_ensemble_files(const EnsembleOptions                      &o,
+                         const Json                                 &summary,
+                         const std::vector<Json>                    &members,
+                         const std::vector<analysis::CriterionSpec> &criteria)
+    {
+      const auto ok = static_cast<std::size_t>(json_number(summary.at("members_ok")));
+      make_output_directory(o.output_directory);
+      write_file_atomically(o.output_directory + "/summary.json", summary.dump(2) + "\n");
+      write_file_atomically(o.output_directory + "/ensemble.csv", members_csv(summary));
+      if (ok == 0)
+        return;
+      plot_spread(summary, o.output_directory + "/ensemble.png");
+      if (o.command == "life")
+        {
+          plot_life_band(summary, criteria, o.output_directory + "/life.png");
+          io::plot_life_cdf(decided_revolutions(members),
+                            o.output_directory + "/life_cdf.png",
+                            "Life criteria of " + std::to_string(ok) + " members: empirical CDF of the revolutions");
+        }
+      if (summary.contains("sensitivity"))
+        io::plot_sensitivity(summary.at("sensitivity"), o.output_directory + "/sensitivity.png");
+    }
+  } // namespace
+
   Json
   run_ensemble(const EnsembleOptions &o, const MemberRun &run, bool &all_failed)
   {
@@ -448,11 +513,16 @@ namespace wearlink::workflows
       throw InputError("--ensemble " + std::to_string(o.request.members) +
                        ": an ensemble needs at least 2 members (2 … 1000) for a spread.");
     std::vector<analysis::CriterionSpec> criteria; // of a life ensemble, for its life.png
+    analysis::UncertaintySettings        uncertainty;
+    Json                                 uncertainty_block;
     {
       io::Scene base = io::read_scene(o.scene_file, o.overrides);
       member_overrides(base, o.overrides, o.request, 0); // the scene can be perturbed (same on every rank)
+      check_uncertain_members(o, base);                  // every member's inputs are accepted
       if (o.command == "life")
         criteria = analysis::active_criteria(base.life);
+      uncertainty       = base.uncertainty;
+      uncertainty_block = uncertainty_summary(base, o.request);
     }
     if (rank == 0 && o.progress)
       std::cerr << "[wearlink] ensemble of " << o.request.members << " members (seed " << o.request.seed
@@ -477,18 +547,17 @@ namespace wearlink::workflows
     summary["ensemble"]     = statistics_of(members);
     if (o.command == "life")
       summary["ensemble_life"] = ensemble_life(members);
+    if (!uncertainty.inputs.empty())
+      {
+        summary["uncertainty"] = uncertainty_block;
+        summary["sensitivity"] = ensemble_sensitivity(uncertainty, o.request, summary["ensemble"], members);
+      }
     std::size_t ok = 0;
     for (const auto &m : members)
       ok += m.at("status").get<std::string>() == "ok" ? 1 : 0;
     summary["members_ok"] = ok;
     all_failed            = ok == 0;
-    make_output_directory(o.output_directory);
-    write_file_atomically(o.output_directory + "/summary.json", summary.dump(2) + "\n");
-    write_file_atomically(o.output_directory + "/ensemble.csv", members_csv(summary));
-    if (ok > 0)
-      plot_spread(summary, o.output_directory + "/ensemble.png");
-    if (ok > 0 && o.command == "life")
-      plot_life_band(summary, criteria, o.output_directory + "/life.png");
+    write_ensemble_files(o, summary, members, criteria);
     return summary;
   }
 
@@ -510,6 +579,8 @@ namespace wearlink::workflows
       }
     if (summary.contains("ensemble_life"))
       os << ensemble_life_table(summary.at("ensemble_life"));
+    if (summary.contains("sensitivity"))
+      os << sensitivity_table(summary.at("sensitivity"));
     os << json_number(summary.at("members_ok")) << " of " << json_number(summary.at("members_count"))
        << " members ran; seed " << json_number(summary.at("seed")) << ", " << json_number(summary.at("mpi_ranks"))
        << " MPI rank(s), " << std::setprecision(4) << json_number(summary.at("wall_time_s")) << " s wall\n";

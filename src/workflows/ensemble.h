@@ -16,15 +16,20 @@
 // Each member is a complete run (wear or life) into DIR/member_<k>/ with its own files
 // and checkpoint; member k runs on rank k mod N_ranks, and its result depends on the
 // scene, the seed and k only. Rank 0 gathers the members' summaries and writes, each
-// atomically: DIR/summary.json (`ensemble.<figure>.{mean,std,ci95_low,ci95_high,members}`,
+// atomically: DIR/summary.json (`ensemble.<figure>.{mean,std,ci95_low,ci95_high,p05,p50,p95,
+// members}`,
 // the members with their perturbations and figures), DIR/ensemble.csv (one row per
 // member) and DIR/ensemble.png (each figure's members relative to their mean, with the
 // 95 % interval of the mean). A member that fails (a numerical failure) is reported
 // with its message; the statistics are over the members that ran. A life ensemble adds
 // `ensemble_life` (each criterion's revolutions and hours over the members that decided
-// it: mean, std, 95 % interval of the mean, P10 / P50 / P90; the ensemble's life, the
+// it: mean, std, 95 % interval of the mean, P05 / P10 / P50 / P90 / P95; the ensemble's life, the
 // smallest P10 of the criteria every member decided) and DIR/life.png (the band of the
-// members' criteria against revolutions, from their life_history.csv). All of it is
+// members' criteria against revolutions, from their life_history.csv) and DIR/life_cdf.png
+// (the empirical CDF of each decided criterion's revolutions). A scene with uncertain
+// inputs (`subsection Uncertainty`) adds their sampled values to each member and the
+// sensitivities of the headline figures (workflows/uncertain_inputs.h, DIR/sensitivity.png).
+// All of it is
 // computed on rank 0 from the members' summaries and files, which depend on the seed and
 // the member index only: the same on any number of ranks.
 #pragma once
@@ -46,6 +51,8 @@ namespace wearlink::workflows
     unsigned int  members      = 0;    ///< N ≥ 2
     std::uint64_t seed         = 1;    ///< of the perturbations
     double        perturbation = 1e-9; ///< σ of each angle driver's initial angle [rad]
+    /** --sensitivity saltelli: the uncertain inputs laid out as a Saltelli design (uncertain_inputs.h). */
+    bool saltelli = false;
   };
 
   /** The text `--help` shows about --ensemble, --seed and --perturbation. */

@@ -11,7 +11,8 @@
 //    statistics.
 //  - The statistics are the textbook ones: mean of the members, sample standard
 //    deviation, 95 % interval of the mean with Student's t for 3 members,
-//    t(0.975, 2) = 4.303 (table value, to its 3 decimals).
+//    t(0.975, 2) = 4.303 (table value, to its 3 decimals); P05 / P50 / P95 of the
+//    members' figures by type-7 interpolation, identical on 1 and 2 ranks.
 //  - A life ensemble (`life --ensemble 4` of tests/scenes/life_journal.prm, ~1 s a member)
 //    gives the same `ensemble_life` on 1 and 2 ranks; its percentiles are those of the
 //    members' own summaries (type 7: P10 = x₁ + 0.3 (x₂ − x₁) for 4 members), its life is
@@ -91,6 +92,10 @@ TEST(Ensemble, SeededStatisticsAreReproducibleAndIndependentOfTheRankCount)
   const double s =
     std::sqrt(((v[0] - mean) * (v[0] - mean) + (v[1] - mean) * (v[1] - mean) + (v[2] - mean) * (v[2] - mean)) / 2);
   EXPECT_NEAR(json_number(f.at("mean")), mean, 1e-14 * mean);
+  std::sort(v.begin(), v.end()); // 3 members: P05 = x₁ + 0.1 (x₂ − x₁), P50 = x₂, P95 = x₂ + 0.9 (x₃ − x₂)
+  EXPECT_DOUBLE_EQ(json_number(f.at("p05")), v[0] + 0.1 * (v[1] - v[0]));
+  EXPECT_DOUBLE_EQ(json_number(f.at("p50")), v[1]);
+  EXPECT_DOUBLE_EQ(json_number(f.at("p95")), v[1] + 0.9 * (v[2] - v[1]));
   EXPECT_NEAR(json_number(f.at("std")), s, 1e-12 * mean);
   EXPECT_NEAR(json_number(f.at("ci95_high")) - mean, 4.303 * s / std::sqrt(3.0), 5e-4 * s / std::sqrt(3.0));
   EXPECT_GT(s, 1e-3 * mean) << "the members did not part: the perturbation does not reach the dynamics";
@@ -160,6 +165,10 @@ TEST(Ensemble, LifeStatisticsAreTheSameOnOneAndTwoRanks)
   const Json &bushing = life.at("criteria").at("bushing_mass_loss");
   EXPECT_LE(json_number(bushing.at("revolutions").at("p10")), json_number(bushing.at("revolutions").at("p90")));
   EXPECT_TRUE(std::filesystem::exists(serial + "/life.png")) << "the ensemble's band of the criteria";
+  EXPECT_TRUE(std::filesystem::exists(serial + "/life_cdf.png")) << "the CDF of the decided criteria's revolutions";
+  const Json &pin = life.at("criteria").at("pin_mass_loss").at("revolutions");
+  EXPECT_DOUBLE_EQ(json_number(pin.at("p05")), type7(n, 0.05));
+  EXPECT_DOUBLE_EQ(json_number(pin.at("p95")), type7(n, 0.95));
   EXPECT_NE(r1.output.find("ensemble life: pin_mass_loss, P10"), std::string::npos) << r1.output;
 }
 

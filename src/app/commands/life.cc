@@ -21,7 +21,7 @@ namespace wearlink::app
     const std::string help_text =
       std::string(R"(wearlink life SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
 wearlink life SCENE.prm --resume DIR [--set ...] [--quiet]
-[mpirun -np R] wearlink life SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [...]
+[mpirun -np R] wearlink life SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [--sensitivity saltelli] [...]
 
 When is the joint worn out? Runs the wear loop of a wear scene (section Wear: the
 iterations, their extrapolation, the pressure models; see `wearlink run --help`) until
@@ -163,7 +163,7 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
       const std::string file  = a.positional[0];
       io::Scene         scene = io::read_scene(file, a.all("--set"));
       io::check_life_criteria(scene); // before the folder is claimed: a bad input writes nothing
-      if (a.has("--ensemble") || a.has("--seed") || a.has("--perturbation"))
+      if (a.has("--ensemble") || a.has("--seed") || a.has("--perturbation") || a.has("--sensitivity"))
         {
           ensemble_request(a); // a bad value is refused before anything runs
           return run_life_ensemble(file, a);

@@ -46,7 +46,7 @@ namespace wearlink::app
     const std::string help_text =
       std::string(R"(wearlink run SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
 wearlink run SCENE.prm --resume DIR [--set ...] [--quiet]
-wearlink run SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [--output DIR] [...]
+wearlink run SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [--sensitivity saltelli] [--output DIR] [...]
 wearlink run --validate SCENE.prm [--set ...]
 wearlink run --print-parameters [SCENE.prm]
 
@@ -279,7 +279,7 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
           return 0;
         }
 
-      if (a.has("--ensemble") || a.has("--seed") || a.has("--perturbation"))
+      if (a.has("--ensemble") || a.has("--seed") || a.has("--perturbation") || a.has("--sensitivity"))
         {
           ensemble_request(a); // a bad value is refused before anything runs
           return run_ensemble_scene(file, a, workflows::has_wear(scene));
