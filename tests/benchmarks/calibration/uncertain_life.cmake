@@ -2,7 +2,8 @@
 # wear coefficients uncertain (lognormal about the assumed 4.6e-14 m³/(N m), σ_log 0.3),
 # timed. cmake -DWEARLINK=... -DMPIRUN=... -DSOURCE_DIR=... -DOUTPUT_DIR=... -P uncertain_life.cmake
 file(REMOVE_RECURSE "${OUTPUT_DIR}")
-set(inputs "Joint A/Clearance/archard/Bushing wear coefficient: lognormal(4.6e-14, 0.3)\;")
+string(ASCII 59 semicolon) # one argument: a quoted ';' would stay escaped
+set(inputs "Joint A/Clearance/archard/Bushing wear coefficient: lognormal(4.6e-14, 0.3)${semicolon}")
 string(APPEND inputs " Joint B/Clearance/archard/Bushing wear coefficient: lognormal(4.6e-14, 0.3)")
 string(TIMESTAMP start "%s" UTC)
 execute_process(COMMAND ${MPIRUN} -np 2 ${WEARLINK} life ${SOURCE_DIR}/params/nine_bar_life.prm --ensemble 64
