@@ -127,6 +127,27 @@ namespace wearlink::analysis
     }
   } // namespace
 
+  WornArea
+  measured_worn_area(const PolarTrace &measured, const PolarTrace &unworn, const bool bore, const double sigma)
+  {
+    const auto         &a = measured.angle, &r = measured.radius;
+    const std::size_t   n = a.size();
+    std::vector<double> r0(n);
+    for (std::size_t k = 0; k < n; ++k)
+      r0[k] = unworn.at(a[k]);
+    WornArea out;
+    out.area        = (bore ? 1 : -1) * (polygon_area(a, r) - polygon_area(a, r0));
+    double variance = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      {
+        const std::size_t next = (k + 1) % n, prev = (k + n - 1) % n;
+        const double      dA = 0.5 * (r[next] * std::sin(a[next] - a[k]) + r[prev] * std::sin(a[k] - a[prev]));
+        variance += dA * dA;
+      }
+    out.sigma = sigma * std::sqrt(variance);
+    return out;
+  }
+
   TraceDifference
   trace_difference(const PolarTrace &measured, const PolarTrace &predicted, const double rotation)
   {

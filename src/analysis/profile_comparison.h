@@ -116,6 +116,24 @@ namespace wearlink::analysis
     std::vector<double> value;
   };
 
+  /** A worn area [m²] with its 1σ [m²]. */
+  struct WornArea
+  {
+    double area  = 0;
+    double sigma = 0;
+  };
+
+  /**
+   * The worn area of the measured trace @p measured against the unworn surface
+   * @p unworn (bore: r − r₀ wears open; pin: r₀ − r), as the difference of the polygons'
+   * areas on the measured angles, with its 1σ for independent per-point errors @p sigma
+   * [m] (σ_A² = Σ_k (∂A/∂r_k)² σ²). The unworn surface is read at the measured angles
+   * as given: for a round one (the usual fresh surface) the area does not depend on the
+   * trace's unknown angular origin.
+   */
+  WornArea
+  measured_worn_area(const PolarTrace &measured, const PolarTrace &unworn, bool bore, double sigma);
+
   struct ProfileComparison
   {
     Alignment   alignment;

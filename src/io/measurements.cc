@@ -118,12 +118,54 @@ namespace wearlink::io
 
   namespace
   {
+    /**
+     * The mass loss [mg] of @p surface ("pin" | "bushing") that the measured profile @p p
+     * shows against the scene's unworn surface (see the top of measurements.h).
+     */
+    SurfaceMeasurement
+    profile_mass_loss(const ProfileMeasurement &p,
+                      const std::string        &surface,
+                      const Scene              &scene,
+                      const std::string        &file,
+                      const Layout             &layout)
+    {
+      const contact::ClearanceJoint *joint = nullptr;
+      for (const auto *j : scene.clearance_joints)
+        if (j->name() == p.joint)
+          joint = j;
+      const wear::JointWear *wear = nullptr;
+      for (const auto &w : scene.wear)
+        if (w->joint == p.joint)
+          wear = w.get();
+      const bool   pin     = surface == "pin";
+      const auto  &g       = joint->get_description().geometry;
+      const auto   unworn  = analysis::PolarTrace::of_profile(pin ? g.pin : g.bore);
+      const auto   area    = analysis::measured_worn_area(p.trace, unworn, !pin, p.uncertainty);
+      const double density = pin ? wear->archard.pin_density : wear->archard.bushing_density;
+      const double to_mg   = 1e6 * density * g.axial_length; // m² → mg
+      if (!(area.area > 0))
+        {
+          const std::string path = "Joint " + p.joint + (pin ? "/Pin profile file" : "/Bore profile file");
+          throw InputError(where(file, layout.lines.count(path) ? layout.lines.at(path) : 0u) + "'" + path + "' (" +
+                           p.file + ") shows a worn area of " + format_number(area.area, 4) + " m² against the " +
+                           "scene's unworn " + p.surface +
+                           ": nothing worn to fit. Check the file's units (m) and "
+                           "surface, or give a mass loss instead.");
+        }
+      return {p.joint, surface, p.revolutions, to_mg * area.area, to_mg * area.sigma, p.file};
+    }
+  } // namespace
+
+  namespace
+  {
     /** The measured surfaces of joint @p joint (checked). */
     std::vector<SurfaceMeasurement>
-    joint_measurements(dealii::ParameterHandler &prm,
-                       const std::string        &file,
-                       const Layout             &layout,
-                       const std::string        &joint)
+    joint_measurements(dealii::ParameterHandler              &prm,
+                       const std::string                     &file,
+                       const Layout                          &layout,
+                       const std::string                     &joint,
+                       const std::vector<ProfileMeasurement> &profiles,
+                       const Scene                           &scene)
     {
       const auto line_of = [&](const std::string &entry) {
         const std::string path = "Joint " + joint + "/" + entry;
@@ -143,6 +185,9 @@ namespace wearlink::io
             {
               if (!std::isnan(uncertainty))
                 fail(name + " uncertainty", "is given without '" + name + "'.");
+              for (const auto &p : profiles)
+                if ((p.surface == "pin") == (surface == "pin"))
+                  out.push_back(profile_mass_loss(p, surface, scene, file, layout));
               continue;
             }
           if (!(loss > 0))
@@ -153,12 +198,12 @@ namespace wearlink::io
                    "comes from the chaos of the dynamics alone).");
           if (!(uncertainty >= 0))
             fail(name + " uncertainty", "is " + format_number(uncertainty, 6) + "; it must be ≥ 0 [mg, 1σ].");
-          out.push_back({joint, surface, revolutions, loss, uncertainty});
+          out.push_back({joint, surface, revolutions, loss, uncertainty, ""});
         }
       if (out.empty())
         throw InputError(where(file, layout.lines.empty() ? 0u : line_of("Revolutions")) + "'Joint " + joint +
                          "' has no measurement; set 'Pin mass loss' or 'Bushing mass loss' [mg] with its "
-                         "uncertainty (a profile alone is compared, not fitted), or remove the subsection.");
+                         "uncertainty, or a profile file, or remove the subsection.");
       if (std::isnan(revolutions))
         fail("Revolutions", "is not set; give the mechanism revolutions of the test (> 0).");
       if (!(revolutions > 0))
@@ -236,10 +281,11 @@ namespace wearlink::io
                            "); give each joint's measurements in one subsection.");
     for (const auto &[joint, line] : layout.joints)
       {
-        for (auto &s : joint_measurements(prm, file, layout, joint))
+        const double revolutions = number(prm, file, layout, joint, "Revolutions");
+        const auto   profiles    = joint_profiles(prm, file, layout, joint, revolutions);
+        for (auto &s : joint_measurements(prm, file, layout, joint, profiles, scene))
           m.surfaces.push_back(std::move(s));
-        for (auto &p : joint_profiles(prm, file, layout, joint, m.surfaces.back().revolutions))
-          m.profiles.push_back(std::move(p));
+        m.profiles.insert(m.profiles.end(), profiles.begin(), profiles.end());
       }
     if (m.surfaces.empty())
       throw InputError("In " + file + ": no measurement. Give, per wearing joint J of " + scene.file +

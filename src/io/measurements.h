@@ -13,12 +13,18 @@
 //     set Profile uncertainty           = 2e-6    # [m, 1σ per point], > 0 (with a profile)
 //     set Profile angle search          = 180     # [deg], 0 … 180 (default 180)
 //   end
-// Profiles are not fitted: they are compared with the worn surfaces a run at the
+// A surface with a measured mass loss is fitted on it. A surface with only a profile is
+// fitted on the profile's worn volume: its worn area against the scene's unworn surface
+// (analysis::measured_worn_area) × the joint's axial length × the surface's density, as
+// a mass loss [mg] with its 1σ from the per-point uncertainty (independent points). The
+// run's own mass loss is Archard's volume × density, the same quantity to second order
+// in depth / radius. Every profile is also compared with the worn surface a run at the
 // calibrated coefficients predicts (analysis/profile_comparison.h: aligned within the
 // angle search, RMS difference, worn areas), as a check of the calibration.
 // A joint that is not a joint of the scene, or does not wear (Wear law = none), an entry
 // that is not a finite number, a revolution count ≤ 0, a negative uncertainty, a mass loss
-// ≤ 0 or without its uncertainty, a joint without any mass loss and a file without any
+// ≤ 0 or without its uncertainty, a joint without any mass loss or profile, a profile whose
+// worn area is not positive and a file without any
 // measurement are InputErrors naming the file, the line (where it is one line) and the
 // entry. Top-level `include` lines are not followed by the joint pre-scan: give each
 // joint's subsection in the file itself.
@@ -40,9 +46,10 @@ namespace wearlink::io
     double      revolutions = 0; ///< of the test [-]
     double      mass_loss   = 0; ///< [mg]
     double      uncertainty = 0; ///< of the mass loss, 1σ [mg]
+    std::string from_profile;    ///< the profile file it was derived from ("" if weighed)
   };
 
-  /** One measured worn surface (compared, not fitted). */
+  /** One measured worn surface (fitted if its surface has no mass loss; always compared). */
   struct ProfileMeasurement
   {
     std::string          joint;

@@ -280,6 +280,8 @@ namespace wearlink::workflows
                                                {"predicted_members", values},
                                                {"relative_residual_of_mean", f.mean / meas.mass_loss - 1},
                                                {"predicted_at_value", f.mean * std::pow(k / fit.k[s], fit.slope[s])}};
+      j[meas.surface + "_mass_loss_mg"]["measured_by"] =
+        meas.from_profile.empty() ? std::string("weighing") : "the worn area of " + meas.from_profile;
       j[meas.surface + "_secant"] = {{"runs", secant}, {"relative_residual", fit.predicted[s] / meas.mass_loss - 1}};
     }
 
@@ -413,7 +415,7 @@ namespace wearlink::workflows
   Json
   calibrate(CalibrationProblem &problem, const CalibrationOptions &options)
   {
-    Calibration c{problem, options, {}};
+    Calibration c{problem, options, {}, 0, true, Stopwatch()};
     c.root = rank_and_size().first == 0;
     for (const auto &m : c.surfaces())
       if (std::find(c.revolutions.begin(), c.revolutions.end(), m.revolutions) == c.revolutions.end())

@@ -170,6 +170,55 @@ TEST(CalibrateCommand, RecoversKnownCoefficientsFromTheToolsOwnPrediction)
   EXPECT_EQ(check.exit_status, 0) << check.output;
 }
 
+// A surface that was not weighed but traced: the bore's worn profile alone (bore_B.csv of
+// the true run, 0.1 µm per point) gives the bushing's mass loss through its worn area ×
+// length × density (the weighed loss to 0.1 %: the two differ by terms of order depth /
+// radius), and the bushing's coefficient is recovered inside its interval; the pin, not
+// measured, keeps no coefficient.
+TEST(CalibrateCommand, RecoversTheBushingCoefficientFromAWornBoreProfileAlone)
+{
+  const std::string        dir   = fresh_directory("calibration_profile");
+  std::vector<std::string> truth = {"run",
+                                    source_path("params/slider_crank_wear.prm"),
+                                    "--output",
+                                    dir + "/truth",
+                                    "--quiet",
+                                    "--set",
+                                    "Joint B/Clearance/archard/Pin wear coefficient=2.3e-14",
+                                    "--set",
+                                    "Joint B/Clearance/archard/Bushing wear coefficient=9.2e-14"};
+  for (const auto &c : cut)
+    truth.insert(truth.end(), {"--set", c});
+  ASSERT_EQ(run_wearlink(truth).exit_status, 0);
+  const double weighed = json_number(
+    io::read_json_file(dir + "/truth/summary.json").at("clearance_joints").at("B").at("mass_loss_bushing_mg"));
+  {
+    std::ofstream out(dir + "/measurements.prm");
+    out << "subsection Joint B\n  set Revolutions = 3000\n  set Bore profile file = truth/bore_B.csv\n"
+           "  set Profile uncertainty = 1e-7\n  set Profile angle search = 10\nend\n";
+  }
+  std::vector<std::string> args = {"calibrate",
+                                   source_path("params/slider_crank_wear.prm"),
+                                   "--measurements",
+                                   dir + "/measurements.prm",
+                                   "--ensemble",
+                                   "3",
+                                   "--output",
+                                   dir + "/out",
+                                   "--quiet"};
+  for (const auto &c : cut)
+    args.insert(args.end(), {"--set", c});
+  const auto run = run_wearlink(args);
+  ASSERT_EQ(run.exit_status, 0) << run.output;
+  const Json  r = io::read_json_file(dir + "/out/calibration.json");
+  const Json &m = r.at("joints").at("B").at("bushing_mass_loss_mg");
+  EXPECT_NEAR(json_number(m.at("measured")) / weighed, 1, 1e-3) << m.dump(1);
+  EXPECT_GT(json_number(m.at("measured_uncertainty")), 0);
+  EXPECT_NE(m.at("measured_by").get<std::string>().find("bore_B.csv"), std::string::npos);
+  EXPECT_TRUE(covers(r, "bushing", true_bushing)) << r.dump(1);
+  EXPECT_FALSE(r.at("joints").at("B").contains("pin_wear_coefficient"));
+}
+
 TEST(CalibrateCommand, SerialAndTwoRanksAgree)
 {
   if (std::string(WEARLINK_MPIEXEC).empty())

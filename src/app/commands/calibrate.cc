@@ -24,8 +24,8 @@ namespace wearlink::app
 
 Identifies the Archard wear coefficients ('Joint J/Clearance/archard/Pin wear
 coefficient' and 'Bushing wear coefficient', m^3/(N m)) of the scene's wearing joints
-from measured mass losses, by whole wear runs (the worn gap feeds back on the
-dynamics).
+from measured mass losses or worn profiles, by whole wear runs (the worn gap feeds
+back on the dynamics).
 
 MEAS.prm (deal.II parameter syntax, like a scene), per measured joint J:
   subsection Joint J
@@ -40,9 +40,12 @@ MEAS.prm (deal.II parameter syntax, like a scene), per measured joint J:
     set Profile uncertainty           = 2e-6   # [m, 1 sigma per point], > 0
     set Profile angle search          = 180    # [deg], 0 ... 180 (default 180)
   end
-Profiles are not fitted: after the calibration one run at the calibrated coefficients
-is compared with them (aligned within the angle search, as `wearlink compare-profile`
-does): RMS difference, RMS / Profile uncertainty, worn areas, deepest wear.
+A surface with a profile but no mass loss is fitted on the profile's worn volume: its
+worn area against the scene's unworn surface x the joint's axial length x the
+surface's density, as a mass loss with the 1 sigma of independent per-point errors.
+After the calibration one run at the calibrated coefficients is compared with every
+profile (aligned within the angle search, as `wearlink compare-profile` does): RMS
+difference, RMS / Profile uncertainty, worn areas, deepest wear.
 Each forward run is the scene with the coefficients set and its wear loop stretched to
 the measured revolutions (fixed extrapolation: 'Wear/Extrapolation factor' = R /
 (cycles per iteration x iterations); adaptive: 'Wear/Target revolutions' = R).
