@@ -99,11 +99,11 @@ TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemoved)
   fs::create_directories(dir + "/fe");
   const std::string dead = std::to_string(dead_pid());
   const std::string mine = std::to_string(::getpid());
-  for (const std::string f : {"/.summary.json.partial-" + dead + ".json",
-                              "/fe/.mesh_A_1.msh.partial-" + dead + ".msh",
-                              "/.time_series.csv.partial-" + mine + ".csv",
-                              "/notes.partial-" + dead + ".txt", // not a name wearlink makes
-                              std::string("/summary.json")})
+  for (const std::string &f : {"/.summary.json.partial-" + dead + ".json",
+                               "/fe/.mesh_A_1.msh.partial-" + dead + ".msh",
+                               "/.time_series.csv.partial-" + mine + ".csv",
+                               "/notes.partial-" + dead + ".txt", // not a name wearlink makes
+                               std::string("/summary.json")})
     std::ofstream(dir + f) << "x";
   const auto removed = remove_stale_partials(dir);
   EXPECT_EQ(removed.size(), 2u);
