@@ -70,6 +70,27 @@ namespace
     return {h.volume_pin * a.pin_density * 1e6, h.volume_bore * a.bushing_density * 1e6};
   }
 
+  /** The "test rig": `wearlink run` of the cut scene with the true coefficients into DIR/truth. */
+  ::testing::AssertionResult
+  run_truth(const std::string &dir)
+  {
+    std::vector<std::string> args = {"run",
+                                     source_path("params/slider_crank_wear.prm"),
+                                     "--output",
+                                     dir + "/truth",
+                                     "--quiet",
+                                     "--set",
+                                     "Joint B/Clearance/archard/Pin wear coefficient=2.3e-14",
+                                     "--set",
+                                     "Joint B/Clearance/archard/Bushing wear coefficient=9.2e-14"};
+    for (const auto &c : cut)
+      args.insert(args.end(), {"--set", c});
+    const auto r = run_wearlink(args);
+    if (r.exit_status != 0)
+      return ::testing::AssertionFailure() << r.output;
+    return ::testing::AssertionSuccess();
+  }
+
   /** A measurements file of joint B after 3000 revolutions. */
   std::string
   measurements(const std::string &dir,
@@ -101,20 +122,8 @@ namespace
 TEST(CalibrateCommand, RecoversKnownCoefficientsFromTheToolsOwnPrediction)
 {
   // The "test rig": a wear run with the true coefficients, its mass losses and worn surfaces.
-  const std::string        dir   = fresh_directory("calibration_recovery");
-  std::vector<std::string> truth = {"run",
-                                    source_path("params/slider_crank_wear.prm"),
-                                    "--output",
-                                    dir + "/truth",
-                                    "--quiet",
-                                    "--set",
-                                    "Joint B/Clearance/archard/Pin wear coefficient=2.3e-14",
-                                    "--set",
-                                    "Joint B/Clearance/archard/Bushing wear coefficient=9.2e-14"};
-  for (const auto &c : cut)
-    truth.insert(truth.end(), {"--set", c});
-  const auto rig = run_wearlink(truth);
-  ASSERT_EQ(rig.exit_status, 0) << rig.output;
+  const std::string dir = fresh_directory("calibration_recovery");
+  ASSERT_TRUE(run_truth(dir));
   const Json   summary = io::read_json_file(dir + "/truth/summary.json");
   const Json  &b       = summary.at("clearance_joints").at("B");
   const double pin = json_number(b.at("mass_loss_pin_mg")), bushing = json_number(b.at("mass_loss_bushing_mg"));
@@ -177,19 +186,8 @@ TEST(CalibrateCommand, RecoversKnownCoefficientsFromTheToolsOwnPrediction)
 // measured, keeps no coefficient.
 TEST(CalibrateCommand, RecoversTheBushingCoefficientFromAWornBoreProfileAlone)
 {
-  const std::string        dir   = fresh_directory("calibration_profile");
-  std::vector<std::string> truth = {"run",
-                                    source_path("params/slider_crank_wear.prm"),
-                                    "--output",
-                                    dir + "/truth",
-                                    "--quiet",
-                                    "--set",
-                                    "Joint B/Clearance/archard/Pin wear coefficient=2.3e-14",
-                                    "--set",
-                                    "Joint B/Clearance/archard/Bushing wear coefficient=9.2e-14"};
-  for (const auto &c : cut)
-    truth.insert(truth.end(), {"--set", c});
-  ASSERT_EQ(run_wearlink(truth).exit_status, 0);
+  const std::string dir = fresh_directory("calibration_profile");
+  ASSERT_TRUE(run_truth(dir));
   const double weighed = json_number(
     io::read_json_file(dir + "/truth/summary.json").at("clearance_joints").at("B").at("mass_loss_bushing_mg"));
   {
