@@ -7,6 +7,7 @@
 #include "base/numbers.h"
 #include "base/text.h"
 #include "wear/depth_measures.h"
+#include "wear/wear_step.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,24 +24,18 @@ namespace wearlink::wear
   } // namespace
 
   // Periodic Gaussian of standard deviation σ = λ √(2 ln 2) / (2π) (transfer
-  // exp(−q²σ²/2) = 1/2 at q = 2π/λ), in samples of spacing 2πR/n (R the mean of
-  // @p radii), truncated at 4σ and renormalized, then scaled so that Σ h_k R_k (the
-  // volume over L Δψ) is the unfiltered one: a circular convolution whose weights sum to
-  // 1 keeps Σ h_k, and the radii of a worn profile differ from one area to the next.
+  // exp(−q²σ²/2) = 1/2 at q = 2π/λ), in samples of spacing 2πR/n, truncated at 4σ and
+  // renormalized: a circular convolution whose weights sum to 1, which keeps Σ h_k.
   std::vector<double>
-  smoothed(const std::vector<double> &depth, const double wavelength, const std::vector<double> &radii)
+  low_pass(const std::vector<double> &values, const double wavelength, const double radius)
   {
-    const auto n = static_cast<long>(depth.size());
-    if (!(wavelength > 0) || n < 3 || radii.size() != depth.size())
-      return depth;
-    double mean_radius = 0;
-    for (const double r : radii)
-      mean_radius += r / n;
-    const double sigma =
-      wavelength * std::sqrt(2 * std::log(2.0)) / (2 * numbers::pi) / (2 * numbers::pi * mean_radius / n);
-    const long half = std::min<long>(n / 2, static_cast<long>(std::ceil(4 * sigma)));
+    const auto n = static_cast<long>(values.size());
+    if (!(wavelength > 0) || !(radius > 0) || n < 3)
+      return values;
+    const double sigma = wavelength * std::sqrt(2 * std::log(2.0)) / (2 * numbers::pi) / (2 * numbers::pi * radius / n);
+    const long   half  = std::min<long>(n / 2, static_cast<long>(std::ceil(4 * sigma)));
     if (half < 1)
-      return depth;
+      return values;
     std::vector<double> w(2 * half + 1);
     double              sum = 0;
     for (long d = -half; d <= half; ++d)
@@ -48,9 +43,24 @@ namespace wearlink::wear
     std::vector<double> out(n, 0.0);
     for (long k = 0; k < n; ++k)
       for (long d = -half; d <= half; ++d)
-        out[k] += w[d + half] / sum * depth[((k + d) % n + n) % n];
+        out[k] += w[d + half] / sum * values[((k + d) % n + n) % n];
+    return out;
+  }
+
+  // low_pass at the mean radius, then scaled so that Σ h_k R_k (the volume over L Δψ) is
+  // the unfiltered one: the radii of a worn profile differ from one area to the next.
+  std::vector<double>
+  smoothed(const std::vector<double> &depth, const double wavelength, const std::vector<double> &radii)
+  {
+    const auto n = depth.size();
+    if (!(wavelength > 0) || n < 3 || radii.size() != n)
+      return depth;
+    double mean_radius = 0;
+    for (const double r : radii)
+      mean_radius += r / n;
+    auto   out    = low_pass(depth, wavelength, mean_radius);
     double before = 0, after = 0;
-    for (long k = 0; k < n; ++k)
+    for (std::size_t k = 0; k < n; ++k)
       {
         before += depth[k] * radii[k];
         after += out[k] * radii[k];
@@ -155,11 +165,15 @@ namespace wearlink::wear
     Stopwatch    bookkeeping;
     double       factor = extrapolation_factor(increments);
     if (factor_limit)
-      factor = std::max(0.0, std::min(factor, factor_limit(preview(increments, factor))));
+      factor = std::max(0.0, std::min(factor, factor_limit(preview(own_rates(increments, *loads), factor))));
     if (settings.update == WearUpdate::sequential && factor < planned * (1 - 1e-9))
       increments = archard_increments(*loads, t_start, factor); // the wear took its path at the planned factor
+    const auto rates = own_rates(increments, *loads);
     for (unsigned int i = 0; i < wearing.size(); ++i)
-      update_profiles(i, *increments[i], *loads, factor);
+      {
+        update_profiles(i, applied_rate(i, rates[i], factor), *loads, factor);
+        st.joints[i].last_rate = rates[i];
+      }
     st.factors.push_back(factor);
     st.revolutions += factor * settings.cycles_per_iteration;
     store_contact_modes();
@@ -249,8 +263,43 @@ namespace wearlink::wear
     return std::min(factor, (settings.target_revolutions - st.revolutions) / settings.cycles_per_iteration);
   }
 
+  std::vector<WearRate>
+  WearLoop::own_rates(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments,
+                      const LoadRecorder                                     &loads) const
+  {
+    std::vector<WearRate> rates(wearing.size());
+    for (unsigned int i = 0; i < wearing.size(); ++i)
+      {
+        const auto &js         = st.joints[i];
+        const auto &a          = *increments[i];
+        auto       &r          = rates[i];
+        r.depth_pin            = smoothed(a.pin_depth(), settings.smoothing_wavelength, js.pin.samples());
+        r.depth_bore           = smoothed(a.bore_depth(), settings.smoothing_wavelength, js.bore.samples());
+        r.volume_pin           = a.pin_volume;
+        r.volume_bore          = a.bore_volume;
+        r.archard_pin          = a.pin_archard;
+        r.archard_bore         = a.bore_archard;
+        r.sliding_distance     = a.sliding_distance;
+        r.relative_revolutions = loads.relative_revolutions(i);
+      }
+    return rates;
+  }
+
+  WearRate
+  WearLoop::applied_rate(const unsigned int i, const WearRate &own, const double factor) const
+  {
+    const auto  &js       = st.joints[i];
+    const double previous = st.factors.empty() ? 0.0 : st.factors.back();
+    return step_rate(own,
+                     js.last_rate,
+                     factor,
+                     previous,
+                     settings.step,
+                     {js.contact_width, js.initial_pin.mean_radius(), js.initial_bore.mean_radius()});
+  }
+
   StepPreview
-  WearLoop::preview(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments, const double factor) const
+  WearLoop::preview(const std::vector<WearRate> &rates, const double factor) const
   {
     StepPreview p;
     p.revolutions = st.revolutions;
@@ -266,30 +315,26 @@ namespace wearlink::wear
         j.depth_bore            = r.depth_bore.empty() ? std::vector<double>(js.bore.n_points(), 0.0) : r.depth_bore;
         j.volume_pin            = r.volume_pin;
         j.volume_bore           = r.volume_bore;
-        j.pin_increment         = smoothed(increments[i]->pin_depth(), settings.smoothing_wavelength, js.pin.samples());
-        j.bore_increment = smoothed(increments[i]->bore_depth(), settings.smoothing_wavelength, js.bore.samples());
-        j.pin_volume_increment  = increments[i]->pin_volume;
-        j.bore_volume_increment = increments[i]->bore_volume;
+        const WearRate applied  = applied_rate(i, rates[i], factor); // ω at the loop's own factor
+        j.pin_increment         = applied.depth_pin;
+        j.bore_increment        = applied.depth_bore;
+        j.pin_volume_increment  = applied.volume_pin;
+        j.bore_volume_increment = applied.volume_bore;
         p.joints.push_back(std::move(j));
       }
     return p;
   }
 
   void
-  WearLoop::update_profiles(const unsigned int        i,
-                            const ArchardAccumulator &increment,
-                            const LoadRecorder       &loads,
-                            const double              factor)
+  WearLoop::update_profiles(const unsigned int i, const WearRate &rate, const LoadRecorder &loads, const double factor)
   {
-    auto      &js         = st.joints[i];
-    auto       bore       = js.bore.samples();
-    auto       pin        = js.pin.samples();
-    const auto bore_depth = smoothed(increment.bore_depth(), settings.smoothing_wavelength, js.bore.samples());
-    const auto pin_depth  = smoothed(increment.pin_depth(), settings.smoothing_wavelength, js.pin.samples());
+    auto &js   = st.joints[i];
+    auto  bore = js.bore.samples();
+    auto  pin  = js.pin.samples();
     for (unsigned int k = 0; k < bore.size(); ++k)
-      bore[k] += factor * bore_depth[k];
+      bore[k] += factor * rate.depth_bore[k];
     for (unsigned int k = 0; k < pin.size(); ++k)
-      pin[k] -= factor * pin_depth[k];
+      pin[k] -= factor * rate.depth_pin[k];
     const bool worn_through = std::any_of(pin.begin(), pin.end(), [](const double r) { return !(r > 0); });
     if (worn_through)
       throw NumericalError("Wear iteration " + std::to_string(st.iterations_done + 1) + ": the pin of joint " +
@@ -297,12 +342,12 @@ namespace wearlink::wear
     js.bore           = Profile::from_samples(bore, "worn bore of joint " + js.name);
     js.pin            = Profile::from_samples(pin, "worn pin of joint " + js.name);
     IterationRecord r = js.history.empty() ? IterationRecord() : js.history.back();
-    r.volume_pin += factor * increment.pin_volume;
-    r.volume_bore += factor * increment.bore_volume;
-    r.archard_pin += factor * increment.pin_archard;
-    r.archard_bore += factor * increment.bore_archard;
-    r.sliding_distance += factor * increment.sliding_distance;
-    r.relative_revolutions += factor * loads.relative_revolutions(i);
+    r.volume_pin += factor * rate.volume_pin;
+    r.volume_bore += factor * rate.volume_bore;
+    r.archard_pin += factor * rate.archard_pin;
+    r.archard_bore += factor * rate.archard_bore;
+    r.sliding_distance += factor * rate.sliding_distance;
+    r.relative_revolutions += factor * rate.relative_revolutions;
     double impulse = 0;
     for (const auto &s : loads.samples(i))
       impulse += s.load.normal_force * s.weight;

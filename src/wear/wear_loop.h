@@ -8,8 +8,10 @@
 //                             Archard's law on both surfaces (wear/archard.h);
 //   3. extrapolation_factor   the fixed factor, or the adaptive one that caps the largest
 //                             depth increment, never past Target revolutions;
-//   4. update_profiles        bore R1* += f h, pin R2* −= f h (each in its own frame), and
-//                             the iteration's cumulative records;
+//   4. update_profiles        bore R1* += f h, pin R2* −= f h (each in its own frame; h the
+//                             iteration's rate, or with Wear/Wear integration = adams-bashforth
+//                             its second-order combination with the previous one's,
+//                             wear/wear_step.h), and the iteration's cumulative records;
 //   5. update_clearance_model rebuild the clearance joints' gap from the new profiles and
 //                             give the pressure models the new geometry (the fe model
 //                             re-meshes only beyond its 'Remesh depth');
@@ -92,6 +94,14 @@ namespace wearlink::wear
    * takes the smaller of it and its own).
    */
   using FactorLimit = std::function<double(const StepPreview &preview)>;
+
+  /**
+   * Periodic samples @p values around a circle of radius @p radius [m], low-pass filtered
+   * at @p wavelength [m] (a periodic Gaussian, transfer 1/2 there, weights summing to 1:
+   * Σ values is kept); unchanged for a wavelength of 0.
+   */
+  std::vector<double>
+  low_pass(const std::vector<double> &values, double wavelength, double radius);
 
   /**
    * @p depth (periodic samples around a surface of radii @p radii [m]) low-pass filtered
@@ -186,6 +196,16 @@ namespace wearlink::wear
     }
 
     /**
+     * Keep @p peaks (the response body's per-cycle peaks before wear [m/s²]) in the
+     * state and so in the checkpoints; call from the first iteration's outputs.
+     */
+    void
+    keep_response_before(std::vector<double> peaks)
+    {
+      st.response_before_peaks = std::move(peaks);
+    }
+
+    /**
      * Limit every iteration's factor by @p limit (see StepPreview), after the loop's own
      * choice (fixed, or adaptive up to Target revolutions). The limited factor is the
      * iteration's: it is in the state, the checkpoint and the revolutions.
@@ -255,13 +275,25 @@ namespace wearlink::wear
     double
     extrapolation_factor(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments) const;
 
-    /** What set_factor_limit's function sees of this iteration (step 3). */
-    StepPreview
-    preview(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments, double factor) const;
+    /** Per wearing joint, this iteration's own rate (smoothed, per unit factor). */
+    std::vector<WearRate>
+    own_rates(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments, const LoadRecorder &loads) const;
 
-    /** Step 4. New profiles and the cumulative records of joint @p i. */
+    /** The rate step 4 applies to joint @p i at @p factor (Wear/Wear integration; wear/wear_step.h). */
+    WearRate
+    applied_rate(unsigned int i, const WearRate &own, double factor) const;
+
+    /**
+     * What set_factor_limit's function sees of this iteration (step 3): the rates
+     * applied at the loop's own @p factor (a smaller factor changes the Adams–Bashforth
+     * extrapolation slightly; the preview stays linear in f).
+     */
+    StepPreview
+    preview(const std::vector<WearRate> &rates, double factor) const;
+
+    /** Step 4. New profiles (+ @p factor × @p rate) and the cumulative records of joint @p i. */
     void
-    update_profiles(unsigned int i, const ArchardAccumulator &increment, const LoadRecorder &loads, double factor);
+    update_profiles(unsigned int i, const WearRate &rate, const LoadRecorder &loads, double factor);
 
     /** The contact width of joint @p i (JointWearState::contact_width), from the iteration's peak, once. */
     void

@@ -176,6 +176,22 @@ namespace wearlink::wear
               "saw-tooth spikes between neighbouring areas.",
               "none");
       declare(prm,
+              "Wear integration",
+              "euler",
+              P::Selection("euler|adams-bashforth"),
+              "How the iterations integrate the wear over the revolutions they stand for. "
+              "An iteration's dynamics run on the profiles of its start, so its wear rate "
+              "is that of the start: 'euler' applies it over the whole step, first order in "
+              "the step (where the worn pocket draws the contact the deepest point lags by "
+              "about half a step's change of rate: more, shorter iterations at the same "
+              "simulated cycles reduce it at no cost). 'adams-bashforth' applies the rate "
+              "extrapolated to the step's middle from this iteration's and the previous "
+              "one's, (1 + ω/2) r_n − (ω/2) r_(n−1), ω = f_n / f_(n−1) ≤ 2, the change of "
+              "rate taken over the contact width: second order in the mean, but it "
+              "amplifies the iterations' chaotic samples (one run's scatter about doubles "
+              "at 10 iterations). See doc/models.md §4.",
+              "none");
+      declare(prm,
               "Load samples per cycle",
               "100",
               P::Integer(8, 100000),
@@ -206,7 +222,9 @@ namespace wearlink::wear
               P::Double(0, 1e4),
               "Cycles of the dynamic response recorded before wear (start of the first "
               "iteration) and after wear (a run with the final profiles from the same "
-              "initial state), for the before/after plot.",
+              "initial state), for the before/after plot and the response ratios of "
+              "summary.json, > 0 … 1e4 (the ratios compare whole cycles' peaks: below one "
+              "cycle they compare the part simulated).",
               "cycles");
       declare(prm,
               "Response body",
@@ -321,13 +339,19 @@ namespace wearlink::wear
       r.get("Clearance model") == "exact" ? contact::ClearanceForm::exact : contact::ClearanceForm::per_area;
     s.evaluation =
       r.get("Pressure evaluation") == "every step" ? PressureEvaluation::every_step : PressureEvaluation::samples;
-    s.update               = r.get("Wear update") == "sequential" ? WearUpdate::sequential : WearUpdate::simultaneous;
-    s.samples_per_cycle    = static_cast<unsigned int>(r.get_integer("Load samples per cycle"));
+    s.update            = r.get("Wear update") == "sequential" ? WearUpdate::sequential : WearUpdate::simultaneous;
+    s.step              = r.get("Wear integration") == "adams-bashforth" ? WearStep::adams_bashforth : WearStep::euler;
+    s.samples_per_cycle = static_cast<unsigned int>(r.get_integer("Load samples per cycle"));
     s.smoothing_wavelength = r.get_double("Smoothing wavelength");
     s.response_cycles      = r.get_double("Response cycles");
-    s.response_body        = r.get("Response body");
-    s.magnification        = r.get_double("Profile magnification");
-    s.fe_output            = r.get_bool("FE output");
+    if (!(s.response_cycles > 0))
+      r.fail("Response cycles",
+             "it must be > 0 cycles",
+             "Record at least part of a cycle before and after wear (1 or more for a response ratio "
+             "of whole cycles).");
+    s.response_body = r.get("Response body");
+    s.magnification = r.get_double("Profile magnification");
+    s.fe_output     = r.get_bool("FE output");
     r.leave();
     return s;
   }

@@ -59,6 +59,13 @@ namespace wearlink::wear
     simultaneous ///< every state on the start geometry, × f at the end (the seed's route)
   };
 
+  /** How the iterations integrate the wear over revolutions (wear/wear_step.h). */
+  enum class WearStep
+  {
+    euler,          ///< first order: the iteration's own rate over the whole step
+    adams_bashforth ///< second order: the rate extrapolated to the step's middle
+  };
+
   /** The wear loop of a scene ("Wear" section). */
   struct WearLoopSettings
   {
@@ -73,6 +80,7 @@ namespace wearlink::wear
     contact::ClearanceForm clearance_form       = contact::ClearanceForm::exact;
     PressureEvaluation     evaluation           = PressureEvaluation::every_step;
     WearUpdate             update               = WearUpdate::sequential;
+    WearStep               step                 = WearStep::euler;
     unsigned int           samples_per_cycle    = 100;
     double                 smoothing_wavelength = 0; ///< low-pass of the depth increments [m]; 0: none
     double                 response_cycles      = 1; ///< before/after response [cycles]

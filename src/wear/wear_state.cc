@@ -17,7 +17,7 @@ namespace wearlink::wear
   namespace
   {
     constexpr const char *format_name    = "wearlink wear checkpoint";
-    constexpr int         format_version = 5;
+    constexpr int         format_version = 6;
     constexpr const char *payload_key    = "\"payload\": ";
     constexpr const char *refused =
       " Resume is refused; start the run afresh (`--overwrite`) or restore an intact copy of the checkpoint.";
@@ -51,6 +51,21 @@ namespace wearlink::wear
     }
 
     Json
+    to_json(const WearRate &r)
+    {
+      Json j                    = Json::object();
+      j["depth_pin"]            = to_json(r.depth_pin);
+      j["depth_bore"]           = to_json(r.depth_bore);
+      j["volume_pin"]           = r.volume_pin;
+      j["volume_bore"]          = r.volume_bore;
+      j["archard_pin"]          = r.archard_pin;
+      j["archard_bore"]         = r.archard_bore;
+      j["sliding_distance"]     = r.sliding_distance;
+      j["relative_revolutions"] = r.relative_revolutions;
+      return j;
+    }
+
+    Json
     to_json(const JointWearState &js)
     {
       Json j             = Json::object();
@@ -62,6 +77,7 @@ namespace wearlink::wear
       j["meshed_bore"]   = to_json(js.meshed_bore.samples());
       j["meshed_pin"]    = to_json(js.meshed_pin.samples());
       j["contact_width"] = js.contact_width;
+      j["last_rate"]     = to_json(js.last_rate);
       j["history"]       = Json::array();
       for (const auto &r : js.history)
         j["history"].push_back(to_json(r));
@@ -268,6 +284,21 @@ namespace wearlink::wear
       return rec;
     }
 
+    WearRate
+    read_rate(const Reader &r, const Json &j, const std::string &where)
+    {
+      WearRate rate;
+      rate.depth_pin            = r.numbers(j, "depth_pin", where);
+      rate.depth_bore           = r.numbers(j, "depth_bore", where);
+      rate.volume_pin           = r.number(j, "volume_pin", where);
+      rate.volume_bore          = r.number(j, "volume_bore", where);
+      rate.archard_pin          = r.number(j, "archard_pin", where);
+      rate.archard_bore         = r.number(j, "archard_bore", where);
+      rate.sliding_distance     = r.number(j, "sliding_distance", where);
+      rate.relative_revolutions = r.number(j, "relative_revolutions", where);
+      return rate;
+    }
+
     JointWearState
     read_joint(const Reader &r, const Json &j, const std::string &where)
     {
@@ -280,6 +311,7 @@ namespace wearlink::wear
       js.meshed_bore      = r.profile(j, "meshed_bore", where);
       js.meshed_pin       = r.profile(j, "meshed_pin", where);
       js.contact_width    = r.number(j, "contact_width", where);
+      js.last_rate        = read_rate(r, r.entry(j, "last_rate", where), where + "last_rate.");
       const Json &history = r.list(j, "history", where);
       for (std::size_t k = 0; k < history.size(); ++k)
         js.history.push_back(read_record(r, history[k], where + "history[" + std::to_string(k) + "]."));
@@ -417,6 +449,11 @@ namespace wearlink::wear
           if (js.history.size() != s.iterations_done)
             r.fail("'" + at + "history' has " + std::to_string(js.history.size()) + " records for " + n +
                    " iterations");
+          const bool rate_known = !js.last_rate.empty();
+          if (rate_known != (s.iterations_done > 0) ||
+              (rate_known && (js.last_rate.depth_pin.size() != np || js.last_rate.depth_bore.size() != nb)))
+            r.fail("'" + at + "last_rate' has depths of another size than the profiles, or does not match the " +
+                   "number of iterations");
           for (std::size_t k = 0; k < js.history.size(); ++k)
             if (js.history[k].depth_pin.size() != np || js.history[k].depth_bore.size() != nb)
               r.fail("'" + at + "history[" + std::to_string(k) + "]' has depths of another size than the profiles");
@@ -432,16 +469,17 @@ namespace wearlink::wear
     j["scene"]       = Json::object();
     for (const auto &[key, value] : scene)
       j["scene"][key] = value;
-    j["iterations"]  = iterations_done;
-    j["revolutions"] = revolutions;
-    j["time_s"]      = time;
-    j["state"]       = to_json(std::vector<double>(state.data(), state.data() + state.size()));
-    j["factors"]     = to_json(factors);
-    j["modes"]       = to_json(modes);
-    j["ledger"]      = ledger_to_json(ledger);
-    j["timings_s"]   = timings.to_json();
-    j["warnings"]    = warnings_to_json(warnings);
-    j["joints"]      = Json::array();
+    j["iterations"]                 = iterations_done;
+    j["revolutions"]                = revolutions;
+    j["time_s"]                     = time;
+    j["state"]                      = to_json(std::vector<double>(state.data(), state.data() + state.size()));
+    j["factors"]                    = to_json(factors);
+    j["modes"]                      = to_json(modes);
+    j["response_before_peaks_m_s2"] = to_json(response_before_peaks);
+    j["ledger"]                     = ledger_to_json(ledger);
+    j["timings_s"]                  = timings.to_json();
+    j["warnings"]                   = warnings_to_json(warnings);
+    j["joints"]                     = Json::array();
     for (const auto &js : joints)
       j["joints"].push_back(to_json(js));
     // Doubles are written in their shortest form that reads back to the same bits.
@@ -467,15 +505,16 @@ namespace wearlink::wear
     const double n_iter = r.number(j, "iterations");
     if (!(n_iter >= 0 && n_iter <= 1e9 && n_iter == std::floor(n_iter)))
       r.fail("'iterations' is not a count");
-    s.iterations_done  = static_cast<unsigned int>(n_iter);
-    s.revolutions      = r.number(j, "revolutions");
-    s.time             = r.number(j, "time_s");
-    const auto y       = r.numbers(j, "state");
-    s.state            = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
-    s.factors          = r.numbers(j, "factors");
-    s.modes            = r.numbers(j, "modes");
-    s.ledger           = read_ledger(r, j);
-    const Json &joints = r.list(j, "joints");
+    s.iterations_done       = static_cast<unsigned int>(n_iter);
+    s.revolutions           = r.number(j, "revolutions");
+    s.time                  = r.number(j, "time_s");
+    const auto y            = r.numbers(j, "state");
+    s.state                 = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
+    s.factors               = r.numbers(j, "factors");
+    s.modes                 = r.numbers(j, "modes");
+    s.response_before_peaks = r.numbers(j, "response_before_peaks_m_s2");
+    s.ledger                = read_ledger(r, j);
+    const Json &joints      = r.list(j, "joints");
     for (std::size_t i = 0; i < joints.size(); ++i)
       s.joints.push_back(read_joint(r, joints[i], "joints[" + std::to_string(i) + "]."));
     if (!PhaseTimings::from_json(r.entry(j, "timings_s", ""), s.timings))

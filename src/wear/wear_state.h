@@ -8,9 +8,9 @@
 // whole run, the effect ledger, the phase timings and the validity warnings up to the
 // checkpoint.
 //
-// The checkpoint (format version 5; 4 added the warnings, 5 the contact width and the
-// depth measures) is JSON in two parts: a header line
-//   {"format": "wearlink wear checkpoint", "version": 5, "payload_bytes": N,
+// The checkpoint (format version 6; 4 added the warnings, 5 the contact width and the
+// depth measures, 6 the last iteration's wear rate and the response before wear) is JSON in two parts: a header line
+//   {"format": "wearlink wear checkpoint", "version": 6, "payload_bytes": N,
 //    "payload_crc32": "89abcdef",
 // and the payload, `"payload": {...}}`, whose N bytes carry zlib's CRC-32. Reading
 // checks, before anything is used: the header, the version, the length (a truncated
@@ -55,6 +55,27 @@ namespace wearlink::wear
     std::vector<double> depth_bore;               ///< cumulative depth per bore area [m]
   };
 
+  /**
+   * One iteration's wear per unit extrapolation factor, after smoothing (step 4 of the
+   * wear loop applies f times it, or with Wear/Wear integration = adams-bashforth its
+   * combination with the previous iteration's; wear/wear_step.h).
+   */
+  struct WearRate
+  {
+    std::vector<double> depth_pin, depth_bore;             ///< per area [m]
+    double              volume_pin = 0, volume_bore = 0;   ///< [m³]
+    double              archard_pin = 0, archard_bore = 0; ///< [m³]
+    double              sliding_distance     = 0;          ///< [m]
+    double              relative_revolutions = 0;          ///< [-]
+
+    /** True before the first iteration (no rate known). */
+    bool
+    empty() const
+    {
+      return depth_pin.empty() && depth_bore.empty();
+    }
+  };
+
   struct JointWearState
   {
     std::string name;
@@ -67,6 +88,8 @@ namespace wearlink::wear
      * unworn radii at the largest normal force of the first iteration (0 before it).
      */
     double contact_width = 0;
+    /** The last iteration's own rate (not combined; empty before the first iteration). */
+    WearRate last_rate;
   };
 
   /** What the scene of a resuming run needs of a state (WearState::check_shape). */
@@ -101,6 +124,12 @@ namespace wearlink::wear
     PhaseTimings timings;
     /** The validity warnings raised up to the checkpoint (base/validity_warnings.h). */
     ValidityWarnings warnings;
+    /**
+     * The response body's per-cycle peak accelerations before wear [m/s²] (recorded in
+     * the first iteration; empty if none were), so that a resumed run reports the
+     * before/after response of the whole run.
+     */
+    std::vector<double> response_before_peaks;
 
     /** Write to @p path atomically. */
     void

@@ -80,6 +80,7 @@ namespace wearlink::workflows
          "Wear/Cycles per iteration × Extrapolation factor at fixed revolutions (how much of "
          "the chaotic load history is sampled)"},
         {"wear-update", "Wear/Wear update: simultaneous (the seed's route) against sequential"},
+        {"wear-scheme", "Wear/Wear integration: adams-bashforth (second order) against euler (first order)"},
         {"smoothing", "Wear/Smoothing wavelength of the depth increments' low-pass filter, against none"},
         {"pressure-model", "Pressure model of every wearing joint"},
         {"fe-element-size", "fe Surface element size"},
@@ -467,6 +468,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       if (c.quick)
         return;
       knobs.push_back(make_knob("wear-update", {"Wear/Wear update"}, {"simultaneous", "sequential"}, "sequential"));
+      knobs.push_back(make_knob("wear-scheme", {"Wear/Wear integration"}, {"adams-bashforth", "euler"}, "euler"));
       const double w = ws.smoothing_wavelength > 0 ? ws.smoothing_wavelength : 1e-3;
       knobs.push_back(
         make_knob("smoothing", {"Wear/Smoothing wavelength"}, {label(2 * w), label(w), "0"}, "no filter"));

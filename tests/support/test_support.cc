@@ -154,7 +154,7 @@ namespace wearlink::testing
     const std::string key = "\n\"payload\": ";
     const auto        at  = text.find(key);
     if (at == std::string::npos || text.size() < at + key.size() + 2)
-      throw std::runtime_error("not a checkpoint of format version 5");
+      throw std::runtime_error("not a checkpoint of format version 6");
     const std::string payload = text.substr(at + key.size(), text.size() - at - key.size() - 2);
     char              crc[16];
     std::snprintf(crc,

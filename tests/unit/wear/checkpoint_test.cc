@@ -50,6 +50,9 @@ namespace
     rec.depth_pin.assign(16, 1e-7 / 3);
     rec.depth_bore.assign(16, 2e-7 / 3);
     j.history = {rec, rec};
+    j.last_rate.depth_pin.assign(16, 1e-10 / 3);
+    j.last_rate.depth_bore.assign(16, 2e-10 / 7);
+    j.last_rate.volume_bore = 1.0 / 3e12;
     s.joints.push_back(j);
     return s;
   }
@@ -75,6 +78,8 @@ TEST(Checkpoint, RoundTripIsExact)
   EXPECT_EQ(r.joints[0].history.size(), 2u);
   EXPECT_EQ(r.joints[0].history[1].volume_pin, s.joints[0].history[1].volume_pin);
   EXPECT_EQ(r.joints[0].history[1].depth_bore, s.joints[0].history[1].depth_bore);
+  EXPECT_EQ(r.joints[0].last_rate.depth_bore, s.joints[0].last_rate.depth_bore);
+  EXPECT_EQ(r.joints[0].last_rate.volume_bore, s.joints[0].last_rate.volume_bore);
   EXPECT_EQ(r.scene, s.scene);
   EXPECT_EQ(r.ledger, s.ledger);
   EXPECT_EQ(r.timings.dynamics, s.timings.dynamics);
@@ -117,8 +122,8 @@ TEST(Checkpoint, DamagedEntriesAreRefusedNamingTheEntry)
   std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // Each edit of the valid text, and the words the message must contain.
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
-    {{"\"version\":5", "\"version\":6"}, "format version 6, this wearlink reads version 5"},
-    {{"\"version\":5", "\"version\":4"}, "format version 4, this wearlink reads version 5"},
+    {{"\"version\":6", "\"version\":7"}, "format version 7, this wearlink reads version 6"},
+    {{"\"version\":6", "\"version\":5"}, "format version 5, this wearlink reads version 6"},
     {{"\"quantity\": \"joint A", "\"quantity\": 4, \"x\": \"joint A"}, "'warnings[0].quantity' is not text"},
     {{"\"warnings\": [", "\"warnings\": 3, \"w\": ["}, "'warnings' is not a list"},
     {{"\"value\": \"inf\"", "\"value\": 0.001"}, "'warnings[1].value' does not exceed its limit"},
@@ -130,8 +135,10 @@ TEST(Checkpoint, DamagedEntriesAreRefusedNamingTheEntry)
     {{"\"format\":\"wearlink wear checkpoint\"", "\"format\":\"other\""}, "not a wear checkpoint"},
     {{"\"factors\": [", "\"factors\": [3, "}, "'factors' has 3 entries for 2 iterations"},
     {{"\"iterations\": 2", "\"iterations\": 1"}, "'factors' has 2 entries for 1 iterations"},
-    {{"\"depth_pin\": [", "\"depth_pin\": [0, "}, "joints[0].history[0]' has depths of another size"},
+    {{"\"relative_revolutions\": 0.0,\n     \"depth_pin\": [", "\"relative_revolutions\": 0.0, \"depth_pin\": [0, "},
+     "joints[0].history[0]' has depths of another size"},
     {{"\"timings_s\"", "\"timing\""}, "no entry 'timings_s'"},
+    {{"\"depth_pin\": [", "\"depth_pin\": [0, "}, "'joints[0].last_rate' has depths of another size"},
     {{"\"wear iterations\": 2", "\"wear iterations\": 2.5"}, "'ledger.calls.wear iterations' is not a count"},
   };
   for (const auto &[edit, expected] : cases)
@@ -192,7 +199,7 @@ TEST(Checkpoint, ChangedByteTruncationAndOldVersionAreRefused)
       EXPECT_NE(m.find(path), std::string::npos) << m;
     }
   std::ofstream(path, std::ios::binary) << "{\n \"format\": \"wearlink wear checkpoint\",\n \"version\": 2\n}\n";
-  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 5"), std::string::npos) << refusal(path);
+  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 6"), std::string::npos) << refusal(path);
 }
 
 // check_shape: each size that differs from the scene's is named with both values.
