@@ -4,6 +4,7 @@
 #include "analysis/cycle_peaks.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/text.h"
 #include "io/analyses_parameters.h"
 #include "io/profile_series.h"
 #include "io/wear_outputs.h"
@@ -308,26 +309,25 @@ namespace wearlink::workflows
     /**
      * The peak acceleration magnitude of the response body over every accepted step, in
      * the Wear/Response cycles from the initial assembly before wear (the first
-     * iteration's start; not known to a resumed run) and after wear: the largest over
+     * iteration's start, kept in the checkpoint; @p before its per-cycle peaks) and
+     * after wear: the largest over
      * them, and the mean of the per-cycle peaks after the first cycle (the journal
      * settles from its assembly position in it; with one response cycle, that one), and
      * the ratios after/before.
      */
     Json
-    response_block(const io::Scene                   &scene,
-                   const analysis::CyclePeakRecorder *before,
-                   const analysis::CyclePeakRecorder &after)
+    response_block(const io::Scene &scene, const std::vector<double> &before, const analysis::CyclePeakRecorder &after)
     {
       const double cycles  = scene.wear_loop.response_cycles;
       const auto   whole   = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
       const auto   settle  = std::size_t(whole >= 2 ? 1 : 0);
-      const auto   measure = [&](const analysis::CyclePeakRecorder &p, double &largest, double &mean) {
-        const auto n = std::min(whole, p.peaks().size());
+      const auto   measure = [&](const std::vector<double> &peaks, double &largest, double &mean) {
+        const auto n = std::min(whole, peaks.size());
         largest = mean = 0;
         for (std::size_t k = 0; k < n; ++k)
-          largest = std::max(largest, p.peaks()[k]);
+          largest = std::max(largest, peaks[k]);
         for (std::size_t k = settle; k < n; ++k)
-          mean += p.peaks()[k] / (n - settle);
+          mean += peaks[k] / (n - settle);
         return n > settle;
       };
       Json r               = Json::object();
@@ -335,12 +335,12 @@ namespace wearlink::workflows
       r["cycles"]          = cycles;
       r["settling_cycles"] = settle;
       double a_largest = 0, a_mean = 0, b_largest = 0, b_mean = 0;
-      if (measure(after, a_largest, a_mean))
+      if (measure(after.peaks(), a_largest, a_mean))
         {
           r["peak_acceleration_after_m_s2"] = a_largest;
           r["mean_cycle_peak_after_m_s2"]   = a_mean;
         }
-      if (before && measure(*before, b_largest, b_mean) && b_largest > 0)
+      if (measure(before, b_largest, b_mean) && b_largest > 0)
         {
           r["peak_acceleration_before_m_s2"] = b_largest;
           r["mean_cycle_peak_before_m_s2"]   = b_mean;
@@ -351,15 +351,32 @@ namespace wearlink::workflows
     }
 
     /**
+     * Warn when an adaptive run ended at its Number of iterations before its Target
+     * revolutions: the results stand for fewer revolutions than the scene asked for.
+     */
+    void
+    check_target_reached(const wear::WearLoopSettings &ws, const wear::WearState &st, ValidityWarnings &warnings)
+    {
+      if (ws.extrapolation != wear::Extrapolation::adaptive || st.iterations_done < ws.n_iterations)
+        return;
+      warnings.check({"revolutions short of Wear/Target revolutions",
+                      ws.target_revolutions - st.revolutions,
+                      1e-9 * ws.target_revolutions,
+                      "cycles",
+                      "the run ended at its Number of iterations (" + std::to_string(ws.n_iterations) +
+                        ") having represented " + format_number(st.revolutions, 6) + " of " +
+                        format_number(ws.target_revolutions, 6) + " revolutions",
+                      "the worn profiles and volumes stand for fewer revolutions than the target; raise Number of "
+                      "iterations, Maximum extrapolation factor or Maximum depth increment"});
+    }
+
+    /**
      * After the loop: the response after wear from the initial assembly with the final
      * profiles, the summary, the worn profiles and plots, and the before/after-wear
      * comparison if the scene lists analyses.
      */
     void
-    after_wear(io::Scene                         &scene,
-               const WearRunOptions              &options,
-               WearRunResult                     &result,
-               const analysis::CyclePeakRecorder *before_peaks)
+    after_wear(io::Scene &scene, const WearRunOptions &options, WearRunResult &result)
     {
       const bool        write  = !options.output_directory.empty();
       const std::string dir    = options.output_directory;
@@ -381,10 +398,11 @@ namespace wearlink::workflows
       if (options.more_warnings)
         result.warnings.merge(*options.more_warnings);
       wear::check_roughness(st, result.warnings);
+      check_target_reached(ws, st, result.warnings);
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
-      result.summary["response"] = response_block(scene, before_peaks, after_peaks);
+      result.summary["response"] = response_block(scene, st.response_before_peaks, after_peaks);
       if (write)
         {
           io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
@@ -532,6 +550,8 @@ namespace wearlink::workflows
                                 period / 400,
                                 scene.wear_loop.response_cycles * period);
     loop.set_iteration_outputs([&]() {
+      if (loop.state().iterations_done == 1)
+        loop.keep_response_before(before_peaks.peaks());
       if (write && options.final_outputs && loop.state().iterations_done == 1)
         before.write_csv(dir + "/response_before.csv");
       if (write)
@@ -570,7 +590,7 @@ namespace wearlink::workflows
     result.timings  = loop.timings();
     result.finished = true;
     if (options.final_outputs)
-      after_wear(scene, options, result, options.resume ? nullptr : &before_peaks);
+      after_wear(scene, options, result);
     if (options.final_outputs && options.extend_summary)
       options.extend_summary(result.summary);
     // A resumed run's wall time includes its earlier processes' up to the checkpoint.

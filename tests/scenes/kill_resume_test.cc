@@ -3,7 +3,8 @@
 // at WEARLINK_KILL_INSTANTS seeded random instants (reproducible: the seed is fixed), each
 // time resumed from what the killed process left (--resume if a checkpoint exists, else
 // a fresh start), and finally run to its end. Its outputs must equal an uninterrupted
-// run's: the summary's wear figures, effect ledger and warnings, wear_history.csv byte for byte,
+// run's: the summary's wear figures, effect ledger, warnings and the response before and
+// after wear (with its ratios), wear_history.csv byte for byte,
 // and no temporary file left anywhere. Built twice (tests/scenes/CMakeLists.txt): three
 // instants in the default suite, twenty under the label `fuzz` (WEARLINK_LONG_TESTS).
 #include "io/json_file.h"
@@ -54,6 +55,9 @@ namespace
     out["wear_revolutions"] = s.at("wear_revolutions");
     out["effect_ledger"]    = s.at("effect_ledger");
     out["warnings"]         = s.at("warnings");
+    out["response"]         = s.at("response"); // before wear too: it is in the checkpoint
+    if (!s.at("response").contains("peak_acceleration_ratio"))
+      ADD_FAILURE() << dir << ": summary.json has no response before wear";
     return out;
   }
 
