@@ -14,6 +14,28 @@
 
 namespace wearlink::app
 {
+  namespace
+  {
+    /**
+     * InputError unless @p dir holds an ensemble that --resume can continue (at least one
+     * member_* folder): a mistyped directory must not start a fresh ensemble.
+     */
+    void
+    check_resumable_ensemble(const std::string &dir)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      bool            members = false;
+      if (fs::is_directory(dir, error))
+        for (const auto &entry : fs::directory_iterator(dir, error))
+          members = members || (entry.is_directory() && entry.path().filename().string().rfind("member_", 0) == 0);
+      if (!members)
+        throw InputError("Cannot resume the ensemble in '" + dir + "': " +
+                         (fs::exists(dir, error) ? "it holds no member_* folder" : "the directory does not exist") +
+                         ". Check the path, or start the ensemble with --output " + dir + " instead of --resume.");
+    }
+  } // namespace
+
   std::vector<OptionSpec>
   ensemble_options()
   {
@@ -96,6 +118,8 @@ namespace wearlink::app
     o.output_directory     = o.resume ?
                                a.value("--resume") :
                                a.value("--output", "output/" + stem + (command == "life" ? "_life" : "") + "_ensemble");
+    if (o.resume)
+      check_resumable_ensemble(o.output_directory);
     // Every member's uncertain inputs are checked before the folder is claimed: a bad input writes nothing.
     workflows::check_uncertain_members(o, io::read_scene(file, o.overrides));
     OutputClaim claim =

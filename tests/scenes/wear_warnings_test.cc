@@ -7,7 +7,9 @@
 //    shipped params/nine_bar_wear.prm (10 mm, b ≈ 0.2 mm, half-angle ≈ 1°) does not warn;
 //  - a wear run stopped after its first iteration and resumed from the checkpoint
 //    reports the same `warnings` list as an uninterrupted run: the warnings raised
-//    before the checkpoint are kept in it (format version 5).
+//    before the checkpoint are kept in it (format version 6);
+//  - an adaptive run that ends at its Number of iterations short of its Target
+//    revolutions warns, one that reaches the target does not.
 #include "io/json_file.h"
 #include "scene_support.h"
 #include "wear/wear_state.h"
@@ -114,4 +116,26 @@ TEST(WearWarnings, WarningsSurviveAResume)
   o.resume           = true;
   const auto resumed = warnings_of(run_wear(knife_edge_joints, o).summary);
   EXPECT_EQ(resumed, straight);
+}
+
+TEST(WearWarnings, AnAdaptiveRunShortOfItsTargetSaysSo)
+{
+  const std::vector<std::string> adaptive = {"Wear/Cycles per iteration=0.5",
+                                             "Wear/Response cycles=0.1",
+                                             "Wear/Extrapolation=adaptive",
+                                             "Wear/Maximum depth increment=1e-6",
+                                             "Wear/Maximum extrapolation factor=100"};
+  workflows::WearRunOptions      o;
+  o.progress = false;
+  // Two iterations of at most 100 × 0.5 cycles cannot represent 1e30 revolutions.
+  auto       short_of = adaptive;
+  const auto capped   = {"Wear/Number of iterations=2", "Wear/Target revolutions=1e30"};
+  short_of.insert(short_of.end(), capped.begin(), capped.end());
+  const auto w = containing(warnings_of(run_wear(short_of, o).summary), "revolutions short of Wear/Target revolutions");
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("the run ended at its Number of iterations (2)"), std::string::npos) << w[0];
+  // One that reaches its target (25 revolutions, within the first iteration's 50) does not warn.
+  auto reached = adaptive;
+  reached.insert(reached.end(), {"Wear/Number of iterations=2", "Wear/Target revolutions=25"});
+  EXPECT_TRUE(containing(warnings_of(run_wear(reached, o).summary), "Target revolutions").empty());
 }
