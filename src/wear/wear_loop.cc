@@ -164,11 +164,14 @@ namespace wearlink::wear
     auto         increments = archard_increments(*loads, t_start, planned);
     Stopwatch    bookkeeping;
     double       factor = extrapolation_factor(increments);
+    auto         rates  = own_rates(increments, *loads);
     if (factor_limit)
-      factor = std::max(0.0, std::min(factor, factor_limit(preview(own_rates(increments, *loads), factor))));
+      factor = std::max(0.0, std::min(factor, factor_limit(preview(rates, factor))));
     if (settings.update == WearUpdate::sequential && factor < planned * (1 - 1e-9))
-      increments = archard_increments(*loads, t_start, factor); // the wear took its path at the planned factor
-    const auto rates = own_rates(increments, *loads);
+      { // the wear took its path at the planned factor
+        increments = archard_increments(*loads, t_start, factor);
+        rates      = own_rates(increments, *loads);
+      }
     for (unsigned int i = 0; i < wearing.size(); ++i)
       {
         update_profiles(i, applied_rate(i, rates[i], factor), *loads, factor);

@@ -44,14 +44,17 @@ namespace wearlink::wear
     const double omega = std::min(f_now / f_before, max_step_ratio);
     const double a = 1 + omega / 2, b = omega / 2;
     WearRate     r;
-    r.depth_pin            = combined(now.depth_pin, before.depth_pin, b, scale.contact_width, scale.pin_radius);
-    r.depth_bore           = combined(now.depth_bore, before.depth_bore, b, scale.contact_width, scale.bore_radius);
-    r.volume_pin           = std::max(0.0, a * now.volume_pin - b * before.volume_pin);
-    r.volume_bore          = std::max(0.0, a * now.volume_bore - b * before.volume_bore);
-    r.archard_pin          = std::max(0.0, a * now.archard_pin - b * before.archard_pin);
-    r.archard_bore         = std::max(0.0, a * now.archard_bore - b * before.archard_bore);
-    r.sliding_distance     = std::max(0.0, a * now.sliding_distance - b * before.sliding_distance);
-    r.relative_revolutions = std::max(0.0, a * now.relative_revolutions - b * before.relative_revolutions);
+    r.depth_pin      = combined(now.depth_pin, before.depth_pin, b, scale.contact_width, scale.pin_radius);
+    r.depth_bore     = combined(now.depth_bore, before.depth_bore, b, scale.contact_width, scale.bore_radius);
+    const auto total = [&](const double now_total, const double before_total) {
+      return std::max(0.0, a * now_total - b * before_total);
+    };
+    r.volume_pin           = total(now.volume_pin, before.volume_pin);
+    r.volume_bore          = total(now.volume_bore, before.volume_bore);
+    r.archard_pin          = total(now.archard_pin, before.archard_pin);
+    r.archard_bore         = total(now.archard_bore, before.archard_bore);
+    r.sliding_distance     = total(now.sliding_distance, before.sliding_distance);
+    r.relative_revolutions = total(now.relative_revolutions, before.relative_revolutions);
     return r;
   }
 } // namespace wearlink::wear
