@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // What a scene's `subsection Analyses` asks for (read by io/analyses_parameters.h, run by
-// workflows/analyses.h): which nonlinear-dynamics analyses, of which joints and bodies,
+// workflows/run/analyses.h): which nonlinear-dynamics analyses, of which joints and bodies,
 // with which sampling and embedding, and the before/after-wear comparison settings.
 #pragma once
 
@@ -40,7 +40,7 @@ namespace wearlink::analysis
     double sample_interval = 1e-3;
     /** Lyapunov: methods, directions ("x", "y") and embedding. */
     std::vector<LyapunovMethod> methods;
-    /** Also the exponent of the simulation itself (workflows/shadow_trajectory.h). */
+    /** Also the exponent of the simulation itself (workflows/run/shadow_trajectory.h). */
     bool                        two_trajectory            = false;
     double                      two_trajectory_separation = 1e-6; ///< d0 [m]
     double                      renormalization_interval  = 0.02; ///< τ [s]
@@ -49,7 +49,7 @@ namespace wearlink::analysis
     std::optional<unsigned int> dimension;
 
     /**
-     * Wear scenes: the before/after-wear comparison (workflows/dynamics_comparison.h), from the
+     * Wear scenes: the before/after-wear comparison (workflows/compare/dynamics_comparison.h), from the
      * entries of `subsection Before-after wear`: common delay [s] and dimension (0 =
      * automatic on the before-wear run), delay scan [s], published exponents to print.
      */

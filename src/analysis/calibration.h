@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Calibration of wear coefficients from measured mass losses: the root finding and the
-// interval, as pure functions of a forward model (workflows/calibration.h supplies the
+// interval, as pure functions of a forward model (workflows/wear/calibration.h supplies the
 // wear runs).
 //
 // Each measured surface s (a joint's pin or bushing) has an Archard coefficient k_s
@@ -37,7 +37,7 @@
 //     95 % interval = [k exp(−1.96 σ_log k), k exp(+1.96 σ_log k)],
 // first-order propagation in log k (a relative error of the mass maps to a relative
 // error of k divided by S), normal errors. The caller chooses σ_c; the workflow's
-// (workflows/calibration.h) is σ_c = s sqrt(1 + 1/N) for an ensemble of N runs with
+// (workflows/wear/calibration.h) is σ_c = s sqrt(1 + 1/N) for an ensemble of N runs with
 // sample std s: the measured test is itself one sample of the chaotic wear (it scatters
 // about the mean by s) and the ensemble's mean is known to s/√N.
 #pragma once

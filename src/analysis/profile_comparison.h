@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // A measured worn profile (a profilometer or CMM trace of a pin or a bore) against the
 // one a wear run predicts. The math only; files are read and written by
-// workflows/profile_comparison.h.
+// workflows/compare/profile_comparison.h.
 //
 // Both are closed polar traces, radius [m] against angle [rad], linear in the angle
 // between their points (as base/profile.h interpolates), at any spacing. Two traces are

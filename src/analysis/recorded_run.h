@@ -8,7 +8,7 @@
 //    the channels at the exact section times t_k = t_first + k T on the dense output of
 //    the step that contains t_k (Simulation::state_at), never at the nearest sample.
 // A RecordedRun holds both plus a label. Everything downstream (poincare_spread,
-// lyapunov_of_channel in analysis/nonlinear_dynamics.h, the writers in workflows/analyses.h)
+// lyapunov_of_channel in analysis/nonlinear_dynamics.h, the writers in workflows/run/analyses.h)
 // takes a RecordedRun, so a before/after-wear comparison can feed it two runs.
 #pragma once
 

@@ -4,7 +4,7 @@
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "io/scene.h"
-#include "workflows/uncertain_inputs.h"
+#include "workflows/ensemble/uncertain_inputs.h"
 
 #include <deal.II/base/mpi.h>
 

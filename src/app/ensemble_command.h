@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The options --ensemble N, --seed S, --perturbation RAD of `run` and `life`, and the
-// part of those commands that runs an ensemble (workflows/ensemble.h): MPI for the
+// part of those commands that runs an ensemble (workflows/ensemble/ensemble.h): MPI for the
 // command, the output folder held by rank 0, the members, the printed table.
 #pragma once
 
 #include "app/command_line.h"
 #include "base/output_directory.h"
-#include "workflows/ensemble.h"
+#include "workflows/ensemble/ensemble.h"
 
 #include <string>
 #include <vector>

@@ -32,7 +32,7 @@ namespace wearlink::fe
 
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using wearlink::numbers::pi;
 
     /** Lamé constants of plane strain: λ = Eν/((1+ν)(1−2ν)), μ = E/(2(1+ν)). */
     std::pair<double, double>

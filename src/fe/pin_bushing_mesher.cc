@@ -4,6 +4,7 @@
 #include "base/atomic_file.h"
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "fe/boundary_ids.h"
 
 #include <deal.II/base/config.h>
@@ -22,7 +23,7 @@ namespace wearlink::fe
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using wearlink::numbers::pi;
 
     std::string
     number(double v)

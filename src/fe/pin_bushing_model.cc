@@ -22,7 +22,7 @@ namespace wearlink::fe
 
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using wearlink::numbers::pi;
 
     using Clock = std::chrono::steady_clock;
     double

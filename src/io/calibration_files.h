@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The files of `wearlink calibrate` (workflows/calibration.h), each written atomically:
+// The files of `wearlink calibrate` (workflows/wear/calibration.h), each written atomically:
 //  - calibration.json  the report (per joint and surface the calibrated coefficient with
 //                      its 95 % interval and prior, measured and predicted mass loss with
 //                      the ensemble's spread, the secant's runs and residuals);

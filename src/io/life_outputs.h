@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Files of a life run (`wearlink life`, workflows/life.h), each written atomically:
+// Files of a life run (`wearlink life`, workflows/wear/life.h), each written atomically:
 //   life_history.csv  one row per wear iteration (row 0: the start): iteration,
 //                     revolutions, factor, per criterion its value (<name>_<unit>) and
 //                     the joint that has it (<name>_joint), and with the response

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The convergence data and plot of one largest-Lyapunov-exponent estimate, shared by the
-// `wearlink lyapunov` command and the scene analyses (workflows/analyses.h): for Wolf's method
+// `wearlink lyapunov` command and the scene analyses (workflows/run/analyses.h): for Wolf's method
 // the running estimate against the evolution time, for Rosenstein's the mean log
 // divergence <ln d(k)> against time with the fitted line. Units are always stated:
 // natural log, per second when the sample interval is known, else per sample.

@@ -48,7 +48,7 @@ namespace wearlink::io
 
     double output_interval   = 1e-3; ///< time-series sampling [s]; 0: every step
     bool   write_time_series = true;
-    /** Output/Plots: the first-look PNGs of a run (workflows/first_look.h). */
+    /** Output/Plots: the first-look PNGs of a run (workflows/run/first_look.h). */
     bool plots = true;
     /**
      * The bodies whose acceleration the first look plots: Output/Plot bodies if given,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The plots of an ensemble with uncertain inputs (workflows/uncertain_inputs.h):
+// The plots of an ensemble with uncertain inputs (workflows/ensemble/uncertain_inputs.h):
 //  - sensitivity.png, a tornado per headline figure: one horizontal bar per uncertain
 //    input, its rank correlation (or first-order and total Sobol index) with the figure,
 //    and the 95 % interval as a thin line;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Scene-selected nonlinear-dynamics analyses (workflows/analyses.h) on the nine-bar press:
+// Scene-selected nonlinear-dynamics analyses (workflows/run/analyses.h) on the nine-bar press:
 //  - ideal joints: the mechanism has zero degrees of freedom (24 coordinates, 20
 //    revolute + 2 translational + 2 driver equations), so its state is a function of
 //    time alone, periodic with the drivers' period T = 2π/(4π rad/s) = 0.5 s. Every
@@ -18,7 +18,7 @@
 #include "io/plot.h"
 #include "io/recorded_run_files.h"
 #include "scene_support.h"
-#include "workflows/analyses.h"
+#include "workflows/run/analyses.h"
 
 #include <deal.II/base/utilities.h>
 #include <gtest/gtest.h>
@@ -319,7 +319,7 @@ TEST(Analyses, RecordedRunReadsBackFromItsOutputs)
 
 TEST(Analyses, TwoTrajectoryExponentOfTheSimulation)
 {
-  // The exponent from the simulation itself (workflows/shadow_trajectory.h), two checks with
+  // The exponent from the simulation itself (workflows/run/shadow_trajectory.h), two checks with
   // independent expectations:
   //  - ideal nine-bar: 0 DOF, so every displacement of the shadow violates the
   //    constraints and Baumgarte's γ − 2αΦ̇ − β²Φ with α = β = 5 1/s (a critically

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// `wearlink calibrate` (workflows/calibration.h) on synthetic measurements whose
+// `wearlink calibrate` (workflows/wear/calibration.h) on synthetic measurements whose
 // coefficients are known. The scene: params/slider_crank_wear.prm cut to 3 fixed wear
 // iterations of 1 cycle × 1000 (3000 revolutions), so that a forward run takes about
 // 0.1 s (measured: 0.09 s each; the recovery test 1.8 s, the 12 coverage cases 2.7 s).
@@ -30,9 +30,9 @@
 #include "io/json_file.h"
 #include "io/scene.h"
 #include "support/test_support.h"
-#include "workflows/calibration.h"
-#include "workflows/ensemble.h"
-#include "workflows/wear_run.h"
+#include "workflows/ensemble/ensemble.h"
+#include "workflows/wear/calibration.h"
+#include "workflows/wear/wear_run.h"
 
 #include <gtest/gtest.h>
 

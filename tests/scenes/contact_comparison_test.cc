@@ -12,7 +12,7 @@
 #include "io/plot.h"
 #include "io/profile_file.h"
 #include "scene_support.h"
-#include "workflows/contact_comparison.h"
+#include "workflows/compare/contact_comparison.h"
 
 #include <gtest/gtest.h>
 

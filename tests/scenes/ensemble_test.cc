@@ -21,7 +21,7 @@
 #include "base/output_directory.h"
 #include "io/json_file.h"
 #include "support/test_support.h"
-#include "workflows/ensemble.h"
+#include "workflows/ensemble/ensemble.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The first look of `wearlink run` (workflows/first_look.h) on the Flores slider-crank,
+// The first look of `wearlink run` (workflows/run/first_look.h) on the Flores slider-crank,
 // one crank revolution (12 ms at 5000 rpm): the orbit of its clearance joint B, the
 // contact forces and the slider's acceleration (the default plot body: the body on the
 // translational joint) are written as PNGs; the printed summary carries the numbers of

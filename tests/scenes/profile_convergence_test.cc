@@ -28,7 +28,7 @@
 #include "scene_support.h"
 #include "support/test_support.h"
 #include "wear/depth_measures.h"
-#include "workflows/wear_run.h"
+#include "workflows/wear/wear_run.h"
 
 #include <gtest/gtest.h>
 

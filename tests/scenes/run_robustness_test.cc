@@ -12,7 +12,7 @@
 #include "base/output_directory.h"
 #include "scene_support.h"
 #include "wear/wear_state.h"
-#include "workflows/wear_run.h"
+#include "workflows/wear/wear_run.h"
 
 #include <gtest/gtest.h>
 
@@ -183,7 +183,7 @@ TEST(Run, EarlierRunFilesNeedOverwrite)
   const auto summary = wearlink::testing::file_content(dir + "/summary.json");
   const auto again   = wearlink::testing::run_wearlink(args);
   EXPECT_EQ(again.exit_status, 2) << again.output;
-  // The nine-bar's slider9 gets its first-look accelerations.png (workflows/first_look.h).
+  // The nine-bar's slider9 gets its first-look accelerations.png (workflows/run/first_look.h).
   EXPECT_NE(again.output.find("holds the files of an earlier run (accelerations.png, parameters.prm, summary.json"),
             std::string::npos)
     << again.output;

@@ -5,7 +5,7 @@
 #include "base/effect_ledger.h"
 #include "io/scene.h"
 #include "support/test_support.h"
-#include "workflows/run.h"
+#include "workflows/run/run.h"
 
 #include <functional>
 

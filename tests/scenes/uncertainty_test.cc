@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Ensembles with uncertain inputs (workflows/uncertain_inputs.h): `wearlink run
+// Ensembles with uncertain inputs (workflows/ensemble/uncertain_inputs.h): `wearlink run
 // nine_bar_wear.prm --ensemble 8` cut to 1 wear iteration of 1 cycle (about a second a
 // member) with two uncertain inputs: joint A's pin wear coefficient, lognormal with
 // median 4.6e-14 m³/(N m) and σ_ln = 0.5 (a factor 1.65 per σ), and joint B's bushing
@@ -18,7 +18,7 @@
 #include "io/json_file.h"
 #include "io/plot.h"
 #include "support/test_support.h"
-#include "workflows/uncertain_inputs.h"
+#include "workflows/ensemble/uncertain_inputs.h"
 
 #include <gtest/gtest.h>
 

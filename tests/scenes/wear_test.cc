@@ -16,8 +16,8 @@
 //    wear on with hertz-strip → only that pressure model, still no gmsh.
 #include "contact/clearance_joint.h"
 #include "scene_support.h"
-#include "workflows/pressure_comparison.h"
-#include "workflows/wear_run.h"
+#include "workflows/compare/pressure_comparison.h"
+#include "workflows/wear/wear_run.h"
 
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@
 #include "io/json_file.h"
 #include "scene_support.h"
 #include "wear/wear_state.h"
-#include "workflows/wear_run.h"
+#include "workflows/wear/wear_run.h"
 
 #include <gtest/gtest.h>
 

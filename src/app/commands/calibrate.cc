@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink calibrate SCENE.prm --measurements MEAS.prm`: the Archard wear coefficients
-// of a scene's wearing joints from measured mass losses (workflows/calibration.h).
+// of a scene's wearing joints from measured mass losses (workflows/wear/calibration.h).
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "io/calibration_files.h"
-#include "workflows/calibration.h"
+#include "workflows/wear/calibration.h"
 
 #include <deal.II/base/mpi.h>
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink compare-contact SCENE.prm`: the simplified contact laws against the FE model
-// (workflows/contact_comparison.h); prints the deviations and the effects, writes the
+// (workflows/compare/contact_comparison.h); prints the deviations and the effects, writes the
 // curves, tables and the plot.
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/text.h"
-#include "workflows/contact_comparison.h"
+#include "workflows/compare/contact_comparison.h"
 
 #include <filesystem>
 #include <iostream>

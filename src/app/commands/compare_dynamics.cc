@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink compare-dynamics BEFORE_DIR AFTER_DIR`: the before/after-wear comparison of
-// workflows/dynamics_comparison.h for two runs recorded earlier (each a `wearlink run` output
+// workflows/compare/dynamics_comparison.h for two runs recorded earlier (each a `wearlink run` output
 // directory with analyses), e.g. a clearance scene run once with fresh and once with
 // worn profile files. A wear scene with analyses does the same by itself.
 #include "app/command_line.h"
@@ -9,8 +9,8 @@
 #include "io/analyses_parameters.h"
 #include "io/json_file.h"
 #include "io/recorded_run_files.h"
-#include "workflows/analyses.h"
-#include "workflows/dynamics_comparison.h"
+#include "workflows/compare/dynamics_comparison.h"
+#include "workflows/run/analyses.h"
 
 #include <iostream>
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink compare-pressure SCENE.prm`: the same load history of every wearing joint
-// through several pressure models (workflows/pressure_comparison.h); prints the table and
+// through several pressure models (workflows/compare/pressure_comparison.h); prints the table and
 // writes compare_pressure.csv, compare_depth_<J>.csv/.png.
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/text.h"
 #include "io/scene.h"
-#include "workflows/pressure_comparison.h"
+#include "workflows/compare/pressure_comparison.h"
 
 #include <filesystem>
 #include <iostream>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink compare-profile RUN_DIR MEASURED.csv --surface bore|pin --joint J`: a
-// measured worn surface against a wear run's prediction (workflows/profile_comparison.h):
+// measured worn surface against a wear run's prediction (workflows/compare/profile_comparison.h):
 // a printed table, profile_comparison.json and an overlay PNG.
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
-#include "workflows/profile_comparison.h"
+#include "workflows/compare/profile_comparison.h"
 
 #include <iostream>
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink compare-signal SCENE.prm MEASURED.csv --channel NAME`: a simulated signal
-// against a measured one (workflows/signal_comparison.h): a printed table, an overlay
+// against a measured one (workflows/compare/signal_comparison.h): a printed table, an overlay
 // and a spectrum PNG, signal_comparison.json.
 #include "app/command_line.h"
 #include "base/exceptions.h"
-#include "workflows/signal_comparison.h"
+#include "workflows/compare/signal_comparison.h"
 
 #include <filesystem>
 #include <iostream>

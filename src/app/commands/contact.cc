@@ -9,7 +9,7 @@
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "io/contact_case.h"
-#include "workflows/contact_case.h"
+#include "workflows/run/contact_case.h"
 
 #include <deal.II/base/mpi.h>
 

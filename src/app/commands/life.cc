@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink life SCENE.prm`: the wear loop until the scene's Life criteria are reached
-// (workflows/life.h), in an output folder held as `run` holds it.
-#include "workflows/life.h"
+// (workflows/wear/life.h), in an output folder held as `run` holds it.
+#include "workflows/wear/life.h"
 
 #include "app/command_line.h"
 #include "app/ensemble_command.h"
@@ -9,7 +9,7 @@
 #include "app/run_files.h"
 #include "base/exceptions.h"
 #include "io/life_parameters.h"
-#include "workflows/ensemble.h"
+#include "workflows/ensemble/ensemble.h"
 
 #include <filesystem>
 #include <iostream>
@@ -123,7 +123,7 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
       return f;
     }
 
-    /** Every member a life run (workflows/life.h) in DIR/member_<k>/. */
+    /** Every member a life run (workflows/wear/life.h) in DIR/member_<k>/. */
     int
     run_life_ensemble(const std::string &file, const ParsedArguments &a)
     {

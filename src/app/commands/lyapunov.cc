@@ -10,7 +10,7 @@
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
-#include "workflows/lyapunov_series.h"
+#include "workflows/run/lyapunov_series.h"
 
 #include <iostream>
 #include <optional>

@@ -5,7 +5,7 @@
 // `--print-parameters` prints every entry a scene can have. The output directory is held
 // for the run (base/output_directory.h): locked, and refused if it holds an earlier
 // run's files unless --overwrite (replace them) or --resume (continue that wear run).
-#include "workflows/run.h"
+#include "workflows/run/run.h"
 
 #include "app/command_line.h"
 #include "app/ensemble_command.h"
@@ -14,9 +14,9 @@
 #include "base/exceptions.h"
 #include "base/output_directory.h"
 #include "io/scene.h"
-#include "workflows/ensemble.h"
-#include "workflows/first_look.h"
-#include "workflows/wear_run.h"
+#include "workflows/ensemble/ensemble.h"
+#include "workflows/run/first_look.h"
+#include "workflows/wear/wear_run.h"
 
 #include <filesystem>
 #include <iostream>
@@ -163,7 +163,7 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
       return 0;
     }
 
-    /** The short summary and the files of a run (workflows/first_look.h). */
+    /** The short summary and the files of a run (workflows/run/first_look.h). */
     void
     print_first_look(const workflows::FirstLook &look)
     {

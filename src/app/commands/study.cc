@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// `wearlink study accuracy SCENE.prm`: what accuracy costs in time (workflows/accuracy_study.h).
+// `wearlink study accuracy SCENE.prm`: what accuracy costs in time (workflows/study/accuracy_study.h).
 // Every accuracy knob that applies to the scene is varied alone; the error of the
 // quantities that matter against the knob's reference and the wall time of every run
 // go into accuracy.csv, accuracy.md and accuracy_pareto.png.
 // `wearlink study convergence SCENE.prm`: do the worn profiles converge
-// (workflows/convergence_study.h)? The surfaces and the wear step refined together, an
+// (workflows/study/convergence_study.h)? The surfaces and the wear step refined together, an
 // ensemble at every level.
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
-#include "workflows/accuracy_study.h"
-#include "workflows/convergence_study.h"
+#include "workflows/study/accuracy_study.h"
+#include "workflows/study/convergence_study.h"
 
 #include <deal.II/base/mpi.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink sweep SCENE.prm --parameter "Section/Entry" --values FROM:TO:COUNT`: the
-// arguments, MPI for this command only, and the sweep of workflows/sweep.h.
-#include "workflows/sweep.h"
+// arguments, MPI for this command only, and the sweep of workflows/study/sweep.h.
+#include "workflows/study/sweep.h"
 
 #include "app/command_line.h"
 #include "app/output_claim.h"

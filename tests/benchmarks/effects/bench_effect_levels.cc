@@ -19,8 +19,8 @@
 #include "io/scene.h"
 #include "register_all.h"
 #include "support/test_support.h"
-#include "workflows/run.h"
-#include "workflows/wear_run.h"
+#include "workflows/run/run.h"
+#include "workflows/wear/wear_run.h"
 
 #include <chrono>
 #include <cstdio>

@@ -17,7 +17,7 @@
 #include "mbs/simulation.h"
 #include "register_all.h"
 #include "support/test_support.h"
-#include "workflows/run.h"
+#include "workflows/run/run.h"
 
 #include <algorithm>
 #include <chrono>

@@ -14,7 +14,7 @@
 #include "io/scene.h"
 #include "register_all.h"
 #include "support/test_support.h"
-#include "workflows/run.h"
+#include "workflows/run/run.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 #include "base/json.h"
 #include "contact/clearance_joint.h"
 #include "scene_support.h"
-#include "workflows/wear_run.h"
+#include "workflows/wear/wear_run.h"
 
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
 #include "support/test_support.h"
-#include "workflows/run.h"
+#include "workflows/run/run.h"
 
 #include <Eigen/LU>
 #include <gtest/gtest.h>

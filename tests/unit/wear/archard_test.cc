@@ -18,8 +18,8 @@
 //    its maximum on the area facing the load.
 #include "base/parameters.h"
 #include "contact/pressure_model.h"
+#include "unit/contact/pressure_model_support.h"
 #include "wear/archard.h"
-#include "wear_test_support.h"
 
 #include <gtest/gtest.h>
 

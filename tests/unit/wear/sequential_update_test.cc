@@ -8,9 +8,9 @@
 // rigid imprint of a 15 µm deep pocket, ±14° against the strip's ±2°). Both remove the
 // same Archard volume k_D F s f; the sequential pocket is smooth (roughness below 5 %).
 // Each pressure model: hertz-strip (explicit, split states), winkler (implicit).
+#include "unit/contact/pressure_model_support.h"
 #include "wear/archard.h"
 #include "wear/depth_measures.h"
-#include "wear_test_support.h"
 
 #include <gtest/gtest.h>
 

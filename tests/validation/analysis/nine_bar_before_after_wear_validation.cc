@@ -2,7 +2,7 @@
 // The nine-bar press before and after 50,000 revolutions of wear (seed §4.4, Figs 9–12):
 // params/nine_bar_wear_dynamics.prm as shipped — the wear loop of nine_bar_wear.prm,
 // then 100 crank cycles (after a 0.5 s transient) with the fresh and with the worn
-// profiles, compared by workflows/dynamics_comparison.h. About 4 minutes.
+// profiles, compared by workflows/compare/dynamics_comparison.h. About 4 minutes.
 //
 // What is asserted, and why these are the robust quantities:
 //  - the worn joints rattle: impacts per driving period rise more than 2× at A and B

@@ -16,7 +16,7 @@
 //  2. Simulation (§4.2.1, params/nine_bar_wear.prm): the seed reports that joint B
 //     wears more than joint A. Asserted: B's worn volume (pin + bushing) exceeds A's.
 #include "scene_support.h"
-#include "workflows/wear_run.h"
+#include "workflows/wear/wear_run.h"
 
 #include <gtest/gtest.h>
 

@@ -1,2 +1,2 @@
 // a lower layer that includes a higher one: the check must fail
-#include "workflows/run.h"
+#include "workflows/run/run.h"

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Running a scene: assemble, integrate, record. The recorder watches every accepted
+// step (extremes of body motion, joint forces, constraint violation, energy balance)
+// and samples the time series on the dense output; results are written atomically into
+// the output directory: summary.json, time_series.csv, parameters.prm (the effective
+// scene, with overrides applied).
+#pragma once
+
+#include "analysis/recorded_run.h"
+#include "base/json.h"
+#include "base/validity_warnings.h"
+#include "io/scene.h"
+#include "mbs/simulation.h"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace wearlink::workflows
+{
+  struct FirstLook;
+
+  struct RunOptions
+  {
+    /** Where to write; empty: write nothing (library use, tests). */
+    std::string output_directory;
+    /** Progress lines on stderr. */
+    bool progress = false;
+    /** More observers to notify after every accepted step. */
+    std::vector<mbs::StepObserver *> observers;
+    /**
+     * Continuation (wear iterations): start from this full state [q | v | z] at
+     * start_time instead of assembling, and stop at end_time (NaN: the scene's).
+     */
+    const Eigen::VectorXd *initial_state = nullptr;
+    double                 start_time    = std::numeric_limits<double>::quiet_NaN();
+    double                 end_time      = std::numeric_limits<double>::quiet_NaN();
+    /** If set, receives the state at the end of the run. */
+    Eigen::VectorXd *final_state = nullptr;
+    /**
+     * Build the analyses the scene lists (Analyses/List of analyses). The iterations of
+     * a wear run switch them off: they are run once before and once after wear instead
+     * (workflows/wear/wear_run.h).
+     */
+    bool analyses = true;
+    /** If set, these analyses instead of the scene's (e.g. without the shadow trajectory). */
+    const analysis::AnalysesSettings *analyses_settings = nullptr;
+    /** If set (and analyses are on), receives what the analyses recorded. */
+    analysis::RecordedRun *recorded = nullptr;
+    /**
+     * If set, receives this run's validity warnings (merged: a wear run collects those of
+     * all its iterations). They are always in the summary's `warnings` list, and printed
+     * to stderr when the run writes its summary.json.
+     */
+    ValidityWarnings *warnings = nullptr;
+    /**
+     * If set (and the run writes its files, and Output/Plots is true), the run also
+     * writes the first-look PNGs of its clearance joints and bodies and fills this with
+     * their names and a short summary (workflows/run/first_look.h).
+     */
+    FirstLook *first_look = nullptr;
+  };
+
+  /** The columns of the time_series.csv a run of @p scene writes, in order. */
+  std::vector<std::string>
+  time_series_columns(const io::Scene &scene);
+
+  /**
+   * Assemble and integrate @p scene from its start to its end time. Returns the run
+   * summary (see README: summary.json), whose `warnings` list names every result
+   * beyond the validity of its model (run_validity_warnings()). Throws InputError for an impossible assembly,
+   * NumericalError for a failure of the numerics.
+   */
+  Json
+  run_scene(io::Scene &scene, const RunOptions &options);
+
+  /**
+   * The results of a run (its @p summary) beyond the validity of their models: a
+   * penetration beyond 20 % of a joint's radial clearance, a constraint violation beyond
+   * 1000 × the position tolerance (at least 1 µm), an energy balance off by more than
+   * the integrator promises, an rk4 step above 1/100 of the driving period, evaluations
+   * of a contact-law table beyond its largest load.
+   */
+  ValidityWarnings
+  run_validity_warnings(const io::Scene &scene, const Json &summary);
+
+  /** Assemble @p scene at its start time (q, v); throws InputError if impossible. */
+  void
+  assemble_scene(const io::Scene &scene, Eigen::VectorXd &q, Eigen::VectorXd &v);
+} // namespace wearlink::workflows

@@ -1,0 +1,602 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "workflows/wear/wear_run.h"
+
+#include "analysis/cycle_peaks.h"
+#include "base/atomic_file.h"
+#include "base/exceptions.h"
+#include "base/text.h"
+#include "io/analyses_parameters.h"
+#include "io/profile_series.h"
+#include "io/wear_outputs.h"
+#include "wear/wear_loop.h"
+#include "workflows/compare/dynamics_comparison.h"
+#include "workflows/run/analyses.h"
+#include "workflows/run/run.h"
+#include "workflows/wear/scene_identity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace wearlink::workflows
+{
+  namespace
+  {
+    /**
+     * The two-trajectory exponent (workflows/run/shadow_trajectory.h) of the fresh and of the worn
+     * mechanism: the scene read again with its overrides plus the analysis, duration and
+     * tightened tolerances, and for the worn state the profiles written into @p dir
+     * (bore_<J>.csv, pin_<J>.csv). Outputs in DIR/exponent_before, DIR/exponent_after.
+     * A run the integrator cannot finish (a numerical failure) gives no exponent, with the
+     * reason in the comparison, and the wear run goes on: on worn pockets that conform to
+     * the pin, the deepest point of contact can jump between the pocket's flanks and
+     * the force's direction with it, which the integrator may not get through at the
+     * tight tolerance these runs need (the nine-bar after 50,000 revolutions: 76,828
+     * steps for 2.7 ms at 1e-11).
+     */
+    SimulationExponents
+    two_trajectory_exponents(const io::Scene       &scene,
+                             const wear::WearState &st,
+                             const std::string     &dir,
+                             const bool             progress)
+    {
+      const auto         &a     = scene.analyses;
+      const auto         &is    = scene.simulation.integrator;
+      const double        scale = a.two_trajectory_tolerance / is.relative_tolerance;
+      const double        T     = io::driving_period(scene);
+      SimulationExponents out;
+      out.separation            = a.two_trajectory_separation;
+      out.interval              = a.renormalization_interval;
+      out.tolerance             = a.two_trajectory_tolerance;
+      out.duration              = a.two_trajectory_cycles * T;
+      const std::string abs_dir = std::filesystem::absolute(dir).string();
+      for (int k = 0; k < 2; ++k)
+        {
+          ParameterOverrides o = scene.overrides;
+          o.set("Analyses/List of analyses", "lyapunov")
+            .set("Analyses/Lyapunov/Methods", "two-trajectory")
+            .set("Output/Time series", "false")
+            .set("Simulation/End time", scene.start_time + a.transient + out.duration)
+            .set("Integrator/Relative tolerance", a.two_trajectory_tolerance)
+            .set("Integrator/Position tolerance", is.absolute_tolerance[0] * scale)
+            .set("Integrator/Velocity tolerance", is.absolute_tolerance[1] * scale);
+          if (k == 1)
+            for (const auto &j : st.joints)
+              o.set("Joint " + j.name + "/Clearance/Bore profile file", abs_dir + "/bore_" + j.name + ".csv")
+                .set("Joint " + j.name + "/Clearance/Pin profile file", abs_dir + "/pin_" + j.name + ".csv");
+          if (progress)
+            std::cerr << "[wearlink] two-trajectory exponent " << (k == 0 ? "before" : "after") << " wear, "
+                      << a.two_trajectory_cycles << " periods at relative tolerance " << a.two_trajectory_tolerance
+                      << "\n";
+          io::Scene  s = io::read_scene(scene.file, o);
+          RunOptions ro;
+          ro.output_directory = dir + (k == 0 ? "/exponent_before" : "/exponent_after");
+          ro.progress         = progress;
+          double &exponent    = k == 0 ? out.before : out.after;
+          try
+            {
+              const Json  summary = run_scene(s, ro);
+              const Json &l       = summary.at("analyses").at("lyapunov");
+              for (std::size_t i = 0; i < l.size(); ++i)
+                if (l[i].at("method").get<std::string>() == "two-trajectory")
+                  exponent = json_number(l[i].at("exponent_per_s"));
+            }
+          catch (const NumericalError &e) // this estimate is lost, not the wear run
+            {
+              exponent                                          = std::numeric_limits<double>::quiet_NaN();
+              (k == 0 ? out.failure_before : out.failure_after) = e.what();
+              std::cerr << "[wearlink] warning: the two-trajectory exponent " << (k == 0 ? "before" : "after")
+                        << " wear could not be computed: " << e.what() << "\n";
+            }
+        }
+      return out;
+    }
+
+    /**
+     * The scene's analyses once with the fresh and once with the worn profiles, each run
+     * from assembly at Start time to End time (outputs in DIR/dynamics_before and
+     * DIR/dynamics_after), then compared (workflows/compare/dynamics_comparison.h) into DIR. The joints
+     * are left with the worn profiles.
+     */
+    DynamicsComparison
+    before_after_dynamics(io::Scene                                    &scene,
+                          const wear::WearState                        &st,
+                          const std::vector<contact::ClearanceJoint *> &joints,
+                          const std::string                            &dir,
+                          const bool                                    progress)
+    {
+      ComparedRun       runs[2];
+      const char *const names[2] = {"before", "after"};
+      // The shadow trajectory needs its own tolerance and the profiles as files (it
+      // reads the scene again): separate runs below, not these.
+      const bool                 two_trajectory = scene.analyses.lyapunov && scene.analyses.two_trajectory;
+      analysis::AnalysesSettings without_shadow = scene.analyses;
+      without_shadow.two_trajectory             = false;
+      for (int k = 0; k < 2; ++k)
+        {
+          for (unsigned int i = 0; i < joints.size(); ++i)
+            joints[i]->set_profiles(k == 0 ? st.joints[i].initial_bore : st.joints[i].bore,
+                                    k == 0 ? st.joints[i].initial_pin : st.joints[i].pin);
+          for (auto *j : scene.clearance_joints)
+            j->set_mode(false, 0);
+          if (progress)
+            std::cerr << "[wearlink] dynamics " << names[k]
+                      << " wear with the scene's analyses, t = " << scene.start_time << " … " << scene.end_time
+                      << " s\n";
+          RunOptions ro;
+          ro.output_directory  = dir.empty() ? std::string() : dir + "/dynamics_" + names[k];
+          ro.progress          = progress;
+          ro.recorded          = &runs[k].run;
+          ro.analyses_settings = &without_shadow;
+          runs[k].summary      = run_scene(scene, ro);
+          std::ostringstream label;
+          label << (k == 0 ? "before wear" : "after wear");
+          if (k == 1)
+            label << " (" << std::setprecision(6) << st.revolutions << " rev)";
+          runs[k].run.label = label.str();
+        }
+      const auto                &a = scene.analyses;
+      DynamicsComparisonSettings cs;
+      cs.joints     = a.joints;
+      cs.directions = a.directions;
+      if (a.lyapunov)
+        cs.methods = a.methods;
+      cs.delay                   = a.comparison_delay;
+      cs.dimension               = a.comparison_dimension;
+      cs.delay_scan              = a.delay_scan;
+      cs.bodies                  = a.bodies;
+      const std::string response = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      if (!response.empty() && std::find(cs.bodies.begin(), cs.bodies.end(), response) == cs.bodies.end())
+        cs.bodies.push_back(response);
+      cs.published      = io::parse_published_exponents(a.published_exponents, scene.file);
+      cs.published_note = a.published_note;
+      if (two_trajectory && !dir.empty())
+        cs.simulation_exponents = two_trajectory_exponents(scene, st, dir, progress);
+      return compare_dynamics(runs[0], runs[1], cs, dir);
+    }
+
+    /** The wearing joints of @p scene, in the order of scene.wear. */
+    std::vector<wear::WearingJoint>
+    wearing_joints(io::Scene &scene)
+    {
+      std::vector<wear::WearingJoint> out;
+      for (const auto &w : scene.wear)
+        for (auto *j : scene.clearance_joints)
+          if (j->name() == w->joint)
+            out.push_back({j, w.get()});
+      AssertThrow(out.size() == scene.wear.size(), dealii::ExcInternalError());
+      return out;
+    }
+
+    /** The scene's dynamics as the wear loop advances them (no analyses per iteration). */
+    wear::AdvanceDynamics
+    dynamics_of(io::Scene &scene, ValidityWarnings &warnings)
+    {
+      return [&scene, &warnings](const double                            t0,
+                                 const double                            t1,
+                                 const Eigen::VectorXd                  &y0,
+                                 const std::vector<mbs::StepObserver *> &observers) {
+        Eigen::VectorXd y1;
+        RunOptions      ro;
+        ro.initial_state = &y0;
+        ro.start_time    = t0;
+        ro.end_time      = t1;
+        ro.final_state   = &y1;
+        ro.observers     = observers;
+        ro.analyses      = false; // the scene's analyses run before and after wear instead
+        ro.warnings      = &warnings;
+        run_scene(scene, ro);
+        return y1;
+      };
+    }
+
+    /**
+     * The checkpoint of a resumed run, refused (InputError naming what differs, with both
+     * values) unless it was written for this scene and fits its sizes.
+     */
+    wear::WearState
+    checked_checkpoint(const io::Scene &scene, const std::string &checkpoint)
+    {
+      auto       st      = wear::WearState::read(checkpoint);
+      const auto entries = scene_entries(scene);
+      if (st.fingerprint != fingerprint(entries) || st.scene != entries)
+        {
+          const std::string differences = scene_differences(st.scene, entries);
+          throw InputError(
+            "Cannot resume from '" + checkpoint + "': it was written for another scene than " + scene.file +
+            " with these settings: " + (differences.empty() ? "its fingerprint differs" : differences) +
+            ". Resume with the scene and --set options the run was started with (only Output/*, "
+            "Wear/Number of iterations, Wear/Target revolutions, Wear/FE output, Wear/Profile "
+            "magnification, Life/Maximum revolutions and Life/Maximum iterations may change), or start afresh (`--overwrite`).");
+        }
+      wear::StateShape shape;
+      const auto       n = scene.mechanism->n_coordinates();
+      shape.n_state      = 2 * n + mbs::MechanismOde::n_quadratures;
+      shape.n_modes      = 2 * scene.clearance_joints.size();
+      for (const auto &w : scene.wear)
+        for (const auto *j : scene.clearance_joints)
+          if (j->name() == w->joint)
+            shape.joints.push_back(
+              {j->name(), j->get_description().geometry.bore.n_points(), j->get_description().geometry.pin.n_points()});
+      st.check_shape(shape, checkpoint);
+      return st;
+    }
+
+    /** Start @p loop from the scene's assembly, or resume it from its checkpoint. */
+    void
+    start_or_resume(wear::WearLoop       &loop,
+                    io::Scene            &scene,
+                    const WearRunOptions &options,
+                    const std::string    &checkpoint)
+    {
+      if (options.resume)
+        {
+          loop.resume(checked_checkpoint(scene, checkpoint), checkpoint);
+          return;
+        }
+      if (!options.output_directory.empty())
+        {
+          make_output_directory(options.output_directory);
+          std::error_code ec;
+          std::filesystem::remove(checkpoint, ec); // a fresh run never continues an old one
+        }
+      Eigen::VectorXd q0, v0;
+      assemble_scene(scene, q0, v0);
+      const auto entries = scene_entries(scene);
+      loop.start(scene.start_time, q0, v0, fingerprint(entries), entries);
+    }
+
+    /** One line per iteration on stderr: revolutions, factor, depths and volume per joint. */
+    void
+    print_progress(const wear::WearLoop &loop,
+                   const unsigned int    n_iterations,
+                   const double          seconds,
+                   const std::string    &prefix)
+    {
+      const auto        &st = loop.state();
+      std::ostringstream os;
+      os << "[wearlink] " << prefix << "wear iteration " << st.iterations_done << '/' << n_iterations
+         << "  revolutions " << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
+      for (const auto &j : st.joints)
+        {
+          const auto &r = j.history.back();
+          os << "  " << j.name << ": h_pin " << std::setprecision(3) << r.max_depth_pin * 1e6 << " µm, h_bore "
+             << r.max_depth_bore * 1e6 << " µm, V " << (r.volume_pin + r.volume_bore) * 1e9 << " mm³";
+        }
+      os << "  (" << std::setprecision(3) << seconds << " s)\n";
+      std::cerr << os.str();
+    }
+
+    /** The wear figures of each wearing joint, into summary["clearance_joints"][J]. */
+    void
+    add_wear_summary(Json &summary, const io::Scene &scene, const wear::WearState &st)
+    {
+      auto &cj = summary["clearance_joints"];
+      for (unsigned int i = 0; i < st.joints.size(); ++i)
+        {
+          const auto                 &js     = st.joints[i];
+          const auto                 &w      = *scene.wear[i];
+          const wear::IterationRecord r      = js.history.empty() ? wear::IterationRecord() : js.history.back();
+          auto                       &o      = cj[js.name];
+          o["pressure_model"]                = w.pressure_model;
+          o["wear_volume_pin_m3"]            = r.volume_pin;
+          o["wear_volume_bushing_m3"]        = r.volume_bore;
+          o["archard_volume_pin_m3"]         = r.archard_pin;
+          o["archard_volume_bushing_m3"]     = r.archard_bore;
+          o["max_wear_depth_pin_m"]          = r.max_depth_pin;
+          o["max_wear_depth_bushing_m"]      = r.max_depth_bore;
+          o["envelope_wear_depth_pin_m"]     = r.envelope_depth_pin;
+          o["envelope_wear_depth_bushing_m"] = r.envelope_depth_bore;
+          o["roughness_pin"]                 = r.roughness_pin;
+          o["roughness_bushing"]             = r.roughness_bore;
+          o["contact_width_m"]               = js.contact_width;
+          o["mass_loss_pin_mg"]              = r.volume_pin * w.archard.pin_density * 1e6;
+          o["mass_loss_bushing_mg"]          = r.volume_bore * w.archard.bushing_density * 1e6;
+          o["revolutions"]                   = st.revolutions;
+          o["relative_revolutions"]          = r.relative_revolutions;
+          o["sliding_distance_m"]            = r.sliding_distance;
+          o["mean_normal_force_N"]           = r.mean_normal_force;
+        }
+      summary["wear_iterations"]  = st.iterations_done;
+      summary["wear_revolutions"] = st.revolutions;
+    }
+
+    /**
+     * The peak acceleration magnitude of the response body over every accepted step, in
+     * the Wear/Response cycles from the initial assembly before wear (the first
+     * iteration's start, kept in the checkpoint; @p before its per-cycle peaks) and
+     * after wear: the largest over
+     * them, and the mean of the per-cycle peaks after the first cycle (the journal
+     * settles from its assembly position in it; with one response cycle, that one), and
+     * the ratios after/before.
+     */
+    Json
+    response_block(const io::Scene &scene, const std::vector<double> &before, const analysis::CyclePeakRecorder &after)
+    {
+      const double cycles  = scene.wear_loop.response_cycles;
+      const auto   whole   = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
+      const auto   settle  = std::size_t(whole >= 2 ? 1 : 0);
+      const auto   measure = [&](const std::vector<double> &peaks, double &largest, double &mean) {
+        const auto n = std::min(whole, peaks.size());
+        largest = mean = 0;
+        for (std::size_t k = 0; k < n; ++k)
+          largest = std::max(largest, peaks[k]);
+        for (std::size_t k = settle; k < n; ++k)
+          mean += peaks[k] / (n - settle);
+        return n > settle;
+      };
+      Json r               = Json::object();
+      r["body"]            = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      r["cycles"]          = cycles;
+      r["settling_cycles"] = settle;
+      double a_largest = 0, a_mean = 0, b_largest = 0, b_mean = 0;
+      if (measure(after.peaks(), a_largest, a_mean))
+        {
+          r["peak_acceleration_after_m_s2"] = a_largest;
+          r["mean_cycle_peak_after_m_s2"]   = a_mean;
+        }
+      if (measure(before, b_largest, b_mean) && b_largest > 0)
+        {
+          r["peak_acceleration_before_m_s2"] = b_largest;
+          r["mean_cycle_peak_before_m_s2"]   = b_mean;
+          r["peak_acceleration_ratio"]       = a_largest / b_largest;
+          r["mean_cycle_peak_ratio"]         = a_mean / b_mean;
+        }
+      return r;
+    }
+
+    /**
+     * Warn when an adaptive run ended at its Number of iterations before its Target
+     * revolutions: the results stand for fewer revolutions than the scene asked for.
+     */
+    void
+    check_target_reached(const wear::WearLoopSettings &ws, const wear::WearState &st, ValidityWarnings &warnings)
+    {
+      if (ws.extrapolation != wear::Extrapolation::adaptive || st.iterations_done < ws.n_iterations)
+        return;
+      warnings.check({"revolutions short of Wear/Target revolutions",
+                      ws.target_revolutions - st.revolutions,
+                      1e-9 * ws.target_revolutions,
+                      "cycles",
+                      "the run ended at its Number of iterations (" + std::to_string(ws.n_iterations) +
+                        ") having represented " + format_number(st.revolutions, 6) + " of " +
+                        format_number(ws.target_revolutions, 6) + " revolutions",
+                      "the worn profiles and volumes stand for fewer revolutions than the target; raise Number of "
+                      "iterations, Maximum extrapolation factor or Maximum depth increment"});
+    }
+
+    /**
+     * After the loop: the response after wear from the initial assembly with the final
+     * profiles, the summary, the worn profiles and plots, and the before/after-wear
+     * comparison if the scene lists analyses.
+     */
+    void
+    after_wear(io::Scene &scene, const WearRunOptions &options, WearRunResult &result)
+    {
+      const bool        write  = !options.output_directory.empty();
+      const std::string dir    = options.output_directory;
+      const double      period = cycle_period(scene);
+      const auto       &ws     = scene.wear_loop;
+      const auto       &st     = result.state;
+      Stopwatch         outputs;
+      for (auto *j : scene.clearance_joints)
+        j->set_mode(false, 0);
+      io::ResponseRecorder after(*scene.mechanism, io::response_body(scene), period / 400, ws.response_cycles * period);
+      analysis::CyclePeakRecorder after_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+      RunOptions                  ro;
+      ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
+      ro.observers = {&after, &after_peaks};
+      ro.analyses  = false;
+      ro.warnings  = &result.warnings;
+      Stopwatch dynamics;
+      result.summary = run_scene(scene, ro);
+      if (options.more_warnings)
+        result.warnings.merge(*options.more_warnings);
+      wear::check_roughness(st, result.warnings);
+      check_target_reached(ws, st, result.warnings);
+      result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
+      result.timings.dynamics += dynamics.seconds();
+      add_wear_summary(result.summary, scene, st);
+      result.summary["response"] = response_block(scene, st.response_before_peaks, after_peaks);
+      if (write)
+        {
+          io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
+          result.timings.outputs += outputs.seconds();   // the two-trajectory runs read them
+        }
+      if (scene.analyses.any())
+        {
+          Stopwatch                              comparison_time;
+          const auto                             joints = wearing_joints(scene);
+          std::vector<contact::ClearanceJoint *> wearing;
+          for (const auto &w : joints)
+            wearing.push_back(w.joint);
+          auto comparison = before_after_dynamics(scene, st, wearing, write ? dir : std::string(), options.progress);
+          result.timings.before_after_dynamics = comparison_time.seconds();
+          result.summary["before_after"]       = comparison.json;
+          result.before_after_report           = comparison.report;
+        }
+    }
+
+    /** summary.json and parameters.prm of a finished wear run. */
+    void
+    write_run_files(const io::Scene &scene, const std::string &dir, WearRunResult &result, const double total)
+    {
+      result.timings.total            = total;
+      result.summary["wear_timing_s"] = result.timings.to_json();
+      std::ostringstream prm;
+      scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
+      write_file_atomically(dir + "/parameters.prm", prm.str());
+      write_file_atomically(dir + "/summary.json", result.summary.dump(2));
+      result.warnings.print(std::cerr);
+    }
+  } // namespace
+
+  bool
+  has_wear(const io::Scene &scene)
+  {
+    return !scene.wear.empty();
+  }
+
+  double
+  cycle_period(const io::Scene &scene)
+  {
+    if (scene.wear_loop.cycle_period > 0)
+      return scene.wear_loop.cycle_period;
+    return io::driving_period(scene);
+  }
+
+  namespace
+  {
+    /**
+     * The profile series of an iteration (io/profile_series.h): per wearing joint the
+     * worn surfaces, with the pressure its model gives at the iteration's largest load
+     * on them (one evaluation per joint and iteration).
+     */
+    void
+    write_profile_frames(const std::vector<wear::WearingJoint> &wearing,
+                         const wear::WearLoop                  &loop,
+                         const std::string                     &dir,
+                         const double                           cycles_per_iteration)
+    {
+      for (std::size_t i = 0; i < wearing.size(); ++i)
+        {
+          contact::SurfacePressure p;
+          const auto              &peak = loop.peak_loads()[i];
+          if (peak.normal_force > 0)
+            wearing[i].wear->model->evaluate(peak, p);
+          io::write_profile_frame(dir, loop.state(), static_cast<unsigned int>(i), p, cycles_per_iteration);
+        }
+    }
+
+    /**
+     * The FE files of an iteration (Wear/FE output): the mesh of every joint on the fe
+     * pressure model when it changed since @p copied (its last copied mesh, per joint),
+     * the fields at the iteration's peak load, and their collection fe/fields_<J>.pvd
+     * (time: revolutions).
+     */
+    void
+    write_fe_files(const std::vector<wear::WearingJoint> &wearing,
+                   const wear::WearLoop                  &loop,
+                   const std::string                     &dir,
+                   const double                           cycles_per_iteration,
+                   std::vector<std::string>              &copied)
+    {
+      const unsigned int k = loop.state().iterations_done;
+      copied.resize(wearing.size());
+      for (std::size_t i = 0; i < wearing.size(); ++i)
+        {
+          auto             &model = *wearing[i].wear->model;
+          const std::string mesh  = model.mesh_file();
+          if (mesh.empty())
+            continue;
+          const std::string name = wearing[i].joint->name();
+          make_output_directory(dir + "/fe");
+          if (mesh != copied[i])
+            {
+              std::filesystem::copy_file(mesh,
+                                         dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh",
+                                         std::filesystem::copy_options::overwrite_existing);
+              copied[i] = mesh;
+            }
+          model.write_fields(loop.peak_loads()[i], dir + "/fe/fields_" + name + "_iteration" + std::to_string(k));
+          std::vector<double>      times;
+          std::vector<std::string> files;
+          double                   revolutions = 0;
+          for (unsigned int j = 1; j <= k && j <= loop.state().factors.size(); ++j)
+            {
+              revolutions += loop.state().factors[j - 1] * cycles_per_iteration;
+              const std::string file = "fields_" + name + "_iteration" + std::to_string(j) + ".vtu";
+              if (std::filesystem::exists(dir + "/fe/" + file))
+                {
+                  times.push_back(revolutions);
+                  files.push_back(file);
+                }
+            }
+          io::write_pvd(dir + "/fe/fields_" + name + ".pvd", times, files);
+        }
+    }
+  } // namespace
+
+  WearRunResult
+  run_wear(io::Scene &scene, const WearRunOptions &options)
+  {
+    const Stopwatch total;
+    AssertThrow(has_wear(scene), dealii::ExcMessage("run_wear() on a scene without wear."));
+    const bool        write      = !options.output_directory.empty();
+    const std::string dir        = options.output_directory;
+    const std::string checkpoint = dir + "/checkpoint.json";
+    if (options.resume && !write)
+      throw InputError("--resume needs the output directory of the run to continue.");
+
+    const double                          period  = cycle_period(scene);
+    const std::vector<wear::WearingJoint> wearing = wearing_joints(scene);
+    std::vector<std::string>              fe_meshes_copied;
+    WearRunResult                         result;
+    wear::WearLoop loop(scene.wear_loop, wearing, scene.clearance_joints, period, dynamics_of(scene, result.warnings));
+    loop.set_warnings(&result.warnings); // kept in the checkpoints: a resumed run reports them all
+    start_or_resume(loop, scene, options, checkpoint);
+    if (write)
+      loop.set_checkpoint(checkpoint);
+
+    unsigned int                done_here = 0;
+    analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+    io::ResponseRecorder        before(*scene.mechanism,
+                                io::response_body(scene),
+                                period / 400,
+                                scene.wear_loop.response_cycles * period);
+    loop.set_iteration_outputs([&]() {
+      if (loop.state().iterations_done == 1)
+        loop.keep_response_before(before_peaks.peaks());
+      if (write && options.final_outputs && loop.state().iterations_done == 1)
+        before.write_csv(dir + "/response_before.csv");
+      if (write)
+        io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
+      if (write)
+        write_profile_frames(wearing, loop, dir, scene.wear_loop.cycles_per_iteration);
+      if (write && scene.wear_loop.fe_output)
+        write_fe_files(wearing, loop, dir, scene.wear_loop.cycles_per_iteration, fe_meshes_copied);
+      if (options.after_iteration)
+        options.after_iteration(loop);
+    });
+    if (options.factor_limit)
+      loop.set_factor_limit(options.factor_limit);
+    while (!loop.finished() && !(options.stop && options.stop(loop)))
+      {
+        if (options.stop_after > 0 && done_here == options.stop_after)
+          {
+            result.state         = loop.state();
+            result.timings       = loop.timings();
+            result.timings.total = loop.earlier_wall_time() + total.seconds();
+            return result;
+          }
+        const Stopwatch iteration;
+        auto            observers = options.observers;
+        if (loop.state().iterations_done == 0)
+          {
+            observers.push_back(&before);
+            observers.push_back(&before_peaks);
+          }
+        loop.iterate(observers);
+        ++done_here;
+        if (options.progress)
+          print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds(), options.progress_prefix);
+      }
+    result.state    = loop.state();
+    result.timings  = loop.timings();
+    result.finished = true;
+    if (options.final_outputs)
+      after_wear(scene, options, result);
+    if (options.final_outputs && options.extend_summary)
+      options.extend_summary(result.summary);
+    // A resumed run's wall time includes its earlier processes' up to the checkpoint.
+    if (options.final_outputs && write)
+      write_run_files(scene, dir, result, loop.earlier_wall_time() + total.seconds());
+    result.timings.total = loop.earlier_wall_time() + total.seconds();
+    return result;
+  }
+} // namespace wearlink::workflows
