@@ -57,4 +57,41 @@ namespace wearlink::analysis
       sum += cycle_peaks[k];
     return sum / m;
   }
+
+  ResponseRecorder::ResponseRecorder(const mbs::Mechanism &m, int b, double dt, double d)
+    : body_name(m.get_bodies()[b].name)
+    , body(b)
+    , n(m.n_coordinates())
+    , interval(dt)
+    , duration(d)
+  {
+  }
+
+  void
+  ResponseRecorder::on_start(const mbs::StepContext &c)
+  {
+    t_start = c.t;
+    t.clear();
+    x.clear();
+    y.clear();
+    ax.clear();
+    ay.clear();
+  }
+
+  void
+  ResponseRecorder::on_step(const mbs::StepContext &c)
+  {
+    for (double ts = t_start + t.size() * interval; ts <= c.t && ts - t_start <= duration * (1 + 1e-12);
+         ts        = t_start + t.size() * interval)
+      {
+               c.simulation.state_at(ts, ys);
+               c.simulation.derivative_at(ts, ys, fs);
+               t.push_back(ts - t_start);
+               x.push_back(ys[3 * body]);
+               y.push_back(ys[3 * body + 1]);
+               ax.push_back(fs[n + 3 * body]);
+               ay.push_back(fs[n + 3 * body + 1]);
+      }
+  }
+
 } // namespace wearlink::analysis

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The peak acceleration of one body in every driving cycle, over every accepted
+// The response of one body. Its peak acceleration in every driving cycle, over every accepted
 // integrator step (not a sampled series, which can miss an impact's spike between
 // samples): the response measure of a life run's `Response rise` criterion and of the
 // before/after-wear response in a wear run's summary. A cycle is [t0 + kT, t0 + (k+1)T)
 // from the run's start t0; a step is counted in the cycle its end falls in.
 #pragma once
 
+#include "mbs/mechanism.h"
 #include "mbs/simulation.h"
 
+#include <string>
 #include <vector>
 
 namespace wearlink::analysis
@@ -48,4 +50,30 @@ namespace wearlink::analysis
     double              t_start = 0, t_last = 0;
     std::vector<double> cycle_peaks;
   };
+
+  /**
+   * One body's position and acceleration sampled at a fixed interval on the dense output
+   * for a given duration from the run's start: the response curves of a wear run
+   * (io::write_response_csv writes them).
+   */
+  class ResponseRecorder : public mbs::StepObserver
+  {
+  public:
+    ResponseRecorder(const mbs::Mechanism &mechanism, int body, double interval, double duration);
+    void
+    on_start(const mbs::StepContext &c) override;
+    void
+    on_step(const mbs::StepContext &c) override;
+
+    std::string         body_name;
+    std::vector<double> t, x, y, ax, ay; ///< time from the start [s], [m], [m/s²]
+
+  private:
+    const int       body;
+    const unsigned  n;
+    const double    interval, duration;
+    double          t_start = 0;
+    Eigen::VectorXd ys, fs;
+  };
+
 } // namespace wearlink::analysis

@@ -6,6 +6,7 @@
 #include "base/parameters.h"
 #include "base/text.h"
 #include "io/scene.h"
+#include "io/scene_periods.h"
 
 #include <cmath>
 #include <iomanip>
@@ -19,18 +20,7 @@ namespace wearlink::io
   {
     namespace P                      = dealii::Patterns;
     const char *const analysis_names = "phase-portrait|poincare|lyapunov";
-
-    /** Relative difference below which two driver speeds are the same [-]. */
-    constexpr double same_speed = 1e-12;
-
   } // namespace
-
-  namespace
-  {
-    double
-    driving_period(const Scene &scene, const AnalysesSettings &settings);
-  }
-
 
   namespace
   {
@@ -354,82 +344,6 @@ namespace wearlink::io
                        ", 'Analyses/List of analyses' has lyapunov but there is nothing to "
                        "analyse: the scene has no clearance joints and 'Analyses/Bodies' is empty.");
     return s;
-  }
-
-  namespace
-  {
-    /** The driving period of @p scene under @p s [s], or why there is none. */
-    struct PeriodFinding
-    {
-      double      period = 0.0;
-      std::string problem; ///< empty if period is valid
-    };
-
-    PeriodFinding
-    find_driving_period(const Scene &scene, const AnalysesSettings &s)
-    {
-      PeriodFinding f;
-      f.period = s.given_driving_period;
-      if (!(f.period > 0.0))
-        {
-          std::vector<double> speeds;
-          std::string         names;
-          for (const auto d : scene.drivers)
-            {
-              const std::string &name = scene.mechanism->get_constraints()[d]->name;
-              scene.parameters->enter_subsection("Joint " + name);
-              const double omega = scene.parameters->get_double("Angular velocity");
-              scene.parameters->leave_subsection();
-              names += (names.empty() ? "" : ", ") + name + " " + format_number(omega) + " rad/s";
-              if (omega != 0.0)
-                speeds.push_back(std::abs(omega));
-            }
-          if (speeds.empty())
-            {
-              f.problem = "In " + scene.file +
-                          ", the driving period is needed (Poincaré sections, sweeps, wear cycles) but the "
-                          "scene has no turning angle driver" +
-                          (names.empty() ? std::string() : " (" + names + ")") +
-                          ". Set 'Analyses/Driving period' (s), or for a wear run 'Wear/Cycle period' (s).";
-              return f;
-            }
-          for (const double w : speeds)
-            if (std::abs(w - speeds.front()) > same_speed * speeds.front())
-              {
-                f.problem = "In " + scene.file + ", the angle drivers turn at different rates (" + names +
-                            "), so their common period is not obvious. Set 'Analyses/Driving period' (s) to "
-                            "it (for a wear run: 'Wear/Cycle period').";
-                return f;
-              }
-          f.period = numbers::two_pi / speeds.front();
-        }
-      if (!(s.section_phase < f.period))
-        f.problem = "In " + scene.file + ", 'Analyses/Section phase' is " + format_number(s.section_phase, 6) +
-                    " s; it must be smaller than the driving period (" + format_number(f.period, 6) + " s).";
-      return f;
-    }
-
-    double
-    driving_period(const Scene &scene, const AnalysesSettings &s)
-    {
-      const auto f = find_driving_period(scene, s);
-      if (!f.problem.empty())
-        throw InputError(f.problem);
-      return f.period;
-    }
-  } // namespace
-
-  double
-  driving_period(const Scene &scene)
-  {
-    return driving_period(scene, scene.analyses);
-  }
-
-  double
-  driving_period_if_known(const Scene &scene)
-  {
-    const auto f = find_driving_period(scene, scene.analyses);
-    return f.problem.empty() ? f.period : 0.0;
   }
 
   std::vector<analysis::PublishedExponents>

@@ -25,18 +25,6 @@ namespace wearlink::io
   parse_analyses(dealii::ParameterHandler &prm, const Scene &scene);
 
   /**
-   * The driving period of @p scene [s]: Analyses/Driving period if given, otherwise
-   * 2π/|ω| of its angle drivers, which must all turn at the same rate (|ω| equal to
-   * 1e-12 relative). InputError if neither gives one.
-   */
-  double
-  driving_period(const Scene &scene);
-
-  /** The driving period of @p scene as driving_period() finds it, or 0 if there is none. */
-  double
-  driving_period_if_known(const Scene &scene);
-
-  /**
    * Parse "CHANNEL: BEFORE AFTER, ..." (e.g. "A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052").
    * InputError if malformed, its message prefixed with "@p where: " unless @p where is
    * empty (then it is the bare reason, for a caller that names the entry itself).

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The declarations of a scene's parameter tree: every entry of the mechanism, its
-// bodies, joints and clearance joints, the integrator, the simulated interval and the
-// output, once, with its pattern (bounds), default, documentation and unit; the
-// analyses, the wear loop and the life add their own subsections (declared by their
-// modules). --print-parameters prints this tree. The reader (scene_reader.cc) reads
-// what is declared here and assembles the scene.
+// The declarations of a scene's parameter tree, assembled from the layers that read
+// them: bodies, joints and the integrator (mbs/mbs_parameters.h), clearance joints
+// (contact/clearance_parameters.h and wear/wear_settings.h), the wear loop
+// (wear/wear_settings.h), the analyses, the life and the uncertain inputs (io/); this
+// file itself declares the top (format, title, the mechanism's bodies, joints and
+// gravity), the simulated interval and the output. --print-parameters prints this tree.
+// The reader (scene_reader.cc) assembles the scene from it.
 #pragma once
 
 #include "base/parameters.h"
@@ -14,8 +15,6 @@
 
 namespace wearlink::io
 {
-  /** The joint types a scene may give ('Joint <j>/Type'). */
-  inline constexpr const char *joint_types = "revolute|translational|fixed-angle|angle-driver";
   /** Rows time_series.csv may have (1e8 rows of ~50 columns: about 100 GB). */
   inline constexpr double max_time_series_rows = 1e8;
 

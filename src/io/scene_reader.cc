@@ -5,6 +5,7 @@
 #include "base/parameters.h"
 #include "base/profile.h"
 #include "base/text.h"
+#include "contact/clearance_parameters.h"
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
 #include "io/analyses_parameters.h"
@@ -14,6 +15,7 @@
 #include "io/scene_declarations.h"
 #include "io/uncertainty_parameters.h"
 #include "mbs/assembly.h"
+#include "mbs/mbs_parameters.h"
 
 #include <filesystem>
 #include <set>
@@ -118,64 +120,31 @@ namespace wearlink::io
     // Construction.
 
     /**
-     * Bore radius, clearance and the two profiles (round, or from profile files) of the
-     * clearance joint in @p r's current section into @p d; returns the radial clearance.
+     * The two profiles of the clearance joint in @p r's current section (round, or from
+     * its profile files) into @p d, for the nominal @p size.
      */
-    double
-    read_clearance_profiles(ParameterReader &r, contact::ClearanceJointDescription &d)
+    void
+    read_clearance_profiles(ParameterReader                    &r,
+                            const contact::ClearanceSize       &size,
+                            contact::ClearanceJointDescription &d)
     {
-      const double bore      = r.get_positive("Bore radius");
-      const double clearance = r.get_double("Radial clearance");
-      if (!(clearance > 0))
-        r.fail("Radial clearance",
-               "it must be > 0 m",
-               "A clearance joint needs a gap; use Model = ideal for a joint without one.");
-      if (!(clearance < bore))
-        r.fail("Radial clearance",
-               "it must be smaller than the Bore radius (" + format_number(bore) +
-                 " m): the pin radius R1 − c would be ≤ 0 (pin larger than the bore)");
-      if (!(clearance <= 0.5 * bore))
-        r.fail("Radial clearance",
-               "it must be at most half the Bore radius (" + format_number(0.5 * bore, 4) +
-                 " m): the pin would be less than half the bore's size, no clearance joint",
-               "Radial clearances of pin joints are micrometres to a few tenths of a millimetre.");
-      const double pin_radius = bore - clearance;
-      const auto   n_areas    = static_cast<unsigned int>(r.get_integer("Number of discrete areas"));
-
-      auto profile = [&](const std::string &entry, double radius) {
+      const double pin_radius = size.bore_radius - size.radial_clearance;
+      auto         profile    = [&](const std::string &entry, double radius) {
         const std::string f = r.get(entry);
         if (f.empty())
-          return Profile::round(radius, n_areas);
+          return Profile::round(radius, size.n_areas);
         const std::string path = resolve_relative(r.file(), f);
         if (!std::filesystem::exists(path))
           r.fail(entry, "the file '" + path + "' does not exist");
-        return io::read_profile_csv(path, n_areas);
+        return io::read_profile_csv(path, size.n_areas);
       };
-      d.geometry.bore = profile("Bore profile file", bore);
+      d.geometry.bore = profile("Bore profile file", size.bore_radius);
       d.geometry.pin  = profile("Pin profile file", pin_radius);
       if (!(d.geometry.bore.mean_radius() > d.geometry.pin.mean_radius()))
         r.fail_section("the pin profile (mean radius " + format_number(d.geometry.pin.mean_radius()) +
                        " m) is not smaller than the bore profile (mean radius " +
                        format_number(d.geometry.bore.mean_radius()) + " m): the pin does not fit in the bore.");
       io::check_pin_inside_bore(r, d.geometry.bore, d.geometry.pin);
-      return clearance;
-    }
-
-    /** Axial length, materials and the effective-radius convention into @p d. */
-    void
-    read_clearance_materials(ParameterReader &r, contact::ClearanceJointDescription &d)
-    {
-      d.geometry.axial_length                = r.get_positive("Axial length");
-      d.geometry.bushing.youngs_modulus      = r.get_positive("Bushing elastic modulus");
-      d.geometry.bushing.poisson_ratio       = r.get_double("Bushing Poisson ratio");
-      d.geometry.pin_material.youngs_modulus = r.get_positive("Pin elastic modulus");
-      d.geometry.pin_material.poisson_ratio  = r.get_double("Pin Poisson ratio");
-      if (!(d.geometry.bushing.poisson_ratio < 0.5))
-        r.fail("Bushing Poisson ratio", "it must be < 0.5 (incompressible is not allowed)");
-      if (!(d.geometry.pin_material.poisson_ratio < 0.5))
-        r.fail("Pin Poisson ratio", "it must be < 0.5 (incompressible is not allowed)");
-      d.effective_radius = r.get("Effective radius") == "internal" ? contact::EffectiveRadius::internal :
-                                                                     contact::EffectiveRadius::seed_printed;
     }
 
     void
@@ -198,8 +167,10 @@ namespace wearlink::io
       if (d.pin_body == mbs::ground && d.bushing_body == mbs::ground)
         r.fail_section("a clearance joint needs at least one moving body.");
 
-      const double clearance = read_clearance_profiles(r, d);
-      read_clearance_materials(r, d);
+      const auto   size      = contact::read_clearance_size(r);
+      const double clearance = size.radial_clearance;
+      read_clearance_profiles(r, size, d);
+      contact::read_clearance_materials(r, d);
 
       d.normal_force_law = r.get("Normal force law");
       auto normal        = contact::normal_force_laws().create(d.normal_force_law, r, "Normal force law");
@@ -256,19 +227,7 @@ namespace wearlink::io
     void
     read_numerics(ParameterReader &r, Scene &scene, mbs::Mechanism &mech)
     {
-      r.enter("Integrator");
-      auto &is              = scene.simulation.integrator;
-      is.type               = mbs::parse_integrator_type(r.get("Method"));
-      is.time_step          = r.get_positive("Time step");
-      is.relative_tolerance = r.get_positive("Relative tolerance");
-      is.absolute_tolerance = {r.get_positive("Position tolerance"), r.get_positive("Velocity tolerance")};
-      is.max_step           = r.get_positive("Maximum step");
-      is.min_step           = r.get_positive("Minimum step");
-      if (!(is.min_step < is.max_step))
-        r.fail("Minimum step", "it must be smaller than Maximum step (" + format_number(is.max_step) + " s)");
-      scene.simulation.max_steps_per_second = r.get_double("Maximum steps per second");
-      mech.set_baumgarte(r.get_double("Baumgarte alpha"), r.get_double("Baumgarte beta"));
-      r.leave();
+      mbs::read_integrator(r, scene.simulation, mech);
 
       r.enter("Simulation");
       scene.start_time = r.get_double("Start time");
@@ -309,62 +268,29 @@ namespace wearlink::io
       for (const auto &name : bodies)
         {
           r.enter("Body " + name);
-          mbs::Body b;
-          b.name                     = name;
-          b.mass                     = r.get_positive("Mass");
-          b.inertia                  = r.get_positive("Moment of inertia");
-          b.initial_position         = vec(r.get_point("Initial position"));
-          b.initial_angle            = r.get_double("Initial angle");
-          b.initial_velocity         = vec(r.get_point("Initial velocity"));
-          b.initial_angular_velocity = r.get_double("Initial angular velocity");
-          mech.add_body(b);
+          mech.add_body(mbs::read_body(r, name));
           r.leave();
         }
 
       for (const auto &name : joints)
         {
           r.enter("Joint " + name);
-          const std::string type = r.get("Type");
-          const int         b1   = mech.body_index(r.get("Body 1"));
-          const int         b2   = mech.body_index(r.get("Body 2"));
-          if (b2 == mbs::ground)
-            r.fail("Body 2", "it must be a moving body; put 'ground' in Body 1");
-          if (b1 == b2)
-            r.fail("Body 2", "it must differ from Body 1");
-          const mbs::Vec2 p1        = vec(r.get_point("Point on body 1"));
-          const mbs::Vec2 p2        = vec(r.get_point("Point on body 2"));
-          const bool      clearance = r.get("Model") == "clearance";
-          if (clearance && type != "revolute")
-            r.fail("Model", "'clearance' is only allowed for Type = revolute");
-
-          if (type == "revolute" && clearance)
+          const auto joint = mbs::read_joint(r, mech);
+          if (joint.clearance)
             {
-              build_clearance_joint(scene, r, name, b1, p1, b2, p2);
+              build_clearance_joint(scene, r, name, joint.body_1, joint.point_1, joint.body_2, joint.point_2);
               EffectLedger::instance().record_construction("joint model", "clearance");
             }
-          else if (type == "revolute")
-            {
-              mech.add_constraint(mbs::make_revolute(name, b1, p1, b2, p2));
-              EffectLedger::instance().record_construction("joint model", "ideal");
-            }
-          else if (type == "translational")
-            {
-              const mbs::Vec2 axis = vec(r.get_point("Axis on body 1"));
-              if (!(axis.norm() > 0))
-                r.fail("Axis on body 1", "it must be a non-zero direction");
-              mech.add_constraint(mbs::make_translational(name, b1, p1, axis, b2, p2, r.get_double("Angle offset")));
-              scene.plot_bodies.push_back(r.get("Body 2")); // a slider (Output/Plot bodies)
-            }
-          else if (type == "fixed-angle")
-            mech.add_constraint(mbs::make_fixed_angle(name, b1, b2, r.get_double("Angle offset")));
-          else if (type == "angle-driver")
-            {
-              scene.drivers.push_back(static_cast<unsigned int>(mech.get_constraints().size()));
-              mech.add_constraint(
-                mbs::make_angle_driver(name, b1, b2, r.get_double("Angle offset"), r.get_double("Angular velocity")));
-            }
           else
-            r.fail("Type", "valid joint types are " + std::string(joint_types));
+            {
+              if (joint.type == "angle-driver")
+                scene.drivers.push_back(static_cast<unsigned int>(mech.get_constraints().size()));
+              mech.add_constraint(mbs::make_ideal_joint(r, name, joint));
+              if (joint.type == "revolute")
+                EffectLedger::instance().record_construction("joint model", "ideal");
+              if (joint.type == "translational")
+                scene.plot_bodies.push_back(r.get("Body 2")); // a slider (Output/Plot bodies)
+            }
           r.leave();
         }
 

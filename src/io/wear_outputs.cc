@@ -21,7 +21,7 @@ namespace wearlink::io
   {
     using numbers::pi;
 
-    /** Read a response CSV written by ResponseRecorder::write_csv (for the plot); false if absent. */
+    /** Read a response CSV written by write_response_csv (for the plot); false if absent. */
     bool
     read_response(const std::string &path, std::vector<double> &t, std::vector<double> &ax, std::vector<double> &ay)
     {
@@ -82,68 +82,6 @@ namespace wearlink::io
       plot_png(spec, path);
     }
   } // namespace
-
-  ResponseRecorder::ResponseRecorder(const mbs::Mechanism &m, int b, double dt, double d)
-    : body_name(m.get_bodies()[b].name)
-    , body(b)
-    , n(m.n_coordinates())
-    , interval(dt)
-    , duration(d)
-  {
-  }
-
-  void
-  ResponseRecorder::on_start(const mbs::StepContext &c)
-  {
-    t_start = c.t;
-    t.clear();
-    x.clear();
-    y.clear();
-    ax.clear();
-    ay.clear();
-  }
-
-  void
-  ResponseRecorder::on_step(const mbs::StepContext &c)
-  {
-    for (double ts = t_start + t.size() * interval; ts <= c.t && ts - t_start <= duration * (1 + 1e-12);
-         ts        = t_start + t.size() * interval)
-      {
-               c.simulation.state_at(ts, ys);
-               c.simulation.derivative_at(ts, ys, fs);
-               t.push_back(ts - t_start);
-               x.push_back(ys[3 * body]);
-               y.push_back(ys[3 * body + 1]);
-               ax.push_back(fs[n + 3 * body]);
-               ay.push_back(fs[n + 3 * body + 1]);
-      }
-  }
-
-  void
-  ResponseRecorder::write_csv(const std::string &path) const
-  {
-    std::ostringstream os;
-    os << "time_s," << body_name << "_x_m," << body_name << "_y_m," << body_name << "_ax_m_s2," << body_name
-       << "_ay_m_s2\n"
-       << std::setprecision(10);
-    for (std::size_t i = 0; i < t.size(); ++i)
-      os << t[i] << ',' << x[i] << ',' << y[i] << ',' << ax[i] << ',' << ay[i] << '\n';
-    write_file_atomically(path, os.str());
-  }
-
-  int
-  response_body(const Scene &scene)
-  {
-    const auto &name = scene.wear_loop.response_body;
-    const auto &mech = *scene.mechanism;
-    if (name.empty())
-      return static_cast<int>(mech.n_bodies()) - 1;
-    for (unsigned int i = 0; i < mech.n_bodies(); ++i)
-      if (mech.get_bodies()[i].name == name)
-        return static_cast<int>(i);
-    throw InputError("In " + scene.file + ", 'Wear/Response body' is '" + name +
-                     "', which is not one of Mechanism/Bodies.");
-  }
 
   void
   write_wear_history(const std::string &path, const Scene &scene, const wear::WearState &st)
@@ -349,10 +287,10 @@ namespace wearlink::io
 
     /** response_after.csv and response.png: the response before and after wear (seed Fig 8). */
     void
-    write_response(const std::string &dir, const ResponseRecorder &after)
+    write_response(const std::string &dir, const analysis::ResponseRecorder &after)
     {
       // Dynamic response before and after wear (seed Fig 8).
-      after.write_csv(dir + "/response_after.csv");
+      write_response_csv(dir + "/response_after.csv", after);
       std::vector<double> tb, axb, ayb;
       PlotSpec            spec;
       spec.title   = after.body_name + ": acceleration before and after wear (same initial state)";
@@ -370,10 +308,10 @@ namespace wearlink::io
   } // namespace
 
   void
-  write_wear_outputs(const std::string      &dir,
-                     const Scene            &scene,
-                     const wear::WearState  &st,
-                     const ResponseRecorder &after)
+  write_wear_outputs(const std::string                &dir,
+                     const Scene                      &scene,
+                     const wear::WearState            &st,
+                     const analysis::ResponseRecorder &after)
   {
     for (const auto &j : st.joints)
       {
@@ -384,4 +322,17 @@ namespace wearlink::io
     plot_volume(dir, scene, st);
     write_response(dir, after);
   }
+
+  void
+  write_response_csv(const std::string &path, const analysis::ResponseRecorder &r)
+  {
+    std::ostringstream os;
+    os << "time_s," << r.body_name << "_x_m," << r.body_name << "_y_m," << r.body_name << "_ax_m_s2," << r.body_name
+       << "_ay_m_s2\n"
+       << std::setprecision(10);
+    for (std::size_t i = 0; i < r.t.size(); ++i)
+      os << r.t[i] << ',' << r.x[i] << ',' << r.y[i] << ',' << r.ax[i] << ',' << r.ay[i] << '\n';
+    write_file_atomically(path, os.str());
+  }
+
 } // namespace wearlink::io

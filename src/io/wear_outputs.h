@@ -15,6 +15,7 @@
 //   wear_volume.png            cumulative worn volume vs revolutions
 #pragma once
 
+#include "analysis/cycle_peaks.h"
 #include "io/scene.h"
 #include "mbs/simulation.h"
 #include "wear/wear_state.h"
@@ -24,43 +25,19 @@
 
 namespace wearlink::io
 {
-  /** Samples one body's position and acceleration on the dense output. */
-  class ResponseRecorder : public mbs::StepObserver
-  {
-  public:
-    ResponseRecorder(const mbs::Mechanism &mechanism, int body, double interval, double duration);
-    void
-    on_start(const mbs::StepContext &c) override;
-    void
-    on_step(const mbs::StepContext &c) override;
-
-    void
-    write_csv(const std::string &path) const;
-
-    std::string         body_name;
-    std::vector<double> t, x, y, ax, ay; ///< time from the start [s], [m], [m/s²]
-
-  private:
-    const int       body;
-    const unsigned  n;
-    const double    interval, duration;
-    double          t_start = 0;
-    Eigen::VectorXd ys, fs;
-  };
-
-  /** Index of Wear/Response body (default: the last body); InputError if unknown. */
-  int
-  response_body(const Scene &scene);
-
   void
   write_wear_history(const std::string &path, const Scene &scene, const wear::WearState &state);
 
   /** Every file of the list above except wear_history.csv and response_before.csv. */
   void
-  write_wear_outputs(const std::string      &dir,
-                     const Scene            &scene,
-                     const wear::WearState  &state,
-                     const ResponseRecorder &after);
+  write_wear_outputs(const std::string                &dir,
+                     const Scene                      &scene,
+                     const wear::WearState            &state,
+                     const analysis::ResponseRecorder &after);
+
+  /** The recorded response as CSV: time_s, <body>_x_m, _y_m, _ax_m_s2, _ay_m_s2. */
+  void
+  write_response_csv(const std::string &path, const analysis::ResponseRecorder &response);
 
   /** Write the two closed curves as a gmsh MSH 2.2 ASCII file (true scale) [m]. */
   void

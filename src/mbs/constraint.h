@@ -69,6 +69,16 @@ namespace wearlink::mbs
     virtual std::string
     type() const = 0;
 
+    /**
+     * The constant rate a rheonomic constraint prescribes (ω of an angle driver)
+     * [rad/s]; 0 for a constraint that does not depend on time.
+     */
+    virtual double
+    rate() const
+    {
+      return 0.0;
+    }
+
     const std::string name;
     const int         body_i;
     const int         body_j;

@@ -228,6 +228,12 @@ namespace wearlink::mbs
         return "angle-driver";
       }
 
+      double
+      rate() const override
+      {
+        return omega;
+      }
+
       std::array<bool, 3>
       constant_jacobian(unsigned int) const override
       {

@@ -12,6 +12,7 @@
 #include "io/plot.h"
 #include "io/profile_file.h"
 #include "io/scene.h"
+#include "io/scene_periods.h"
 #include "wear/archard.h"
 #include "wear/load_recorder.h"
 #include "workflows/run/run.h"
@@ -358,7 +359,7 @@ namespace wearlink::workflows
     {
       const Stopwatch clock;
       io::Scene       scene  = io::read_scene(request.scene_file, law_overrides(request, joints, law));
-      const double    period = cycle_period(scene);
+      const double    period = io::cycle_period(scene);
       std::vector<const contact::ClearanceJoint *> wearing;
       for (const auto &w : scene.wear)
         for (const auto *j : scene.clearance_joints)

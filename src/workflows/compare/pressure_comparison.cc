@@ -4,6 +4,7 @@
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "io/plot.h"
+#include "io/scene_periods.h"
 #include "wear/archard.h"
 #include "wear/load_recorder.h"
 #include "workflows/run/run.h"
@@ -50,7 +51,7 @@ namespace wearlink::workflows
       if (!contact::pressure_models().has(m))
         throw InputError("compare-pressure: unknown pressure model '" + m + "'; the valid names are " +
                          contact::pressure_models().pattern() + ".");
-    const double                                 period = cycle_period(scene);
+    const double                                 period = io::cycle_period(scene);
     std::vector<const contact::ClearanceJoint *> joints;
     for (const auto &w : scene.wear)
       for (const auto *j : scene.clearance_joints)

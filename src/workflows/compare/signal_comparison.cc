@@ -8,6 +8,7 @@
 #include "io/analyses_parameters.h"
 #include "io/plot.h"
 #include "io/scene.h"
+#include "io/scene_periods.h"
 #include "io/signal_file.h"
 #include "workflows/run/run.h"
 

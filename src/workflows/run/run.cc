@@ -7,6 +7,7 @@
 #include "base/interrupt.h"
 #include "base/text.h"
 #include "io/analyses_parameters.h"
+#include "io/scene_periods.h"
 #include "mbs/assembly.h"
 #include "mbs/body_trig.h"
 #include "workflows/run/analyses.h"

@@ -5,6 +5,7 @@
 #include "base/interrupt.h"
 #include "base/timings.h"
 #include "io/analyses_parameters.h"
+#include "io/scene_periods.h"
 #include "io/wear_outputs.h"
 #include "workflows/run/run.h"
 #include "workflows/wear/wear_run.h"

@@ -13,6 +13,7 @@
 #include "io/analyses_parameters.h"
 #include "io/plot.h"
 #include "io/scene.h"
+#include "io/scene_periods.h"
 #include "workflows/run/analyses.h"
 #include "workflows/run/run.h"
 

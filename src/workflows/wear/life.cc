@@ -6,6 +6,7 @@
 #include "base/text.h"
 #include "io/life_outputs.h"
 #include "io/life_parameters.h"
+#include "io/scene_periods.h"
 #include "io/wear_outputs.h"
 #include "workflows/run/run.h"
 
@@ -99,7 +100,7 @@ namespace wearlink::workflows
     LifeRun::LifeRun(io::Scene &scene, const LifeRunOptions &options)
       : scene(scene)
       , options(options)
-      , period(cycle_period(scene))
+      , period(io::cycle_period(scene))
       , body(life_response_body(scene))
     {
       history.criteria = analysis::active_criteria(scene.life);

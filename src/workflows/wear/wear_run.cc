@@ -7,6 +7,7 @@
 #include "base/text.h"
 #include "io/analyses_parameters.h"
 #include "io/profile_series.h"
+#include "io/scene_periods.h"
 #include "io/wear_outputs.h"
 #include "wear/wear_loop.h"
 #include "workflows/compare/dynamics_comparison.h"
@@ -380,13 +381,16 @@ namespace wearlink::workflows
     {
       const bool        write  = !options.output_directory.empty();
       const std::string dir    = options.output_directory;
-      const double      period = cycle_period(scene);
+      const double      period = io::cycle_period(scene);
       const auto       &ws     = scene.wear_loop;
       const auto       &st     = result.state;
       Stopwatch         outputs;
       for (auto *j : scene.clearance_joints)
         j->set_mode(false, 0);
-      io::ResponseRecorder after(*scene.mechanism, io::response_body(scene), period / 400, ws.response_cycles * period);
+      analysis::ResponseRecorder  after(*scene.mechanism,
+                                       io::response_body(scene),
+                                       period / 400,
+                                       ws.response_cycles * period);
       analysis::CyclePeakRecorder after_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
       RunOptions                  ro;
       ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
@@ -440,14 +444,6 @@ namespace wearlink::workflows
   has_wear(const io::Scene &scene)
   {
     return !scene.wear.empty();
-  }
-
-  double
-  cycle_period(const io::Scene &scene)
-  {
-    if (scene.wear_loop.cycle_period > 0)
-      return scene.wear_loop.cycle_period;
-    return io::driving_period(scene);
   }
 
   namespace
@@ -533,7 +529,7 @@ namespace wearlink::workflows
     if (options.resume && !write)
       throw InputError("--resume needs the output directory of the run to continue.");
 
-    const double                          period  = cycle_period(scene);
+    const double                          period  = io::cycle_period(scene);
     const std::vector<wear::WearingJoint> wearing = wearing_joints(scene);
     std::vector<std::string>              fe_meshes_copied;
     WearRunResult                         result;
@@ -545,15 +541,15 @@ namespace wearlink::workflows
 
     unsigned int                done_here = 0;
     analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
-    io::ResponseRecorder        before(*scene.mechanism,
-                                io::response_body(scene),
-                                period / 400,
-                                scene.wear_loop.response_cycles * period);
+    analysis::ResponseRecorder  before(*scene.mechanism,
+                                      io::response_body(scene),
+                                      period / 400,
+                                      scene.wear_loop.response_cycles * period);
     loop.set_iteration_outputs([&]() {
       if (loop.state().iterations_done == 1)
         loop.keep_response_before(before_peaks.peaks());
       if (write && options.final_outputs && loop.state().iterations_done == 1)
-        before.write_csv(dir + "/response_before.csv");
+        io::write_response_csv(dir + "/response_before.csv", before);
       if (write)
         io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
       if (write)

@@ -85,8 +85,4 @@ namespace wearlink::workflows
   /** Run (or resume) the wear loop of @p scene. */
   WearRunResult
   run_wear(io::Scene &scene, const WearRunOptions &options);
-
-  /** Duration of one mechanism cycle [s] (Wear/Cycle period, or the first driver's). */
-  double
-  cycle_period(const io::Scene &scene);
 } // namespace wearlink::workflows

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "contact/clearance_parameters.h"
+
+#include "base/text.h"
+#include "contact/friction_law.h"
+#include "contact/normal_force_law.h"
+
+namespace wearlink::contact
+{
+  using dealii::ParameterHandler;
+  namespace P = dealii::Patterns;
+
+  /**
+   * The entries of "Joint <name>/Clearance": geometry, materials, profiles, and every
+   * registered normal force law and friction law (each in its own subsection; only the
+   * chosen ones are read).
+   */
+  void
+  declare_clearance(ParameterHandler &prm)
+  {
+    declare(prm,
+            "Bushing on",
+            "body 2",
+            P::Selection("body 1|body 2"),
+            "Which body holds the bore (bushing); the other holds the pin. The joint's "
+            "attachment points are the bore and pin centres.",
+            "none");
+    declare_required(prm,
+                     "Bore radius",
+                     P::Double(1e-6, 1),
+                     "Nominal bore radius R1, 1 µm … 1 m (the range of pin joints; beyond it the "
+                     "value is a mistake of units).",
+                     "m");
+    declare_required(prm,
+                     "Radial clearance",
+                     P::Double(0, 0.5),
+                     "c = R1 − R2 (> 0); the pin radius is R1 − c. At most half the Bore radius: a "
+                     "pin less than half the bore's size is no clearance joint (the contact laws "
+                     "assume nearly conforming surfaces).",
+                     "m");
+    declare_required(prm,
+                     "Axial length",
+                     P::Double(1e-6, 1),
+                     "Contact length along the pin axis (used by pressure models), 1 µm … 1 m.",
+                     "m");
+    declare_required(prm,
+                     "Bushing elastic modulus",
+                     P::Double(1e6, 1e13),
+                     "E of the bushing, 1e6 … 1e13 Pa: from soft rubber (~1 MPa) to beyond diamond "
+                     "(1.2e12 Pa); outside it the value is a mistake of units.",
+                     "Pa");
+    declare_required(prm, "Bushing Poisson ratio", P::Double(0, 0.5), "ν of the bushing, 0 ≤ ν < 0.5.", "none");
+    declare_required(prm, "Pin elastic modulus", P::Double(1e6, 1e13), "E of the pin, 1e6 … 1e13 Pa.", "Pa");
+    declare_required(prm, "Pin Poisson ratio", P::Double(0, 0.5), "ν of the pin, 0 ≤ ν < 0.5.", "none");
+    declare(prm,
+            "Effective radius",
+            "internal",
+            P::Selection("internal|seed-printed"),
+            "Relative radius R* in the stiffness K = 4/(3(σ1 + σ2)) √R* (seed eq. 10): "
+            "'internal' R1 R2/(R1 − R2), correct for a pin inside a bore; "
+            "'seed-printed' R1 R2/(R1 + R2) as printed in the seed (≈5× softer here), "
+            "only for reproducing the paper.",
+            "none");
+    declare_required(prm,
+                     "Normal force law",
+                     P::Selection(normal_force_laws().pattern()),
+                     "Normal contact force law." + normal_force_laws().documentation(),
+                     "none");
+    declare_required(prm,
+                     "Friction law",
+                     P::Selection(friction_law_pattern()),
+                     "Tangential force law. 'none': no tangential force is computed." + friction_laws().documentation(),
+                     "none");
+    declare(prm,
+            "Initial eccentricity",
+            "0, 0",
+            point_pattern(),
+            "Pin centre − bore centre at assembly, in the bushing body's frame.",
+            "m");
+    declare(prm,
+            "Bore profile file",
+            "",
+            P::Anything(),
+            "CSV (angle_rad, radius_m) of a worn bore in the bushing's frame; empty: "
+            "round. Relative paths are taken from the scene file's folder.",
+            "none");
+    declare(prm,
+            "Pin profile file",
+            "",
+            P::Anything(),
+            "CSV (angle_rad, radius_m) of a worn pin in the pin body's frame; empty: "
+            "round.",
+            "none");
+    declare(prm,
+            "Number of discrete areas",
+            "360",
+            P::Integer(8, max_discrete_areas),
+            "Samples of each surface profile (discrete areas for wear), 8 … 100000: at 1e5 "
+            "areas an area of a 10-mm bore is 0.6 µm wide, finer than its roughness and than "
+            "any FE mesh of it; more would only exhaust memory.",
+            "none");
+    normal_force_laws().declare_all(prm);
+    friction_laws().declare_all(prm);
+  }
+
+  ClearanceSize
+  read_clearance_size(ParameterReader &r)
+  {
+    ClearanceSize s;
+    s.bore_radius          = r.get_positive("Bore radius");
+    s.radial_clearance     = r.get_double("Radial clearance");
+    const double bore      = s.bore_radius;
+    const double clearance = s.radial_clearance;
+    if (!(clearance > 0))
+      r.fail("Radial clearance",
+             "it must be > 0 m",
+             "A clearance joint needs a gap; use Model = ideal for a joint without one.");
+    if (!(clearance < bore))
+      r.fail("Radial clearance",
+             "it must be smaller than the Bore radius (" + format_number(bore) +
+               " m): the pin radius R1 − c would be ≤ 0 (pin larger than the bore)");
+    if (!(clearance <= 0.5 * bore))
+      r.fail("Radial clearance",
+             "it must be at most half the Bore radius (" + format_number(0.5 * bore, 4) +
+               " m): the pin would be less than half the bore's size, no clearance joint",
+             "Radial clearances of pin joints are micrometres to a few tenths of a millimetre.");
+    s.n_areas = static_cast<unsigned int>(r.get_integer("Number of discrete areas"));
+    return s;
+  }
+
+  void
+  read_clearance_materials(ParameterReader &r, ClearanceJointDescription &d)
+  {
+    d.geometry.axial_length                = r.get_positive("Axial length");
+    d.geometry.bushing.youngs_modulus      = r.get_positive("Bushing elastic modulus");
+    d.geometry.bushing.poisson_ratio       = r.get_double("Bushing Poisson ratio");
+    d.geometry.pin_material.youngs_modulus = r.get_positive("Pin elastic modulus");
+    d.geometry.pin_material.poisson_ratio  = r.get_double("Pin Poisson ratio");
+    if (!(d.geometry.bushing.poisson_ratio < 0.5))
+      r.fail("Bushing Poisson ratio", "it must be < 0.5 (incompressible is not allowed)");
+    if (!(d.geometry.pin_material.poisson_ratio < 0.5))
+      r.fail("Pin Poisson ratio", "it must be < 0.5 (incompressible is not allowed)");
+    d.effective_radius =
+      r.get("Effective radius") == "internal" ? EffectiveRadius::internal : EffectiveRadius::seed_printed;
+  }
+} // namespace wearlink::contact
