@@ -3,6 +3,7 @@
 
 #include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "io/output_names.h"
 #include "io/scene.h"
 #include "workflows/ensemble/uncertain_inputs.h"
 
@@ -82,7 +83,7 @@ namespace wearlink::app
     ensemble_files(const std::string &dir, const unsigned int members, const RunFiles &member_files)
     {
       RunFiles f = member_files;
-      for (const char *name : {"summary.json", "ensemble.csv", "ensemble.png", "sensitivity.png", "life_cdf.png"})
+      for (const auto &name : io::outputs::ensemble().patterns)
         f.patterns.push_back(name);
       for (unsigned int k = 0; k < members; ++k)
         f.subdirectories.push_back(workflows::member_directory_name(k, members));

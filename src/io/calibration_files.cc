@@ -32,13 +32,12 @@ namespace wearlink::io
       p.title   = "Measured and predicted mass loss (bars: 95 %)";
       p.x_label = "surface";
       p.y_label = "mass loss [mg]";
-      PlotSeries  measured{"measured", {}, {}, "points", "pt 5 ps 1.6 lc rgb 'black'"};
-      PlotSeries  measured_bar{"", {}, {}, "lines", "lw 2 lc rgb 'black'"};
-      PlotSeries  members{"runs at the secant's k", {}, {}, "points", "pt 6 ps 0.8 lc rgb '#1f77b4'"};
-      PlotSeries  mean{"their mean", {}, {}, "points", "pt 7 ps 1.6 lc rgb '#d62728'"};
-      PlotSeries  mean_bar{"", {}, {}, "lines", "lw 2 lc rgb '#d62728'"};
-      std::string tics = "set xtics noenhanced (";
-      double      x    = 0;
+      PlotSeries measured{"measured", {}, {}, points("black", 1.6, Marker::filled_square)};
+      PlotSeries measured_bar{"", {}, {}, line("black", 2)};
+      PlotSeries members{"runs at the secant's k", {}, {}, points("#1f77b4", 0.8, Marker::open_circle)};
+      PlotSeries mean{"their mean", {}, {}, points("#d62728", 1.6)};
+      PlotSeries mean_bar{"", {}, {}, line("#d62728", 2)};
+      double     x = 0;
       for (auto j = report.at("joints").begin(); j != report.at("joints").end(); ++j)
         for (const std::string surface : {"pin", "bushing"})
           if (j.value().contains(surface + "_mass_loss_mg"))
@@ -46,7 +45,7 @@ namespace wearlink::io
               const Json  &m  = j.value().at(surface + "_mass_loss_mg");
               const double mm = json_number(m.at("measured")), sm = json_number(m.at("measured_uncertainty"));
               const double pm = json_number(m.at("predicted_mean")), sp = json_number(m.at("predicted_std_of_mean"));
-              tics += (x > 0 ? ", \"" : "\"") + j.key() + " " + surface + "\" " + std::to_string(x);
+              p.categories.push_back(j.key() + " " + surface);
               measured.x.push_back(x - 0.1);
               measured.y.push_back(mm);
               add_bar(measured_bar, x - 0.1, mm - 1.96 * sm, mm + 1.96 * sm);
@@ -60,8 +59,9 @@ namespace wearlink::io
               add_bar(mean_bar, x + 0.1, pm - 1.96 * sp, pm + 1.96 * sp);
               x += 1;
             }
-      p.extra  = tics + ")\nset xrange [-0.5:" + std::to_string(x - 0.5) + "]\nset yrange [0:*]\n";
-      p.series = {measured_bar, mean_bar, measured, members, mean};
+      p.x_range = Range{-0.5, x - 0.5};
+      p.y_range = Range{0, NAN};
+      p.series  = {measured_bar, mean_bar, measured, members, mean};
       return p;
     }
   } // namespace

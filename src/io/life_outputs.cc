@@ -102,7 +102,7 @@ namespace wearlink::io
      * The value axis autoscaled within −1 … 5 limits: a rise of a response far from its
      * limit (thousands of percent from a near-zero fresh value) would flatten the rest.
      */
-    const std::string y_range = "set yrange [-1<*:*<5]\n";
+    const Range y_limits{-1, 5};
 
     /** Line colours of the criteria, in order. */
     const char *const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
@@ -115,11 +115,10 @@ namespace wearlink::io
                 const std::vector<double> &high,
                 const std::string         &colour)
     {
-      PlotSeries band{title,
-                      {},
-                      {},
-                      "filledcurves closed",
-                      "fs transparent solid 0.25 noborder lc rgb '" + colour + "'"};
+      Look look;
+      look.mark   = Mark::area;
+      look.colour = colour;
+      PlotSeries band{title, {}, {}, look};
       for (std::size_t k = 0; k < x.size(); ++k)
         if (std::isfinite(low[k]) && std::isfinite(high[k]))
           {
@@ -168,7 +167,7 @@ namespace wearlink::io
           high.push_back(band.high / c.limit);
         }
       spec.series.push_back(band_series("95 % band of the " + c.name + " trend", x, low, high, colour));
-      spec.series.push_back({c.name + " trend (least squares)", x, line, "lines", "dt 3 lw 2 lc rgb '" + colour + "'"});
+      spec.series.push_back({c.name + " trend (least squares)", x, line, io::line(colour, 2).dotted()});
       analysis::Interval interval;
       const double       crossing = trend.limit_crossing(c.limit, interval);
       if (interval.bounded())
@@ -176,8 +175,7 @@ namespace wearlink::io
                                  std::to_string(static_cast<long>(std::lround(crossing))) + " rev)",
                                {interval.low, interval.high},
                                {1.0, 1.0},
-                               "linespoints",
-                               "pt 13 ps 1.5 lw 5 lc rgb '" + colour + "'"});
+                               line_points(colour, 5, Marker::filled_diamond, 1.5)});
     }
 
     /** The value of a history's column at @p at revolutions (linear; NaN past its end). */
@@ -195,11 +193,12 @@ namespace wearlink::io
   plot_life(const std::string &path, const analysis::LifeHistory &h, const std::string &title)
   {
     PlotSpec spec;
-    spec.title   = title;
-    spec.x_label = "revolutions";
-    spec.y_label = "criterion value / its limit (1: reached)";
-    spec.extra   = "set key inside bottom right box opaque\nset grid\n" + y_range;
-    int point    = 4;
+    spec.title    = title;
+    spec.x_label  = "revolutions";
+    spec.y_label  = "criterion value / its limit (1: reached)";
+    spec.key      = KeyPlace::inside_bottom_right;
+    spec.y_limits = y_limits;
+    int point     = 4;
     for (std::size_t c = 0; c < h.criteria.size(); ++c)
       {
         const auto        &cr     = h.criteria[c];
@@ -209,8 +208,7 @@ namespace wearlink::io
         PlotSeries s{name.str(),
                      h.revolutions,
                      {},
-                     "linespoints",
-                     "pt " + std::to_string(point++) + " ps 1.5 lw 2 lc rgb '" + colour + "'"};
+                     numbered_shape(line_points(colour, 2, Marker::automatic, 1.5), point++)};
         for (std::size_t r = 0; r < h.rows(); ++r)
           s.y.push_back(h.values[r][c] / cr.limit);
         spec.series.push_back(s);
@@ -218,8 +216,8 @@ namespace wearlink::io
           add_trend(spec, h, cr, colour);
       }
     if (!h.revolutions.empty())
-      spec.series.push_back({"limit", {0.0, h.revolutions.back()}, {1.0, 1.0}, "lines", "dt 2 lw 1.5 lc rgb 'black'"});
-    PlotSeries crossings{"wear crossing (revolutions to the criterion)", {}, {}, "points", "pt 7 ps 2 lc rgb 'red'"};
+      spec.series.push_back({"limit", {0.0, h.revolutions.back()}, {1.0, 1.0}, line("black", 1.5).dashed()});
+    PlotSeries crossings{"wear crossing (revolutions to the criterion)", {}, {}, points("red", 2)};
     for (std::size_t c = 0; c < h.criteria.size(); ++c)
       {
         if (analysis::is_trend(h.criteria[c]))
@@ -243,10 +241,11 @@ namespace wearlink::io
                      const std::string                        &title)
   {
     PlotSpec spec;
-    spec.title   = title;
-    spec.x_label = "revolutions";
-    spec.y_label = "criterion value / its limit (1: reached)";
-    spec.extra   = "set key inside top left box opaque\nset grid\n" + y_range;
+    spec.title    = title;
+    spec.x_label  = "revolutions";
+    spec.y_label  = "criterion value / its limit (1: reached)";
+    spec.key      = KeyPlace::inside_top_left;
+    spec.y_limits = y_limits;
     if (members.empty())
       return plot_png(spec, path);
     double end = 0;
@@ -269,17 +268,15 @@ namespace wearlink::io
             median.push_back(v.empty() ? NAN : analysis::percentile(v, 0.5));
           }
         spec.series.push_back(band_series(cr.name + ": smallest … largest of the members", x, low, high, colour));
-        spec.series.push_back(
-          {cr.name + ": median of the members", x, median, "lines", "lw 2 lc rgb '" + colour + "'"});
+        spec.series.push_back({cr.name + ": median of the members", x, median, line(colour, 2)});
         for (const auto &s : spreads)
           if (s.criterion == cr.name)
             spec.series.push_back({cr.name + ": crossings P10 … P90, P50",
                                    {s.p10, s.p50, s.p90},
                                    {1.0, 1.0, 1.0},
-                                   "linespoints",
-                                   "pt 9 ps 1.8 lw 5 lc rgb '" + colour + "'"});
+                                   line_points(colour, 5, Marker::filled_triangle, 1.8)});
       }
-    spec.series.push_back({"limit", {0.0, end}, {1.0, 1.0}, "lines", "dt 2 lw 1.5 lc rgb 'black'"});
+    spec.series.push_back({"limit", {0.0, end}, {1.0, 1.0}, line("black", 1.5).dashed()});
     return plot_png(spec, path);
   }
 } // namespace wearlink::io

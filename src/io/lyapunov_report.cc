@@ -39,11 +39,11 @@ namespace wearlink::io
             running.y.push_back(l);
           }
         PlotSeries final_value;
-        final_value.title   = "final " + format_number(est.exponent(), 4);
-        final_value.x       = {running.x.front(), running.x.back()};
-        final_value.y       = {est.exponent(), est.exponent()};
-        final_value.options = "dt 2 lw 2 lc rgb 'red'";
-        plot.series         = {running, final_value};
+        final_value.title = "final " + format_number(est.exponent(), 4);
+        final_value.x     = {running.x.front(), running.x.back()};
+        final_value.y     = {est.exponent(), est.exponent()};
+        final_value.look  = line("red", 2).dashed();
+        plot.series       = {running, final_value};
         plot.title =
           "Wolf et al. 1985: largest Lyapunov exponent of '" + column + "' = " + format_number(est.exponent(), 4) +
           " " + (est.sample_interval ? "1/s" : "1/sample") + " (m = " + std::to_string(emb.embedding.dimension) +
@@ -58,8 +58,8 @@ namespace wearlink::io
         PlotSeries  curve;
         curve.title = "<ln d(k)>";
         PlotSeries line;
-        line.title   = "fit: slope " + format_number(est.exponent(), 4);
-        line.options = "lw 3 lc rgb 'red'";
+        line.title = "fit: slope " + format_number(est.exponent(), 4);
+        line.look  = io::line("red", 3);
         csv << time_name << ",mean_log_divergence,fitted_line\n";
         for (std::size_t k = 0; k < r.mean_log_divergence.size(); ++k)
           {

@@ -33,6 +33,200 @@ namespace wearlink::io
     }
   } // namespace
 
+  Look
+  line(const std::string &colour, const double width)
+  {
+    Look l;
+    l.colour = colour;
+    l.width  = width;
+    return l;
+  }
+
+  Look
+  points(const std::string &colour, const double size, const Marker marker)
+  {
+    Look l;
+    l.mark   = Mark::points;
+    l.colour = colour;
+    l.size   = size;
+    l.marker = marker;
+    return l;
+  }
+
+  Look
+  palette_line(const unsigned n, const double width)
+  {
+    Look l    = line("", width);
+    l.palette = n;
+    return l;
+  }
+
+  Look
+  numbered_shape(Look look, const unsigned n)
+  {
+    look.shape = n;
+    return look;
+  }
+
+  Look
+  line_points(const std::string &colour, const double width, const Marker marker, const double size)
+  {
+    Look l   = line(colour, width);
+    l.mark   = Mark::line_points;
+    l.marker = marker;
+    l.size   = size;
+    return l;
+  }
+
+  namespace
+  {
+    /** gnuplot's "with ..." of a series drawn as @p l. */
+    std::string
+    with_clause(const Look &l)
+    {
+      std::ostringstream s;
+      switch (l.mark)
+        {
+          case Mark::line:
+            s << "lines";
+            break;
+          case Mark::points:
+            s << "points";
+            break;
+          case Mark::line_points:
+            s << "linespoints";
+            break;
+          case Mark::steps:
+            s << "histeps";
+            break;
+          case Mark::area:
+            s << "filledcurves closed fs transparent solid 0.25 noborder";
+            break;
+        }
+      if (l.width > 0)
+        s << " lw " << l.width;
+      if (l.dash == Dash::dashed)
+        s << " dt 2";
+      else if (l.dash == Dash::dotted)
+        s << " dt 3";
+      // gnuplot's point types: 4 open square, 5 filled square, 6 open circle, 7 filled
+      // circle, 9 filled triangle, 13 filled diamond.
+      const bool marks = l.mark == Mark::points || l.mark == Mark::line_points;
+      if (marks && l.shape > 0)
+        s << " pt " << l.shape;
+      else if (marks && l.marker != Marker::automatic)
+        s << " pt "
+          << (l.marker == Marker::open_square     ? 4 :
+              l.marker == Marker::filled_square   ? 5 :
+              l.marker == Marker::open_circle     ? 6 :
+              l.marker == Marker::filled_circle   ? 7 :
+              l.marker == Marker::filled_triangle ? 9 :
+                                                    13);
+      if (l.size > 0)
+        s << " ps " << l.size;
+      if (!l.colour.empty())
+        s << " lc rgb '" << l.colour << "'";
+      else if (l.palette > 0)
+        s << " lc " << l.palette;
+      return s.str();
+    }
+
+    std::string
+    range(const Range &r)
+    {
+      std::ostringstream s;
+      s << std::setprecision(10) << "[";
+      if (std::isfinite(r.low))
+        s << r.low;
+      else
+        s << "*";
+      s << ":";
+      if (std::isfinite(r.high))
+        s << r.high;
+      else
+        s << "*";
+      s << "]";
+      return s.str();
+    }
+
+    const char *
+    key_place(const KeyPlace k)
+    {
+      switch (k)
+        {
+          case KeyPlace::below:
+            return "below";
+          case KeyPlace::inside_top_right:
+            return "top right inside";
+          case KeyPlace::inside_top_left:
+            return "inside left top box opaque";
+          case KeyPlace::inside_bottom_right:
+            return "inside bottom right box opaque";
+          case KeyPlace::none:
+            return "off";
+          case KeyPlace::outside_right:
+            break;
+        }
+      return "outside right top";
+    }
+
+    /** Ranges, tics, categories and the band of @p spec. */
+    std::string
+    axes_script(const PlotSpec &spec)
+    {
+      std::ostringstream s;
+      if (spec.powers_of_ten && spec.log_x)
+        s << "set format x '10^{%L}'\n";
+      if (spec.powers_of_ten && spec.log_y)
+        s << "set format y '10^{%L}'\n";
+      if (spec.polar && spec.polar_reach > 0)
+        s << std::setprecision(10) << "set rrange [0:" << spec.polar_reach << "]\nset xrange [" << -spec.polar_reach
+          << ":" << spec.polar_reach << "]\nset yrange [" << -spec.polar_reach << ":" << spec.polar_reach << "]\n";
+      if (spec.x_range)
+        s << "set xrange " << range(*spec.x_range) << "\n";
+      if (spec.y_range)
+        s << "set yrange " << range(*spec.y_range) << "\n";
+      else if (spec.y_limits)
+        s << std::setprecision(10) << "set yrange [" << spec.y_limits->low << "<*:*<" << spec.y_limits->high << "]\n";
+      if (spec.x_tic_step > 0)
+        s << "set xtics " << spec.x_tic_step << "\n";
+      if (!spec.categories.empty())
+        {
+          // Names longer than a tic's room are turned, with room below for them.
+          std::size_t longest = 0;
+          for (const auto &c : spec.categories)
+            longest = std::max(longest, c.size());
+          const bool turn = longest > 12;
+          s << "set xtics " << (turn ? "rotate by -40 " : "") << "noenhanced (";
+          for (std::size_t i = 0; i < spec.categories.size(); ++i)
+            s << (i ? ", " : "") << quote(spec.categories[i]) << " " << i;
+          s << ")\n" << (turn ? "set bmargin 14\n" : "");
+        }
+      if (!spec.y_categories.empty())
+        {
+          std::size_t margin = 10; // characters: the longest name and a gap
+          s << "set ytics noenhanced (";
+          for (std::size_t i = 0; i < spec.y_categories.size(); ++i)
+            {
+              s << (i ? ", " : "") << quote(spec.y_categories[i]) << " " << i;
+              margin = std::max(margin, spec.y_categories[i].size() + 2);
+            }
+          s << ")\nset lmargin " << margin << "\n";
+        }
+      if (spec.band)
+        {
+          const Band &b = *spec.band;
+          s << std::setprecision(6) << "set object 1 rect from graph 0, first " << b.low << " to graph 1, first "
+            << b.high << " fc rgb '#d8d8f0' fs solid 1.0 noborder behind\n"
+            << "set arrow 1 from graph 0, first " << b.line << " to graph 1, first " << b.line
+            << " nohead dt 2 lw 2 lc rgb '#5050a0'\n"
+            << "set label 1 " << quote(b.label) << " at graph 0.02, first " << b.high
+            << " offset 0, 0.7 font ',10' tc rgb '#5050a0' noenhanced\n";
+        }
+      return s.str();
+    }
+  } // namespace
+
   bool
   gnuplot_available()
   {
@@ -51,7 +245,11 @@ namespace wearlink::io
              << "set title " << quote(spec.title) << " noenhanced\n"
              << "set xlabel " << quote(spec.x_label) << " noenhanced\n"
              << "set ylabel " << quote(spec.y_label) << " noenhanced\n"
-             << "set grid\nset key outside right top noenhanced\n";
+             << "set grid\n";
+      if (spec.key == KeyPlace::none)
+        script << "unset key\n";
+      else
+        script << "set key " << key_place(spec.key) << " noenhanced\n";
       if (spec.log_x)
         script << "set logscale x\n";
       if (spec.log_y)
@@ -61,7 +259,7 @@ namespace wearlink::io
       if (spec.polar)
         script << "set polar\nset angles radians\nset size ratio -1\nunset xtics\nunset ytics\n"
                   "set border 0\nset grid polar\n";
-      script << spec.extra << "\n";
+      script << axes_script(spec);
 
       std::string plot_cmd = "plot ";
       for (std::size_t i = 0; i < spec.series.size(); ++i)
@@ -77,8 +275,8 @@ namespace wearlink::io
               else
                 out << '\n'; // a gap in the line
             }
-          plot_cmd += (i ? ", " : "") + quote(data.string()) + " using 1:2 with " + s.style + " " + s.options +
-                      " title " + quote(s.title);
+          plot_cmd += (i ? ", " : "") + quote(data.string()) + " using 1:2 with " + with_clause(s.look) + " title " +
+                      quote(s.title);
         }
       if (spec.series.empty())
         plot_cmd += "NaN notitle";

@@ -87,12 +87,9 @@ namespace wearlink::io
   {
     /** @p s in the plot's units: degrees and micrometres. */
     PlotSeries
-    series(const analysis::AngleSeries &s,
-           const std::string           &title,
-           const std::string           &style,
-           const std::string           &options)
+    series(const analysis::AngleSeries &s, const std::string &title, const Look &look)
     {
-      PlotSeries p{title, {}, {}, style, options};
+      PlotSeries p{title, {}, {}, look};
       for (std::size_t k = 0; k < s.angle.size(); ++k)
         {
           p.x.push_back(s.angle[k] * 180 / numbers::pi);
@@ -107,18 +104,19 @@ namespace wearlink::io
       PlotSpec p;
       p.title = "Joint " + labels.joint + " " + labels.surface + ": measured wear depth (turned by " +
                 format_number(json_number(json.at("rotation_deg")), 4) + " deg) against the prediction";
-      p.x_label = "angle in the body's own frame (the run's) [deg]";
-      p.y_label = "wear depth [um]";
-      p.width   = 1200;
-      p.extra   = "set xrange [0:360]\nset xtics 45\nset key below\n";
+      p.x_label    = "angle in the body's own frame (the run's) [deg]";
+      p.y_label    = "wear depth [um]";
+      p.width      = 1200;
+      p.x_range    = Range{0, 360};
+      p.x_tic_step = 45;
+      p.key        = KeyPlace::below;
       // A sparse trace shows its points; a dense one would hide the prediction under them.
       const bool sparse = c.measured_depth.angle.size() <= 400;
-      p.series          = {series(c.predicted_depth, "predicted (run)", "lines", "lw 2 lc rgb '#1f77b4'"),
+      p.series          = {series(c.predicted_depth, "predicted (run)", line("#1f77b4", 2)),
                            series(c.measured_depth,
                          "measured: " + fs::path(labels.measured_file).filename().string(),
-                         sparse ? "linespoints" : "lines",
-                         "lw 1.5 pt 7 ps 0.5 lc rgb '#d62728'"),
-                           series(c.depth_difference, "measured - predicted", "lines", "dt 2 lw 1.5 lc rgb '#2ca02c'")};
+                         sparse ? line_points("#d62728", 1.5, Marker::filled_circle, 0.5) : line("#d62728", 1.5)),
+                           series(c.depth_difference, "measured - predicted", line("#2ca02c", 1.5).dashed())};
       return p;
     }
   } // namespace

@@ -5,6 +5,7 @@
 #include "base/exceptions.h"
 #include "io/csv.h"
 #include "io/json_file.h"
+#include "io/output_names.h"
 
 #include <fstream>
 #include <iomanip>
@@ -74,7 +75,7 @@ namespace wearlink::io
   read_recorded_run(const std::string &output_directory, const std::string &label)
   {
     const std::string dir     = output_directory + "/";
-    const Json        summary = io::read_json_file(dir + "summary.json");
+    const Json        summary = io::read_json_file(dir + io::outputs::summary);
     if (!summary.contains("analyses"))
       throw InputError("The run in '" + output_directory +
                        "' recorded no analyses ('Analyses/List of analyses' was empty).");

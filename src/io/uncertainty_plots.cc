@@ -39,17 +39,15 @@ namespace wearlink::io
     PlotSpec
     tornado(const std::string &figure, const Json &f)
     {
-      PlotSpec    spec;
-      const bool  sobol = f.at("method").get<std::string>() == "sobol-indices";
-      PlotSeries  first{sobol ? "first-order index" : "rank correlation", {}, {}, "lines", "lw 2 lc rgb '#4060a0'"};
-      PlotSeries  total{"total index", {}, {}, "lines", "lw 2 lc rgb '#c06040'"};
-      PlotSeries  interval{"95 % interval", {}, {}, "lines", "lw 2 lc rgb 'black'"};
-      std::string tics = "set ytics noenhanced (";
-      int         i = 0, margin = 10; // the left margin fits the longest entry path [characters]
+      PlotSpec   spec;
+      const bool sobol = f.at("method").get<std::string>() == "sobol-indices";
+      PlotSeries first{sobol ? "first-order index" : "rank correlation", {}, {}, line("#4060a0", 2)};
+      PlotSeries total{"total index", {}, {}, line("#c06040", 2)};
+      PlotSeries interval{"95 % interval", {}, {}, line("black", 2)};
+      int        i = 0;
       for (auto it = f.at("inputs").begin(); it != f.at("inputs").end(); ++it, ++i)
         {
-          margin = std::max(margin, static_cast<int>(it.key().size()) + 2);
-          tics += (i ? ", " : "") + std::string("\"") + it.key() + "\" " + std::to_string(i);
+          spec.y_categories.push_back(it.key());
           if (sobol)
             {
               add_bar(it.value().at("first_order"), i + 0.1, first, interval);
@@ -62,8 +60,9 @@ namespace wearlink::io
       spec.title   = figure;
       spec.x_label = sobol ? "Sobol index [-]" : "Spearman rank correlation [-]";
       spec.series  = sobol ? std::vector<PlotSeries>{first, total, interval} : std::vector<PlotSeries>{first, interval};
-      spec.extra   = tics + ")\nset yrange [-0.7:" + std::to_string(i - 0.3) + "]\nset xrange [" +
-                   (sobol ? "-0.1" : "-1.05") + ":1.05]\nset lmargin " + std::to_string(margin) + "\nunset key\n";
+      spec.y_range = Range{-0.7, i - 0.3};
+      spec.x_range = Range{sobol ? -0.1 : -1.05, 1.05};
+      spec.key     = KeyPlace::none;
       return spec;
     }
   } // namespace
@@ -99,7 +98,7 @@ namespace wearlink::io
       {
         std::vector<double> v = values;
         std::sort(v.begin(), v.end());
-        PlotSeries s{criterion, {}, {}, "lines", "lw 2"};
+        PlotSeries s{criterion, {}, {}, line("", 2)};
         for (std::size_t i = 0; i < v.size(); ++i) // the empirical CDF's steps
           {
             s.x.insert(s.x.end(), {v[i], v[i]});
@@ -113,7 +112,7 @@ namespace wearlink::io
     spec.title   = title;
     spec.x_label = "revolutions at the criterion [rev]";
     spec.y_label = "fraction of the members [-]";
-    spec.extra   = "set yrange [0:1.05]\n";
+    spec.y_range = Range{0, 1.05};
     return plot_png(spec, path);
   }
 } // namespace wearlink::io

@@ -5,6 +5,7 @@
 #include "base/exceptions.h"
 #include "base/numbers.h"
 #include "io/csv.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/profile_file.h"
 
@@ -60,8 +61,8 @@ namespace wearlink::io
       spec.polar  = true;
       spec.width  = 800;
       spec.height = 800;
-      PlotSeries     a{"initial", {}, {}, "lines", "dt 2 lc rgb 'gray40'"};
-      PlotSeries     b{"worn (wear magnified)", {}, {}, "lines", "lw 2 lc rgb 'red'"};
+      PlotSeries     a{"initial", {}, {}, line("gray40").dashed()};
+      PlotSeries     b{"worn (wear magnified)", {}, {}, line("red", 2)};
       const unsigned n = initial.n_points();
       for (unsigned k = 0; k <= n; ++k)
         {
@@ -72,13 +73,10 @@ namespace wearlink::io
           b.x.push_back(psi);
           b.y.push_back(initial[i] + magnification * (worn[i] - initial[i]));
         }
-      const double       rmax = std::max(initial.max_radius(),
+      const double rmax = std::max(initial.max_radius(),
                                    initial.max_radius() + magnification * (worn.max_radius() - initial.min_radius()));
-      std::ostringstream extra;
-      extra << "set rrange [0:" << 1.05 * rmax << "]\nset xrange [" << -1.05 * rmax << ":" << 1.05 * rmax
-            << "]\nset yrange [" << -1.05 * rmax << ":" << 1.05 * rmax << "]\n";
-      spec.extra  = extra.str();
-      spec.series = {a, b};
+      spec.polar_reach  = 1.05 * rmax;
+      spec.series       = {a, b};
       plot_png(spec, path);
     }
   } // namespace
@@ -183,15 +181,16 @@ namespace wearlink::io
       spec.title            = "Joint " + j.name + ": wear depth after each iteration (pin: solid, bushing: dashed)";
       spec.x_label          = "angle in the body's own frame [deg]";
       spec.y_label          = "wear depth [um]";
-      spec.extra            = "set xrange [0:360]\nset xtics 45\n";
+      spec.x_range          = Range{0, 360};
+      spec.x_tic_step       = 45;
       const unsigned stride = std::max(1u, (n_it + 5) / 6);
       for (unsigned it = 0; it < n_it; ++it)
         {
           if ((n_it - 1 - it) % stride != 0)
             continue;
-          const std::string colour = std::to_string(spec.series.size() / 2 + 1); // distinct per curve pair
-          PlotSeries        p{"pin, it " + std::to_string(it + 1), {}, {}, "lines", "lw 2 lc " + colour};
-          PlotSeries        b{"bushing, it " + std::to_string(it + 1), {}, {}, "lines", "dt 2 lw 2 lc " + colour};
+          const auto colour = static_cast<unsigned>(spec.series.size() / 2 + 1); // distinct per curve pair
+          PlotSeries p{"pin, it " + std::to_string(it + 1), {}, {}, palette_line(colour, 2)};
+          PlotSeries b{"bushing, it " + std::to_string(it + 1), {}, {}, palette_line(colour, 2).dashed()};
           for (unsigned k = 0; k < n; ++k)
             {
               p.x.push_back(360.0 * k / n);
@@ -267,8 +266,8 @@ namespace wearlink::io
         spec.y_label = "worn volume [mm^3]";
         for (const auto &j : st.joints)
           {
-            PlotSeries p{j.name + " pin", {0}, {0}, "linespoints", "lw 2"};
-            PlotSeries b{j.name + " bushing", {0}, {0}, "linespoints", "dt 2 lw 2"};
+            PlotSeries p{j.name + " pin", {0}, {0}, line_points("", 2, Marker::automatic)};
+            PlotSeries b{j.name + " bushing", {0}, {0}, line_points("", 2, Marker::automatic).dashed()};
             double     revolutions = 0;
             for (unsigned it = 0; it < j.history.size(); ++it)
               {
@@ -290,19 +289,19 @@ namespace wearlink::io
     write_response(const std::string &dir, const analysis::ResponseRecorder &after)
     {
       // Dynamic response before and after wear (seed Fig 8).
-      write_response_csv(dir + "/response_after.csv", after);
+      write_response_csv(dir + "/" + io::outputs::response_after, after);
       std::vector<double> tb, axb, ayb;
       PlotSpec            spec;
       spec.title   = after.body_name + ": acceleration before and after wear (same initial state)";
       spec.x_label = "time from the start [s]";
       spec.y_label = "acceleration [m/s^2]";
-      if (read_response(dir + "/response_before.csv", tb, axb, ayb))
+      if (read_response(dir + "/" + io::outputs::response_before, tb, axb, ayb))
         {
-          spec.series.push_back({"a_y before wear", tb, ayb, "lines", "lw 1 lc rgb 'blue'"});
-          spec.series.push_back({"a_x before wear", tb, axb, "lines", "lw 1 lc rgb 'dark-green'"});
+          spec.series.push_back({"a_y before wear", tb, ayb, line("blue", 1)});
+          spec.series.push_back({"a_x before wear", tb, axb, line("dark-green", 1)});
         }
-      spec.series.push_back({"a_y after wear", after.t, after.ay, "lines", "lw 1 lc rgb 'red'"});
-      spec.series.push_back({"a_x after wear", after.t, after.ax, "lines", "lw 1 lc rgb 'orange'"});
+      spec.series.push_back({"a_y after wear", after.t, after.ay, line("red", 1)});
+      spec.series.push_back({"a_x after wear", after.t, after.ax, line("orange", 1)});
       plot_png(spec, dir + "/response.png");
     }
   } // namespace

@@ -6,6 +6,7 @@
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/text.h"
+#include "io/output_names.h"
 #include "workflows/compare/contact_comparison.h"
 
 #include <filesystem>
@@ -54,21 +55,7 @@ pressure.png, compare_contact.txt. The FE tables are cached like the fe law's (s
 Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
 3 numerical failure, 4 an output that cannot be written or memory that ran out, 1 an
 internal error (see `wearlink --help`).
-)";
-
-    /** The file names compare-contact writes (see the help text), for --overwrite. */
-    RunFiles
-    comparison_files()
-    {
-      return {{"force_approach.csv",
-               "force_approach.png",
-               "deviations.csv",
-               "effects.csv",
-               "pressure.csv",
-               "pressure.png",
-               "compare_contact.txt"},
-              {}};
-    }
+)" + io::outputs::listing(io::outputs::compare_contact());
 
     int
     run(const std::vector<std::string> &args)
@@ -98,7 +85,7 @@ internal error (see `wearlink --help`).
                          "and pin_<J>.csv).");
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(r.scene_file).stem().string() + "_contact");
-      const auto claimed = claim_output_directory(output_claim(out, comparison_files(), a));
+      const auto claimed = claim_output_directory(output_claim(out, io::outputs::compare_contact(), a));
       const auto c       = workflows::compare_contact(r);
       std::cout << c.table();
       workflows::write_contact_comparison(out, c);

@@ -8,6 +8,7 @@
 #include "base/exceptions.h"
 #include "io/analyses_parameters.h"
 #include "io/json_file.h"
+#include "io/output_names.h"
 #include "io/recorded_run_files.h"
 #include "workflows/compare/dynamics_comparison.h"
 #include "workflows/run/analyses.h"
@@ -65,7 +66,7 @@ ran out, 1 an internal error (see `wearlink --help`).
     {
       workflows::ComparedRun r;
       r.run     = io::read_recorded_run(dir, label);
-      r.summary = io::read_json_file(dir + "/summary.json");
+      r.summary = io::read_json_file(dir + "/" + io::outputs::summary);
       return r;
     }
 

@@ -9,6 +9,7 @@
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "io/contact_case.h"
+#include "io/output_names.h"
 #include "workflows/run/contact_case.h"
 
 #include <deal.II/base/mpi.h>
@@ -58,14 +59,7 @@ answer is the serial one.
 Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
 3 numerical failure, 4 an output that cannot be written or memory that ran out, 1 an
 internal error (see `wearlink --help`).
-)";
-
-    /** The file names `wearlink contact` writes (see the help text), for --overwrite. */
-    RunFiles
-    contact_files()
-    {
-      return {{"summary.json", "parameters.prm", "pressure_*_*.csv", "fields_*.vtu", "pin_bushing.msh"}, {}};
-    }
+)" + io::outputs::listing(io::outputs::contact());
 
     int
     run(const std::vector<std::string> &args)
@@ -104,7 +98,8 @@ internal error (see `wearlink --help`).
       run.log              = root ? &std::cout : nullptr;
       run.root             = root;
       run.n_ranks          = n_ranks;
-      const auto claimed   = claim_output_directory_on_root(output_claim(run.output_directory, contact_files(), a));
+      const auto claimed =
+        claim_output_directory_on_root(output_claim(run.output_directory, io::outputs::contact(), a));
       workflows::run_contact_case(contact_case, prm, run);
       return 0;
     }

@@ -6,9 +6,9 @@
 #include "app/command_line.h"
 #include "app/ensemble_command.h"
 #include "app/output_claim.h"
-#include "app/run_files.h"
 #include "base/exceptions.h"
 #include "io/life_parameters.h"
+#include "io/output_names.h"
 #include "workflows/ensemble/ensemble.h"
 
 #include <filesystem>
@@ -111,18 +111,9 @@ summary says so), 2 bad input (no wear law, no criterion, a limit out of range, 
 nothing is written; also: directory in use, earlier run's files), 3 numerical
 failure, 4 an output that cannot be written or memory that ran out, 128 + N stopped by
 signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`).
-)";
+)" + io::outputs::listing(io::outputs::life());
 
     /** The file names `wearlink life` writes, for --overwrite. */
-    RunFiles
-    life_files()
-    {
-      RunFiles f = run_files();
-      f.patterns.push_back("life_history.csv");
-      f.patterns.push_back("life.png");
-      return f;
-    }
-
     /** Every member a life run (workflows/wear/life.h) in DIR/member_<k>/. */
     int
     run_life_ensemble(const std::string &file, const ParsedArguments &a)
@@ -140,7 +131,7 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
           o.progress_prefix  = prefix;
           return workflows::run_life(scene, o).wear.summary;
         },
-        life_files());
+        io::outputs::life());
     }
 
     int
@@ -175,7 +166,7 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
                              a.value("--resume") :
                              a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_life");
       o.progress         = !a.has("--quiet");
-      OutputClaim claim  = output_claim(o.output_directory, life_files(), a);
+      OutputClaim claim  = output_claim(o.output_directory, io::outputs::life(), a);
       if (o.resume)
         claim.earlier = EarlierRun::resume;
       claim.advice = "Add --overwrite to replace them, --resume " + o.output_directory +

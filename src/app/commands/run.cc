@@ -10,9 +10,9 @@
 #include "app/command_line.h"
 #include "app/ensemble_command.h"
 #include "app/output_claim.h"
-#include "app/run_files.h"
 #include "base/exceptions.h"
 #include "base/output_directory.h"
+#include "io/output_names.h"
 #include "io/scene.h"
 #include "workflows/ensemble/ensemble.h"
 #include "workflows/run/first_look.h"
@@ -24,21 +24,6 @@
 
 namespace wearlink::app
 {
-  RunFiles
-  run_files()
-  {
-    RunFiles f;
-    f.patterns = {
-      "summary.json",         "parameters.prm",       "time_series.csv",  "checkpoint.json",    "analysis_series.csv",
-      "phase_portrait_*.png", "poincare_section.csv", "poincare_*.png",   "lyapunov_*.csv",     "lyapunov_*.png",
-      "wear_history.csv",     "wear_depth_*.csv",     "wear_depth_*.png", "profiles_*.csv",     "profiles_*.msh",
-      "profile_*_bore.png",   "profile_*_pin.png",    "bore_*.csv",       "pin_*.csv",          "wear_volume.png",
-      "response_before.csv",  "response_after.csv",   "response.png",     "before_after.md",    "before_after_*.png",
-      "before_after_*.csv",   "mesh_*.msh",           "fields_*.vtu",     "fields_*.pvd",       "fields_*_pressure.csv",
-      "profiles_*.pvd",       "profile_*.vtu",        "orbit_*.png",      "contact_forces.png", "accelerations.png"};
-    f.subdirectories = {"dynamics_before", "dynamics_after", "exponent_before", "exponent_after", "fe", "profiles"};
-    return f;
-  }
 
 
   namespace
@@ -124,7 +109,7 @@ Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files
 3 numerical failure, 4 an output that cannot be written (disk full, I/O error) or
 memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
 (see `wearlink --help`).
-)";
+)" + io::outputs::listing(io::outputs::run());
 
     /** Take @p dir for this run (see the help text): lock, stale temporaries, earlier runs. */
     std::unique_ptr<OutputDirectory>
@@ -133,7 +118,7 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
       if (a.has("--overwrite") && a.has("--resume"))
         throw InputError("--overwrite and --resume exclude each other: --resume continues the run in " +
                          a.value("--resume") + ", --overwrite removes its files.");
-      OutputClaim claim = output_claim(dir, run_files(), a);
+      OutputClaim claim = output_claim(dir, io::outputs::run(), a);
       if (a.has("--resume"))
         claim.earlier = EarlierRun::resume;
       if (wear)
@@ -229,7 +214,7 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
             w.progress_prefix  = prefix;
             return workflows::run_wear(scene, w).summary;
           },
-          run_files());
+          io::outputs::run());
       if (a.has("--resume"))
         throw InputError("--resume continues a wear run, but no clearance joint of " + file + " has a Wear law.");
       return run_ensemble_command(
@@ -241,7 +226,7 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
           ro.output_directory = dir;
           return workflows::run_scene(scene, ro);
         },
-        run_files());
+        io::outputs::run());
     }
 
     int

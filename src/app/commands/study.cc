@@ -9,6 +9,7 @@
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "io/output_names.h"
 #include "workflows/study/accuracy_study.h"
 #include "workflows/study/convergence_study.h"
 
@@ -108,16 +109,9 @@ Exit status: 0 success (a run that fails is a row of the table), 2 bad input (no
 is written; also: directory in use, earlier study's files), 3 numerical failure, 4 an
 output that cannot be written or memory that ran out, 1 an internal error (see
 `wearlink --help`).
-)";
-
-    /** The file names a study writes (see the help text), for --overwrite. */
-    RunFiles
-    study_files()
-    {
-      return {
-        {"accuracy.csv", "accuracy.md", "accuracy_floor.csv", "accuracy_pareto.png", "accuracy_pareto_volume.png"},
-        {}};
-    }
+)" + std::string("study accuracy: ") +
+      io::outputs::listing(io::outputs::accuracy_study()) +
+      "study convergence: " + io::outputs::listing(io::outputs::convergence_study());
 
     /** --ensemble N of the study: the chaos floor's members (0, or 2 … 100; default 4). */
     unsigned int
@@ -131,13 +125,6 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       if (!(s >= 0 && s <= 9007199254740992.0 && s == std::floor(s)))
         throw InputError("--seed " + a.value("--seed") + ": the seed must be a whole number from 0 to 2^53.");
       return static_cast<unsigned int>(n);
-    }
-
-    /** The file names a convergence study writes, for --overwrite. */
-    RunFiles
-    convergence_files()
-    {
-      return {{"convergence.md", "convergence.csv", "convergence.json", "convergence_*.csv", "convergence_*.png"}, {}};
     }
 
     /** --refinements a,b,c: the levels' factors. */
@@ -208,7 +195,7 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_convergence");
       StudyMpi   mpi;
-      const auto claimed = claim_output_directory_on_root(output_claim(out, convergence_files(), a));
+      const auto claimed = claim_output_directory_on_root(output_claim(out, io::outputs::convergence_study(), a));
       const auto study   = workflows::run_convergence_study(file, request);
       if (!study.root)
         return 0;
@@ -260,7 +247,7 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_accuracy");
       StudyMpi   mpi;
-      const auto claimed = claim_output_directory_on_root(output_claim(out, study_files(), a));
+      const auto claimed = claim_output_directory_on_root(output_claim(out, io::outputs::accuracy_study(), a));
       const auto study   = workflows::run_accuracy_study(file, request);
       if (!study.root)
         return 0;

@@ -6,6 +6,7 @@
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "io/output_names.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -17,8 +18,8 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text =
-      std::string(R"(wearlink sweep SCENE.prm --parameter "Section/Entry" --values FROM:TO:COUNT
+    const std::string help_text = std::string(
+                                    R"(wearlink sweep SCENE.prm --parameter "Section/Entry" --values FROM:TO:COUNT
                [--channel NAME] [--output DIR] [--set "Section/Entry=value" ...]
 mpirun -np N wearlink sweep ...   (the same, members spread over N MPI ranks)
 
@@ -54,7 +55,7 @@ error (see `wearlink --help`).
 
 Outputs in DIR (written by rank 0 only, each atomically): bifurcation.csv,
 members.csv, bifurcation.png, sweep.json.
-)") + output_folder_help;
+)") + output_folder_help + io::outputs::listing(io::outputs::sweep());
 
     /** The swept values FROM:TO:COUNT. */
     std::vector<double>
@@ -109,13 +110,6 @@ members.csv, bifurcation.png, sweep.json.
       return values;
     }
 
-    /** The file names a sweep writes (see the help text), for --overwrite. */
-    RunFiles
-    sweep_files()
-    {
-      return {{"bifurcation.csv", "members.csv", "bifurcation.png", "sweep.json"}, {}};
-    }
-
     int
     run(const std::vector<std::string> &args)
     {
@@ -148,7 +142,7 @@ members.csv, bifurcation.png, sweep.json.
       r.overrides        = a.all("--set");
       r.output_directory = a.value("--output", "output/" + std::filesystem::path(r.file).stem().string() + "_sweep");
       r.quiet            = a.has("--quiet");
-      const auto claimed = claim_output_directory_on_root(output_claim(r.output_directory, sweep_files(), a));
+      const auto claimed = claim_output_directory_on_root(output_claim(r.output_directory, io::outputs::sweep(), a));
       return workflows::run_sweep(r);
     }
   } // namespace

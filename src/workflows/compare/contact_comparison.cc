@@ -9,6 +9,7 @@
 #include "contact/cylindrical_contact.h"
 #include "fe/fe_normal_force_law.h"
 #include "io/analyses_parameters.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/profile_file.h"
 #include "io/scene.h"
@@ -601,7 +602,7 @@ namespace wearlink::workflows
             csv << ',' << fc.force[i];
           csv << '\n';
         }
-      write_file_atomically(dir + "/force_approach.csv", csv.str());
+      write_file_atomically(dir + "/" + io::outputs::force_approach_table, csv.str());
       std::vector<io::PlotSpec> panels;
       for (const auto &joint : c.joints)
         {
@@ -610,7 +611,8 @@ namespace wearlink::workflows
           spec.x_label = "approach δ [m] (rigid-profile overlap at the FE pin position)";
           spec.y_label = "normal force F [N]";
           spec.log_x = spec.log_y = true;
-          spec.extra = "set key inside left top box opaque; set format x '10^{%L}'; set format y '10^{%L}'";
+          spec.key                = io::KeyPlace::inside_top_left;
+          spec.powers_of_ten      = true;
           for (const auto &fc : c.curves)
             {
               if (fc.joint != joint)
@@ -623,8 +625,7 @@ namespace wearlink::workflows
                     s.x.push_back(c.approach[i]);
                     s.y.push_back(fc.force[i]);
                   }
-              s.style   = fc.law == "fe" ? "linespoints" : "lines";
-              s.options = fc.law == "fe" ? "lw 3 pt 7 ps 0.6" : "lw 2";
+              s.look = fc.law == "fe" ? io::line_points("", 3, io::Marker::filled_circle, 0.6) : io::line("", 2);
               spec.series.push_back(s);
             }
           panels.push_back(spec);
@@ -632,7 +633,7 @@ namespace wearlink::workflows
       io::plot_panels_png(panels,
                           static_cast<unsigned int>(panels.size()),
                           "Force against approach: simplified contact laws and the FE model",
-                          dir + "/force_approach.png",
+                          dir + "/" + io::outputs::force_approach_plot,
                           800 * static_cast<int>(panels.size()),
                           700);
     }
@@ -652,7 +653,7 @@ namespace wearlink::workflows
             dev << ',' << r;
           dev << '\n';
         }
-      write_file_atomically(dir + "/deviations.csv", dev.str());
+      write_file_atomically(dir + "/" + io::outputs::deviations, dev.str());
     }
 
     /**
@@ -693,7 +694,7 @@ namespace wearlink::workflows
             eff << ',' << e.wear_wall_time;
           eff << '\n';
         }
-      write_file_atomically(dir + "/effects.csv", eff.str());
+      write_file_atomically(dir + "/" + io::outputs::effects, eff.str());
     }
   } // namespace
 
@@ -705,6 +706,6 @@ namespace wearlink::workflows
     write_tables(dir, c);
     write_effects(dir, c);
     write_contact_pressures(dir, c.pressures);
-    write_file_atomically(dir + "/compare_contact.txt", c.table());
+    write_file_atomically(dir + "/" + io::outputs::compare_contact_log, c.table());
   }
 } // namespace wearlink::workflows

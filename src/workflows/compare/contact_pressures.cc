@@ -7,6 +7,7 @@
 #include "base/parameters.h"
 #include "base/text.h"
 #include "base/timings.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 
 #include <algorithm>
@@ -314,12 +315,13 @@ namespace wearlink::workflows
           if (colour == loads.end())
             colour = loads.insert(loads.end(), c.load);
           io::PlotSeries s;
-          s.title   = c.model + ", " + load_label(c.load) + " N";
-          s.style   = "histeps";
-          s.options = "lc " + std::to_string(colour - loads.begin() + 1) +
-                      (c.model == "fe"      ? " lw 3 dt 1" :
-                       c.model == "winkler" ? " lw 2 dt 3" :
-                                              " lw 2 dt 2");
+          s.title     = c.model + ", " + load_label(c.load) + " N";
+          s.look      = io::palette_line(static_cast<unsigned>(colour - loads.begin() + 1), c.model == "fe" ? 3 : 2);
+          s.look.mark = io::Mark::steps;
+          if (c.model == "winkler")
+            s.look.dotted();
+          else if (c.model != "fe")
+            s.look.dashed();
           for (std::size_t k = 0; k < d.bore_angle.size(); ++k)
             {
               const double x = angle_from(d.bore_angle[k], centre);
@@ -331,10 +333,8 @@ namespace wearlink::workflows
             }
           spec.series.push_back(std::move(s));
         }
-      std::ostringstream extra;
-      extra << "set xrange [" << (centre - span) * 180 / pi << ":" << (centre + span) * 180 / pi
-            << "]\nset yrange [0:*]\nset key outside right top box";
-      spec.extra = extra.str();
+      spec.x_range = io::Range{(centre - span) * 180 / pi, (centre + span) * 180 / pi};
+      spec.y_range = io::Range{0, NAN};
       return spec;
     }
   } // namespace
@@ -364,7 +364,7 @@ namespace wearlink::workflows
           csv << ',' << c.pressure[k];
         csv << '\n';
       }
-    write_file_atomically(dir + "/pressure.csv", csv.str());
+    write_file_atomically(dir + "/" + io::outputs::pressure_table, csv.str());
     std::vector<std::string> joints;
     bool                     worn = false;
     for (const auto &c : d.curves)
@@ -383,7 +383,7 @@ namespace wearlink::workflows
                         static_cast<unsigned int>(columns),
                         "Contact pressure on the bore per discrete area at four loads: fe solid, hertz-strip "
                         "dashed, winkler dotted; one colour per load",
-                        dir + "/pressure.png",
+                        dir + "/" + io::outputs::pressure_plot,
                         1000 * columns,
                         600 * rows);
   }

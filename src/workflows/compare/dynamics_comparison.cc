@@ -115,22 +115,24 @@ namespace wearlink::workflows
 
     /** Phase-portrait panel of one run, on the given axis ranges. */
     io::PlotSpec
-    phase_panel(const analysis::RecordedRun &run,
-                const std::string           &position,
-                const std::string           &velocity,
-                const std::string           &range)
+    phase_panel(const analysis::RecordedRun           &run,
+                const std::string                     &position,
+                const std::string                     &velocity,
+                const std::pair<io::Range, io::Range> &ranges)
     {
       io::PlotSpec p;
       p.title   = run.label;
       p.x_label = position + " [m]";
       p.y_label = velocity + " [m/s]";
-      p.extra   = range + "set key below\n";
+      p.x_range = ranges.first;
+      p.y_range = ranges.second;
+      p.key     = io::KeyPlace::below;
       io::PlotSeries orbit;
       orbit.title =
         std::to_string(run.series.n_samples()) + " samples every " + format_number(run.sample_interval, 3) + " s";
-      orbit.x       = run.series.values[run.series.index(position)];
-      orbit.y       = run.series.values[run.series.index(velocity)];
-      orbit.options = "lw 0.4 lc rgb '#707070'";
+      orbit.x    = run.series.values[run.series.index(position)];
+      orbit.y    = run.series.values[run.series.index(velocity)];
+      orbit.look = io::line("#707070", 0.4);
       p.series.push_back(orbit);
       const auto &s = run.section.points;
       if (s.n_samples() > 0 && s.has(position) && s.has(velocity))
@@ -138,17 +140,16 @@ namespace wearlink::workflows
           io::PlotSeries points;
           points.title =
             std::to_string(s.n_samples()) + " Poincaré points (one per " + format_number(run.section.period, 3) + " s)";
-          points.style   = "points";
-          points.options = "pt 7 ps 0.7 lc rgb 'red'";
-          points.x       = s.values[s.index(position)];
-          points.y       = s.values[s.index(velocity)];
+          points.look = io::points("red", 0.7);
+          points.x    = s.values[s.index(position)];
+          points.y    = s.values[s.index(velocity)];
           p.series.push_back(points);
         }
       return p;
     }
 
-    /** "set xrange/yrange" covering both runs' channel values, 5 % margin. */
-    std::string
+    /** The x and y ranges covering both runs' channel values, 5 % margin. */
+    std::pair<io::Range, io::Range>
     common_range(const analysis::RecordedRun &a,
                  const analysis::RecordedRun &b,
                  const std::string           &x,
@@ -163,12 +164,10 @@ namespace wearlink::workflows
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
               }
-        const double       pad = 0.05 * std::max(hi - lo, 1e-30);
-        std::ostringstream s;
-        s << std::setprecision(10) << '[' << lo - pad << ':' << hi + pad << ']';
-        return s.str();
+        const double pad = 0.05 * std::max(hi - lo, 1e-30);
+        return io::Range{lo - pad, hi + pad};
       };
-      return "set xrange " + range(x) + "\nset yrange " + range(y) + "\n";
+      return {range(x), range(y)};
     }
   } // namespace
 
@@ -260,7 +259,7 @@ namespace wearlink::workflows
               const std::string x = j + "_e" + d + "_m", v = j + "_ve" + d + "_m_s";
               if (!b.series.has(x) || !b.series.has(v) || !a.series.has(x) || !a.series.has(v))
                 continue;
-              const std::string range = common_range(b, a, x, v);
+              const auto        range = common_range(b, a, x, v);
               const std::string png   = "before_after_phase_" + j + "_" + d + ".png";
               if (io::plot_panels_png({phase_panel(b, x, v, range), phase_panel(a, x, v, range)},
                                       2,
@@ -294,12 +293,17 @@ namespace wearlink::workflows
       auto          &scan_csv = t.scan_csv;
       auto          &scan     = t.scan;
       io::PlotSeries sb, sa;
-      sb.title = "before, " + analysis::method_name(method);
-      sa.title = "after, " + analysis::method_name(method);
-      sb.style = sa.style = "linespoints";
-      const bool wolf     = method == analysis::LyapunovMethod::wolf;
-      sb.options          = std::string("lw 2 pt ") + (wolf ? "6" : "7") + " lc rgb '#1f5fbf'" + (wolf ? " dt 2" : "");
-      sa.options          = std::string("lw 2 pt ") + (wolf ? "6" : "7") + " lc rgb '#c0392b'" + (wolf ? " dt 2" : "");
+      sb.title                = "before, " + analysis::method_name(method);
+      sa.title                = "after, " + analysis::method_name(method);
+      const bool       wolf   = method == analysis::LyapunovMethod::wolf;
+      const io::Marker marker = wolf ? io::Marker::open_circle : io::Marker::filled_circle;
+      sb.look                 = io::line_points("#1f5fbf", 2, marker);
+      sa.look                 = io::line_points("#c0392b", 2, marker);
+      if (wolf)
+        {
+          sb.look.dashed();
+          sa.look.dashed();
+        }
       for (const double tau : delays)
         {
           if (std::round(tau / b.sample_interval) < 1.0 || std::round(tau / a.sample_interval) < 1.0)
@@ -370,7 +374,7 @@ namespace wearlink::workflows
       panel.x_label = "embedding delay [s]";
       panel.y_label = "largest Lyapunov exponent [1/s]";
       panel.log_x = panel.log_y = true;
-      panel.extra               = "set key top right inside\n";
+      panel.key                 = io::KeyPlace::inside_top_right;
 
       for (const auto method : settings.methods)
         {

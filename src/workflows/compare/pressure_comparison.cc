@@ -158,18 +158,20 @@ namespace wearlink::workflows
         std::ostringstream ds;
         ds << "angle_deg";
         io::PlotSpec spec;
-        spec.title   = "Joint " + j + ": wear depth from the same load history (pin: solid, bushing: dashed)";
-        spec.x_label = "angle in the body's own frame [deg]";
-        spec.y_label = "wear depth [um]";
-        spec.extra   = "set xrange [0:360]\nset xtics 45\n";
+        spec.title      = "Joint " + j + ": wear depth from the same load history (pin: solid, bushing: dashed)";
+        spec.x_label    = "angle in the body's own frame [deg]";
+        spec.y_label    = "wear depth [um]";
+        spec.x_range    = io::Range{0, 360};
+        spec.x_tic_step = 45;
         std::vector<const PressureComparisonRow *> rs;
         for (const auto &r : c.rows)
           if (r.joint == j)
             {
               rs.push_back(&r);
               ds << ",pin_" << r.model << "_m,bushing_" << r.model << "_m";
-              io::PlotSeries p{"pin, " + r.model, {}, {}, "lines", "lw 2 lc " + std::to_string(rs.size())};
-              io::PlotSeries b{"bushing, " + r.model, {}, {}, "lines", "dt 2 lw 2 lc " + std::to_string(rs.size())};
+              const auto     colour = static_cast<unsigned>(rs.size());
+              io::PlotSeries p{"pin, " + r.model, {}, {}, io::palette_line(colour, 2)};
+              io::PlotSeries b{"bushing, " + r.model, {}, {}, io::palette_line(colour, 2).dashed()};
               for (std::size_t k = 0; k < r.depth_pin.size(); ++k)
                 {
                   p.x.push_back(360.0 * k / r.depth_pin.size());

@@ -6,6 +6,7 @@
 #include "base/exceptions.h"
 #include "base/text.h"
 #include "io/analyses_parameters.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene.h"
 #include "io/scene_periods.h"
@@ -67,13 +68,16 @@ namespace wearlink::workflows
     {
       const std::string what = "simulated run's time series";
       if (!o.simulated_directory.empty())
-        return io::read_time_signal(o.simulated_directory + "/time_series.csv", o.channel, what, "--channel");
+        return io::read_time_signal(o.simulated_directory + "/" + io::outputs::time_series,
+                                    o.channel,
+                                    what,
+                                    "--channel");
       RunOptions run;
       run.output_directory    = o.output_directory + "/simulated";
       run.progress            = o.progress;
       scene.write_time_series = true;
       run_scene(scene, run);
-      return io::read_time_signal(run.output_directory + "/time_series.csv", o.channel, what, "--channel");
+      return io::read_time_signal(run.output_directory + "/" + io::outputs::time_series, o.channel, what, "--channel");
     }
 
     Json
@@ -156,20 +160,19 @@ namespace wearlink::workflows
       p.x_label = "time [s]";
       p.y_label = o.channel;
       p.width   = 1200;
-      p.extra   = "set key below";
+      p.key     = io::KeyPlace::below;
       std::vector<double> t(c.simulated.values.size()), shifted(t.size());
       for (std::size_t i = 0; i < t.size(); ++i)
         {
           t[i]       = c.simulated.t0 + i * c.simulated.dt;
           shifted[i] = t[i] - c.lag;
         }
-      p.series = {{"simulated", t, c.simulated.values, "lines", "lw 1.5 lc rgb '#1f77b4'"},
-                  {"measured", t, c.measured.values, "lines", "lw 1.5 lc rgb '#d62728'"},
+      p.series = {{"simulated", t, c.simulated.values, io::line("#1f77b4", 1.5)},
+                  {"measured", t, c.measured.values, io::line("#d62728", 1.5)},
                   {"measured shifted back by the lag " + format_number(c.lag * 1e3, 4) + " ms",
                    shifted,
                    c.measured.values,
-                   "lines",
-                   "dt 2 lc rgb '#ff9896'"}};
+                   io::line("#ff9896").dashed()}};
       return p;
     }
 
@@ -181,14 +184,14 @@ namespace wearlink::workflows
       p.x_label     = "frequency [Hz]";
       p.y_label     = "amplitude [unit of the signal]";
       const auto &s = c.simulated_features, &m = c.measured_features;
-      p.series   = {{"simulated", s.frequencies_Hz, s.amplitudes, "lines", "lw 1.5 lc rgb '#1f77b4'"},
-                    {"measured", m.frequencies_Hz, m.amplitudes, "lines", "lw 1.5 lc rgb '#d62728'"}};
+      p.series   = {{"simulated", s.frequencies_Hz, s.amplitudes, io::line("#1f77b4", 1.5)},
+                    {"measured", m.frequencies_Hz, m.amplitudes, io::line("#d62728", 1.5)}};
       double top = 0;
       for (const auto *f : {&s, &m})
         for (const auto &peak : f->dominant)
           top = std::max(top, peak.frequency_Hz);
       if (top > 0)
-        p.extra = "set xrange [0:" + format_number(std::min(spectrum_reach * top, s.frequencies_Hz.back())) + "]";
+        p.x_range = io::Range{0, std::min(spectrum_reach * top, s.frequencies_Hz.back())};
       return p;
     }
   } // namespace

@@ -10,6 +10,7 @@
 #include "base/timings.h"
 #include "io/json_file.h"
 #include "io/life_outputs.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/uncertainty_plots.h"
 #include "workflows/ensemble/uncertain_inputs.h"
@@ -279,10 +280,10 @@ namespace wearlink::workflows
           if (!inputs.empty())
             m["inputs"] = inputs;
           Json summary;
-          if (o.resume && std::filesystem::exists(dir + "/summary.json"))
-            summary = io::read_json_file(dir + "/summary.json");
+          if (o.resume && std::filesystem::exists(dir + "/" + io::outputs::summary))
+            summary = io::read_json_file(dir + "/" + io::outputs::summary);
           else
-            summary = run(scene, dir, prefix, o.resume && std::filesystem::exists(dir + "/checkpoint.json"));
+            summary = run(scene, dir, prefix, o.resume && std::filesystem::exists(dir + "/" + io::outputs::checkpoint));
           m["status"]  = "ok";
           m["figures"] = summary_figures(summary);
           if (summary.contains("life"))
@@ -411,14 +412,13 @@ namespace wearlink::workflows
     {
       const Json    &stats = summary.at("ensemble");
       io::PlotSpec   spec;
-      io::PlotSeries points{"members", {}, {}, "points", "pt 7 ps 1.2 lc rgb 'black'"};
-      io::PlotSeries band{"95 % interval of the mean", {}, {}, "lines", "lw 6 lc rgb '#8080c0'"};
-      std::string    tics = "set xtics rotate by -40 noenhanced (";
-      int            i    = 0;
+      io::PlotSeries points{"members", {}, {}, io::points("black", 1.2)};
+      io::PlotSeries band{"95 % interval of the mean", {}, {}, io::line("#8080c0", 6)};
+      int            i = 0;
       for (auto it = stats.begin(); it != stats.end(); ++it, ++i)
         {
           const double mean = json_number(it.value().at("mean"));
-          tics += (i ? ", " : "") + std::string("\"") + it.key() + "\" " + std::to_string(i);
+          spec.categories.push_back(it.key());
           if (!(std::abs(mean) > 0))
             continue;
           for (const auto &m : summary.at("members"))
@@ -440,7 +440,7 @@ namespace wearlink::workflows
       spec.x_label = "";
       spec.y_label = "member / mean − 1 [%]";
       spec.series  = {band, points};
-      spec.extra   = tics + ")\nset xrange [-0.5:" + std::to_string(i - 0.5) + "]\nset bmargin 14\nset grid\n";
+      spec.x_range = io::Range{-0.5, i - 0.5};
       spec.width   = 1400;
       spec.height  = 800;
       io::plot_png(spec, path);
@@ -457,7 +457,7 @@ namespace wearlink::workflows
       for (const auto &m : summary.at("members"))
         if (m.at("status").get<std::string>() == "ok")
           histories.push_back(
-            io::read_life_history(m.at("directory").get<std::string>() + "/life_history.csv", criteria));
+            io::read_life_history(m.at("directory").get<std::string>() + "/" + io::outputs::life_history, criteria));
       std::vector<io::CrossingSpread> spreads;
       const Json                     &life = summary.at("ensemble_life").at("criteria");
       for (auto it = life.begin(); it != life.end(); ++it)
@@ -485,14 +485,14 @@ namespace wearlink::workflows
     {
       const auto ok = static_cast<std::size_t>(json_number(summary.at("members_ok")));
       make_output_directory(o.output_directory);
-      write_file_atomically(o.output_directory + "/summary.json", summary.dump(2) + "\n");
-      write_file_atomically(o.output_directory + "/ensemble.csv", members_csv(summary));
+      write_file_atomically(o.output_directory + "/" + io::outputs::summary, summary.dump(2) + "\n");
+      write_file_atomically(o.output_directory + "/" + io::outputs::ensemble_table, members_csv(summary));
       if (ok == 0)
         return;
-      plot_spread(summary, o.output_directory + "/ensemble.png");
+      plot_spread(summary, o.output_directory + "/" + io::outputs::ensemble_plot);
       if (o.command == "life")
         {
-          plot_life_band(summary, criteria, o.output_directory + "/life.png");
+          plot_life_band(summary, criteria, o.output_directory + "/" + io::outputs::life_plot);
           io::plot_life_cdf(decided_revolutions(members),
                             o.output_directory + "/life_cdf.png",
                             "Life criteria of " + std::to_string(ok) + " members: empirical CDF of the revolutions");

@@ -262,20 +262,19 @@ namespace wearlink::workflows
               plot.x_label = pair.position + " " + unit_label(run.series.units[ip]);
               plot.y_label = pair.velocity + " " + unit_label(run.series.units[iv]);
               io::PlotSeries orbit;
-              orbit.title   = "phase orbit";
-              orbit.x       = run.series.values[ip];
-              orbit.y       = run.series.values[iv];
-              orbit.options = "lw 0.5 lc rgb 'black'";
+              orbit.title = "phase orbit";
+              orbit.x     = run.series.values[ip];
+              orbit.y     = run.series.values[iv];
+              orbit.look  = io::line("black", 0.5);
               plot.series.push_back(orbit);
               if (run.section.points.n_samples() > 0 && run.section.points.has(pair.position) &&
                   run.section.points.has(pair.velocity))
                 {
                   io::PlotSeries points;
-                  points.title   = "Poincaré points (one per " + format_number(run.section.period, 4) + " s)";
-                  points.style   = "points";
-                  points.options = "pt 7 ps 0.8 lc rgb 'red'";
-                  points.x       = run.section.points.values[run.section.points.index(pair.position)];
-                  points.y       = run.section.points.values[run.section.points.index(pair.velocity)];
+                  points.title = "Poincaré points (one per " + format_number(run.section.period, 4) + " s)";
+                  points.look  = io::points("red", 0.8);
+                  points.x     = run.section.points.values[run.section.points.index(pair.position)];
+                  points.y     = run.section.points.values[run.section.points.index(pair.velocity)];
                   plot.series.push_back(points);
                 }
               const std::string png = "phase_portrait_" + pair.position + ".png";
@@ -319,11 +318,10 @@ namespace wearlink::workflows
               plot.x_label = pair.position + " " + unit_label(p.units[ip]);
               plot.y_label = pair.velocity + " " + unit_label(p.units[iv]);
               io::PlotSeries points;
-              points.title   = std::to_string(p.n_samples()) + " section points";
-              points.style   = "points";
-              points.options = "pt 7 ps 0.8 lc rgb 'red'";
-              points.x       = p.values[ip];
-              points.y       = p.values[iv];
+              points.title = std::to_string(p.n_samples()) + " section points";
+              points.look  = io::points("red", 0.8);
+              points.x     = p.values[ip];
+              points.y     = p.values[iv];
               plot.series.push_back(points);
               const std::string png = "poincare_" + pair.position + ".png";
               if (io::plot_png(plot, dir + png))

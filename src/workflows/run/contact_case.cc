@@ -7,6 +7,7 @@
 #include "base/text.h"
 #include "base/validity_warnings.h"
 #include "contact/hertz.h"
+#include "io/output_names.h"
 
 #include <cmath>
 #include <iomanip>
@@ -254,11 +255,11 @@ namespace wearlink::workflows
     // Set-up (mesh + assembly, then the condensed factorization).
     log << "Meshing and assembling the pin–bushing pair (surface element size " << settings.surface_element_size * 1e3
         << " mm)...\n";
-    fe::PinBushingModel model(c.geometry, settings, out + "/pin_bushing.msh");
+    fe::PinBushingModel model(c.geometry, settings, out + "/" + io::outputs::contact_mesh);
     std::ostringstream  effective;
     prm.print_parameters(effective, dealii::ParameterHandler::ShortText);
     if (run.root)
-      write_file_atomically(out + "/parameters.prm", effective.str());
+      write_file_atomically(out + "/" + io::outputs::parameters, effective.str());
     const auto &st = model.statistics();
     log << "  " << st.mesh.n_quadrilaterals << " quadrilaterals, " << st.n_dofs << " DoFs, " << st.n_pin_candidates
         << " pin + " << st.n_bore_candidates << " bore contact candidates; mesh " << format_number(st.mesh_time, 3)
@@ -312,7 +313,7 @@ namespace wearlink::workflows
     summary["warnings"]             = warnings.json();
     if (run.root)
       {
-        write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
+        write_file_atomically(out + "/" + io::outputs::summary, summary.dump(2) + "\n");
         warnings.print(std::cerr);
       }
     log << "\nWrote " << out << "/summary.json\n";

@@ -4,6 +4,7 @@
 #include "base/numbers.h"
 #include "base/text.h"
 #include "io/csv.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 
 #include <algorithm>
@@ -43,21 +44,22 @@ namespace wearlink::workflows
       p.equal_axes = true;
       p.width      = 900;
       p.height     = 800;
-      io::PlotSeries circle{"clearance circle", {}, {}, "lines", "dt 2 lw 2 lc rgb 'black'"};
+      io::PlotSeries circle{"clearance circle", {}, {}, io::line("black", 2).dashed()};
       for (int k = 0; k < circle_points; ++k)
         {
           const double a = 2 * numbers::pi * k / (circle_points - 1);
           circle.x.push_back(clearance * mm * std::cos(a));
           circle.y.push_back(clearance * mm * std::sin(a));
         }
-      io::PlotSeries orbit{"journal centre", {}, {}, "lines", "lw 1 lc rgb '#1f77b4'"};
+      io::PlotSeries orbit{"journal centre", {}, {}, io::line("#1f77b4", 1)};
       orbit.x = column(table, joint + "_ex_local_m", mm);
       orbit.y = column(table, joint + "_ey_local_m", mm);
-      io::PlotSeries start{"start", {orbit.x.front()}, {orbit.y.front()}, "points", "pt 7 ps 1.5 lc rgb '#2ca02c'"};
+      io::PlotSeries start{"start", {orbit.x.front()}, {orbit.y.front()}, io::points("#2ca02c", 1.5)};
       p.series            = {circle, orbit, start};
       const double extent = 1.2 * clearance * mm;
-      p.extra             = "set xrange [" + format_number(-extent) + ":" + format_number(extent) + "]\nset yrange [" +
-                format_number(-extent) + ":" + format_number(extent) + "]\nset key bottom right box opaque";
+      p.x_range           = io::Range{-extent, extent};
+      p.y_range           = io::Range{-extent, extent};
+      p.key               = io::KeyPlace::inside_bottom_right;
       return p;
     }
 
@@ -80,7 +82,7 @@ namespace wearlink::workflows
       p.x_label = "time [s]";
       p.y_label = y_label;
       for (const auto &c : curves)
-        p.series.push_back({c.title, time, column(table, c.column), "lines", "lc rgb '" + c.colour + "'"});
+        p.series.push_back({c.title, time, column(table, c.column), io::line(c.colour)});
       return p;
     }
 
@@ -165,7 +167,7 @@ namespace wearlink::workflows
         look.notes.push_back("no plots: gnuplot is not installed (apt-get install gnuplot-nox)");
         return look;
       }
-    const auto table = io::CsvTable::read(directory + "/time_series.csv", "time series");
+    const auto table = io::CsvTable::read(directory + "/" + io::outputs::time_series, "time series");
     const auto time  = column(table, "time_s");
     const auto keep  = [&](const bool written, const std::string &path) {
       if (written)

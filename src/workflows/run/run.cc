@@ -7,6 +7,7 @@
 #include "base/interrupt.h"
 #include "base/text.h"
 #include "io/analyses_parameters.h"
+#include "io/output_names.h"
 #include "io/scene_periods.h"
 #include "mbs/assembly.h"
 #include "mbs/body_trig.h"
@@ -472,8 +473,8 @@ namespace wearlink::workflows
         csv->commit();
       std::ostringstream prm;
       scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
-      write_file_atomically(options.output_directory + "/parameters.prm", prm.str());
-      write_file_atomically(options.output_directory + "/summary.json", summary.dump(2));
+      write_file_atomically(options.output_directory + "/" + io::outputs::parameters, prm.str());
+      write_file_atomically(options.output_directory + "/" + io::outputs::summary, summary.dump(2));
       warnings.print(std::cerr);
       if (options.first_look != nullptr)
         {
@@ -499,7 +500,7 @@ namespace wearlink::workflows
       {
         make_output_directory(options.output_directory);
         if (scene.write_time_series)
-          csv = std::make_unique<AtomicFile>(options.output_directory + "/time_series.csv");
+          csv = std::make_unique<AtomicFile>(options.output_directory + "/" + io::outputs::time_series);
       }
 
     mbs::Simulation sim(*scene.mechanism, scene.simulation);

@@ -6,6 +6,7 @@
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "base/text.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene.h"
 #include "io/wear_outputs.h"
@@ -643,27 +644,20 @@ namespace wearlink::workflows
       spec.y_label = y_label;
       spec.log_x   = true;
       spec.log_y   = true;
-      spec.extra   = "set key outside right\nset grid\n";
       if (std::isfinite(floor[0]) && floor[0] > 0 && floor[2] >= floor[0])
-        {
-          std::ostringstream band;
-          band << std::setprecision(6) << "set object 1 rect from graph 0, first " << floor[0] << " to graph 1, first "
-               << floor[2] << " fc rgb '#d8d8f0' fs solid 1.0 noborder behind\n"
-               << "set arrow 1 from graph 0, first " << floor[1] << " to graph 1, first " << floor[1]
-               << " nohead dt 2 lw 2 lc rgb '#5050a0'\n"
-               << "set label 1 'chaos floor: " << study.floor.members
-               << " runs at the scene settings: pairs (band), their mean (dashed)' at graph 0.02, first " << floor[2]
-               << " offset 0, 0.7 font ',10' tc rgb '#5050a0'\n";
-          spec.extra += band.str();
-        }
+        spec.band = io::Band{floor[0],
+                             floor[2],
+                             floor[1],
+                             "chaos floor: " + std::to_string(study.floor.members) +
+                               " runs at the scene settings: pairs (band), their mean (dashed)"};
       std::vector<std::string> knobs;
       for (const auto &r : study.rows)
         if (std::find(knobs.begin(), knobs.end(), r.knob) == knobs.end())
           knobs.push_back(r.knob);
-      int point_type = 4;
+      unsigned shape = 4;
       for (const auto &k : knobs)
         {
-          io::PlotSeries s{k, {}, {}, "linespoints", "pt " + std::to_string(point_type++) + " ps 2 lw 2"};
+          io::PlotSeries s{k, {}, {}, io::numbered_shape(io::line_points("", 2, io::Marker::automatic, 2), shape++)};
           for (const auto &r : study.rows)
             if (r.knob == k && !r.is_reference && r.ok && std::isfinite(error(r)) && error(r) > 0)
               {
@@ -692,10 +686,10 @@ namespace wearlink::workflows
                                     [](const StudyRow &r) { return max_error(r, " V_"); },
                                     "relative error of the worn volume (largest over surfaces and joints)",
                                     {{f.volume_min, f.volume_mean, f.volume_max}});
-    write_file_atomically(dir + "/accuracy.csv", study.csv());
-    write_file_atomically(dir + "/accuracy.md", study.markdown());
+    write_file_atomically(dir + "/" + io::outputs::accuracy_table, study.csv());
+    write_file_atomically(dir + "/" + io::outputs::accuracy_report, study.markdown());
     if (f.members >= 2)
-      write_file_atomically(dir + "/accuracy_floor.csv", study.floor_csv());
+      write_file_atomically(dir + "/" + io::outputs::accuracy_floor, study.floor_csv());
     if (!worst.series.empty())
       io::plot_png(worst, dir + "/accuracy_pareto.png");
     if (study.wears && !volume.series.empty())

@@ -4,6 +4,7 @@
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/text.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene.h"
 #include "wear/periodic_samples.h"
@@ -538,8 +539,8 @@ namespace wearlink::workflows
           mean.title               = name + " mean";
           low.title                = name + " range";
           high.title               = "";
-          mean.options             = "lw 2 lc rgb '" + colour + "'";
-          low.options = high.options = "lw 0.5 dt 2 lc rgb '" + colour + "'";
+          mean.look                = io::line(colour, 2);
+          low.look = high.look = io::line(colour, 0.5).dashed();
           for (std::size_t k = 0; k < n; ++k)
             {
               const double angle = 360.0 * k / n;
@@ -555,7 +556,8 @@ namespace wearlink::workflows
           spec.series.push_back(high);
           spec.series.push_back(mean);
         }
-      spec.extra = "set xrange [0:360]\nset xtics 45\nset key outside right top\nset grid";
+      spec.x_range    = io::Range{0, 360};
+      spec.x_tic_step = 45;
       write_file_atomically(dir + "/convergence_" + stem + ".csv", csv.str());
       io::plot_png(spec, dir + "/convergence_" + stem + ".png");
     }
@@ -564,9 +566,9 @@ namespace wearlink::workflows
   void
   write_convergence_study(const std::string &dir, const ConvergenceStudy &study)
   {
-    write_file_atomically(dir + "/convergence.md", study.markdown());
-    write_file_atomically(dir + "/convergence.csv", table_csv(study));
-    write_file_atomically(dir + "/convergence.json", study.json().dump(2));
+    write_file_atomically(dir + "/" + io::outputs::convergence_report, study.markdown());
+    write_file_atomically(dir + "/" + io::outputs::convergence_table, table_csv(study));
+    write_file_atomically(dir + "/" + io::outputs::convergence_json, study.json().dump(2));
     for (std::size_t s = 0; s < study.surfaces.size(); ++s)
       write_profiles(dir, study, s);
   }

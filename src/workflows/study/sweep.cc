@@ -11,6 +11,7 @@
 #include "base/text.h"
 #include "base/timings.h"
 #include "io/analyses_parameters.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene.h"
 #include "io/scene_periods.h"
@@ -262,8 +263,7 @@ namespace wearlink::workflows
       table << std::setprecision(12) << "member,parameter_value,status,n_points,message\n";
       io::PlotSeries points;
       points.title         = "Poincaré points";
-      points.style         = "points";
-      points.options       = "pt 7 ps 0.4 lc rgb 'black'";
+      points.look          = io::points("black", 0.4);
       std::size_t n_failed = 0;
       std::string failed_values;
       for (const auto &m : members)
@@ -282,8 +282,8 @@ namespace wearlink::workflows
               points.y.push_back(m.points[k]);
             }
         }
-      write_file_atomically(out_dir + "/bifurcation.csv", diagram.str());
-      write_file_atomically(out_dir + "/members.csv", table.str());
+      write_file_atomically(out_dir + "/" + io::outputs::bifurcation_table, diagram.str());
+      write_file_atomically(out_dir + "/" + io::outputs::sweep_members, table.str());
 
       io::PlotSpec plot;
       plot.title = "Bifurcation diagram: " + channel + " at the Poincaré sections vs " + parameter +
@@ -291,7 +291,7 @@ namespace wearlink::workflows
       plot.x_label       = parameter;
       plot.y_label       = channel;
       plot.series        = {points};
-      const bool plotted = io::plot_png(plot, out_dir + "/bifurcation.png");
+      const bool plotted = io::plot_png(plot, out_dir + "/" + io::outputs::bifurcation_plot);
 
       Json summary           = Json::object();
       summary["scene"]       = file;
@@ -318,7 +318,7 @@ namespace wearlink::workflows
         }
       summary["sum_of_member_wall_times_s"] = member_time;
       summary["members"]                    = list;
-      write_file_atomically(out_dir + "/sweep.json", summary.dump(2) + "\n");
+      write_file_atomically(out_dir + "/" + io::outputs::sweep_json, summary.dump(2) + "\n");
 
       std::cout << "  member  value           status   points\n";
       for (const auto &m : members)

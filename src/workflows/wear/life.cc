@@ -6,6 +6,7 @@
 #include "base/text.h"
 #include "io/life_outputs.h"
 #include "io/life_parameters.h"
+#include "io/output_names.h"
 #include "io/scene_periods.h"
 #include "io/wear_outputs.h"
 #include "workflows/run/run.h"
@@ -109,8 +110,8 @@ namespace wearlink::workflows
       const std::string dir = options.output_directory;
       if (options.resume)
         {
-          const auto state = wear::WearState::read(dir + "/checkpoint.json");
-          history          = io::read_life_history(dir + "/life_history.csv", history.criteria);
+          const auto state = wear::WearState::read(dir + "/" + io::outputs::checkpoint);
+          history          = io::read_life_history(dir + "/" + io::outputs::life_history, history.criteria);
           history.truncate(state.iterations_done);
           revolutions_run = state.revolutions;
           iterations_run  = state.iterations_done;
@@ -227,7 +228,7 @@ namespace wearlink::workflows
       revolutions_run = st.revolutions;
       iterations_run  = st.iterations_done;
       if (!options.output_directory.empty())
-        io::write_life_history(options.output_directory + "/life_history.csv", history);
+        io::write_life_history(options.output_directory + "/" + io::outputs::life_history, history);
       if (options.progress)
         print_progress();
     }
@@ -567,7 +568,7 @@ namespace wearlink::workflows
       {
         result.life = life.block();
         if (!options.output_directory.empty())
-          io::plot_life(options.output_directory + "/life.png",
+          io::plot_life(options.output_directory + "/" + io::outputs::life_plot,
                         life.history,
                         "Life criteria against revolutions: " + scene.title);
       }

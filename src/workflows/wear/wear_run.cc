@@ -6,6 +6,7 @@
 #include "base/exceptions.h"
 #include "base/text.h"
 #include "io/analyses_parameters.h"
+#include "io/output_names.h"
 #include "io/profile_series.h"
 #include "io/scene_periods.h"
 #include "io/wear_outputs.h"
@@ -434,8 +435,8 @@ namespace wearlink::workflows
       result.summary["wear_timing_s"] = result.timings.to_json();
       std::ostringstream prm;
       scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
-      write_file_atomically(dir + "/parameters.prm", prm.str());
-      write_file_atomically(dir + "/summary.json", result.summary.dump(2));
+      write_file_atomically(dir + "/" + io::outputs::parameters, prm.str());
+      write_file_atomically(dir + "/" + io::outputs::summary, result.summary.dump(2));
       result.warnings.print(std::cerr);
     }
   } // namespace
@@ -525,7 +526,7 @@ namespace wearlink::workflows
     AssertThrow(has_wear(scene), dealii::ExcMessage("run_wear() on a scene without wear."));
     const bool        write      = !options.output_directory.empty();
     const std::string dir        = options.output_directory;
-    const std::string checkpoint = dir + "/checkpoint.json";
+    const std::string checkpoint = dir + "/" + io::outputs::checkpoint;
     if (options.resume && !write)
       throw InputError("--resume needs the output directory of the run to continue.");
 
@@ -549,9 +550,9 @@ namespace wearlink::workflows
       if (loop.state().iterations_done == 1)
         loop.keep_response_before(before_peaks.peaks());
       if (write && options.final_outputs && loop.state().iterations_done == 1)
-        io::write_response_csv(dir + "/response_before.csv", before);
+        io::write_response_csv(dir + "/" + io::outputs::response_before, before);
       if (write)
-        io::write_wear_history(dir + "/wear_history.csv", scene, loop.state());
+        io::write_wear_history(dir + "/" + io::outputs::wear_history, scene, loop.state());
       if (write)
         write_profile_frames(wearing, loop, dir, scene.wear_loop.cycles_per_iteration);
       if (write && scene.wear_loop.fe_output)
