@@ -27,7 +27,10 @@ fi
 jobs="$(nproc 2>/dev/null || echo 2)"
 echo "== configuring and building (Release) in build/"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release ${WEARLINK_CMAKE_ARGS:-}
-cmake --build build -j "$jobs"
+# A run needs only the program; the tests are built by `test` (and `build`).
+target=""
+[ "$mode" = run ] && target="--target wearlink"
+cmake --build build -j "$jobs" $target
 
 # Open MPI refuses to run as root unless told that this is intended (CI runs as root).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
