@@ -484,31 +484,22 @@ namespace wearlink::workflows
     }
   } // namespace
 
-  Json
-  run_scene(io::Scene &scene, const RunOptions &options)
+  IntegratedRun
+  integrate_scene(io::Scene &scene, const RunOptions &options, const std::function<std::ostream *()> &time_series)
   {
-    const auto      wall_start  = std::chrono::steady_clock::now();
-    const auto      files_start = std::filesystem::file_time_type::clock::now();
+    const auto      wall_start = std::chrono::steady_clock::now();
     Eigen::VectorXd q0, v0;
     if (options.initial_state == nullptr)
       assemble_scene(scene, q0, v0);
-    const double end_time = std::isnan(options.end_time) ? scene.end_time : options.end_time;
-
-    const bool                  write = !options.output_directory.empty();
-    std::unique_ptr<AtomicFile> csv;
-    if (write)
-      {
-        make_output_directory(options.output_directory);
-        if (scene.write_time_series)
-          csv = std::make_unique<AtomicFile>(options.output_directory + "/" + io::outputs::time_series);
-      }
+    const double  end_time = std::isnan(options.end_time) ? scene.end_time : options.end_time;
+    std::ostream *csv      = time_series ? time_series() : nullptr;
 
     mbs::Simulation sim(*scene.mechanism, scene.simulation);
     if (options.initial_state != nullptr)
       sim.initialize_state(options.start_time, *options.initial_state);
     else
       sim.initialize(scene.start_time, q0, v0);
-    Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
+    Recorder                       recorder(scene, csv, scene.output_interval, options.progress);
     std::unique_ptr<SceneAnalyses> analyses;
     if (options.analyses)
       analyses =
@@ -540,14 +531,32 @@ namespace wearlink::workflows
           c[key] = count;
         ledger[category] = c;
       }
-    summary["effect_ledger"]        = ledger;
-    const ValidityWarnings warnings = run_validity_warnings(scene, summary);
-    summary["warnings"]             = warnings.json();
+    summary["effect_ledger"]  = ledger;
+    ValidityWarnings warnings = run_validity_warnings(scene, summary);
+    summary["warnings"]       = warnings.json();
     if (options.warnings != nullptr)
       options.warnings->merge(warnings);
+    return {std::move(summary), std::move(warnings)};
+  }
 
-    if (write)
-      write_run_files(scene, options, summary, warnings, csv.get(), files_start);
-    return summary;
+  Json
+  run_scene(io::Scene &scene, const RunOptions &options)
+  {
+    if (options.output_directory.empty())
+      return integrate_scene(scene, options).summary;
+    const auto                  files_start = std::filesystem::file_time_type::clock::now();
+    std::unique_ptr<AtomicFile> csv;
+    // The folder and the time series are made after assembly: a scene that cannot be
+    // assembled leaves nothing behind.
+    const auto open_time_series = [&]() -> std::ostream * {
+      make_output_directory(options.output_directory);
+      if (!scene.write_time_series)
+        return nullptr;
+      csv = std::make_unique<AtomicFile>(options.output_directory + "/" + io::outputs::time_series);
+      return &csv->stream();
+    };
+    const IntegratedRun run = integrate_scene(scene, options, open_time_series);
+    write_run_files(scene, options, run.summary, run.warnings, csv.get(), files_start);
+    return run.summary;
   }
 } // namespace wearlink::workflows

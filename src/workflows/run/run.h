@@ -12,7 +12,9 @@
 #include "io/scene.h"
 #include "mbs/simulation.h"
 
+#include <functional>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -65,11 +67,29 @@ namespace wearlink::workflows
   std::vector<std::string>
   time_series_columns(const io::Scene &scene);
 
+  /** What integrate_scene() returns: the run summary and its validity warnings. */
+  struct IntegratedRun
+  {
+    Json             summary;
+    ValidityWarnings warnings;
+  };
+
   /**
-   * Assemble and integrate @p scene from its start to its end time. Returns the run
-   * summary (see README: summary.json), whose `warnings` list names every result
-   * beyond the validity of its model (run_validity_warnings()). Throws InputError for an impossible assembly,
+   * Assemble (or continue from options.initial_state) and integrate @p scene, observed as
+   * @p options say; the analyses it lists write their files into options.output_directory
+   * if that is set, the run's own files are not written. @p time_series, if given, is
+   * called once after assembly and returns the stream of the time series (or null).
+   * The summary's `warnings` list names every result beyond the validity of its model
+   * (run_validity_warnings()). Throws InputError for an impossible assembly,
    * NumericalError for a failure of the numerics.
+   */
+  IntegratedRun
+  integrate_scene(io::Scene &scene, const RunOptions &options, const std::function<std::ostream *()> &time_series = {});
+
+  /**
+   * A run of @p scene from its start to its end time: integrate_scene(), then, if
+   * options.output_directory is set, its files (time_series.csv, parameters.prm,
+   * summary.json, the first look). Returns the run summary (doc/manual.md: summary.json).
    */
   Json
   run_scene(io::Scene &scene, const RunOptions &options);

@@ -171,7 +171,7 @@ namespace wearlink::workflows
       ro.observers = {&peaks};
       ro.analyses  = false;
       ro.warnings  = &response_warnings;
-      run_scene(scene, ro);
+      integrate_scene(scene, ro);
       return peaks.mean_of_whole_cycles();
     }
 

@@ -109,6 +109,7 @@ namespace wearlink::workflows
     before_after_dynamics(io::Scene                                    &scene,
                           const wear::WearState                        &st,
                           const std::vector<contact::ClearanceJoint *> &joints,
+                          const std::string                            &response,
                           const std::string                            &dir,
                           const bool                                    progress)
     {
@@ -148,11 +149,10 @@ namespace wearlink::workflows
       cs.directions = a.directions;
       if (a.lyapunov)
         cs.methods = a.methods;
-      cs.delay                   = a.comparison_delay;
-      cs.dimension               = a.comparison_dimension;
-      cs.delay_scan              = a.delay_scan;
-      cs.bodies                  = a.bodies;
-      const std::string response = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      cs.delay      = a.comparison_delay;
+      cs.dimension  = a.comparison_dimension;
+      cs.delay_scan = a.delay_scan;
+      cs.bodies     = a.bodies;
       if (!response.empty() && std::find(cs.bodies.begin(), cs.bodies.end(), response) == cs.bodies.end())
         cs.bodies.push_back(response);
       cs.published      = io::parse_published_exponents(a.published_exponents, scene.file);
@@ -162,17 +162,28 @@ namespace wearlink::workflows
       return compare_dynamics(runs[0], runs[1], cs, dir);
     }
 
-    /** The wearing joints of @p scene, in the order of scene.wear. */
-    std::vector<wear::WearingJoint>
-    wearing_joints(io::Scene &scene)
+    /** What a wear run takes from its scene, read once. */
+    struct WearSetup
     {
-      std::vector<wear::WearingJoint> out;
+      double                          period   = 0; ///< one wear cycle [s]
+      int                             response = 0; ///< index of the response body
+      std::string                     response_name;
+      std::vector<wear::WearingJoint> wearing; ///< in the order of scene.wear
+    };
+
+    WearSetup
+    wear_setup(io::Scene &scene)
+    {
+      WearSetup s;
+      s.period        = io::cycle_period(scene);
+      s.response      = io::response_body(scene);
+      s.response_name = scene.mechanism->get_bodies()[s.response].name;
       for (const auto &w : scene.wear)
         for (auto *j : scene.clearance_joints)
           if (j->name() == w->joint)
-            out.push_back({j, w.get()});
-      AssertThrow(out.size() == scene.wear.size(), dealii::ExcInternalError());
-      return out;
+            s.wearing.push_back({j, w.get()});
+      AssertThrow(s.wearing.size() == scene.wear.size(), dealii::ExcInternalError());
+      return s;
     }
 
     /** The scene's dynamics as the wear loop advances them (no analyses per iteration). */
@@ -192,7 +203,7 @@ namespace wearlink::workflows
         ro.observers     = observers;
         ro.analyses      = false; // the scene's analyses run before and after wear instead
         ro.warnings      = &warnings;
-        run_scene(scene, ro);
+        integrate_scene(scene, ro);
         return y1;
       };
     }
@@ -318,12 +329,14 @@ namespace wearlink::workflows
      * the ratios after/before.
      */
     Json
-    response_block(const io::Scene &scene, const std::vector<double> &before, const analysis::CyclePeakRecorder &after)
+    response_block(const WearSetup                   &setup,
+                   const double                       cycles,
+                   const std::vector<double>         &before,
+                   const analysis::CyclePeakRecorder &after)
     {
-      const double cycles  = scene.wear_loop.response_cycles;
-      const auto   whole   = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
-      const auto   settle  = std::size_t(whole >= 2 ? 1 : 0);
-      const auto   measure = [&](const std::vector<double> &peaks, double &largest, double &mean) {
+      const auto whole   = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
+      const auto settle  = std::size_t(whole >= 2 ? 1 : 0);
+      const auto measure = [&](const std::vector<double> &peaks, double &largest, double &mean) {
         const auto n = std::min(whole, peaks.size());
         largest = mean = 0;
         for (std::size_t k = 0; k < n; ++k)
@@ -333,7 +346,7 @@ namespace wearlink::workflows
         return n > settle;
       };
       Json r               = Json::object();
-      r["body"]            = scene.mechanism->get_bodies()[io::response_body(scene)].name;
+      r["body"]            = setup.response_name;
       r["cycles"]          = cycles;
       r["settling_cycles"] = settle;
       double a_largest = 0, a_mean = 0, b_largest = 0, b_mean = 0;
@@ -378,28 +391,25 @@ namespace wearlink::workflows
      * comparison if the scene lists analyses.
      */
     void
-    after_wear(io::Scene &scene, const WearRunOptions &options, WearRunResult &result)
+    after_wear(io::Scene &scene, const WearSetup &setup, const WearRunOptions &options, WearRunResult &result)
     {
       const bool        write  = !options.output_directory.empty();
       const std::string dir    = options.output_directory;
-      const double      period = io::cycle_period(scene);
+      const double      period = setup.period;
       const auto       &ws     = scene.wear_loop;
       const auto       &st     = result.state;
       Stopwatch         outputs;
       for (auto *j : scene.clearance_joints)
         j->set_mode(false, 0);
-      analysis::ResponseRecorder  after(*scene.mechanism,
-                                       io::response_body(scene),
-                                       period / 400,
-                                       ws.response_cycles * period);
-      analysis::CyclePeakRecorder after_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+      analysis::ResponseRecorder  after(*scene.mechanism, setup.response, period / 400, ws.response_cycles * period);
+      analysis::CyclePeakRecorder after_peaks(scene.mechanism->n_coordinates(), setup.response, period);
       RunOptions                  ro;
       ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
       ro.observers = {&after, &after_peaks};
       ro.analyses  = false;
       ro.warnings  = &result.warnings;
       Stopwatch dynamics;
-      result.summary = run_scene(scene, ro);
+      result.summary = integrate_scene(scene, ro).summary;
       if (options.more_warnings)
         result.warnings.merge(*options.more_warnings);
       wear::check_roughness(st, result.warnings);
@@ -407,7 +417,7 @@ namespace wearlink::workflows
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
-      result.summary["response"] = response_block(scene, st.response_before_peaks, after_peaks);
+      result.summary["response"] = response_block(setup, ws.response_cycles, st.response_before_peaks, after_peaks);
       if (write)
         {
           io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
@@ -416,11 +426,15 @@ namespace wearlink::workflows
       if (scene.analyses.any())
         {
           Stopwatch                              comparison_time;
-          const auto                             joints = wearing_joints(scene);
           std::vector<contact::ClearanceJoint *> wearing;
-          for (const auto &w : joints)
+          for (const auto &w : setup.wearing)
             wearing.push_back(w.joint);
-          auto comparison = before_after_dynamics(scene, st, wearing, write ? dir : std::string(), options.progress);
+          auto comparison                      = before_after_dynamics(scene,
+                                                  st,
+                                                  wearing,
+                                                  setup.response_name,
+                                                  write ? dir : std::string(),
+                                                  options.progress);
           result.timings.before_after_dynamics = comparison_time.seconds();
           result.summary["before_after"]       = comparison.json;
           result.before_after_report           = comparison.report;
@@ -530,8 +544,9 @@ namespace wearlink::workflows
     if (options.resume && !write)
       throw InputError("--resume needs the output directory of the run to continue.");
 
-    const double                          period  = io::cycle_period(scene);
-    const std::vector<wear::WearingJoint> wearing = wearing_joints(scene);
+    const WearSetup                       setup   = wear_setup(scene);
+    const double                          period  = setup.period;
+    const std::vector<wear::WearingJoint> wearing = setup.wearing;
     std::vector<std::string>              fe_meshes_copied;
     WearRunResult                         result;
     wear::WearLoop loop(scene.wear_loop, wearing, scene.clearance_joints, period, dynamics_of(scene, result.warnings));
@@ -541,9 +556,9 @@ namespace wearlink::workflows
       loop.set_checkpoint(checkpoint);
 
     unsigned int                done_here = 0;
-    analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), io::response_body(scene), period);
+    analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), setup.response, period);
     analysis::ResponseRecorder  before(*scene.mechanism,
-                                      io::response_body(scene),
+                                      setup.response,
                                       period / 400,
                                       scene.wear_loop.response_cycles * period);
     loop.set_iteration_outputs([&]() {
@@ -587,7 +602,7 @@ namespace wearlink::workflows
     result.timings  = loop.timings();
     result.finished = true;
     if (options.final_outputs)
-      after_wear(scene, options, result);
+      after_wear(scene, setup, options, result);
     if (options.final_outputs && options.extend_summary)
       options.extend_summary(result.summary);
     // A resumed run's wall time includes its earlier processes' up to the checkpoint.
