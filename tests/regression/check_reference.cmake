@@ -51,6 +51,13 @@ get_filename_component(case_name "${CASE}" NAME_WE)
 if(NOT EXISTS "${CASE}")
   message(FATAL_ERROR "case file ${CASE} does not exist")
 endif()
+# WORK_DIR is removed before each run: refuse the source tree, a folder above it, and a
+# non-empty folder that is not an earlier work folder of this script.
+string(FIND "${SOURCE_DIR}/" "${WORK_DIR}/" above)
+file(GLOB work_files "${WORK_DIR}/*")
+if(above EQUAL 0 OR (work_files AND NOT EXISTS "${WORK_DIR}/wearlink.log" AND NOT EXISTS "${WORK_DIR}/spread_0"))
+  message(FATAL_ERROR "WORK_DIR=${WORK_DIR} would be removed: give an empty or new folder (the build tree's)")
+endif()
 
 # ---- read the case file ------------------------------------------------------------------
 set(command "")
