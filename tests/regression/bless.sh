@@ -23,7 +23,7 @@ if [ $# -eq 0 ]; then
   set -- $(cd "$here" && ls *.ref | sed 's/\.ref$//')
 fi
 for c in "$@"; do
-  cmake -DWEARLINK="$wearlink" -DSOURCE_DIR="$source_dir" -DCASE="$here/$c.ref" \
-        -DWORK_DIR="$build_dir/tests/regression/bless/$c" -DBLESS=1 -P "$here/check_reference.cmake"
+  python3 "$here/check_reference.py" --wearlink "$wearlink" --source-dir "$source_dir" --case "$here/$c.ref" \
+          --work-dir "$build_dir/tests/regression/bless/$c" --bless
 done
 echo "blessed: $*; review with: git -C $source_dir diff tests/regression"
