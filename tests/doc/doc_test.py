@@ -13,11 +13,13 @@ source and in this test's report) may shorten it:
       appends these arguments to every `build/wearlink` command of the block (after
       the command's own arguments, before a pipe, `&&`, `;` or a comment);
   <!-- doc-test: sub "--ensemble 64" "--ensemble 2" -->
-      replaces the first text by the second in the block (the first must occur);
+      replaces every occurrence of the first text in the block by the second (the first
+      must occur);
   <!-- doc-test: skip: REASON -->
       does not run the block, and says why in the report.
 
-Lines that call ./bootstrap.sh are not run (CI runs `./bootstrap.sh test`, which
+doc/parameters.md is not a page of this test: it is generated (GENERATED below) and
+has a test of its own. Lines that call ./bootstrap.sh are not run (CI runs `./bootstrap.sh test`, which
 installs and builds; here the program is built already). A run block may not hold a
 synopsis: `[--option ...]`, `...` or one of the placeholder words (SCENE.prm, DIR, ...)
 is an error that asks for a ```text fence.
@@ -28,7 +30,7 @@ so the commands run as written from the project's root and nothing is written in
 source tree. The blocks of one file run in order in that directory (a block may use
 the output of an earlier block of the same file), with
 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 (Open MPI refuses root
-otherwise) and WEARLINK_CACHE_DIR=WORK/cache. A block fails when it exits non-zero or
+otherwise), WEARLINK_CACHE_DIR=WORK/cache and TMPDIR=WORK/tmp. A block fails when it exits non-zero or
 runs longer than --timeout seconds; the file stops at its first failing block.
 
 Usage (as CTest runs it, tests/doc/CMakeLists.txt):
@@ -48,6 +50,9 @@ import time
 from pathlib import Path
 
 RUN_TAGS = {"sh", "bash", "shell"}
+# Pages written by a program, not by hand: their own test keeps them current.
+GENERATED = {"doc/parameters.md": "written by tests/support/parameter_reference.cmake from "
+                                  "`wearlink --print-parameters`; the test doc.parameter_reference checks it"}
 PLACEHOLDERS = {
     "SCENE", "SCENE.prm", "DIR", "RUN_DIR", "OUT_DIR", "MEASURED.csv", "MEAS.prm", "CASE", "CASE.prm",
     "SERIES.csv", "NAME", "BEFORE_DIR", "AFTER_DIR", "FROM:TO:COUNT", "COMMAND", "STUDY.prm", "FILE",
@@ -184,7 +189,7 @@ def prepare(block):
     for old, new in subs:
         if old not in text:
             errors.append(f"{block.where}: doc-test sub: '{old}' is not in the block")
-        text = text.replace(old, new, 1)
+        text = text.replace(old, new)
         notes.append(f"sub '{old}' -> '{new}'")
     lines, dropped = [], 0
     for line in logical_lines(text):
@@ -249,7 +254,8 @@ def run_file(md, display, opts):
         return True, {}
     wd = fresh_workdir(opts.work, display, opts.source, opts.binary)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               WEARLINK_CACHE_DIR=str(opts.work / "cache"), LC_ALL="C.UTF-8")
+               WEARLINK_CACHE_DIR=str(opts.work / "cache"), TMPDIR=str(opts.work / "tmp"), LC_ALL="C.UTF-8")
+    (opts.work / "tmp").mkdir(exist_ok=True)
     stats = {"run": 0, "override": 0, "skip": 0, "bootstrap": 0, "text": n_text, "seconds": 0.0}
     t_file = time.monotonic()
     for b, script, notes in plans:
@@ -301,7 +307,8 @@ def main():
         return 1
     opts.work.mkdir(parents=True, exist_ok=True)
     files = opts.files or ["README.md"] + sorted(
-        str(p.relative_to(opts.source)) for p in (opts.source / "doc").rglob("*.md"))
+        f for f in (str(p.relative_to(opts.source)) for p in (opts.source / "doc").rglob("*.md"))
+        if f not in GENERATED)
     ok, total = True, {"run": 0, "override": 0, "skip": 0, "bootstrap": 0, "text": 0, "seconds": 0.0}
     for f in files:
         md = Path(f) if Path(f).is_absolute() else opts.source / f
