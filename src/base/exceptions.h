@@ -14,7 +14,7 @@
 //  - Interrupted: SIGINT or SIGTERM arrived (base/interrupt.h); the program removes its
 //    temporary files on the way out and exits with 128 + the signal's number.
 // Exit status 1 is left for internal errors (our own bugs); src/app/main.cc maps the
-// types to the codes and README.md lists them.
+// types to the codes and doc/running.md ("Exit status") lists them.
 // Our own bugs are caught by deal.II's Assert (debug builds only).
 #pragma once
 

@@ -77,7 +77,7 @@ namespace wearlink
     PhaseTimings &
     operator+=(const PhaseTimings &other);
 
-    /** As summary.json's `wear_timing_s` (keys as in the README). */
+    /** As summary.json's `wear_timing_s` (keys as in doc/performance.md). */
     Json
     to_json() const;
 

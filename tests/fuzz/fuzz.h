@@ -28,7 +28,7 @@ namespace wearlink::fuzz
   is_documented_exit_status(int status);
 
   /**
-   * The documented rule (README, `warnings`): a constraint violation beyond
+   * The documented rule (doc/running.md, "Validity warnings"): a constraint violation beyond
    * violation_warning_factor × the integrator's position tolerance, and at least
    * violation_warning_floor_m, must be in summary.json's `warnings`.
    */

@@ -446,7 +446,7 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
     {
       EXPECT_DOUBLE_EQ(json_number(l[k].at("delay_s")), 0.005);
       // Time-delay exponents of the rattling journal at a 5 ms delay are positive and
-      // of order 10–100 1/s (README: ~50 1/s at 5 ms before and after wear); they are
+      // of order 10–100 1/s (doc/tutorials/nonlinear_dynamics.md: ~50 1/s at 5 ms before and after wear); they are
       // bounded by ln(attractor extent / nearest-neighbour distance) per delay, which
       // for a 0.5 mm clearance sampled at 1 ms cannot reach 1e4 1/s. Outside (0, 1e4)
       // the comparison analysed something else than the journal motion.

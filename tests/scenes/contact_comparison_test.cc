@@ -63,7 +63,7 @@ namespace
     return {b, 2 * line_load / (pi * b)};
   }
 
-  /** The column name of curve @p c (README: whole newtons from 100 N on). */
+  /** The column name of curve @p c (doc/tutorials/fe_contact.md: whole newtons from 100 N on). */
   std::string
   column(const workflows::PressureCurve &c)
   {

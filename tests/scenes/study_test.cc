@@ -3,7 +3,7 @@
 // shortened to fractions of a cycle so that the whole file runs in about 10 s:
 //  - Convergence: dopri5 controls the local error, so the peak contact force of each
 //    clearance joint — reached at the first hard impacts, before the trajectories of
-//    different tolerances part (README "Which integrator") — approaches the 1e-8
+//    different tolerances part (doc/running.md, "Which integrator") — approaches the 1e-8
 //    reference as the tolerance tightens. Measured over a quarter cycle, the error
 //    falls 4–300× per decade of tolerance (1e-3 … 1e-6); we ask at least 2× per decade,
 //    so a tolerance that stops reaching the integrator (or an error measured against

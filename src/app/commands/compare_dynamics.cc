@@ -28,7 +28,7 @@ namespace wearlink::app
 Compares two runs of the same mechanism recorded by `wearlink run` with analyses
 (Analyses/List of analyses with lyapunov and/or phase-portrait, poincare), typically
 before and after wear. A wear scene that lists analyses does this by itself at the end
-of the wear loop; this command serves runs made separately (README: "After wear").
+of the wear loop; this command serves runs made separately (doc/tutorials/nonlinear_dynamics.md).
 
 Writes into DIR (default output/compare_dynamics), each file atomically:
   before_after_phase_<J>_<x|y>.png  phase portraits before | after on the same axes,

@@ -11,7 +11,7 @@
 // default (--perturbation): 0.08 nm at the tip of a 0.08 m crank, far below the
 // integrator's position tolerance and any manufacturing tolerance, yet the trajectories
 // part within a few driving cycles (the clearance dynamics' Lyapunov exponents are
-// 40–350 1/s, README).
+// 40–350 1/s, doc/tutorials/nonlinear_dynamics.md).
 //
 // Each member is a complete run (wear or life) into DIR/member_<k>/ with its own files
 // and checkpoint; member k runs on rank k mod N_ranks, and its result depends on the

@@ -89,7 +89,7 @@ namespace wearlink::workflows
   /**
    * A run of @p scene from its start to its end time: integrate_scene(), then, if
    * options.output_directory is set, its files (time_series.csv, parameters.prm,
-   * summary.json, the first look). Returns the run summary (doc/manual.md: summary.json).
+   * summary.json, the first look). Returns the run summary (doc/running.md, "What a run writes").
    */
   Json
   run_scene(io::Scene &scene, const RunOptions &options);

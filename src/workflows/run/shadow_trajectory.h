@@ -22,7 +22,7 @@
 // must stay far above it. At the nine-bar's scene tolerance (1e-6) it does not: 285 …
 // 1378 1/s for d0 = 1e-6 … 1e-9 m. At 1e-11 (10 periods, τ = 5 ms): 100–145 1/s before
 // and 346–362 1/s after 50,000 rev of wear for d0 = 1e-8 … 1e-6 m, i.e. known to about
-// ±20 % before wear (README). The wear scenes' before/after comparison runs it at its
+// ±20 % before wear (doc/tutorials/nonlinear_dynamics.md). The wear scenes' before/after comparison runs it at its
 // own tolerance (workflows/wear/wear_run.cc).
 #pragma once
 

@@ -349,7 +349,7 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
      * step of the nine-bar's 100 cycles takes hours, with the default 25 µm elements
      * re-meshing after every update 7 minutes and beyond 2 elements still 5 (the worn
      * meshes' compliance columns); 0.2 mm was within 3 % in worn volume of 0.1 mm in the
-     * FE knobs' study (README). What the sampling costs is the load-sampling row (with
+     * FE knobs' study (doc/tutorials/accuracy_study.md). What the sampling costs is the load-sampling row (with
      * hertz-strip), what the element size costs the fe-element-size knob of an fe scene.
      */
     Knob

@@ -45,7 +45,7 @@ namespace wearlink::workflows
   {
     WearRunResult         wear;
     analysis::LifeHistory history;
-    /** summary.json's `life` block (see README "Service life"). */
+    /** summary.json's `life` block (doc/tutorials/life_and_ensembles.md). */
     Json life;
   };
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // A wear run of a scene: the wear loop of wear/wear_loop.h driven by the scene's
 // dynamics, with checkpoints and progress in the output directory, then the outputs
-// after wear (see README "Wear runs"): the response after wear from the initial assembly
+// after wear (doc/tutorials/wear_prediction.md): the response after wear from the initial assembly
 // with the final profiles, the worn profiles and history, the summary, and — if the
 // scene lists analyses — the dynamics before and after wear compared
 // (workflows/compare/dynamics_comparison.h). A resumed run continues from its checkpoint.

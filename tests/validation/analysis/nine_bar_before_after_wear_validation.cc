@@ -20,7 +20,7 @@
 //  - the exponent of the simulated model itself, with no embedding (two-trajectory: a
 //    shadow 1e-7 m away, renormalized every 5 ms, 10 periods at relative tolerance
 //    1e-11), rises by more than 1.5× (measured 126 → 330 1/s, ×2.6). Its d0 scan
-//    (README) gives 100–145 1/s before and 346–362 1/s after wear for d0 = 1e-8 … 1e-6 m
+//    (doc/tutorials/nonlinear_dynamics.md) gives 100–145 1/s before and 346–362 1/s after wear for d0 = 1e-8 … 1e-6 m
 //    at this tolerance, so the rise is not a matter of d0. With the impacts ×3–4 this is
 //    the seed's "wear strengthens the chaos", measured without an embedding.
 #include "io/json_file.h"
