@@ -40,8 +40,8 @@ namespace
            "  3  numerical failure in a valid scene (the message names time, joint, residual)\n"
            "  4  the environment failed: an output that cannot be written (permission, disk\n"
            "     full) or memory that ran out\n"
-           "  128 + N  stopped by signal N (130 SIGINT, 143 SIGTERM): temporary files removed,\n"
-           "     the last checkpoint kept\n";
+           "  128 + N  stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP): temporary files\n"
+           "     removed, the last checkpoint kept\n";
   }
 } // namespace
 

@@ -3,6 +3,7 @@
 
 #include "base/exceptions.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cerrno>
@@ -209,7 +210,12 @@ namespace wearlink
   {
     static std::atomic<unsigned long> counter{0};
     namespace fs = std::filesystem;
-    directory    = (fs::temp_directory_path() /
+    if (counter == 0)
+      {
+        std::error_code ec;
+        remove_stale_temporary_directories(fs::temp_directory_path(ec).string());
+      }
+    directory = (fs::temp_directory_path() /
                  ("wearlink-" + what + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++)))
                   .string();
     make_output_directory(directory);
@@ -222,3 +228,30 @@ namespace wearlink
   }
 
 } // namespace wearlink
+  std::vector<std::string>
+  remove_stale_temporary_directories(const std::string &parent)
+  {
+    namespace fs = std::filesystem;
+    std::vector<std::string> removed;
+    std::error_code          ec;
+    for (const auto &e : fs::directory_iterator(parent, ec))
+      {
+        // "wearlink-<what>-<pid>-<n>": the pid is the next-to-last field.
+        const std::string name = e.path().filename().string();
+        const auto        last = name.rfind('-');
+        const auto        pid0 = last == std::string::npos || last == 0 ? std::string::npos : name.rfind('-', last - 1);
+        if (name.rfind("wearlink-", 0) != 0 || pid0 == std::string::npos || pid0 + 1 >= last)
+          continue;
+        const std::string digits = name.substr(pid0 + 1, last - pid0 - 1);
+        if (digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), [](const char c) {
+              return std::isdigit(static_cast<unsigned char>(c)) != 0;
+            }))
+          continue;
+        const long pid = std::stol(digits);
+        if (pid > 0 && e.is_directory(ec) && !e.is_symlink(ec) && !process_runs(pid) &&
+            fs::remove_all(e.path(), ec) > 0)
+          removed.push_back(e.path().string());
+      }
+    return removed;
+  }
+

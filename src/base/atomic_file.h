@@ -90,7 +90,9 @@ namespace wearlink
   /**
    * A new directory under the system's temporary directory, named
    * "wearlink-<what>-<pid>-<n>" (n counts within the process), removed with everything in
-   * it when the object goes: scratch space for meshes and plot scripts.
+   * it when the object goes: scratch space for meshes and plot scripts. The first one of
+   * a process removes the stale ones of processes that were killed
+   * (remove_stale_temporary_directories()).
    */
   class TemporaryDirectory
   {
@@ -104,6 +106,14 @@ namespace wearlink
     const std::string &
     path() const
     {
+  /**
+   * Remove the scratch directories "wearlink-<what>-<pid>-<n>" under @p parent whose
+   * process no longer runs (killed outright, or by a second signal, which leaves at
+   * once); those of running processes are kept. Returns the paths removed.
+   */
+  std::vector<std::string>
+  remove_stale_temporary_directories(const std::string &parent);
+
       return directory;
     }
 

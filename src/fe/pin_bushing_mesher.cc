@@ -38,7 +38,7 @@ namespace wearlink::fe
      * A gmsh session: initialize on construction, finalize on destruction (also when
      * an exception leaves the mesher), so that the next session — or deal.II's
      * GridIn::read_msh, which opens its own — starts clean. gmsh may install signal
-     * handlers of its own; the program's SIGINT/SIGTERM handlers (base/interrupt.h) are
+     * handlers of its own; the program's SIGINT/SIGTERM/SIGHUP handlers (base/interrupt.h) are
      * put back after it starts.
      */
     class GmshSession
@@ -46,15 +46,17 @@ namespace wearlink::fe
     public:
       GmshSession()
       {
-        struct sigaction on_int, on_term;
+        struct sigaction on_int, on_term, on_hup;
         ::sigaction(SIGINT, nullptr, &on_int);
         ::sigaction(SIGTERM, nullptr, &on_term);
         gmsh::initialize(0, nullptr, false);
         ::sigaction(SIGINT, &on_int, nullptr);
         ::sigaction(SIGTERM, &on_term, nullptr);
+        ::sigaction(SIGHUP, nullptr, &on_hup);
         gmsh::option::setNumber("General.Terminal", 0);
         gmsh::option::setNumber("General.Verbosity", 1);
         EffectLedger::instance().add_resource("gmsh sessions");
+        ::sigaction(SIGHUP, &on_hup, nullptr);
       }
       ~GmshSession()
       {

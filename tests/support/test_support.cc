@@ -4,6 +4,7 @@
 #include "base/exceptions.h"
 
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <fcntl.h>
 #include <filesystem>
@@ -202,5 +203,6 @@ namespace wearlink::testing
     if (::waitpid(pid, &status, 0) != pid)
       return -1;
     return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
+        ::signal(SIGHUP, SIG_DFL); // as started from a terminal, also under nohup
   }
 } // namespace wearlink::testing

@@ -67,7 +67,7 @@ namespace wearlink::testing
 
   /**
    * Start the wearlink executable with @p args in the background (output into
-   * @p log_file); returns its pid.
+   * @p log_file; SIGHUP at its default, as from a terminal); returns its pid.
    */
   int
   start_wearlink(const std::vector<std::string> &args, const std::string &log_file);

@@ -2,13 +2,17 @@
 // Files and folders of a run (base/atomic_file.h, base/output_directory.h,
 // base/interrupt.h):
 //  - a write that fails (here: the file-size limit, as a full disk would) is an IoError
-//    naming the file, and the previous file and the directory are left as they were;
-//  - temporaries of dead writers are removed, those of running ones kept;
+//    naming the file, and the previous file and the directory are left as they were; a
+//    file streamed over a long computation stops at its first failed write, and a copy
+//    that fails leaves no partial copy;
+//  - temporaries of dead writers are removed, those of running ones kept; so are the
+//    scratch folders of dead processes;
 //  - a locked directory is refused naming the holder's pid, and free again after it;
 //  - an earlier run's files are refused, or removed with overwrite (the user's own files
 //    are kept), or kept with resume;
 //  - SIGTERM is recorded and thrown at the next check; a second SIGTERM removes the
-//    registered temporaries and exits with 143 at once.
+//    registered temporaries and exits with 143 at once; SIGHUP stops as SIGTERM does,
+//    unless it was ignored when the handlers were installed (nohup).
 // Signals and resource limits are tried in a forked child, never in the test process.
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
@@ -178,6 +182,31 @@ TEST(Interrupt, SignalIsThrownAtTheNextCheckAndASecondOneExitsAtOnce)
   });
   EXPECT_EQ(first, 0);
 
+// The scratch folder of a process killed while it plotted (or meshed) is removed by the
+// next one; a running process's and folders of other names are kept.
+TEST(TemporaryDirectory, StaleScratchOfKilledProcessesIsRemoved)
+{
+  const std::string parent = wearlink::testing::fresh_directory("scratch_parent");
+  const std::string dead   = std::to_string(dead_pid());
+  const std::string mine   = std::to_string(::getpid());
+  for (const std::string &d : {"wearlink-plot-" + dead + "-0",
+                               "wearlink-fe-" + mine + "-3",
+                               std::string("wearlink-notes"),
+                               "wearlink-plot-" + dead + "-x-y",
+                               "other-plot-" + dead + "-0"})
+    {
+      fs::create_directories(parent + "/" + d);
+      std::ofstream(parent + "/" + d + "/plot.gp") << "x";
+    }
+  const auto removed = remove_stale_temporary_directories(parent);
+  ASSERT_EQ(removed.size(), 1u);
+  EXPECT_FALSE(fs::exists(parent + "/wearlink-plot-" + dead + "-0"));
+  EXPECT_TRUE(fs::exists(parent + "/wearlink-fe-" + mine + "-3")) << "a running process's";
+  EXPECT_TRUE(fs::exists(parent + "/wearlink-notes"));
+  EXPECT_TRUE(fs::exists(parent + "/wearlink-plot-" + dead + "-x-y")) << "not a name wearlink makes";
+  EXPECT_TRUE(fs::exists(parent + "/other-plot-" + dead + "-0"));
+}
+
   const std::string dir    = wearlink::testing::fresh_directory("interrupt_second");
   const std::string path   = dir + "/.summary.json.partial-1.json";
   const int         second = in_child([&] {
@@ -190,4 +219,29 @@ TEST(Interrupt, SignalIsThrownAtTheNextCheckAndASecondOneExitsAtOnce)
   });
   EXPECT_EQ(second, 128 + SIGTERM);
   EXPECT_FALSE(fs::exists(path)) << "removed by the handler of the second signal";
+}
+
+TEST(Interrupt, SighupStopsAsSigtermUnlessIgnoredAtTheStart)
+{
+  const int stopped = in_child([] {
+    install_interrupt_handlers();
+    ::raise(SIGHUP);
+    try
+      {
+        throw_if_interrupted();
+      }
+    catch (const Interrupted &e)
+      {
+        return e.signal_number() == SIGHUP && e.message().find("Stopped by SIGHUP") != std::string::npos ? 0 : 2;
+      }
+    return 3;
+  });
+  EXPECT_EQ(stopped, 0) << "2: another signal or message, 3: not recorded";
+  const int ignored = in_child([] {
+    ::signal(SIGHUP, SIG_IGN); // nohup
+    install_interrupt_handlers();
+    ::raise(SIGHUP);
+    return interrupt_signal();
+  });
+  EXPECT_EQ(ignored, 0) << "a SIGHUP ignored at the start stays ignored";
 }
