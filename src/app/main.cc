@@ -126,3 +126,11 @@ main(int argc, char **argv)
       return 1;
     }
 }
+  catch (...)
+    {
+      // A library that throws something else (gmsh throws its messages as strings):
+      // still our bug, and still an exit through the destructors (outputs unlocked,
+      // temporaries removed), never an abort.
+      std::cerr << "internal error: an exception of unknown type left `wearlink " << command << "`\n";
+      return 1;
+    }

@@ -12,8 +12,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -49,14 +52,14 @@ namespace wearlink::fe
         struct sigaction on_int, on_term, on_hup;
         ::sigaction(SIGINT, nullptr, &on_int);
         ::sigaction(SIGTERM, nullptr, &on_term);
+        ::sigaction(SIGHUP, nullptr, &on_hup);
         gmsh::initialize(0, nullptr, false);
         ::sigaction(SIGINT, &on_int, nullptr);
         ::sigaction(SIGTERM, &on_term, nullptr);
-        ::sigaction(SIGHUP, nullptr, &on_hup);
+        ::sigaction(SIGHUP, &on_hup, nullptr);
         gmsh::option::setNumber("General.Terminal", 0);
         gmsh::option::setNumber("General.Verbosity", 1);
         EffectLedger::instance().add_resource("gmsh sessions");
-        ::sigaction(SIGHUP, &on_hup, nullptr);
       }
       ~GmshSession()
       {
@@ -66,6 +69,66 @@ namespace wearlink::fe
       GmshSession &
       operator=(const GmshSession &) = delete;
     };
+
+    /**
+     * True if the file @p path ends as a complete .msh file does: with the end marker of
+     * its last section ("$End<Section>" and a newline; the markers are text in the
+     * binary format too).
+     */
+    bool
+    ends_with_section_end(const std::string &path)
+    {
+      std::ifstream in(path, std::ios::binary | std::ios::ate);
+      const auto    size = static_cast<long>(in.tellg());
+      if (!in || size <= 0)
+        return false;
+      const long tail_size = std::min(size, 64L);
+      in.seekg(size - tail_size);
+      std::string tail(static_cast<std::size_t>(tail_size), '\0');
+      in.read(tail.data(), tail_size);
+      if (!in || tail.back() != '\n')
+        return false;
+      tail.pop_back();
+      const auto marker = tail.rfind("\n$End");
+      if (marker == std::string::npos || marker + 5 == tail.size())
+        return false;
+      return std::all_of(tail.begin() + static_cast<long>(marker) + 5, tail.end(), [](const char c) {
+        return std::isalpha(static_cast<unsigned char>(c)) != 0;
+      });
+    }
+
+    /**
+     * Write gmsh's current model to @p msh_path through a temporary (base/atomic_file.h).
+     * gmsh does not check its own writes: on a full disk it leaves a truncated file
+     * without a word, and reading that file back throws from inside the reader. A file
+     * that does not end as a complete .msh file does is therefore a failed write: an
+     * IoError naming the file, and the temporary removed.
+     */
+    void
+    write_mesh_file(const std::string &msh_path)
+    {
+      const std::string   tmp = temporary_name_for(msh_path);
+      RegisteredTemporary registration(tmp);
+      std::string         problem;
+      try
+        {
+          gmsh::write(tmp);
+          if (!ends_with_section_end(tmp))
+            problem = "gmsh left it incomplete, as it does when the disk is full or a write fails";
+        }
+      catch (const std::string &message)
+        {
+          problem = "gmsh: " + message;
+        }
+      if (!problem.empty())
+        {
+          std::error_code ec;
+          std::filesystem::remove(tmp, ec);
+          throw IoError("Writing the mesh '" + msh_path + "' failed: " + problem +
+                        ". Free some space (or check the disk) and run again.");
+        }
+      commit_external_file(tmp, msh_path);
+    }
 
     /** Arc length of the polar curve r(ψ) between samples i0 and i1 (i1 may wrap). */
     double
@@ -494,9 +557,7 @@ namespace wearlink::fe
       stats.n_quadrilaterals = stats.pin_sectors * pin.quads.size() + stats.bore_sectors * ring.quads.size();
       stats.n_refined_surface_segments =
         stats.pin_sectors * pin.contact.size() + stats.bore_sectors * ring.contact.size();
-      const std::string tmp = temporary_name_for(msh_path);
-      gmsh::write(tmp);
-      commit_external_file(tmp, msh_path);
+      write_mesh_file(msh_path);
       return stats;
     }
   } // namespace
@@ -554,9 +615,7 @@ namespace wearlink::fe
     gmsh::model::mesh::getNodes(all_nodes, coords, params, -1, -1, false, false);
     stats.n_nodes = all_nodes.size();
 
-    const std::string tmp = temporary_name_for(msh_path);
-    gmsh::write(tmp);
-    commit_external_file(tmp, msh_path);
+    write_mesh_file(msh_path);
     return stats;
   }
 } // namespace wearlink::fe

@@ -62,7 +62,7 @@ namespace wearlink::workflows
     class Recorder : public mbs::StepObserver
     {
     public:
-      Recorder(io::Scene &scene, std::ostream *csv, double interval, bool progress)
+      Recorder(io::Scene &scene, AtomicFile *csv, double interval, bool progress)
         : scene(scene)
         , mech(*scene.mechanism)
         , csv(csv)
@@ -282,7 +282,7 @@ namespace wearlink::workflows
       void
       write_header()
       {
-        auto       &os      = *csv;
+        auto       &os      = csv->stream();
         const auto  columns = time_series_columns(scene);
         const char *sep     = "";
         for (const auto &c : columns)
@@ -296,7 +296,7 @@ namespace wearlink::workflows
       void
       sample(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, const Eigen::VectorXd &lambda)
       {
-        auto      &os = *csv;
+        auto      &os = csv->stream();
         const auto n  = mech.n_coordinates();
         os << t;
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
@@ -323,11 +323,12 @@ namespace wearlink::workflows
         const auto z = 2 * n;
         os << ',' << mech.kinetic_energy(y.data() + n) << ',' << mech.potential_energy(y.data(), y.data() + n) << ','
            << y[z + Q::reaction_work] << ',' << y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation] << '\n';
+        csv->throw_if_failed(); // a full disk stops the run here, not at its end
       }
 
       io::Scene                            &scene;
       mbs::Mechanism                       &mech;
-      std::ostream                         *csv;
+      AtomicFile                           *csv;
       std::vector<double>                   trig; ///< per step: the bodies' (cos θ, sin θ)
       double                                interval;
       bool                                  progress;
@@ -508,7 +509,7 @@ namespace wearlink::workflows
       sim.initialize_state(options.start_time, *options.initial_state);
     else
       sim.initialize(scene.start_time, q0, v0);
-    Recorder recorder(scene, csv ? &csv->stream() : nullptr, scene.output_interval, options.progress);
+    Recorder                       recorder(scene, csv.get(), scene.output_interval, options.progress);
     std::unique_ptr<SceneAnalyses> analyses;
     if (options.analyses)
       analyses =

@@ -495,9 +495,7 @@ namespace wearlink::workflows
           make_output_directory(dir + "/fe");
           if (mesh != copied[i])
             {
-              std::filesystem::copy_file(mesh,
-                                         dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh",
-                                         std::filesystem::copy_options::overwrite_existing);
+              copy_file_atomically(mesh, dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh");
               copied[i] = mesh;
             }
           model.write_fields(loop.peak_loads()[i], dir + "/fe/fields_" + name + "_iteration" + std::to_string(k));
