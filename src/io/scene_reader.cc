@@ -13,6 +13,7 @@
 #include "io/profile_file.h"
 #include "io/scene.h"
 #include "io/scene_declarations.h"
+#include "io/scene_periods.h"
 #include "io/uncertainty_parameters.h"
 #include "mbs/assembly.h"
 #include "mbs/mbs_parameters.h"
@@ -176,7 +177,10 @@ namespace wearlink::io
       auto normal        = contact::normal_force_laws().create(d.normal_force_law, r, "Normal force law");
       std::unique_ptr<contact::FrictionLaw> friction;
       if (r.get("Friction law") != "none")
-        friction = contact::friction_laws().create(r.get("Friction law"), r, "Friction law");
+        {
+          friction = contact::friction_laws().create(r.get("Friction law"), r, "Friction law");
+          contact::check_friction_coefficient(joint, friction->coefficient(), scene.warnings);
+        }
 
       // Assembly pins the pin centre at the initial eccentricity (bushing frame).
       const mbs::Vec2 e0 = vec(r.get_point("Initial eccentricity"));
@@ -363,6 +367,7 @@ namespace wearlink::io
   void
   print_scene_parameters(std::ostream &out, const std::string &file)
   {
+    check_cycle_period(scene, scene.warnings);
     std::vector<std::string> bodies = {"<name>"}, joints = {"<name>"};
     if (!file.empty())
       pre_scan(file, {}, bodies, joints);

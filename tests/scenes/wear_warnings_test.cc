@@ -9,7 +9,12 @@
 //    reports the same `warnings` list as an uninterrupted run: the warnings raised
 //    before the checkpoint are kept in it (format version 6);
 //  - an adaptive run that ends at its Number of iterations short of its Target
-//    revolutions warns, one that reaches the target does not.
+//    revolutions warns, one that reaches the target does not;
+//  - entries valid one by one but implausible are warned about when the scene is read,
+//    and the warning reaches a run's summary.json and stderr: a friction coefficient
+//    above 1 (dry metal pairs 0.1 … 0.8), a Wear/Cycle period that is no whole number of
+//    the 0.5 s driving period (0.37 s, 1e-9 s); 1 s (two periods) and the shipped
+//    values are not warned about.
 #include "io/json_file.h"
 #include "scene_support.h"
 #include "wear/wear_state.h"
@@ -139,3 +144,50 @@ TEST(WearWarnings, AnAdaptiveRunShortOfItsTargetSaysSo)
   reached.insert(reached.end(), {"Wear/Number of iterations=2", "Wear/Target revolutions=25"});
   EXPECT_TRUE(containing(warnings_of(run_wear(reached, o).summary), "Target revolutions").empty());
 }
+
+TEST(SceneWarnings, ImplausibleEntriesAreWarnedAboutWhenTheSceneIsRead)
+{
+  const auto warned = [](const std::vector<std::string> &overrides, const std::string &text) {
+    const auto               s = wearlink::testing::scene("params/nine_bar_wear.prm", overrides);
+    std::vector<std::string> texts;
+    for (const auto &w : s.warnings.warnings())
+      texts.push_back(w.text());
+    return containing(texts, text);
+  };
+  EXPECT_TRUE(warned({}, "").empty()) << "the shipped scene is plausible";
+  const auto mu = warned({"Joint A/Clearance/modified-coulomb/Friction coefficient=10"}, "friction coefficient");
+  ASSERT_EQ(mu.size(), 1u);
+  EXPECT_NE(mu[0].find("joint A: Clearance friction coefficient 10 exceeds its limit 1 (dry metal pairs"),
+            std::string::npos)
+    << mu[0];
+  EXPECT_TRUE(warned({"Joint A/Clearance/modified-coulomb/Friction coefficient=0.8"}, "friction").empty());
+
+  const std::string cycle = "Wear/Cycle period: distance from a whole number of driving periods";
+  const auto        part  = warned({"Wear/Cycle period=0.37"}, cycle);
+  ASSERT_EQ(part.size(), 1u);
+  EXPECT_NE(part[0].find("0.26 periods exceeds its limit 0.001 periods (Cycle period 0.37 s is 0.74 driving "
+                         "periods of 0.5 s)"),
+            std::string::npos)
+    << part[0];
+  EXPECT_EQ(warned({"Wear/Cycle period=1e-9"}, cycle).size(), 1u) << "a cycle of no time at all";
+  EXPECT_TRUE(warned({"Wear/Cycle period=1"}, cycle).empty()) << "two whole revolutions";
+}
+
+TEST(SceneWarnings, AnImplausibleEntryReachesTheRunsSummaryAndStderr)
+{
+  const std::string dir = wearlink::testing::fresh_directory("scene_warning_run");
+  const auto        r   = wearlink::testing::run_wearlink({"run",
+                                                           wearlink::testing::source_path("params/nine_bar_clearance.prm"),
+                                                           "--output",
+                                                           dir,
+                                                           "--quiet",
+                                                           "--set",
+                                                           "Simulation/End time=0.01",
+                                                           "--set",
+                                                           "Joint B/Clearance/modified-coulomb/Friction coefficient=10"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto w = containing(warnings_of(io::read_json_file(dir + "/summary.json")), "joint B: Clearance friction");
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(r.output.find("[wearlink] warning: " + w[0]), std::string::npos) << r.output;
+}
+

@@ -261,6 +261,7 @@ memory that ran out, 130 / 143 / 129 stopped by SIGINT / SIGTERM / SIGHUP, 1 an 
                     << scene.mechanism->n_constraint_equations() << " constraint equations, "
                     << scene.clearance_joints.size() << " clearance joints; assembles at t = " << scene.start_time
                     << " s.\n";
+          scene.warnings.print(std::cerr);
           return 0;
         }
 

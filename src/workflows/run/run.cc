@@ -420,7 +420,7 @@ namespace wearlink::workflows
   ValidityWarnings
   run_validity_warnings(const io::Scene &scene, const Json &summary)
   {
-    ValidityWarnings w;
+    ValidityWarnings w = scene.warnings; // the implausible entries first
     integrator_warnings(scene, summary, w);
     for (const auto &[name, joint] : summary.at("clearance_joints").items())
       {

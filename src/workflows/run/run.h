@@ -79,7 +79,8 @@ namespace wearlink::workflows
    * penetration beyond 20 % of a joint's radial clearance, a constraint violation beyond
    * 1000 × the position tolerance (at least 1 µm), an energy balance off by more than
    * the integrator promises, an rk4 step above 1/100 of the driving period, evaluations
-   * of a contact-law table beyond its largest load.
+   * of a contact-law table beyond its largest load; after the scene's own warnings of
+   * implausible entries (io::Scene::warnings).
    */
   ValidityWarnings
   run_validity_warnings(const io::Scene &scene, const Json &summary);
