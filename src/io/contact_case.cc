@@ -237,6 +237,8 @@ namespace wearlink::io
     std::array<double, 2> direction{};
     const auto            loads = read_load_states(reader, R1, R2, force_control, direction);
 
+    io::check_profile_radius(reader, "Bore profile file", geometry.bore, R1, "Bore radius");
+    io::check_profile_radius(reader, "Pin profile file", geometry.pin, R2, "Pin radius");
     reader.enter("FE model");
     fe::FeSettings settings         = fe::read_fe_settings(reader);
     settings.outer_radius           = outer_radius;

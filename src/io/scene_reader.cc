@@ -141,6 +141,12 @@ namespace wearlink::io
       };
       d.geometry.bore = profile("Bore profile file", size.bore_radius);
       d.geometry.pin  = profile("Pin profile file", pin_radius);
+      io::check_profile_radius(r, "Bore profile file", d.geometry.bore, size.bore_radius, "Bore radius");
+      io::check_profile_radius(r,
+                               "Pin profile file",
+                               d.geometry.pin,
+                               pin_radius,
+                               "pin radius (Bore radius − Radial clearance)");
       if (!(d.geometry.bore.mean_radius() > d.geometry.pin.mean_radius()))
         r.fail_section("the pin profile (mean radius " + format_number(d.geometry.pin.mean_radius()) +
                        " m) is not smaller than the bore profile (mean radius " +
@@ -361,13 +367,13 @@ namespace wearlink::io
     scene.analyses    = parse_analyses(prm, scene);
     scene.life        = parse_life(prm, scene);
     scene.uncertainty = parse_uncertainty(prm, file, inactive);
+    check_cycle_period(scene, scene.warnings);
     return scene;
   }
 
   void
   print_scene_parameters(std::ostream &out, const std::string &file)
   {
-    check_cycle_period(scene, scene.warnings);
     std::vector<std::string> bodies = {"<name>"}, joints = {"<name>"};
     if (!file.empty())
       pre_scan(file, {}, bodies, joints);
