@@ -191,3 +191,34 @@ TEST(SceneWarnings, AnImplausibleEntryReachesTheRunsSummaryAndStderr)
   EXPECT_NE(r.output.find("[wearlink] warning: " + w[0]), std::string::npos) << r.output;
 }
 
+// `contact` under displacement control with an eccentricity equal to the radial
+// clearance (0.5 mm): the pin does not touch the bore, every force is 0. It ran and
+// reported 0 N without a word; now the load state is warned about, and the one that
+// pushes 10 µm into the bore is not.
+TEST(SceneWarnings, ContactEccentricityWithinTheClearanceIsWarned)
+{
+  const std::string dir = wearlink::testing::fresh_directory("contact_gap_warning");
+  const auto        r   = wearlink::testing::run_wearlink({"contact",
+                                                           wearlink::testing::source_path("params/pin_bushing.prm"),
+                                                           "--output",
+                                                           dir,
+                                                           "--set",
+                                                           "Loads/Control=displacement",
+                                                           "--set",
+                                                           "Loads/Eccentricities=0.5e-3, 0.51e-3",
+                                                           "--set",
+                                                           "FE model/Surface element size=1e-4",
+                                                           "--set",
+                                                           "FE model/Solvers=condensed",
+                                                           "--set",
+                                                           "Output/Write VTU=false"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto all = warnings_of(io::read_json_file(dir + "/summary.json"));
+  const auto gap = containing(all, "radial clearance left");
+  ASSERT_EQ(gap.size(), 1u) << io::read_json_file(dir + "/summary.json").at("warnings").dump(1);
+  EXPECT_NE(gap[0].find("load state 0 (eccentricity 0.0005 m): radial clearance left 0 m exceeds its limit"),
+            std::string::npos)
+    << gap[0];
+  EXPECT_NE(gap[0].find("the pin does not touch the bore: the contact force is 0"), std::string::npos) << gap[0];
+  EXPECT_NE(r.output.find("[wearlink] warning: " + gap[0]), std::string::npos) << r.output;
+}
