@@ -512,6 +512,16 @@ namespace wearlink::fe
     if (!(positive(spec.outer_radius) && spec.outer_radius > bore.max_radius()))
       throw InputError("The bushing outer radius (" + number(spec.outer_radius) +
                        " m) must be larger than the largest bore radius (" + number(bore.max_radius()) + " m).");
+    // Each ring must hold a few elements across: an element wider than a quarter of the
+    // thinner ring gives a mesh of a few degenerate elements, and the solver then fails
+    // on its singular stiffness with a message that names no entry.
+    const double ring = std::min(pin.min_radius() - spec.core_radius, spec.outer_radius - bore.max_radius());
+    if (!(spec.surface_element_size <= ring / 4))
+      throw InputError("The FE surface element size (" + number(spec.surface_element_size) +
+                       " m) is larger than a quarter of the thinner ring of the pin–bushing pair (" + number(ring) +
+                       " m: the pin between its rigid core and its surface, or the bushing between its bore and its "
+                       "outer edge), so no mesh can resolve the rings. Choose 'Surface element size' well below it; "
+                       "contact half-widths call for micrometres.");
   }
 
 
