@@ -270,6 +270,8 @@ memory that ran out, 130 / 143 / 129 stopped by SIGINT / SIGTERM / SIGHUP, 1 an 
           ensemble_request(a); // a bad value is refused before anything runs
           return run_ensemble_scene(file, a, workflows::has_wear(scene));
         }
+      refuse_several_ranks("run` without `--ensemble",
+                           "add --ensemble N to run N perturbed members of the scene over the ranks");
       if (workflows::has_wear(scene) || a.has("--resume"))
         return run_wear_scene(scene, file, a);
       return run_plain_scene(scene, file, a);
