@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "base/exceptions.h"
 #include "base/interrupt.h"
+#include "base/text.h"
 #include "register_all.h"
 
 #include <deal.II/base/exceptions.h>
@@ -84,22 +85,22 @@ main(int argc, char **argv)
     }
   catch (const wearlink::InputError &e)
     {
-      std::cerr << "error: " << e.message() << '\n';
+      std::cerr << "error: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 2;
     }
   catch (const wearlink::EstimationError &e)
     {
-      std::cerr << "error: " << e.message() << '\n';
+      std::cerr << "error: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 2;
     }
   catch (const wearlink::NumericalError &e)
     {
-      std::cerr << "numerical failure: " << e.message() << '\n';
+      std::cerr << "numerical failure: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 3;
     }
   catch (const wearlink::IoError &e)
     {
-      std::cerr << "error: " << e.message() << '\n';
+      std::cerr << "error: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 4;
     }
   catch (const wearlink::Interrupted &e)
@@ -125,7 +126,6 @@ main(int argc, char **argv)
       std::cerr << "internal error: " << e.what() << '\n';
       return 1;
     }
-}
   catch (...)
     {
       // A library that throws something else (gmsh throws its messages as strings):
@@ -134,3 +134,4 @@ main(int argc, char **argv)
       std::cerr << "internal error: an exception of unknown type left `wearlink " << command << "`\n";
       return 1;
     }
+}
