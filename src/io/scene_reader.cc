@@ -135,8 +135,9 @@ namespace wearlink::io
         if (f.empty())
           return Profile::round(radius, size.n_areas);
         const std::string path = resolve_relative(r.file(), f);
-        if (!std::filesystem::exists(path))
-          r.fail(entry, "the file '" + path + "' does not exist");
+        std::error_code   ec; // a name too long for the system is a name of no file, not an exception
+        if (!std::filesystem::exists(path, ec))
+          r.fail(entry, "the file '" + path + "' does not exist" + (ec ? " (" + ec.message() + ")" : std::string()));
         return io::read_profile_csv(path, size.n_areas);
       };
       d.geometry.bore = profile("Bore profile file", size.bore_radius);
