@@ -573,59 +573,93 @@ namespace wearlink::fe
   } // namespace
 
 
+  namespace
+  {
+    MeshStatistics
+    write_general_mesh(const Profile           &bore,
+                       const Profile           &pin,
+                       const MeshSpecification &spec,
+                       const std::string       &msh_path);
+  } // namespace
+
   MeshStatistics
   write_pin_bushing_mesh(const Profile           &bore,
                          const Profile           &pin,
                          const MeshSpecification &spec,
                          const std::string       &msh_path)
   {
-    check_pin_bushing_geometry(bore, pin, spec);
-    if (spec.periodic && spec.refined_half_angle >= pi && bore.is_round() && pin.is_round())
-      return write_periodic_mesh(bore.mean_radius(), pin.mean_radius(), spec, msh_path);
-    // Sizes before the final split of every element into quadrilaterals (see below).
-    const double h = 2 * spec.surface_element_size;
-    const double H = 2 * spec.max_element_size;
-
-    GmshSession session;
-    gmsh::model::add("pin_bushing");
-    MeshStatistics stats;
-
-    // Pin annulus: surface (outer) loop and rigid-core hole.
-    std::vector<int> refined;
-    unsigned long    pin_segments = 0, bore_segments = 0;
-    const auto       pin_curves =
-      add_profile_curve(pin, h, spec.pin_refined_centre, spec.refined_half_angle, refined, pin_segments);
-    const auto core_curves = add_circle(spec.core_radius, H);
-    const int  pin_loop    = gmsh::model::geo::addCurveLoop(pin_curves);
-    const int  core_loop   = gmsh::model::geo::addCurveLoop(core_curves);
-    const int  pin_area    = gmsh::model::geo::addPlaneSurface({pin_loop, core_loop});
-
-    // Bushing ring: fixed outer circle and the bore as its hole.
-    const auto bore_curves =
-      add_profile_curve(bore, h, spec.bore_refined_centre, spec.refined_half_angle, refined, bore_segments);
-    stats.n_refined_surface_segments = 2 * (pin_segments + bore_segments);
-    const auto outer_curves          = add_circle(spec.outer_radius, H);
-    const int  outer_loop            = gmsh::model::geo::addCurveLoop(outer_curves);
-    const int  bore_loop             = gmsh::model::geo::addCurveLoop(bore_curves);
-    const int  ring_area             = gmsh::model::geo::addPlaneSurface({outer_loop, bore_loop});
-    gmsh::model::geo::synchronize();
-
-    name_group(2, {pin_area}, "MaterialID:" + std::to_string(material_ids::pin));
-    name_group(2, {ring_area}, "MaterialID:" + std::to_string(material_ids::bushing));
-    name_group(1, core_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_core));
-    name_group(1, pin_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_surface));
-    name_group(1, bore_curves, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
-    name_group(1, outer_curves, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
-
-    // Element size from the distance to the refined, uniformly spaced arcs of both surfaces.
-    set_size_field(refined, static_cast<double>(std::max(pin_segments, bore_segments)) + 10, spec);
-    stats.n_quadrilaterals = generate_quadrilaterals();
-    std::vector<std::size_t> all_nodes;
-    std::vector<double>      coords, params;
-    gmsh::model::mesh::getNodes(all_nodes, coords, params, -1, -1, false, false);
-    stats.n_nodes = all_nodes.size();
-
-    write_mesh_file(msh_path);
-    return stats;
+    // gmsh throws its messages as strings, from its geometry kernel too (a rigid core of
+    // 1e-300 of the pin radius): a pair it cannot build is a numerical failure of the
+    // mesher, named as such, never an exception of unknown type.
+    try
+      {
+        return write_general_mesh(bore, pin, spec, msh_path);
+      }
+    catch (const std::string &message)
+      {
+        throw NumericalError("gmsh could not build the pin–bushing mesh (bore radius " + number(bore.mean_radius()) +
+                             " m, pin radius " + number(pin.mean_radius()) + " m, rigid core radius " +
+                             number(spec.core_radius) + " m, surface element size " +
+                             number(spec.surface_element_size) + " m): " + message);
+      }
   }
+
+  namespace
+  {
+    MeshStatistics
+    write_general_mesh(const Profile           &bore,
+                       const Profile           &pin,
+                       const MeshSpecification &spec,
+                       const std::string       &msh_path)
+    {
+      check_pin_bushing_geometry(bore, pin, spec);
+      if (spec.periodic && spec.refined_half_angle >= pi && bore.is_round() && pin.is_round())
+        return write_periodic_mesh(bore.mean_radius(), pin.mean_radius(), spec, msh_path);
+      // Sizes before the final split of every element into quadrilaterals (see below).
+      const double h = 2 * spec.surface_element_size;
+      const double H = 2 * spec.max_element_size;
+
+      GmshSession session;
+      gmsh::model::add("pin_bushing");
+      MeshStatistics stats;
+
+      // Pin annulus: surface (outer) loop and rigid-core hole.
+      std::vector<int> refined;
+      unsigned long    pin_segments = 0, bore_segments = 0;
+      const auto       pin_curves =
+        add_profile_curve(pin, h, spec.pin_refined_centre, spec.refined_half_angle, refined, pin_segments);
+      const auto core_curves = add_circle(spec.core_radius, H);
+      const int  pin_loop    = gmsh::model::geo::addCurveLoop(pin_curves);
+      const int  core_loop   = gmsh::model::geo::addCurveLoop(core_curves);
+      const int  pin_area    = gmsh::model::geo::addPlaneSurface({pin_loop, core_loop});
+
+      // Bushing ring: fixed outer circle and the bore as its hole.
+      const auto bore_curves =
+        add_profile_curve(bore, h, spec.bore_refined_centre, spec.refined_half_angle, refined, bore_segments);
+      stats.n_refined_surface_segments = 2 * (pin_segments + bore_segments);
+      const auto outer_curves          = add_circle(spec.outer_radius, H);
+      const int  outer_loop            = gmsh::model::geo::addCurveLoop(outer_curves);
+      const int  bore_loop             = gmsh::model::geo::addCurveLoop(bore_curves);
+      const int  ring_area             = gmsh::model::geo::addPlaneSurface({outer_loop, bore_loop});
+      gmsh::model::geo::synchronize();
+
+      name_group(2, {pin_area}, "MaterialID:" + std::to_string(material_ids::pin));
+      name_group(2, {ring_area}, "MaterialID:" + std::to_string(material_ids::bushing));
+      name_group(1, core_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_core));
+      name_group(1, pin_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_surface));
+      name_group(1, bore_curves, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
+      name_group(1, outer_curves, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
+
+      // Element size from the distance to the refined, uniformly spaced arcs of both surfaces.
+      set_size_field(refined, static_cast<double>(std::max(pin_segments, bore_segments)) + 10, spec);
+      stats.n_quadrilaterals = generate_quadrilaterals();
+      std::vector<std::size_t> all_nodes;
+      std::vector<double>      coords, params;
+      gmsh::model::mesh::getNodes(all_nodes, coords, params, -1, -1, false, false);
+      stats.n_nodes = all_nodes.size();
+
+      write_mesh_file(msh_path);
+      return stats;
+    }
+  } // namespace
 } // namespace wearlink::fe
