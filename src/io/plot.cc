@@ -339,15 +339,21 @@ namespace wearlink::io
       const fs::path           dir     = scratch.path();
       const std::string        tmp_png = temporary_name_for(png_path);
       std::ostringstream       script;
-      script << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,11'\n"
-             << "set output " << quote(tmp_png) << "\n"
-             << body(dir) << "unset output\n";
-      const fs::path script_file = dir / "plot.gp";
-      {
-        std::ofstream out(script_file);
-        out << script.str();
-        check_scratch_written(out, script_file);
-      }
+      const fs::path           script_file = dir / "plot.gp";
+      try
+        {
+          script << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,11'\n"
+                 << "set output " << quote(tmp_png) << "\n"
+                 << body(dir) << "unset output\n";
+          std::ofstream out(script_file);
+          out << script.str();
+          check_scratch_written(out, script_file);
+        }
+      catch (const IoError &e) // a plot comes after its results: a warning, no PNG
+        {
+          std::cerr << "warning: " << e.message() << " The plot " << png_path << " is not written.\n";
+          return false;
+        }
       const std::string cmd =
         "gnuplot " + quote(script_file.string()) + " > " + quote((dir / "log").string()) + " 2>&1";
       const int       status = std::system(cmd.c_str());
@@ -363,10 +369,12 @@ namespace wearlink::io
         }
       if (!png_is_complete(tmp_png))
         {
+          // As any plot gnuplot cannot draw: a warning and no PNG (plots come after the
+          // results they show, which are written whole), never a cut image in place.
           fs::remove(tmp_png, ec);
-          throw IoError("Writing the plot '" + png_path +
-                        "' failed: gnuplot left it incomplete, as it does when the disk is full or a write "
-                        "fails. Free some space (or check the disk) and run again.");
+          std::cerr << "warning: gnuplot left the plot " << png_path
+                    << " incomplete, as it does when the disk is full or a write fails; it is not written\n";
+          return false;
         }
       commit_external_file(tmp_png, png_path);
       return true;
