@@ -33,6 +33,13 @@ namespace wearlink::analysis
     rosenstein
   };
 
+  /**
+   * Fewest samples of a series worth estimating an exponent from: below it no embedding
+   * leaves neighbours beyond a Theiler window to follow. The methods may need more for
+   * the embedding they use (they say so); in practice thousands.
+   */
+  constexpr std::size_t min_lyapunov_samples = 100;
+
   /** "wolf" or "rosenstein". */
   std::string
   method_name(LyapunovMethod method);

@@ -7,6 +7,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace wearlink::app
 {
@@ -115,5 +116,23 @@ namespace wearlink::app
           out.positional.push_back(a);
       }
     return out;
+  }
+
+  void
+  refuse_several_ranks(const std::string &command, const std::string &instead)
+  {
+    // Open MPI's mpirun sets OMPI_COMM_WORLD_SIZE, MPICH's and Slurm's PMI_SIZE, before
+    // MPI is initialised (a serial command never initialises it).
+    for (const char *variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+      if (const char *value = std::getenv(variable))
+        {
+          const long ranks = std::strtol(value, nullptr, 10);
+          if (ranks > 1)
+            throw InputError("`wearlink " + command + "` runs serially, but it was started on " +
+                             std::to_string(ranks) +
+                             " MPI ranks: each would run the same scene into the same output folder. Start it "
+                             "without mpirun, or " +
+                             instead + ".");
+        }
   }
 } // namespace wearlink::app

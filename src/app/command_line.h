@@ -49,6 +49,15 @@ namespace wearlink::app
                   const std::vector<OptionSpec>  &spec,
                   const std::string              &command);
 
+  /**
+   * InputError if this process is one of several ranks started by an MPI launcher
+   * (mpirun, mpiexec, srun: their environment says how many) for a command that runs
+   * serially: every rank would run the same command into the same folder. @p command
+   * names it ("run without --ensemble"), @p instead says what to do.
+   */
+  void
+  refuse_several_ranks(const std::string &command, const std::string &instead);
+
   /** A sub-command of the wearlink program. */
   struct Command
   {

@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "base/exceptions.h"
 #include "base/interrupt.h"
+#include "base/text.h"
 #include "register_all.h"
 
 #include <deal.II/base/exceptions.h>
@@ -40,8 +41,8 @@ namespace
            "  3  numerical failure in a valid scene (the message names time, joint, residual)\n"
            "  4  the environment failed: an output that cannot be written (permission, disk\n"
            "     full) or memory that ran out\n"
-           "  128 + N  stopped by signal N (130 SIGINT, 143 SIGTERM): temporary files removed,\n"
-           "     the last checkpoint kept\n";
+           "  128 + N  stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP): temporary files\n"
+           "     removed, the last checkpoint kept\n";
   }
 } // namespace
 
@@ -84,22 +85,22 @@ main(int argc, char **argv)
     }
   catch (const wearlink::InputError &e)
     {
-      std::cerr << "error: " << e.message() << '\n';
+      std::cerr << "error: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 2;
     }
   catch (const wearlink::EstimationError &e)
     {
-      std::cerr << "error: " << e.message() << '\n';
+      std::cerr << "error: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 2;
     }
   catch (const wearlink::NumericalError &e)
     {
-      std::cerr << "numerical failure: " << e.message() << '\n';
+      std::cerr << "numerical failure: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 3;
     }
   catch (const wearlink::IoError &e)
     {
-      std::cerr << "error: " << e.message() << '\n';
+      std::cerr << "error: " << wearlink::shorten_long_words(e.message()) << '\n';
       return 4;
     }
   catch (const wearlink::Interrupted &e)
@@ -123,6 +124,14 @@ main(int argc, char **argv)
   catch (const std::exception &e)
     {
       std::cerr << "internal error: " << e.what() << '\n';
+      return 1;
+    }
+  catch (...)
+    {
+      // A library that throws something else (gmsh throws its messages as strings):
+      // still our bug, and still an exit through the destructors (outputs unlocked,
+      // temporaries removed), never an abort.
+      std::cerr << "internal error: an exception of unknown type left `wearlink " << command << "`\n";
       return 1;
     }
 }

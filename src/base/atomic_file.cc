@@ -3,6 +3,7 @@
 
 #include "base/exceptions.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cerrno>
@@ -115,6 +116,18 @@ namespace wearlink
       }
   }
 
+  namespace
+  {
+    /** The IoError of a failed write of @p path, for the system's @p error (0: unknown). */
+    IoError
+    write_failure(const std::string &path, const int error)
+    {
+      return IoError("Writing '" + path + "' failed: " + reason(error, "the data could not be written") +
+                     ". Free some space (or check the disk) and run again; the previous file of that name, if "
+                     "any, is unchanged.");
+    }
+  } // namespace
+
   void
   AtomicFile::commit()
   {
@@ -129,12 +142,25 @@ namespace wearlink
       {
         std::error_code ec;
         std::filesystem::remove(tmp_path, ec);
-        throw IoError("Writing '" + final_path + "' failed: " + reason(error, "the data could not be written") +
-                      ". Free some space (or check the disk) and run again; the previous file of that name, if "
-                      "any, is unchanged.");
+        throw write_failure(final_path, error);
       }
     commit_external_file(tmp_path, final_path);
     committed = true;
+  }
+
+  void
+  AtomicFile::throw_if_failed()
+  {
+    if (out)
+      return;
+    // The failed write(2) set errno; formatting into the stream's buffer since then
+    // made no system call that would have changed it.
+    const int error = errno;
+    out.close();
+    std::error_code ec;
+    std::filesystem::remove(tmp_path, ec);
+    committed = true; // nothing left to remove
+    throw write_failure(final_path, error);
   }
 
   void
@@ -176,6 +202,22 @@ namespace wearlink
     sync_to_disk(directory_of(path), path, true);
   }
 
+  void
+  copy_file_atomically(const std::string &from, const std::string &to)
+  {
+    const std::string   tmp = temporary_name_for(to);
+    RegisteredTemporary registration(tmp);
+    std::error_code     ec;
+    std::filesystem::copy_file(from, tmp, std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec)
+      {
+        const int error = ec.value();
+        std::filesystem::remove(tmp, ec);
+        throw write_failure(to, error);
+      }
+    commit_external_file(tmp, to);
+  }
+
   std::vector<std::string>
   remove_stale_partials(const std::string &dir)
   {
@@ -205,11 +247,43 @@ namespace wearlink
       throw IoError("Cannot create the output directory '" + dir + "': " + ec.message() +
                     ". Choose another --output directory.");
   }
+  std::vector<std::string>
+  remove_stale_temporary_directories(const std::string &parent)
+  {
+    namespace fs = std::filesystem;
+    std::vector<std::string> removed;
+    std::error_code          ec;
+    for (const auto &e : fs::directory_iterator(parent, ec))
+      {
+        // "wearlink-<what>-<pid>-<n>": the pid is the next-to-last field.
+        const std::string name = e.path().filename().string();
+        const auto        last = name.rfind('-');
+        const auto        pid0 = last == std::string::npos || last == 0 ? std::string::npos : name.rfind('-', last - 1);
+        if (name.rfind("wearlink-", 0) != 0 || pid0 == std::string::npos || pid0 + 1 >= last)
+          continue;
+        const std::string digits = name.substr(pid0 + 1, last - pid0 - 1);
+        if (digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), [](const char c) {
+              return std::isdigit(static_cast<unsigned char>(c)) != 0;
+            }))
+          continue;
+        const long pid = std::stol(digits);
+        if (pid > 0 && e.is_directory(ec) && !e.is_symlink(ec) && !process_runs(pid) &&
+            fs::remove_all(e.path(), ec) > 0)
+          removed.push_back(e.path().string());
+      }
+    return removed;
+  }
+
   TemporaryDirectory::TemporaryDirectory(const std::string &what)
   {
     static std::atomic<unsigned long> counter{0};
     namespace fs = std::filesystem;
-    directory    = (fs::temp_directory_path() /
+    if (counter == 0)
+      {
+        std::error_code ec;
+        remove_stale_temporary_directories(fs::temp_directory_path(ec).string());
+      }
+    directory = (fs::temp_directory_path() /
                  ("wearlink-" + what + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++)))
                   .string();
     make_output_directory(directory);

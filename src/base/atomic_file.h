@@ -43,6 +43,15 @@ namespace wearlink
     void
     commit();
 
+    /**
+     * IoError naming the file (its temporary removed) if a write to stream() has failed
+     * so far (disk full, quota, I/O error). A writer that streams over a long computation
+     * calls it after each record, so that the command stops at the first failed write
+     * instead of computing on into a file that can no longer be written.
+     */
+    void
+    throw_if_failed();
+
     /** The temporary file's name (for writers that need a path, e.g. gmsh, gnuplot). */
     const std::string &
     temporary_path() const
@@ -71,6 +80,14 @@ namespace wearlink
   void
   commit_external_file(const std::string &tmp, const std::string &path);
 
+  /**
+   * Copy the file @p from to @p to atomically (through a temporary next to @p to, as
+   * commit_external_file()). IoError naming @p to if the copy fails (disk full, a file
+   * that cannot be read); no partial copy is left.
+   */
+  void
+  copy_file_atomically(const std::string &from, const std::string &to);
+
   /** A temporary name next to @p path, unique to this process. */
   std::string
   temporary_name_for(const std::string &path);
@@ -88,9 +105,19 @@ namespace wearlink
   remove_stale_partials(const std::string &dir);
 
   /**
+   * Remove the scratch directories "wearlink-<what>-<pid>-<n>" under @p parent whose
+   * process no longer runs (killed outright, or by a second signal, which leaves at
+   * once); those of running processes are kept. Returns the paths removed.
+   */
+  std::vector<std::string>
+  remove_stale_temporary_directories(const std::string &parent);
+
+  /**
    * A new directory under the system's temporary directory, named
    * "wearlink-<what>-<pid>-<n>" (n counts within the process), removed with everything in
-   * it when the object goes: scratch space for meshes and plot scripts.
+   * it when the object goes: scratch space for meshes and plot scripts. The first one of
+   * a process removes the stale ones of processes that were killed
+   * (remove_stale_temporary_directories()).
    */
   class TemporaryDirectory
   {

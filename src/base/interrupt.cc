@@ -49,6 +49,15 @@ namespace wearlink
     action.sa_flags = SA_RESTART;
     ::sigaction(SIGINT, &action, nullptr);
     ::sigaction(SIGTERM, &action, nullptr);
+    // SIGHUP (the terminal or the ssh session closed) stops a run as SIGTERM does,
+    // unless it was ignored when the program started (nohup): then it stays ignored.
+    struct sigaction hangup;
+    if (::sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN)
+      ::sigaction(SIGHUP, &action, nullptr);
+    // A file that grows past the user's file-size limit (ulimit -f) would kill the
+    // program with SIGXFSZ; ignored, the write fails with EFBIG and is reported as a
+    // failed write (exit 4, the file named), as on a full disk.
+    ::signal(SIGXFSZ, SIG_IGN);
   }
 
   int
@@ -64,6 +73,8 @@ namespace wearlink
       return "SIGINT";
     if (signal_number == SIGTERM)
       return "SIGTERM";
+    if (signal_number == SIGHUP)
+      return "SIGHUP";
     return "signal " + std::to_string(signal_number);
   }
 

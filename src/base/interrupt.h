@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// SIGINT and SIGTERM stop a run cleanly. The handlers (installed by the program's
+// SIGINT, SIGTERM and SIGHUP stop a run cleanly. The handlers (installed by the program's
 // main(), never by the library or the tests) only record the signal; the run notices
 // it at its next check (every accepted integrator step, every wear iteration, before a
 // file written by another program is moved into place) and throws Interrupted, so that
@@ -14,7 +14,11 @@
 
 namespace wearlink
 {
-  /** Install the SIGINT and SIGTERM handlers (once per process; main() only). */
+  /**
+   * Install the SIGINT, SIGTERM and SIGHUP handlers (once per process; main() only); a
+   * SIGHUP ignored at the start (nohup) stays ignored. SIGXFSZ is ignored: a file past
+   * the file-size limit is a failed write (EFBIG), not a killed program.
+   */
   void
   install_interrupt_handlers();
 

@@ -340,11 +340,11 @@ namespace wearlink
         throw InputError("In " + filename + " line " + std::to_string(line_no) + ": 'include' needs a file name.");
       if (inc.is_relative())
         inc = fs::path(filename).parent_path() / inc;
-      if (!fs::exists(inc))
+      std::error_code ec; // a name too long for the system is a name of no file, not an exception
+      if (!fs::exists(inc, ec))
         throw InputError("In " + filename + " line " + std::to_string(line_no) + ": the included file '" +
-                         inc.string() +
-                         "' does not exist (include paths are relative to the "
-                         "including file).");
+                         inc.string() + "' does not exist" + (ec ? " (" + ec.message() + ")" : std::string()) +
+                         " (include paths are relative to the including file).");
       return inc;
     }
 

@@ -80,4 +80,33 @@ namespace wearlink
       s += (i ? sep : "") + parts[i];
     return s;
   }
+
+  std::string
+  shorten_long_words(const std::string &message, const std::size_t longest, const std::size_t kept)
+  {
+    const auto is_blank = [](const char c) {
+      return c == ' ' || c == '\n' || c == '\t' || c == '\r';
+    };
+    std::string out;
+    std::size_t i = 0;
+    while (i < message.size())
+      {
+        std::size_t end = i;
+        while (end < message.size() && !is_blank(message[end]))
+          ++end;
+        if (end - i > longest)
+          {
+            std::size_t cut = i + kept;
+            while (cut > i && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80)
+              --cut; // not inside a UTF-8 sequence
+            out.append(message, i, cut - i);
+            out += "… [" + std::to_string(end - i) + " characters]";
+          }
+        else
+          out.append(message, i, end - i);
+        for (i = end; i < message.size() && is_blank(message[i]); ++i)
+          out += message[i];
+      }
+    return out;
+  }
 } // namespace wearlink

@@ -36,4 +36,13 @@ namespace wearlink
   /** @p parts with @p sep between them. */
   std::string
   join(const std::vector<std::string> &parts, const std::string &sep);
+
+  /**
+   * @p message with every run of more than @p longest characters without a blank (a
+   * value pasted by mistake, a damaged line) cut to its first @p kept characters and
+   * "… [N characters]": a message echoes what the user gave, but a 10 MB value echoed
+   * whole buries the message. UTF-8 sequences are not cut in half.
+   */
+  std::string
+  shorten_long_words(const std::string &message, std::size_t longest = 1000, std::size_t kept = 80);
 } // namespace wearlink

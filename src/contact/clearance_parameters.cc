@@ -143,4 +143,16 @@ namespace wearlink::contact
     d.effective_radius =
       r.get("Effective radius") == "internal" ? EffectiveRadius::internal : EffectiveRadius::seed_printed;
   }
+
+  void
+  check_friction_coefficient(const std::string &joint, const double mu, ValidityWarnings &warnings)
+  {
+    warnings.check({"joint " + joint + ": Clearance friction coefficient",
+                    mu,
+                    1.0,
+                    "",
+                    "dry metal pairs 0.1 … 0.8, lubricated 0.05 … 0.15; above 1 only clean metals in vacuum and "
+                    "elastomers",
+                    "a friction force larger than the normal force; check the value"});
+  }
 } // namespace wearlink::contact

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "base/parameters.h"
+#include "base/validity_warnings.h"
 #include "contact/clearance_joint.h"
 
 namespace wearlink::contact
@@ -36,4 +37,13 @@ namespace wearlink::contact
   /** Axial length, materials and the effective-radius convention into @p d. */
   void
   read_clearance_materials(ParameterReader &r, ClearanceJointDescription &d);
+
+  /**
+   * Warn (into @p warnings) when joint @p joint's friction coefficient @p mu is above 1:
+   * valid, since clean metals in vacuum and elastomers exceed 1, but far above the 0.1 …
+   * 0.8 of the dry metal pairs of pin joints (lubricated: 0.05 … 0.15), so most likely
+   * a mistake.
+   */
+  void
+  check_friction_coefficient(const std::string &joint, double mu, ValidityWarnings &warnings);
 } // namespace wearlink::contact

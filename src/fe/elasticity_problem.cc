@@ -157,7 +157,18 @@ namespace wearlink::fe
   ElasticityProblem::read_mesh(const std::string &file, unsigned int n_refinements)
   {
     GridIn<2> grid_in(triangulation);
-    grid_in.read_msh(file);
+    try
+      {
+        grid_in.read_msh(file);
+      }
+    catch (const std::string &message)
+      {
+        // gmsh's reader throws its message as a string. The mesher checked the file when
+        // it wrote it (fe/pin_bushing_mesher.cc), so the file was changed or damaged on
+        // the disk since.
+        throw IoError("Reading the mesh '" + file + "' failed: gmsh: " + message +
+                      ". The file was damaged after it was written; check the disk and run again.");
+      }
     EffectLedger::instance().add_resource("triangulations");
     triangulation.refine_global(n_refinements);
     if (n_partitions > 1)
@@ -410,7 +421,15 @@ namespace wearlink::fe
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
     AtomicFile out(vtu_path);
-    data_out.write_vtu(out.stream());
+    try
+      {
+        data_out.write_vtu(out.stream());
+      }
+    catch (const dealii::StandardExceptions::ExcIO &)
+      {
+        out.throw_if_failed(); // a failed write (disk full): an IoError naming the file
+        throw;
+      }
     out.commit();
   }
 } // namespace wearlink::fe

@@ -12,8 +12,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -38,7 +41,7 @@ namespace wearlink::fe
      * A gmsh session: initialize on construction, finalize on destruction (also when
      * an exception leaves the mesher), so that the next session — or deal.II's
      * GridIn::read_msh, which opens its own — starts clean. gmsh may install signal
-     * handlers of its own; the program's SIGINT/SIGTERM handlers (base/interrupt.h) are
+     * handlers of its own; the program's SIGINT/SIGTERM/SIGHUP handlers (base/interrupt.h) are
      * put back after it starts.
      */
     class GmshSession
@@ -46,12 +49,14 @@ namespace wearlink::fe
     public:
       GmshSession()
       {
-        struct sigaction on_int, on_term;
+        struct sigaction on_int, on_term, on_hup;
         ::sigaction(SIGINT, nullptr, &on_int);
         ::sigaction(SIGTERM, nullptr, &on_term);
+        ::sigaction(SIGHUP, nullptr, &on_hup);
         gmsh::initialize(0, nullptr, false);
         ::sigaction(SIGINT, &on_int, nullptr);
         ::sigaction(SIGTERM, &on_term, nullptr);
+        ::sigaction(SIGHUP, &on_hup, nullptr);
         gmsh::option::setNumber("General.Terminal", 0);
         gmsh::option::setNumber("General.Verbosity", 1);
         EffectLedger::instance().add_resource("gmsh sessions");
@@ -64,6 +69,66 @@ namespace wearlink::fe
       GmshSession &
       operator=(const GmshSession &) = delete;
     };
+
+    /**
+     * True if the file @p path ends as a complete .msh file does: with the end marker of
+     * its last section ("$End<Section>" and a newline; the markers are text in the
+     * binary format too).
+     */
+    bool
+    ends_with_section_end(const std::string &path)
+    {
+      std::ifstream in(path, std::ios::binary | std::ios::ate);
+      const auto    size = static_cast<long>(in.tellg());
+      if (!in || size <= 0)
+        return false;
+      const long tail_size = std::min(size, 64L);
+      in.seekg(size - tail_size);
+      std::string tail(static_cast<std::size_t>(tail_size), '\0');
+      in.read(tail.data(), tail_size);
+      if (!in || tail.back() != '\n')
+        return false;
+      tail.pop_back();
+      const auto marker = tail.rfind("\n$End");
+      if (marker == std::string::npos || marker + 5 == tail.size())
+        return false;
+      return std::all_of(tail.begin() + static_cast<long>(marker) + 5, tail.end(), [](const char c) {
+        return std::isalpha(static_cast<unsigned char>(c)) != 0;
+      });
+    }
+
+    /**
+     * Write gmsh's current model to @p msh_path through a temporary (base/atomic_file.h).
+     * gmsh does not check its own writes: on a full disk it leaves a truncated file
+     * without a word, and reading that file back throws from inside the reader. A file
+     * that does not end as a complete .msh file does is therefore a failed write: an
+     * IoError naming the file, and the temporary removed.
+     */
+    void
+    write_mesh_file(const std::string &msh_path)
+    {
+      const std::string   tmp = temporary_name_for(msh_path);
+      RegisteredTemporary registration(tmp);
+      std::string         problem;
+      try
+        {
+          gmsh::write(tmp);
+          if (!ends_with_section_end(tmp))
+            problem = "gmsh left it incomplete, as it does when the disk is full or a write fails";
+        }
+      catch (const std::string &message)
+        {
+          problem = "gmsh: " + message;
+        }
+      if (!problem.empty())
+        {
+          std::error_code ec;
+          std::filesystem::remove(tmp, ec);
+          throw IoError("Writing the mesh '" + msh_path + "' failed: " + problem +
+                        ". Free some space (or check the disk) and run again.");
+        }
+      commit_external_file(tmp, msh_path);
+    }
 
     /** Arc length of the polar curve r(ψ) between samples i0 and i1 (i1 may wrap). */
     double
@@ -447,6 +512,16 @@ namespace wearlink::fe
     if (!(positive(spec.outer_radius) && spec.outer_radius > bore.max_radius()))
       throw InputError("The bushing outer radius (" + number(spec.outer_radius) +
                        " m) must be larger than the largest bore radius (" + number(bore.max_radius()) + " m).");
+    // Each ring must hold a few elements across: an element wider than a quarter of the
+    // thinner ring gives a mesh of a few degenerate elements, and the solver then fails
+    // on its singular stiffness with a message that names no entry.
+    const double ring = std::min(pin.min_radius() - spec.core_radius, spec.outer_radius - bore.max_radius());
+    if (!(spec.surface_element_size <= ring / 4))
+      throw InputError("The FE surface element size (" + number(spec.surface_element_size) +
+                       " m) is larger than a quarter of the thinner ring of the pin–bushing pair (" + number(ring) +
+                       " m: the pin between its rigid core and its surface, or the bushing between its bore and its "
+                       "outer edge), so no mesh can resolve the rings. Choose 'Surface element size' well below it; "
+                       "contact half-widths call for micrometres.");
   }
 
 
@@ -492,13 +567,20 @@ namespace wearlink::fe
       stats.n_quadrilaterals = stats.pin_sectors * pin.quads.size() + stats.bore_sectors * ring.quads.size();
       stats.n_refined_surface_segments =
         stats.pin_sectors * pin.contact.size() + stats.bore_sectors * ring.contact.size();
-      const std::string tmp = temporary_name_for(msh_path);
-      gmsh::write(tmp);
-      commit_external_file(tmp, msh_path);
+      write_mesh_file(msh_path);
       return stats;
     }
   } // namespace
 
+
+  namespace
+  {
+    MeshStatistics
+    write_general_mesh(const Profile           &bore,
+                       const Profile           &pin,
+                       const MeshSpecification &spec,
+                       const std::string       &msh_path);
+  } // namespace
 
   MeshStatistics
   write_pin_bushing_mesh(const Profile           &bore,
@@ -506,55 +588,78 @@ namespace wearlink::fe
                          const MeshSpecification &spec,
                          const std::string       &msh_path)
   {
-    check_pin_bushing_geometry(bore, pin, spec);
-    if (spec.periodic && spec.refined_half_angle >= pi && bore.is_round() && pin.is_round())
-      return write_periodic_mesh(bore.mean_radius(), pin.mean_radius(), spec, msh_path);
-    // Sizes before the final split of every element into quadrilaterals (see below).
-    const double h = 2 * spec.surface_element_size;
-    const double H = 2 * spec.max_element_size;
-
-    GmshSession session;
-    gmsh::model::add("pin_bushing");
-    MeshStatistics stats;
-
-    // Pin annulus: surface (outer) loop and rigid-core hole.
-    std::vector<int> refined;
-    unsigned long    pin_segments = 0, bore_segments = 0;
-    const auto       pin_curves =
-      add_profile_curve(pin, h, spec.pin_refined_centre, spec.refined_half_angle, refined, pin_segments);
-    const auto core_curves = add_circle(spec.core_radius, H);
-    const int  pin_loop    = gmsh::model::geo::addCurveLoop(pin_curves);
-    const int  core_loop   = gmsh::model::geo::addCurveLoop(core_curves);
-    const int  pin_area    = gmsh::model::geo::addPlaneSurface({pin_loop, core_loop});
-
-    // Bushing ring: fixed outer circle and the bore as its hole.
-    const auto bore_curves =
-      add_profile_curve(bore, h, spec.bore_refined_centre, spec.refined_half_angle, refined, bore_segments);
-    stats.n_refined_surface_segments = 2 * (pin_segments + bore_segments);
-    const auto outer_curves          = add_circle(spec.outer_radius, H);
-    const int  outer_loop            = gmsh::model::geo::addCurveLoop(outer_curves);
-    const int  bore_loop             = gmsh::model::geo::addCurveLoop(bore_curves);
-    const int  ring_area             = gmsh::model::geo::addPlaneSurface({outer_loop, bore_loop});
-    gmsh::model::geo::synchronize();
-
-    name_group(2, {pin_area}, "MaterialID:" + std::to_string(material_ids::pin));
-    name_group(2, {ring_area}, "MaterialID:" + std::to_string(material_ids::bushing));
-    name_group(1, core_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_core));
-    name_group(1, pin_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_surface));
-    name_group(1, bore_curves, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
-    name_group(1, outer_curves, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
-
-    // Element size from the distance to the refined, uniformly spaced arcs of both surfaces.
-    set_size_field(refined, static_cast<double>(std::max(pin_segments, bore_segments)) + 10, spec);
-    stats.n_quadrilaterals = generate_quadrilaterals();
-    std::vector<std::size_t> all_nodes;
-    std::vector<double>      coords, params;
-    gmsh::model::mesh::getNodes(all_nodes, coords, params, -1, -1, false, false);
-    stats.n_nodes = all_nodes.size();
-
-    const std::string tmp = temporary_name_for(msh_path);
-    gmsh::write(tmp);
-    commit_external_file(tmp, msh_path);
-    return stats;
+    // gmsh throws its messages as strings, from its geometry kernel too (a rigid core of
+    // 1e-300 of the pin radius): a pair it cannot build is a numerical failure of the
+    // mesher, named as such, never an exception of unknown type.
+    try
+      {
+        return write_general_mesh(bore, pin, spec, msh_path);
+      }
+    catch (const std::string &message)
+      {
+        throw NumericalError("gmsh could not build the pin–bushing mesh (bore radius " + number(bore.mean_radius()) +
+                             " m, pin radius " + number(pin.mean_radius()) + " m, rigid core radius " +
+                             number(spec.core_radius) + " m, surface element size " +
+                             number(spec.surface_element_size) + " m): " + message);
+      }
   }
+
+  namespace
+  {
+    MeshStatistics
+    write_general_mesh(const Profile           &bore,
+                       const Profile           &pin,
+                       const MeshSpecification &spec,
+                       const std::string       &msh_path)
+    {
+      check_pin_bushing_geometry(bore, pin, spec);
+      if (spec.periodic && spec.refined_half_angle >= pi && bore.is_round() && pin.is_round())
+        return write_periodic_mesh(bore.mean_radius(), pin.mean_radius(), spec, msh_path);
+      // Sizes before the final split of every element into quadrilaterals (see below).
+      const double h = 2 * spec.surface_element_size;
+      const double H = 2 * spec.max_element_size;
+
+      GmshSession session;
+      gmsh::model::add("pin_bushing");
+      MeshStatistics stats;
+
+      // Pin annulus: surface (outer) loop and rigid-core hole.
+      std::vector<int> refined;
+      unsigned long    pin_segments = 0, bore_segments = 0;
+      const auto       pin_curves =
+        add_profile_curve(pin, h, spec.pin_refined_centre, spec.refined_half_angle, refined, pin_segments);
+      const auto core_curves = add_circle(spec.core_radius, H);
+      const int  pin_loop    = gmsh::model::geo::addCurveLoop(pin_curves);
+      const int  core_loop   = gmsh::model::geo::addCurveLoop(core_curves);
+      const int  pin_area    = gmsh::model::geo::addPlaneSurface({pin_loop, core_loop});
+
+      // Bushing ring: fixed outer circle and the bore as its hole.
+      const auto bore_curves =
+        add_profile_curve(bore, h, spec.bore_refined_centre, spec.refined_half_angle, refined, bore_segments);
+      stats.n_refined_surface_segments = 2 * (pin_segments + bore_segments);
+      const auto outer_curves          = add_circle(spec.outer_radius, H);
+      const int  outer_loop            = gmsh::model::geo::addCurveLoop(outer_curves);
+      const int  bore_loop             = gmsh::model::geo::addCurveLoop(bore_curves);
+      const int  ring_area             = gmsh::model::geo::addPlaneSurface({outer_loop, bore_loop});
+      gmsh::model::geo::synchronize();
+
+      name_group(2, {pin_area}, "MaterialID:" + std::to_string(material_ids::pin));
+      name_group(2, {ring_area}, "MaterialID:" + std::to_string(material_ids::bushing));
+      name_group(1, core_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_core));
+      name_group(1, pin_curves, "BoundaryID:" + std::to_string(boundary_ids::pin_surface));
+      name_group(1, bore_curves, "BoundaryID:" + std::to_string(boundary_ids::bore_surface));
+      name_group(1, outer_curves, "BoundaryID:" + std::to_string(boundary_ids::bushing_outer));
+
+      // Element size from the distance to the refined, uniformly spaced arcs of both surfaces.
+      set_size_field(refined, static_cast<double>(std::max(pin_segments, bore_segments)) + 10, spec);
+      stats.n_quadrilaterals = generate_quadrilaterals();
+      std::vector<std::size_t> all_nodes;
+      std::vector<double>      coords, params;
+      gmsh::model::mesh::getNodes(all_nodes, coords, params, -1, -1, false, false);
+      stats.n_nodes = all_nodes.size();
+
+      write_mesh_file(msh_path);
+      return stats;
+    }
+  } // namespace
 } // namespace wearlink::fe

@@ -272,6 +272,31 @@ namespace wearlink::io
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * A run that lists lyapunov records (End time − Start time − Transient) / Sample
+     * interval samples of each channel after the transient; fewer than the methods can
+     * ever use is refused before the run (it would simulate, write the series and fail
+     * only at the estimate).
+     */
+    void
+    check_lyapunov_samples(const ParameterReader &r, const Scene &scene, const analysis::AnalysesSettings &s)
+    {
+      if (!s.lyapunov)
+        return;
+      const double span    = scene.end_time - scene.start_time - s.transient;
+      const double samples = std::floor(span / s.sample_interval + 1e-9) + 1;
+      if (samples < static_cast<double>(analysis::min_lyapunov_samples))
+        r.fail("Sample interval",
+               "the run records " + format_number(samples, 6) + " samples of each channel after the Transient ((" +
+                 format_number(span, 6) + " s) / Sample interval + 1); the Lyapunov exponent needs at least " +
+                 std::to_string(analysis::min_lyapunov_samples) + " (in practice thousands)",
+               "Lengthen Simulation/End time, shorten Analyses/Sample interval or Transient, or remove lyapunov "
+               "from 'List of analyses'.");
+    }
+  } // namespace
+
   AnalysesSettings
   parse_analyses(dealii::ParameterHandler &prm, const Scene &scene)
   {
@@ -329,6 +354,7 @@ namespace wearlink::io
       r.fail("Transient",
              "it must end before the run does (End time − Start time = " +
                format_number(scene.end_time - scene.start_time) + " s)");
+    check_lyapunov_samples(r, scene, s);
 
     r.enter("Lyapunov");
     parse_lyapunov(r, s);

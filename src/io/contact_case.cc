@@ -86,12 +86,32 @@ namespace wearlink::io
      * The load states of subsection Loads (force or eccentricity control, one state per
      * magnitude along the load direction) for a bore of radius @p R1 and a pin of @p R2.
      */
+    /**
+     * Warn about an eccentricity @p e (load state @p k) that does not exceed the radial
+     * clearance @p c: the pin then does not touch the bore and every force is 0.
+     */
+    void
+    check_eccentricity_touches(const std::size_t k, const double e, const double c, ValidityWarnings &warnings)
+    {
+      const double same = 1e-12 * c; // the clearance is R1 − R2, rounded
+      warnings.check(
+        {"load state " + std::to_string(k) + " (eccentricity " + format_number(e, 6) + " m): radial clearance left",
+         std::abs(c - e) <= same ? 0.0 : c - e,
+         -same,
+         "m",
+         "the pin touches the bore only when its eccentricity exceeds the radial clearance " + format_number(c, 6) +
+           " m",
+         "the pin does not touch the bore: the contact force is 0. Under Control = displacement the "
+         "load states are Loads/Eccentricities, the clearance plus the approach"});
+    }
+
     std::vector<fe::LoadCase>
     read_load_states(ParameterReader       &reader,
                      const double           R1,
                      const double           R2,
                      bool                  &force_control,
-                     std::array<double, 2> &direction)
+                     std::array<double, 2> &direction,
+                     ValidityWarnings      &warnings)
     {
       reader.enter("Loads");
       force_control     = reader.get("Control") == "force";
@@ -121,6 +141,8 @@ namespace wearlink::io
                           "longer describes any material",
                         "Give eccentricities up to the radial clearance + 5 % of the pin radius (" +
                           format_number(R1 - R2 + max_approach, 4) + " m); realistic approaches are micrometres.");
+          if (!force_control)
+            check_eccentricity_touches(loads.size(), magnitude, R1 - R2, warnings);
           const std::array<double, 2> value = {{magnitude * direction[0] / norm, magnitude * direction[1] / norm}};
           (force_control ? lc.load : lc.eccentricity) = value;
           loads.push_back(lc);
@@ -215,6 +237,8 @@ namespace wearlink::io
     };
     geometry.bore = profile("Bore profile file", R1, "bore");
     geometry.pin  = profile("Pin profile file", R2, "pin");
+    io::check_profile_radius(reader, "Bore profile file", geometry.bore, R1, "Bore radius");
+    io::check_profile_radius(reader, "Pin profile file", geometry.pin, R2, "Pin radius");
     if (!(R2 < R1))
       reader.fail("Pin radius",
                   "the pin must be smaller than the bore ('Bore radius' = " + format_number(R1, 4) + " m)",
@@ -235,7 +259,7 @@ namespace wearlink::io
     // Load states.
     bool                  force_control = true;
     std::array<double, 2> direction{};
-    const auto            loads = read_load_states(reader, R1, R2, force_control, direction);
+    const auto            loads = read_load_states(reader, R1, R2, force_control, direction, c.warnings);
 
     reader.enter("FE model");
     fe::FeSettings settings         = fe::read_fe_settings(reader);

@@ -5,6 +5,7 @@
 // (InputError naming the file, the entry and the allowed range).
 #pragma once
 
+#include "base/validity_warnings.h"
 #include "contact/pressure_model.h"
 #include "fe/pin_bushing_model.h"
 
@@ -28,6 +29,8 @@ namespace wearlink::io
     bool                      run_condensed = true;
     bool                      run_reference = true;
     bool                      write_vtu     = true;
+    /** Load states that are valid but implausible (an eccentricity within the clearance). */
+    ValidityWarnings warnings;
   };
 
   /** Declare every entry of a contact case. */

@@ -44,10 +44,11 @@ namespace wearlink::io
     Layout
     pre_scan(const std::string &file)
     {
-      std::ifstream in(file);
+      std::ifstream   in(file);
+      std::error_code ec; // a name too long for the system: "no such file", not an exception
       if (!in)
         throw InputError("Cannot read the measurements file '" + file + "' (" +
-                         (std::filesystem::exists(file) ? "not readable" : "no such file") + ").");
+                         (std::filesystem::exists(file, ec) ? "not readable" : "no such file") + ").");
       Layout                   layout;
       std::vector<std::string> path;
       std::string              line;

@@ -235,6 +235,20 @@ namespace wearlink::io
 
   namespace
   {
+    /**
+     * Close the scratch file @p out (@p file: a plot's script or data); IoError unless it
+     * was written whole. gnuplot would draw a cut data file without a word.
+     */
+    void
+    check_scratch_written(std::ofstream &out, const std::filesystem::path &file)
+    {
+      out.close();
+      if (out.fail())
+        throw IoError("Cannot write the plot's scratch file '" + file.string() +
+                      "': the temporary directory's disk is full or not writable. Free some space there (or "
+                      "set TMPDIR to another folder) and run again.");
+    }
+
     /** The gnuplot commands of one plot (one panel), data files written into @p dir. */
     std::string
     panel_script(const PlotSpec &spec, const std::filesystem::path &dir, const std::string &prefix)
@@ -275,6 +289,7 @@ namespace wearlink::io
               else
                 out << '\n'; // a gap in the line
             }
+          check_scratch_written(out, data);
           plot_cmd += (i ? ", " : "") + quote(data.string()) + " using 1:2 with " + with_clause(s.look) + " title " +
                       quote(s.title);
         }
@@ -282,6 +297,24 @@ namespace wearlink::io
         plot_cmd += "NaN notitle";
       script << plot_cmd << "\n";
       return script.str();
+    }
+
+    /**
+     * True if @p path ends with a PNG's closing chunk (IEND and its CRC). gnuplot exits
+     * 0 also when the disk filled under it; the image is then cut short.
+     */
+    bool
+    png_is_complete(const std::string &path)
+    {
+      static const std::string iend("IEND\xae\x42\x60\x82", 8);
+      std::ifstream            in(path, std::ios::binary | std::ios::ate);
+      const auto               size = static_cast<long>(in.tellg());
+      if (!in || size < static_cast<long>(iend.size()))
+        return false;
+      in.seekg(size - static_cast<long>(iend.size()));
+      std::string tail(iend.size(), '\0');
+      in.read(tail.data(), static_cast<long>(tail.size()));
+      return in && tail == iend;
     }
 
     /**
@@ -306,14 +339,21 @@ namespace wearlink::io
       const fs::path           dir     = scratch.path();
       const std::string        tmp_png = temporary_name_for(png_path);
       std::ostringstream       script;
-      script << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,11'\n"
-             << "set output " << quote(tmp_png) << "\n"
-             << body(dir) << "unset output\n";
-      const fs::path script_file = dir / "plot.gp";
-      {
-        std::ofstream out(script_file);
-        out << script.str();
-      }
+      const fs::path           script_file = dir / "plot.gp";
+      try
+        {
+          script << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,11'\n"
+                 << "set output " << quote(tmp_png) << "\n"
+                 << body(dir) << "unset output\n";
+          std::ofstream out(script_file);
+          out << script.str();
+          check_scratch_written(out, script_file);
+        }
+      catch (const IoError &e) // a plot comes after its results: a warning, no PNG
+        {
+          std::cerr << "warning: " << e.message() << " The plot " << png_path << " is not written.\n";
+          return false;
+        }
       const std::string cmd =
         "gnuplot " + quote(script_file.string()) + " > " + quote((dir / "log").string()) + " 2>&1";
       const int       status = std::system(cmd.c_str());
@@ -325,6 +365,15 @@ namespace wearlink::io
           ls << log.rdbuf();
           fs::remove(tmp_png, ec);
           std::cerr << "warning: gnuplot failed for " << png_path << ": " << ls.str() << "\n";
+          return false;
+        }
+      if (!png_is_complete(tmp_png))
+        {
+          // As any plot gnuplot cannot draw: a warning and no PNG (plots come after the
+          // results they show, which are written whole), never a cut image in place.
+          fs::remove(tmp_png, ec);
+          std::cerr << "warning: gnuplot left the plot " << png_path
+                    << " incomplete, as it does when the disk is full or a write fails; it is not written\n";
           return false;
         }
       commit_external_file(tmp_png, png_path);

@@ -67,13 +67,14 @@ namespace wearlink::io
   read_run_surface(const std::string &run_directory, const std::string &joint, const analysis::WornSurface surface)
   {
     const std::string name = surface_name(surface);
-    if (!fs::is_directory(run_directory))
+    std::error_code   ec; // a name too long for the system: no such folder, not an exception
+    if (!fs::is_directory(run_directory, ec))
       throw InputError("The run folder '" + run_directory + "' does not exist or is not a directory.");
     RunSurface s;
     s.worn_file   = (fs::path(run_directory) / (name + "_" + joint + ".csv")).string();
     s.unworn_file = (fs::path(run_directory) / ("profiles_" + joint + ".csv")).string();
     for (const auto &file : {s.worn_file, s.unworn_file})
-      if (!fs::exists(file))
+      if (!fs::exists(file, ec))
         throw InputError("The run folder '" + run_directory + "' holds no " + fs::path(file).filename().string() +
                          ": is it the folder of a finished wear run in which joint '" + joint + "' wears? Its worn " +
                          name + " profiles are of the joints: " + joints_in(run_directory, name) +

@@ -45,6 +45,41 @@ namespace wearlink::io
 
     /** Two measured angles closer than this [rad] after wrapping are the same point. */
     constexpr double same_angle = 1e-9;
+
+    /**
+     * The largest arc without a point that a profile file may leave [rad]: a quarter
+     * turn, twice the spacing of the coarsest profile (8 points, π/4 apart). A file that
+     * covers less describes part of a surface (a trace of one flank), and the resampling
+     * would bridge the rest with a straight line in r(ψ).
+     */
+    constexpr double largest_gap = numbers::pi / 2;
+
+    /** InputError if the points @p p (angles increasing) leave an arc wider than largest_gap. */
+    void
+    check_coverage(const ProfilePoints &p, const std::string &file)
+    {
+      const std::size_t n = p.angles.size();
+      if (n == 0)
+        return;
+      std::size_t after = 0; // the point after the widest gap (0: the gap wraps round)
+      double      gap   = p.angles.front() + numbers::two_pi - p.angles.back();
+      for (std::size_t k = 1; k < n; ++k)
+        if (p.angles[k] - p.angles[k - 1] > gap)
+          {
+            gap   = p.angles[k] - p.angles[k - 1];
+            after = k;
+          }
+      if (!(gap > largest_gap))
+        return;
+      const std::size_t before = after == 0 ? n - 1 : after - 1;
+      throw InputError("In profile file '" + file + "', no point lies between line " + std::to_string(p.lines[before]) +
+                       " (" + format_number(p.angles[before], 6) + " rad) and line " + std::to_string(p.lines[after]) +
+                       " (" + format_number(p.angles[after], 6) + " rad" + (after == 0 ? " + 2π" : "") +
+                       "): " + format_number(gap, 4) +
+                       " rad of the circumference without a point, more than a quarter turn. A profile file "
+                       "describes the whole surface: give points all the way round (0 … 2π), at most a quarter "
+                       "turn apart.");
+    }
   } // namespace
 
   Profile
@@ -56,6 +91,7 @@ namespace wearlink::io
         throw InputError("In profile file '" + file + "' line " + std::to_string(p.lines[k]) +
                          ": angles must increase strictly (a profile that turns back "
                          "on itself is self-intersecting).");
+    check_coverage(p, file);
     return Profile::from_polar_points(p.angles, p.radii, n_points, "profile file '" + file + "'");
   }
 
@@ -107,6 +143,23 @@ namespace wearlink::io
       os << profile.angle(k) << ',' << profile[k] << '\n';
     f.commit();
   }
+  void
+  check_profile_radius(const ParameterReader &r,
+                       const std::string     &entry,
+                       const Profile         &profile,
+                       const double           nominal,
+                       const std::string     &nominal_entry)
+  {
+    const double mean = profile.mean_radius();
+    if (!(std::abs(mean - nominal) <= 0.5 * nominal))
+      r.fail(entry,
+             "the profile's mean radius is " + format_number(mean, 6) + " m, but the joint's " + nominal_entry +
+               " is " + format_number(nominal, 6) + " m; a worn surface lies within half its nominal radius of it",
+             "Profile files give radii in metres (angle_rad, radius_m): a file in millimetres is 1000 times too "
+             "large. Check the file, or the " +
+               nominal_entry + ".");
+  }
+
   void
   check_pin_inside_bore(const ParameterReader &r, const Profile &bore, const Profile &pin)
   {

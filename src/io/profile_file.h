@@ -20,7 +20,9 @@ namespace wearlink::io
    * Read @p file and resample it onto @p n_points uniform angles (Profile::from_polar_points;
    * n_points = 0 keeps the file's count, which then must be uniformly spaced). InputError
    * naming the file and line for a missing file, a field that is not a finite number, a
-   * radius ≤ 0, angles that do not increase strictly, fewer than 8 points.
+   * radius ≤ 0, angles that do not increase strictly, fewer than 8 points, and points
+   * that leave more than a quarter turn of the circumference without a point (the
+   * radius there would be invented by the resampling).
    */
   Profile
   read_profile_csv(const std::string &file, unsigned int n_points = 0);
@@ -45,6 +47,20 @@ namespace wearlink::io
    */
   void
   check_pin_inside_bore(const ParameterReader &r, const Profile &bore, const Profile &pin);
+
+  /**
+   * A profile file describes the surface of its joint: its mean radius lies within half
+   * the @p nominal radius (entry @p nominal_entry) of it. Wear moves a surface by
+   * micrometres, at most a few clearances; a file in millimetres is 1000 times too large
+   * and would leave the pin rattling in a bore metres wide, never touching it.
+   * ParameterReader::fail of @p r for @p entry otherwise.
+   */
+  void
+  check_profile_radius(const ParameterReader &r,
+                       const std::string     &entry,
+                       const Profile         &profile,
+                       double                 nominal,
+                       const std::string     &nominal_entry);
 
   /** Write @p profile as "angle_rad,radius_m" rows (17 digits, atomically), after a '#' comment. */
   void

@@ -13,6 +13,7 @@
 #include "analysis/input_distributions.h"
 #include "analysis/life_criteria.h"
 #include "base/parameters.h"
+#include "base/validity_warnings.h"
 #include "contact/clearance_joint.h"
 #include "mbs/mechanism.h"
 #include "mbs/simulation.h"
@@ -67,6 +68,13 @@ namespace wearlink::io
     analysis::LifeSettings life;
     /** The "Uncertainty" section: the uncertain inputs of an ensemble (io/uncertainty_parameters.h). */
     analysis::UncertaintySettings uncertainty;
+
+    /**
+     * Entries that are valid one by one but implausible (a friction coefficient above 1,
+     * a wear cycle that is no whole number of driving periods): reported with the
+     * validity warnings of every run of the scene (summary.json `warnings`, stderr).
+     */
+    ValidityWarnings warnings;
 
     /** The parsed parameters (for echoing the effective scene next to the results). */
     std::unique_ptr<dealii::ParameterHandler> parameters;

@@ -5,6 +5,7 @@
 #include "base/numbers.h"
 #include "base/text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -99,6 +100,26 @@ namespace wearlink::io
     if (scene.wear_loop.cycle_period > 0)
       return scene.wear_loop.cycle_period;
     return driving_period(scene);
+  }
+
+  void
+  check_cycle_period(const Scene &scene, ValidityWarnings &warnings)
+  {
+    const double cycle   = scene.wear_loop.cycle_period;
+    const double driving = driving_period_if_known(scene);
+    if (scene.wear.empty() || !(cycle > 0) || !(driving > 0))
+      return;
+    const double ratio = cycle / driving;
+    const double whole = std::max(1.0, std::round(ratio));
+    warnings.check({"Wear/Cycle period: distance from a whole number of driving periods",
+                    std::abs(ratio - whole),
+                    1e-3,
+                    "periods",
+                    "Cycle period " + format_number(cycle, 6) + " s is " + format_number(ratio, 6) +
+                      " driving periods of " + format_number(driving, 6) + " s",
+                    "each wear cycle covers another part of the revolution, and the wear per cycle is that of a "
+                    "fraction of a revolution; set Cycle period = 0 (the driving period) or a whole number of "
+                    "driving periods"});
   }
 
   int

@@ -31,6 +31,16 @@ namespace wearlink::io
   double
   cycle_period(const Scene &scene);
 
+  /**
+   * Warn (into @p warnings) when a wear scene's Wear/Cycle period is given and the
+   * driving period is known, but the cycle is no whole number of driving periods (to
+   * 1e-3 of a period): each wear cycle would then cover another part of the revolution,
+   * and the wear of a "cycle" would be that of a fraction of a revolution. A warning,
+   * not an error: short cycles are a way to try a scene quickly.
+   */
+  void
+  check_cycle_period(const Scene &scene, ValidityWarnings &warnings);
+
   /** Index of Wear/Response body (default: the last body); InputError if unknown. */
   int
   response_body(const Scene &scene);

@@ -13,6 +13,7 @@
 #include "io/profile_file.h"
 #include "io/scene.h"
 #include "io/scene_declarations.h"
+#include "io/scene_periods.h"
 #include "io/uncertainty_parameters.h"
 #include "mbs/assembly.h"
 #include "mbs/mbs_parameters.h"
@@ -134,12 +135,19 @@ namespace wearlink::io
         if (f.empty())
           return Profile::round(radius, size.n_areas);
         const std::string path = resolve_relative(r.file(), f);
-        if (!std::filesystem::exists(path))
-          r.fail(entry, "the file '" + path + "' does not exist");
+        std::error_code   ec; // a name too long for the system is a name of no file, not an exception
+        if (!std::filesystem::exists(path, ec))
+          r.fail(entry, "the file '" + path + "' does not exist" + (ec ? " (" + ec.message() + ")" : std::string()));
         return io::read_profile_csv(path, size.n_areas);
       };
       d.geometry.bore = profile("Bore profile file", size.bore_radius);
       d.geometry.pin  = profile("Pin profile file", pin_radius);
+      io::check_profile_radius(r, "Bore profile file", d.geometry.bore, size.bore_radius, "Bore radius");
+      io::check_profile_radius(r,
+                               "Pin profile file",
+                               d.geometry.pin,
+                               pin_radius,
+                               "pin radius (Bore radius − Radial clearance)");
       if (!(d.geometry.bore.mean_radius() > d.geometry.pin.mean_radius()))
         r.fail_section("the pin profile (mean radius " + format_number(d.geometry.pin.mean_radius()) +
                        " m) is not smaller than the bore profile (mean radius " +
@@ -176,7 +184,10 @@ namespace wearlink::io
       auto normal        = contact::normal_force_laws().create(d.normal_force_law, r, "Normal force law");
       std::unique_ptr<contact::FrictionLaw> friction;
       if (r.get("Friction law") != "none")
-        friction = contact::friction_laws().create(r.get("Friction law"), r, "Friction law");
+        {
+          friction = contact::friction_laws().create(r.get("Friction law"), r, "Friction law");
+          contact::check_friction_coefficient(joint, friction->coefficient(), scene.warnings);
+        }
 
       // Assembly pins the pin centre at the initial eccentricity (bushing frame).
       const mbs::Vec2 e0 = vec(r.get_point("Initial eccentricity"));
@@ -357,6 +368,7 @@ namespace wearlink::io
     scene.analyses    = parse_analyses(prm, scene);
     scene.life        = parse_life(prm, scene);
     scene.uncertainty = parse_uncertainty(prm, file, inactive);
+    check_cycle_period(scene, scene.warnings);
     return scene;
   }
 

@@ -66,6 +66,12 @@ namespace wearlink::mbs
     interpolate((time - t_prev) / hs, out);
   }
 
+  namespace
+  {
+    /** A relative tolerance at least this large is loose already [-] (see trial_step). */
+    constexpr double loose_relative_tolerance = 1e-2;
+  } // namespace
+
   double
   AdaptiveRungeKutta::trial_step(const double t_limit, const char *method) const
   {
@@ -76,8 +82,17 @@ namespace wearlink::mbs
       {
         std::ostringstream os;
         os << method << ": the step size fell to " << hs << " s at t = " << t << " s (minimum " << settings.min_step
-           << " s); the error tolerance cannot be met there. Loosen "
-              "Integrator/Relative tolerance or look for a singular position.";
+           << " s); the error tolerance cannot be met there. ";
+        // A relative tolerance of 1 % or more is loose already: more would not help, and
+        // the error of a state near zero is measured against its absolute tolerance.
+        if (settings.relative_tolerance < loose_relative_tolerance)
+          os << "Loosen Integrator/Relative tolerance (now " << settings.relative_tolerance
+             << ") or look for a singular position.";
+        else
+          os << "Integrator/Relative tolerance is " << settings.relative_tolerance
+             << " already, so loosening it will not help: look for a singular position (the joint geometry, the "
+                "drivers) or a contact stiffer than any step can follow (the elastic moduli), or loosen the "
+                "absolute Integrator/Position tolerance and Velocity tolerance.";
         throw NumericalError(os.str());
       }
     return hs;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace wearlink::mbs
@@ -366,6 +367,38 @@ namespace wearlink::mbs
       }
   }
 
+  namespace
+  {
+    /**
+     * The body whose mass (or moment of inertia, by @p of) lies furthest from the
+     * others', if the bodies' values span more than 1e10: S = Φq M⁻¹ Φqᵀ then mixes
+     * terms ten orders of magnitude apart, and its pivots drown in rounding (doubles
+     * carry 16 digits). "" otherwise.
+     */
+    std::string
+    disparate_body(const std::vector<Body> &bodies, double Body::*of, const std::string &entry, const char *unit)
+    {
+      if (bodies.size() < 2)
+        return "";
+      const auto range =
+        std::minmax_element(bodies.begin(), bodies.end(), [of](const Body &x, const Body &y) { return x.*of < y.*of; });
+      const Body &lo = *range.first, &hi = *range.second;
+      if (!(hi.*of > 1e10 * lo.*of))
+        return "";
+      // The odd one out: the lightest if the others are near the heaviest, else the heaviest.
+      double sum_log = 0;
+      for (const auto &b : bodies)
+        sum_log += std::log10(b.*of);
+      const double       mean_log = sum_log / static_cast<double>(bodies.size());
+      const Body        &odd      = mean_log - std::log10(lo.*of) > std::log10(hi.*of) - mean_log ? lo : hi;
+      std::ostringstream os;
+      os << " The bodies' " << entry << " values span " << std::setprecision(3) << hi.*of / lo.*of << " (Body "
+         << odd.name << ": " << odd.*of << " " << unit << "), beyond what double precision can solve with: check 'Body "
+         << odd.name << "/" << entry << "'.";
+      return os.str();
+    }
+  } // namespace
+
   void
   Mechanism::throw_rank_loss(const double t) const
   {
@@ -373,7 +406,9 @@ namespace wearlink::mbs
     os << "The constraint Jacobian lost rank at t = " << t
        << " s (the mechanism locks up or passes a singular position); the "
           "equations of motion cannot be solved. Check the joint geometry and the "
-          "drivers.";
+          "drivers."
+       << disparate_body(bodies, &Body::mass, "Mass", "kg")
+       << disparate_body(bodies, &Body::inertia, "Moment of inertia", "kg m²");
     throw NumericalError(os.str());
   }
 

@@ -172,6 +172,8 @@ namespace wearlink::fuzz
     double        timeout_s     = 60;
     std::uint64_t address_space = std::uint64_t(6) << 30;   ///< bytes (a huge allocation fails, not the machine)
     std::uint64_t file_size     = std::uint64_t(512) << 20; ///< bytes per file written
+    int           stop_signal   = 0; ///< sent to the program (not its group) after stop_after_s; 0: none
+    double        stop_after_s  = 0; ///< [s]
   };
 
   struct Outcome
@@ -180,6 +182,7 @@ namespace wearlink::fuzz
     int         exit_status = -1;    ///< if exited
     int         signal      = 0;     ///< if killed by a signal (and not by the timeout)
     bool        timed_out   = false;
+    bool        stopped     = false; ///< Limits::stop_signal was sent
     double      wall_s      = 0;
     std::string output; ///< stdout and stderr together
 

@@ -22,6 +22,19 @@
 // violation_warning_floor_m),
 // summary.json must say so in its `warnings` list.
 //
+// faults: case I of seed S is a shipped scene, run shortened, under one fault of its
+// environment: a full disk (every file limited to 2 kB … 4 MB, RLIMIT_FSIZE: a write
+// beyond fails as on a full disk), or SIGKILL, SIGTERM or SIGHUP at a random instant
+// (0.05 … 2 s) followed by its resumption (`--resume` from the checkpoint a wear run
+// left, else the run again with --overwrite). The faulted run must end with 0 or 4 (a
+// full disk; on 4 a message that says to free space) or by its signal (128 + N for
+// SIGTERM and SIGHUP), never leave its lock, and — except after SIGKILL, whose partial
+// files the next run removes — never a partial file; the resumed run must succeed as a
+// mutant's run does. A read-only folder is not among the faults: the campaign runs as
+// root, whom no permission stops. Open MPI's start-up (`contact`) keeps its store in
+// memory (PMIX_MCA_gds=hash): its shared-memory files would fall under the file-size
+// limit too, which a full output disk does not reach.
+//
 // Every failure prints the seed and index, the mutations, the tail of the program's
 // output, and the folder it was saved to (FINDINGS/<campaign>-s<S>-i<I>/: the mutated
 // files, the program's log and outputs, and rerun.sh, which reruns it from that
@@ -30,7 +43,9 @@
 #include "fuzz.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -59,7 +74,7 @@ namespace
   usage(const std::string &why)
   {
     std::cerr << "wearlink_fuzz: " << why << "\n"
-              << "usage: wearlink_fuzz mutants|scenes --binary WEARLINK --source SRC --work DIR\n"
+              << "usage: wearlink_fuzz mutants|scenes|faults --binary WEARLINK --source SRC --work DIR\n"
                  "         [--seed S] [--first I] [--count N] [--timeout SECONDS] [--findings DIR] [--verbose 1]\n";
     std::exit(2);
   }
@@ -71,7 +86,7 @@ namespace
       usage("no campaign");
     Options o;
     o.campaign = argv[1];
-    if (o.campaign != "mutants" && o.campaign != "scenes")
+    if (o.campaign != "mutants" && o.campaign != "scenes" && o.campaign != "faults")
       usage("unknown campaign '" + o.campaign + "'");
     for (int i = 2; i < argc; ++i)
       {
@@ -496,6 +511,168 @@ namespace
               << " m (a warning required) in " << over_factor << "\n";
     return tally.failures.empty() ? 0 : 1;
   }
+
+  // ---- campaign: environment faults -------------------------------------------------------
+
+  /** One fault of the environment: a file-size limit (a full disk) or a signal at an instant. */
+  struct Fault
+  {
+    std::string   name;
+    std::uint64_t file_size = 0; ///< bytes per file; 0: the campaign's default limit
+    int           signal    = 0;
+    double        instant   = 0; ///< [s] after the start
+  };
+
+  Fault
+  draw_fault(Random &r)
+  {
+    Fault             f;
+    const std::size_t kind = r.below(4);
+    if (kind == 0)
+      {
+        f.file_size = static_cast<std::uint64_t>(r.log_uniform(2e3, 4e6));
+        f.name      = "full disk at " + num(static_cast<double>(f.file_size) / 1e3) + " kB a file";
+        return f;
+      }
+    f.signal  = kind == 1 ? SIGKILL : (kind == 2 ? SIGTERM : SIGHUP);
+    f.instant = r.uniform(0.05, 2.0);
+    f.name = std::string(kind == 1 ? "SIGKILL" : (kind == 2 ? "SIGTERM" : "SIGHUP")) + " at " + num(f.instant) + " s";
+    return f;
+  }
+
+  /** The problems of a run under @p f beyond check_run's (exit status, lock, message). */
+  std::vector<std::string>
+  fault_problems(const Fault &f, const Outcome &outcome, const std::string &out)
+  {
+    std::vector<std::string> p;
+    const bool               killed = outcome.stopped && f.signal == SIGKILL && !outcome.exited;
+    if (!killed && fs::exists(fs::path(out) / ".wearlink.lock"))
+      p.push_back("the lock file was left behind");
+    if (f.file_size > 0 && outcome.exited && outcome.exit_status != 0 && outcome.exit_status != 4)
+      p.push_back("a full disk ended with " + outcome.status_text(0) + ", not 0 or 4");
+    if (f.file_size > 0 && outcome.exited && outcome.exit_status == 4 &&
+        outcome.output.find("Free some space") == std::string::npos)
+      p.push_back("exit 4 without saying to free some space");
+    if (f.signal != 0 && f.signal != SIGKILL && outcome.stopped && outcome.exited && outcome.exit_status != 0 &&
+        outcome.exit_status != 128 + f.signal)
+      p.push_back("stopped by signal " + std::to_string(f.signal) + " but ended with " + outcome.status_text(0));
+    return p;
+  }
+
+  /** The command line of @p scene into "out" (@p resume: --resume out; else --output out [--overwrite]). */
+  std::vector<std::string>
+  fault_args(const Options &o, const BaseScene &scene, const bool resume, const bool overwrite)
+  {
+    std::vector<std::string> args = {o.binary, scene.command, scene.file};
+    if (resume)
+      args.insert(args.end(), {"--resume", "out"});
+    else
+      args.insert(args.end(), {"--output", "out"});
+    if (overwrite)
+      args.push_back("--overwrite");
+    if (scene.command == "run")
+      args.push_back("--quiet");
+    for (const auto &x : scene.shortening)
+      args.insert(args.end(), {"--set", x});
+    return args;
+  }
+
+  /**
+   * Case @p i: the faulted run, checked, then (after a signal that stopped it) its
+   * resumption, checked as a mutant's run. Problems into @p problems; returns the
+   * status text for the tally.
+   */
+  std::string
+  run_fault_case(const Options            &o,
+                 const BaseScene          &scene,
+                 const Fault              &f,
+                 const std::string        &dir,
+                 std::vector<std::string> &problems)
+  {
+    const std::vector<std::pair<std::string, std::string>> env    = {{"WEARLINK_CACHE_DIR",
+                                                                      (fs::path(o.work) / "cache").string()},
+                                                                     {"PMIX_MCA_gds", "hash"}};
+    const std::string                                      out    = (fs::path(dir) / "out").string();
+    Limits                                                 faulty = o.limits;
+    if (f.file_size > 0)
+      faulty.file_size = f.file_size;
+    faulty.stop_signal   = f.signal;
+    faulty.stop_after_s  = f.instant;
+    const Outcome  first = run_program(fault_args(o, scene, false, false), dir, env, dir + "/log.txt", faulty);
+    nlohmann::json summary;
+    const bool     stopped = first.stopped && !(first.exited && first.exit_status == 0);
+    if (!stopped)
+      problems = check_run(first, out, true, o.limits.timeout_s, summary);
+    else if (f.signal != SIGKILL)
+      for (const auto &p : partial_files(out))
+        problems.push_back("partial file left behind after the signal: " + p);
+    for (const auto &p : fault_problems(f, first, out))
+      problems.push_back(p);
+    if (!stopped)
+      return first.status_text(o.limits.timeout_s);
+    const bool    resume = scene.wear && scene.command == "run" && fs::exists(fs::path(out) / "checkpoint.json");
+    const Outcome again  = run_program(fault_args(o, scene, resume, !resume), dir, env, dir + "/log2.txt", o.limits);
+    for (const auto &p : check_run(again, out, true, o.limits.timeout_s, summary))
+      problems.push_back((resume ? "resumed: " : "rerun: ") + p);
+    if (again.exited && again.exit_status != 0)
+      problems.push_back((resume ? "resumed: " : "rerun: ") + again.status_text(o.limits.timeout_s) + ": " +
+                         tail_lines(again.output, 2));
+    return first.status_text(o.limits.timeout_s) + (resume ? ", resumed " : ", rerun ") +
+           again.status_text(o.limits.timeout_s);
+  }
+
+  int
+  run_faults(const Options &o, const Tree &tree, const std::vector<BaseScene> &scenes)
+  {
+    // The files of params/ that are no scene of their own (measurements) fail as bad
+    // input with or without a fault: the faults go to the scenes and contact cases.
+    std::vector<BaseScene> runnable;
+    for (const auto &s : scenes)
+      if (s.command == "contact" || flatten(tree, s.file).count("Mechanism/Bodies") != 0)
+        runnable.push_back(s);
+    Tally tally;
+    for (std::uint64_t i = o.first; i < o.first + o.count; ++i)
+      {
+        Random            random(o.seed, 3, i);
+        const BaseScene  &scene = random.pick(runnable);
+        const Fault       f     = draw_fault(random);
+        const std::string dir   = (fs::path(o.work) / ("fault-" + std::to_string(i))).string();
+        fs::remove_all(dir);
+        write_tree(tree, dir);
+        std::vector<std::string> problems;
+        const auto               start  = std::chrono::steady_clock::now();
+        const std::string        status = run_fault_case(o, scene, f, dir, problems);
+        const double             wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        tally.add(scene.name + " (" + scene.command + ")",
+                  f.name.substr(0, f.name.find(' ')) + ": " + status.substr(0, status.find(',')),
+                  wall,
+                  "fault " + std::to_string(i));
+        if (o.verbose)
+          std::cout << "fault " << i << "  " << scene.name << "  " << f.name << "  " << status << "  " << fixed(wall)
+                    << " s\n"
+                    << std::flush;
+        if (!problems.empty())
+          {
+            std::ostringstream h;
+            h << "FAIL fault seed " << o.seed << " index " << i << ": scene " << scene.name << ", " << f.name << ", "
+              << status << "\n";
+            for (const auto &p : problems)
+              h << "  problem:  " << p << "\n";
+            const auto saved = save_finding(o,
+                                            "faults-s" + std::to_string(o.seed) + "-i" + std::to_string(i),
+                                            dir,
+                                            fault_args(o, scene, false, false),
+                                            h.str());
+            std::cout << h.str() << "  saved:    " << saved << "\n" << std::endl;
+            tally.failures.push_back("fault " + std::to_string(i) + " (" + scene.name + ", " + f.name +
+                                     "): " + problems.front());
+          }
+        fs::remove_all(dir);
+      }
+    tally.print("faults seed " + std::to_string(o.seed) + ", indices " + std::to_string(o.first) + "–" +
+                std::to_string(o.first + o.count - 1));
+    return tally.failures.empty() ? 0 : 1;
+  }
 } // namespace
 
 int
@@ -517,6 +694,8 @@ main(int argc, char **argv)
       for (const auto &s : scenes)
         std::cout << " " << s.name;
       std::cout << "\n" << std::endl;
+      if (o.campaign == "faults")
+        return run_faults(o, tree, scenes);
       return o.campaign == "mutants" ? run_mutants(o, tree, scenes) : run_scenes(o, tree, scenes);
     }
   catch (const std::exception &e)

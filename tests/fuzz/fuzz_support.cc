@@ -471,6 +471,11 @@ namespace wearlink::fuzz
         if (r < 0 && errno != EINTR)
           throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (limits.stop_signal != 0 && !o.stopped && elapsed > limits.stop_after_s)
+          {
+            ::kill(pid, limits.stop_signal);
+            o.stopped = true;
+          }
         if (elapsed > limits.timeout_s)
           {
             ::kill(-pid, SIGKILL);

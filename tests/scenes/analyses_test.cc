@@ -493,4 +493,32 @@ TEST(Analyses, WearSceneComparesTheDynamicsBeforeAndAfterWear)
   EXPECT_EQ(bad.exit_status, 2) << bad.output;
   EXPECT_NE(bad.output.find("no_such_run"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/bad"));
+
+  // A body that is not in the runs: refused (it was a row of NaN), nothing written.
+  const auto nobody = wl::run_wearlink({"compare-dynamics",
+                                        dir + "/dynamics_before",
+                                        dir + "/dynamics_after",
+                                        "--bodies",
+                                        "nobody",
+                                        "--output",
+                                        dir + "/nobody"});
+  EXPECT_EQ(nobody.exit_status, 2) << nobody.output;
+  EXPECT_NE(nobody.output.find("--bodies: 'nobody' is not a body of the runs; their bodies are "), std::string::npos)
+    << nobody.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/nobody"));
+
+  // A run of another mechanism (the after run with its bodies renamed, as a slider-crank's
+  // differ from the nine-bar's): refused, not compared joint by joint under shared names.
+  const std::string other = dir + "/other_mechanism";
+  std::filesystem::copy(dir + "/dynamics_after", other, std::filesystem::copy_options::recursive);
+  Json renamed      = io::read_json_file(other + "/summary.json");
+  Json bodies       = Json::object();
+  bodies["crank"]   = renamed.at("bodies").begin().value();
+  renamed["bodies"] = bodies;
+  std::ofstream(other + "/summary.json") << renamed.dump(2);
+  const auto mixed =
+    wl::run_wearlink({"compare-dynamics", dir + "/dynamics_before", other, "--output", dir + "/mixed"});
+  EXPECT_EQ(mixed.exit_status, 2) << mixed.output;
+  EXPECT_NE(mixed.output.find("are of different mechanisms"), std::string::npos) << mixed.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/mixed"));
 }

@@ -227,3 +227,25 @@ TEST(Ensemble, OnTwoRanksALockedFolderStopsEveryRank)
     << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/member_00"));
 }
+
+// A plain run (no --ensemble) started on 2 ranks: every rank would run the same scene
+// into the same folder (rank 1 was refused "in use" by rank 0's lock, a message about a
+// folder, not about the launch). Each rank says at once that the command is serial; no
+// folder is written.
+TEST(Ensemble, APlainRunOnTwoRanksIsRefusedAsSerial)
+{
+  if (std::string(WEARLINK_MPIEXEC).empty())
+    GTEST_SKIP() << "no mpiexec";
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string dir = fresh_directory("plain_run_on_two_ranks") + "/out";
+  const auto        r   = run_wearlink_mpi(
+    2,
+    {"run", source_path("params/nine_bar_ideal.prm"), "--output", dir, "--quiet", "--set", "Simulation/End time=0.01"});
+  EXPECT_EQ(r.exit_status, 2) << r.output;
+  EXPECT_NE(r.output.find("`wearlink run` without `--ensemble` runs serially, but it was started on 2 MPI ranks"),
+            std::string::npos)
+    << r.output;
+  EXPECT_EQ(r.output.find("in use"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Nothing crashes, nothing is silently lost, on real scenes:
-//  - a checkpoint with a changed byte, cut short, with a state of another length, or
-//    written for another Title is refused with a message naming what is wrong (both
-//    values of a changed entry), and the output directory is left exactly as it was;
+//  - a checkpoint with a changed byte, cut short, with a state of another length or one
+//    edited off the mechanism's joints behind a valid checksum, or written for another
+//    Title is refused with a message naming what is wrong (both values of a changed
+//    entry), and the output directory is left exactly as it was;
 //  - a resumed run reports the whole run: its effect ledger equals the uninterrupted
 //    run's, its timings include the killed run's up to the checkpoint;
 //  - the program: a second run into a locked directory is refused naming the holder's
@@ -89,6 +90,11 @@ TEST(Wear, DamagedOrMismatchedCheckpointIsRefusedOutputsUntouched)
   flipped[original.size() / 2] ^= 0x04;
   std::string longer = original;
   longer.replace(longer.find("\"state\": ["), 10, "\"state\": [0.5, ");
+  // The first coordinate (crank1's x) edited to 1e300, the checksum made to match.
+  std::string far_away  = original;
+  const auto  first     = far_away.find("\"state\": [") + 10;
+  const auto  first_end = far_away.find_first_of(",]", first);
+  far_away.replace(first, first_end - first, "1e300");
   struct Case
   {
     std::string              text;
@@ -101,6 +107,9 @@ TEST(Wear, DamagedOrMismatchedCheckpointIsRefusedOutputsUntouched)
     {wearlink::testing::reseal_checkpoint(longer),
      {},
      "entries, the mechanism of the scene needs " + n_state + ". Resume with the scene"},
+    {wearlink::testing::reseal_checkpoint(far_away),
+     {},
+     "its state puts the bodies 1e+300 off their joints (constraint row "},
     {original,
      {"Title=Another title"},
      "'Title' is 'Nine-bar press, wearing clearance joints A and B (seed §4.2.1)' in the checkpoint and "

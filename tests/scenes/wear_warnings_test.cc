@@ -9,7 +9,12 @@
 //    reports the same `warnings` list as an uninterrupted run: the warnings raised
 //    before the checkpoint are kept in it (format version 6);
 //  - an adaptive run that ends at its Number of iterations short of its Target
-//    revolutions warns, one that reaches the target does not.
+//    revolutions warns, one that reaches the target does not;
+//  - entries valid one by one but implausible are warned about when the scene is read,
+//    and the warning reaches a run's summary.json and stderr: a friction coefficient
+//    above 1 (dry metal pairs 0.1 … 0.8), a Wear/Cycle period that is no whole number of
+//    the 0.5 s driving period (0.37 s, 1e-9 s); 1 s (two periods) and the shipped
+//    values are not warned about.
 #include "io/json_file.h"
 #include "scene_support.h"
 #include "wear/wear_state.h"
@@ -138,4 +143,82 @@ TEST(WearWarnings, AnAdaptiveRunShortOfItsTargetSaysSo)
   auto reached = adaptive;
   reached.insert(reached.end(), {"Wear/Number of iterations=2", "Wear/Target revolutions=25"});
   EXPECT_TRUE(containing(warnings_of(run_wear(reached, o).summary), "Target revolutions").empty());
+}
+
+TEST(SceneWarnings, ImplausibleEntriesAreWarnedAboutWhenTheSceneIsRead)
+{
+  const auto warned = [](const std::vector<std::string> &overrides, const std::string &text) {
+    const auto               s = wearlink::testing::scene("params/nine_bar_wear.prm", overrides);
+    std::vector<std::string> texts;
+    for (const auto &w : s.warnings.warnings())
+      texts.push_back(w.text());
+    return containing(texts, text);
+  };
+  EXPECT_TRUE(warned({}, "").empty()) << "the shipped scene is plausible";
+  const auto mu = warned({"Joint A/Clearance/modified-coulomb/Friction coefficient=10"}, "friction coefficient");
+  ASSERT_EQ(mu.size(), 1u);
+  EXPECT_NE(mu[0].find("joint A: Clearance friction coefficient 10 exceeds its limit 1 (dry metal pairs"),
+            std::string::npos)
+    << mu[0];
+  EXPECT_TRUE(warned({"Joint A/Clearance/modified-coulomb/Friction coefficient=0.8"}, "friction").empty());
+
+  const std::string cycle = "Wear/Cycle period: distance from a whole number of driving periods";
+  const auto        part  = warned({"Wear/Cycle period=0.37"}, cycle);
+  ASSERT_EQ(part.size(), 1u);
+  EXPECT_NE(part[0].find("0.26 periods exceeds its limit 0.001 periods (Cycle period 0.37 s is 0.74 driving "
+                         "periods of 0.5 s)"),
+            std::string::npos)
+    << part[0];
+  EXPECT_EQ(warned({"Wear/Cycle period=1e-9"}, cycle).size(), 1u) << "a cycle of no time at all";
+  EXPECT_TRUE(warned({"Wear/Cycle period=1"}, cycle).empty()) << "two whole revolutions";
+}
+
+TEST(SceneWarnings, AnImplausibleEntryReachesTheRunsSummaryAndStderr)
+{
+  const std::string dir = wearlink::testing::fresh_directory("scene_warning_run");
+  const auto        r   = wearlink::testing::run_wearlink({"run",
+                                                           wearlink::testing::source_path("params/nine_bar_clearance.prm"),
+                                                           "--output",
+                                                           dir,
+                                                           "--quiet",
+                                                           "--set",
+                                                           "Simulation/End time=0.01",
+                                                           "--set",
+                                                           "Joint B/Clearance/modified-coulomb/Friction coefficient=10"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto w = containing(warnings_of(io::read_json_file(dir + "/summary.json")), "joint B: Clearance friction");
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(r.output.find("[wearlink] warning: " + w[0]), std::string::npos) << r.output;
+}
+
+// `contact` under displacement control with an eccentricity equal to the radial
+// clearance (0.5 mm): the pin does not touch the bore, every force is 0. It ran and
+// reported 0 N without a word; now the load state is warned about, and the one that
+// pushes 10 µm into the bore is not.
+TEST(SceneWarnings, ContactEccentricityWithinTheClearanceIsWarned)
+{
+  const std::string dir = wearlink::testing::fresh_directory("contact_gap_warning");
+  const auto        r   = wearlink::testing::run_wearlink({"contact",
+                                                           wearlink::testing::source_path("params/pin_bushing.prm"),
+                                                           "--output",
+                                                           dir,
+                                                           "--set",
+                                                           "Loads/Control=displacement",
+                                                           "--set",
+                                                           "Loads/Eccentricities=0.5e-3, 0.51e-3",
+                                                           "--set",
+                                                           "FE model/Surface element size=1e-4",
+                                                           "--set",
+                                                           "FE model/Solvers=condensed",
+                                                           "--set",
+                                                           "Output/Write VTU=false"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto all = warnings_of(io::read_json_file(dir + "/summary.json"));
+  const auto gap = containing(all, "radial clearance left");
+  ASSERT_EQ(gap.size(), 1u) << io::read_json_file(dir + "/summary.json").at("warnings").dump(1);
+  EXPECT_NE(gap[0].find("load state 0 (eccentricity 0.0005 m): radial clearance left 0 m exceeds its limit"),
+            std::string::npos)
+    << gap[0];
+  EXPECT_NE(gap[0].find("the pin does not touch the bore: the contact force is 0"), std::string::npos) << gap[0];
+  EXPECT_NE(r.output.find("[wearlink] warning: " + gap[0]), std::string::npos) << r.output;
 }

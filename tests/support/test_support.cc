@@ -4,12 +4,14 @@
 #include "base/exceptions.h"
 
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -54,11 +56,23 @@ namespace wearlink::testing
 
   namespace
   {
+    /**
+     * Run @p command in a shell, its output collected. With @p file_size_limit > 0 the
+     * shell and what it starts inherit that RLIMIT_FSIZE (set only around popen).
+     */
     ProgramResult
-    run_shell(const std::string &command)
+    run_shell(const std::string &command, const std::size_t file_size_limit = 0)
     {
       ProgramResult r;
-      FILE         *pipe = ::popen((command + " 2>&1").c_str(), "r");
+      rlimit        own;
+      ::getrlimit(RLIMIT_FSIZE, &own);
+      if (file_size_limit > 0)
+        {
+          const rlimit limited = {file_size_limit, own.rlim_max};
+          ::setrlimit(RLIMIT_FSIZE, &limited);
+        }
+      FILE *pipe = ::popen((command + " 2>&1").c_str(), "r");
+      ::setrlimit(RLIMIT_FSIZE, &own);
       if (pipe == nullptr)
         throw std::runtime_error("cannot start " + command);
       std::array<char, 4096> buf;
@@ -84,6 +98,12 @@ namespace wearlink::testing
   run_wearlink(const std::vector<std::string> &args)
   {
     return run_shell(quoted_arguments(args));
+  }
+
+  ProgramResult
+  run_wearlink_with_file_size_limit(const std::size_t bytes, const std::vector<std::string> &args)
+  {
+    return run_shell(quoted_arguments(args), bytes);
   }
 
   ProgramResult
@@ -183,6 +203,7 @@ namespace wearlink::testing
       throw std::runtime_error("fork failed");
     if (pid == 0)
       {
+        ::signal(SIGHUP, SIG_DFL); // as started from a terminal, also under nohup
         const int fd = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (fd >= 0)
           {

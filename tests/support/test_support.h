@@ -4,6 +4,7 @@
 
 #include "base/json.h"
 
+#include <cstddef>
 #include <functional>
 #include <map>
 #include <string>
@@ -29,6 +30,14 @@ namespace wearlink::testing
   /** Run the wearlink executable with @p args (each one shell-quoted). */
   ProgramResult
   run_wearlink(const std::vector<std::string> &args);
+
+  /**
+   * Run the wearlink executable with every file it writes limited to @p bytes
+   * (RLIMIT_FSIZE): a write beyond fails with EFBIG as one on a full disk fails with
+   * ENOSPC — an injected write failure that needs no special file system.
+   */
+  ProgramResult
+  run_wearlink_with_file_size_limit(std::size_t bytes, const std::vector<std::string> &args);
 
   /**
    * Run the wearlink executable on @p n_ranks MPI ranks (mpiexec found by CMake's
@@ -67,7 +76,7 @@ namespace wearlink::testing
 
   /**
    * Start the wearlink executable with @p args in the background (output into
-   * @p log_file); returns its pid.
+   * @p log_file; SIGHUP at its default, as from a terminal); returns its pid.
    */
   int
   start_wearlink(const std::vector<std::string> &args, const std::string &log_file);

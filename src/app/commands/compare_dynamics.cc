@@ -6,6 +6,7 @@
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "base/text.h"
 #include "io/analyses_parameters.h"
 #include "io/json_file.h"
 #include "io/output_names.h"
@@ -13,6 +14,7 @@
 #include "workflows/compare/dynamics_comparison.h"
 #include "workflows/run/analyses.h"
 
+#include <algorithm>
 #include <iostream>
 
 namespace wearlink::app
@@ -55,8 +57,9 @@ Writes into DIR (default output/compare_dynamics), each file atomically:
   --published TEXT   published exponents printed next to ours, "CHANNEL: BEFORE AFTER, ..."
   --published-note TEXT   their source and units
 
-Exit status: 0 success, 2 bad input (missing directory, a run without analyses, a
-channel not recorded in both, a delay below the sample interval; also: output directory
+Exit status: 0 success, 2 bad input (missing directory, a run without analyses, runs
+of different mechanisms, a body not in the runs, a channel not recorded in both, a
+delay below the sample interval; also: output directory
 in use, earlier comparison's files), 4 an output that cannot be written or memory that
 ran out, 1 an internal error (see `wearlink --help`).
 )";
@@ -68,6 +71,48 @@ ran out, 1 an internal error (see `wearlink --help`).
       r.run     = io::read_recorded_run(dir, label);
       r.summary = io::read_json_file(dir + "/" + io::outputs::summary);
       return r;
+    }
+
+    /** The names of the moving bodies of a run's summary.json ("bodies"), sorted. */
+    std::vector<std::string>
+    body_names(const Json &summary)
+    {
+      std::vector<std::string> names;
+      if (summary.is_object() && summary.contains("bodies") && summary.at("bodies").is_object())
+        for (const auto &[name, value] : summary.at("bodies").items())
+          names.push_back(name);
+      std::sort(names.begin(), names.end());
+      return names;
+    }
+
+    /**
+     * The two runs must be of one mechanism: the same moving bodies. Runs of two
+     * mechanisms share at most a joint's name ("B"), and their "before/after" figures
+     * would compare unrelated motions.
+     */
+    void
+    check_same_mechanism(const workflows::ComparedRun   &before,
+                         const workflows::ComparedRun   &after,
+                         const std::vector<std::string> &dirs)
+    {
+      const auto b = body_names(before.summary), a = body_names(after.summary);
+      if (b != a)
+        throw InputError("The runs in '" + dirs[0] + "' and '" + dirs[1] +
+                         "' are of different mechanisms: the bodies of the first are " + join(b, ", ") +
+                         ", those of the second " + join(a, ", ") +
+                         ". compare-dynamics compares one mechanism before and after wear; give two runs of "
+                         "the same scene (fresh and worn profiles).");
+    }
+
+    /** Every name of --bodies must be a body of the runs (InputError naming those there are). */
+    void
+    check_bodies(const std::vector<std::string> &asked, const Json &summary)
+    {
+      const auto names = body_names(summary);
+      for (const auto &b : asked)
+        if (std::find(names.begin(), names.end(), b) == names.end())
+          throw InputError("--bodies: '" + b + "' is not a body of the runs; their bodies are " + join(names, ", ") +
+                           ".");
     }
 
     int
@@ -95,6 +140,7 @@ ran out, 1 an internal error (see `wearlink --help`).
         a));
       workflows::ComparedRun before  = read_run(a.positional[0], "before: " + a.positional[0]);
       workflows::ComparedRun after   = read_run(a.positional[1], "after: " + a.positional[1]);
+      check_same_mechanism(before, after, a.positional);
 
       workflows::DynamicsComparisonSettings s;
       // Joints: the clearance joints whose journal-centre channels both runs recorded.
@@ -143,7 +189,8 @@ ran out, 1 an internal error (see `wearlink --help`).
               throw InputError("--scan: delays must be > 0 s, given '" + v + "'.");
             s.delay_scan.push_back(tau);
           }
-      s.bodies         = a.list("--bodies");
+      s.bodies = a.list("--bodies");
+      check_bodies(s.bodies, before.summary);
       s.published      = io::parse_published_exponents(a.value("--published", ""), "--published");
       s.published_note = a.value("--published-note", "");
 

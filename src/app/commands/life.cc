@@ -159,6 +159,8 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
           ensemble_request(a); // a bad value is refused before anything runs
           return run_life_ensemble(file, a);
         }
+      refuse_several_ranks("life` without `--ensemble",
+                           "add --ensemble N to run N perturbed members of the scene over the ranks");
 
       workflows::LifeRunOptions o;
       o.resume           = a.has("--resume");

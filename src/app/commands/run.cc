@@ -88,7 +88,7 @@ earlier run (summary.json, checkpoint.json, time_series.csv, ...) is refused unl
   --overwrite         the earlier run's files are removed first (only the names a run
                       writes, listed above, and its sub-folders; other files are kept)
 or --resume continues it. Temporary files (".NAME.partial-PID") of a run that was
-killed are removed at the next start. SIGINT/SIGTERM stop a run: its temporary files
+killed are removed at the next start. SIGINT/SIGTERM/SIGHUP stop a run: its temporary files
 are removed, finished files and the last checkpoint are kept (exit status 128 + signal;
 a second signal stops at once).
 
@@ -107,7 +107,7 @@ Options:
 
 Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
 3 numerical failure, 4 an output that cannot be written (disk full, I/O error) or
-memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
+memory that ran out, 130 / 143 / 129 stopped by SIGINT / SIGTERM / SIGHUP, 1 an internal error
 (see `wearlink --help`).
 )" + io::outputs::listing(io::outputs::run());
 
@@ -261,6 +261,7 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
                     << scene.mechanism->n_constraint_equations() << " constraint equations, "
                     << scene.clearance_joints.size() << " clearance joints; assembles at t = " << scene.start_time
                     << " s.\n";
+          scene.warnings.print(std::cerr);
           return 0;
         }
 
@@ -269,6 +270,8 @@ memory that ran out, 130 / 143 stopped by SIGINT / SIGTERM, 1 an internal error
           ensemble_request(a); // a bad value is refused before anything runs
           return run_ensemble_scene(file, a, workflows::has_wear(scene));
         }
+      refuse_several_ranks("run` without `--ensemble",
+                           "add --ensemble N to run N perturbed members of the scene over the ranks");
       if (workflows::has_wear(scene) || a.has("--resume"))
         return run_wear_scene(scene, file, a);
       return run_plain_scene(scene, file, a);

@@ -455,7 +455,10 @@ namespace wearlink::workflows
                                           std::pair<std::string, std::string>{"after", se->failure_after}})
         if (!failure.empty())
           md << "The two-trajectory run " << when << " wear gave no exponent: " << failure << "\n";
-      csv << "state,two-trajectory,,," << se->before << ',' << se->after << ',' << ratio << ",,,1,1,,\n";
+      // A ratio of two zero exponents (no renormalization within the run) is undefined:
+      // its cell stays empty, as a table of numbers holds no NaN.
+      csv << "state,two-trajectory,,," << se->before << ',' << se->after << ','
+          << (std::isfinite(ratio) ? format_number(ratio, 8) : std::string()) << ",,,1,1,,\n";
       Json r                          = Json::object();
       r["channel"]                    = "state";
       r["method"]                     = "two-trajectory";

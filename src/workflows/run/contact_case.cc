@@ -307,10 +307,11 @@ namespace wearlink::workflows
                     c.run_condensed ? fe::SolverKind::condensed : fe::SolverKind::reference,
                     run.root ? out + "/fields_" + std::to_string(k) + ".vtu" : std::string());
 
-    summary["ledger"]               = ledger_json();
-    summary["mpi_ranks"]            = run.n_ranks;
-    const ValidityWarnings warnings = contact_case_warnings(summary["hertz"]);
-    summary["warnings"]             = warnings.json();
+    summary["ledger"]         = ledger_json();
+    summary["mpi_ranks"]      = run.n_ranks;
+    ValidityWarnings warnings = c.warnings; // the implausible load states first
+    warnings.merge(contact_case_warnings(summary["hertz"]));
+    summary["warnings"] = warnings.json();
     if (run.root)
       {
         write_file_atomically(out + "/" + io::outputs::summary, summary.dump(2) + "\n");

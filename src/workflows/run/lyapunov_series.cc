@@ -19,9 +19,6 @@ namespace wearlink::workflows
   {
     using namespace wearlink::analysis;
 
-    /** Fewest samples the command accepts; the methods may need more (they say so). */
-    constexpr std::size_t min_series_length = 100;
-
     std::string
     safe_name(const std::string &s)
     {
@@ -142,9 +139,9 @@ namespace wearlink::workflows
     LyapunovSettings    settings  = request.settings;
     std::string         dt_source = settings.sample_interval ? "--dt" : "none: exponent per sample";
     const io::CsvSeries series    = io::read_csv_column(file, column);
-    if (series.values.size() < min_series_length)
+    if (series.values.size() < min_lyapunov_samples)
       throw InputError("The column '" + column + "' of '" + file + "' has " + std::to_string(series.values.size()) +
-                       " samples; the Lyapunov exponent needs at least " + std::to_string(min_series_length) +
+                       " samples; the Lyapunov exponent needs at least " + std::to_string(min_lyapunov_samples) +
                        " (in practice thousands).");
     if (!settings.sample_interval && !series.time_column.empty())
       {

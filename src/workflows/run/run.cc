@@ -62,7 +62,7 @@ namespace wearlink::workflows
     class Recorder : public mbs::StepObserver
     {
     public:
-      Recorder(io::Scene &scene, std::ostream *csv, double interval, bool progress)
+      Recorder(io::Scene &scene, AtomicFile *csv, double interval, bool progress)
         : scene(scene)
         , mech(*scene.mechanism)
         , csv(csv)
@@ -282,7 +282,7 @@ namespace wearlink::workflows
       void
       write_header()
       {
-        auto       &os      = *csv;
+        auto       &os      = csv->stream();
         const auto  columns = time_series_columns(scene);
         const char *sep     = "";
         for (const auto &c : columns)
@@ -296,7 +296,7 @@ namespace wearlink::workflows
       void
       sample(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, const Eigen::VectorXd &lambda)
       {
-        auto      &os = *csv;
+        auto      &os = csv->stream();
         const auto n  = mech.n_coordinates();
         os << t;
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
@@ -323,11 +323,12 @@ namespace wearlink::workflows
         const auto z = 2 * n;
         os << ',' << mech.kinetic_energy(y.data() + n) << ',' << mech.potential_energy(y.data(), y.data() + n) << ','
            << y[z + Q::reaction_work] << ',' << y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation] << '\n';
+        csv->throw_if_failed(); // a full disk stops the run here, not at its end
       }
 
       io::Scene                            &scene;
       mbs::Mechanism                       &mech;
-      std::ostream                         *csv;
+      AtomicFile                           *csv;
       std::vector<double>                   trig; ///< per step: the bodies' (cos θ, sin θ)
       double                                interval;
       bool                                  progress;
@@ -419,7 +420,7 @@ namespace wearlink::workflows
   ValidityWarnings
   run_validity_warnings(const io::Scene &scene, const Json &summary)
   {
-    ValidityWarnings w;
+    ValidityWarnings w = scene.warnings; // the implausible entries first
     integrator_warnings(scene, summary, w);
     for (const auto &[name, joint] : summary.at("clearance_joints").items())
       {
@@ -485,14 +486,14 @@ namespace wearlink::workflows
   } // namespace
 
   IntegratedRun
-  integrate_scene(io::Scene &scene, const RunOptions &options, const std::function<std::ostream *()> &time_series)
+  integrate_scene(io::Scene &scene, const RunOptions &options, const std::function<AtomicFile *()> &time_series)
   {
     const auto      wall_start = std::chrono::steady_clock::now();
     Eigen::VectorXd q0, v0;
     if (options.initial_state == nullptr)
       assemble_scene(scene, q0, v0);
-    const double  end_time = std::isnan(options.end_time) ? scene.end_time : options.end_time;
-    std::ostream *csv      = time_series ? time_series() : nullptr;
+    const double end_time = std::isnan(options.end_time) ? scene.end_time : options.end_time;
+    AtomicFile  *csv      = time_series ? time_series() : nullptr;
 
     mbs::Simulation sim(*scene.mechanism, scene.simulation);
     if (options.initial_state != nullptr)
@@ -548,12 +549,12 @@ namespace wearlink::workflows
     std::unique_ptr<AtomicFile> csv;
     // The folder and the time series are made after assembly: a scene that cannot be
     // assembled leaves nothing behind.
-    const auto open_time_series = [&]() -> std::ostream * {
+    const auto open_time_series = [&]() -> AtomicFile * {
       make_output_directory(options.output_directory);
       if (!scene.write_time_series)
         return nullptr;
       csv = std::make_unique<AtomicFile>(options.output_directory + "/" + io::outputs::time_series);
-      return &csv->stream();
+      return csv.get();
     };
     const IntegratedRun run = integrate_scene(scene, options, open_time_series);
     write_run_files(scene, options, run.summary, run.warnings, csv.get(), files_start);

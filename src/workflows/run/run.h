@@ -7,6 +7,7 @@
 #pragma once
 
 #include "analysis/recorded_run.h"
+#include "base/atomic_file.h"
 #include "base/json.h"
 #include "base/validity_warnings.h"
 #include "io/scene.h"
@@ -84,7 +85,7 @@ namespace wearlink::workflows
    * NumericalError for a failure of the numerics.
    */
   IntegratedRun
-  integrate_scene(io::Scene &scene, const RunOptions &options, const std::function<std::ostream *()> &time_series = {});
+  integrate_scene(io::Scene &scene, const RunOptions &options, const std::function<AtomicFile *()> &time_series = {});
 
   /**
    * A run of @p scene from its start to its end time: integrate_scene(), then, if
@@ -99,7 +100,8 @@ namespace wearlink::workflows
    * penetration beyond 20 % of a joint's radial clearance, a constraint violation beyond
    * 1000 × the position tolerance (at least 1 µm), an energy balance off by more than
    * the integrator promises, an rk4 step above 1/100 of the driving period, evaluations
-   * of a contact-law table beyond its largest load.
+   * of a contact-law table beyond its largest load; after the scene's own warnings of
+   * implausible entries (io::Scene::warnings).
    */
   ValidityWarnings
   run_validity_warnings(const io::Scene &scene, const Json &summary);

@@ -44,7 +44,9 @@ namespace wearlink::workflows
             prm.enter_subsection(s);
           try
             {
-              prm.get(entry);
+              // get() of an undeclared entry only asserts in a debug build of deal.II and
+              // returns "" in a release build; set() throws in both.
+              prm.set(entry, prm.get(entry));
             }
           catch (const dealii::ExceptionBase &)
             {

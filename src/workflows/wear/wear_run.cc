@@ -209,6 +209,35 @@ namespace wearlink::workflows
     }
 
     /**
+     * The state of a checkpoint must be one the mechanism can be in: finite, with its
+     * bodies on their joints (largest |Φ| at most a millimetre, far above what a run's
+     * constraint-violation warning allows and far below a state of another place). A
+     * state edited or damaged behind an intact checksum is refused here, instead of
+     * being integrated into NaN.
+     */
+    void
+    check_state_on_the_joints(const io::Scene &scene, const wear::WearState &st, const std::string &checkpoint)
+    {
+      constexpr double  largest_violation = 1e-3; // [m] (rad for angle rows)
+      const auto       &mech              = *scene.mechanism;
+      const auto        n                 = mech.n_coordinates();
+      const std::string cannot            = "Cannot resume from '" + checkpoint + "': ";
+      for (Eigen::Index i = 0; i < st.state.size(); ++i)
+        if (!std::isfinite(st.state[i]))
+          throw InputError(cannot + "its state[" + std::to_string(i) + "] is not a finite number: it is damaged.");
+      Eigen::VectorXd phi, phi_t, gamma;
+      Eigen::MatrixXd jacobian;
+      mech.evaluate_constraints(st.time, st.state.data(), st.state.data() + n, phi, jacobian, phi_t, gamma);
+      Eigen::Index worst = 0;
+      if (phi.size() > 0 && !(phi.cwiseAbs().maxCoeff(&worst) <= largest_violation))
+        throw InputError(cannot + "its state puts the bodies " + format_number(std::abs(phi[worst]), 3) +
+                         " off their joints (constraint row " + std::to_string(worst) + "; at most " +
+                         format_number(largest_violation) +
+                         " m is a state of this mechanism): it was edited or damaged behind its checksum. Start "
+                         "afresh (`--overwrite`).");
+    }
+
+    /**
      * The checkpoint of a resumed run, refused (InputError naming what differs, with both
      * values) unless it was written for this scene and fits its sizes.
      */
@@ -237,6 +266,7 @@ namespace wearlink::workflows
             shape.joints.push_back(
               {j->name(), j->get_description().geometry.bore.n_points(), j->get_description().geometry.pin.n_points()});
       st.check_shape(shape, checkpoint);
+      check_state_on_the_joints(scene, st, checkpoint);
       return st;
     }
 
@@ -509,9 +539,7 @@ namespace wearlink::workflows
           make_output_directory(dir + "/fe");
           if (mesh != copied[i])
             {
-              std::filesystem::copy_file(mesh,
-                                         dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh",
-                                         std::filesystem::copy_options::overwrite_existing);
+              copy_file_atomically(mesh, dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh");
               copied[i] = mesh;
             }
           model.write_fields(loop.peak_loads()[i], dir + "/fe/fields_" + name + "_iteration" + std::to_string(k));

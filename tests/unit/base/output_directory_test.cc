@@ -2,13 +2,17 @@
 // Files and folders of a run (base/atomic_file.h, base/output_directory.h,
 // base/interrupt.h):
 //  - a write that fails (here: the file-size limit, as a full disk would) is an IoError
-//    naming the file, and the previous file and the directory are left as they were;
-//  - temporaries of dead writers are removed, those of running ones kept;
+//    naming the file, and the previous file and the directory are left as they were; a
+//    file streamed over a long computation stops at its first failed write, and a copy
+//    that fails leaves no partial copy;
+//  - temporaries of dead writers are removed, those of running ones kept; so are the
+//    scratch folders of dead processes;
 //  - a locked directory is refused naming the holder's pid, and free again after it;
 //  - an earlier run's files are refused, or removed with overwrite (the user's own files
 //    are kept), or kept with resume;
 //  - SIGTERM is recorded and thrown at the next check; a second SIGTERM removes the
-//    registered temporaries and exits with 143 at once.
+//    registered temporaries and exits with 143 at once; SIGHUP stops as SIGTERM does,
+//    unless it was ignored when the handlers were installed (nohup).
 // Signals and resource limits are tried in a forked child, never in the test process.
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
@@ -93,6 +97,70 @@ TEST(AtomicFile, FailedWriteIsAnIoErrorNamingTheFile)
   EXPECT_TRUE(wearlink::testing::partial_files_in(dir).empty());
 }
 
+TEST(AtomicFile, StreamedFileStopsAtTheFirstFailedWrite)
+{
+  const std::string dir    = wearlink::testing::fresh_directory("atomic_streamed");
+  const std::string path   = dir + "/time_series.csv";
+  const int         status = in_child([&] {
+    const rlimit limit = {4096, 4096}; // as a full disk: writing beyond fails (EFBIG)
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    install_interrupt_handlers(); // SIGXFSZ ignored, as in the program
+    AtomicFile  f(path);
+    std::size_t rows = 0;
+    try
+      {
+        for (; rows < 1000000; ++rows)
+          {
+            f.stream() << rows << ",0.123456789,0.987654321\n";
+            f.throw_if_failed();
+          }
+      }
+    catch (const IoError &e)
+      {
+        if (e.message().find("Writing '" + path + "' failed: File too large") == std::string::npos)
+          return 2;
+        // 4096 bytes hold ~170 rows of 24 bytes; the stream's buffer (a few KiB) is
+        // written when full, so the failure shows within one more buffer of rows.
+        return rows < 2000 ? 0 : 4;
+      }
+    return 1;
+  });
+  EXPECT_EQ(status, 0) << "1: no error, 2: the message does not name the file and the reason, 4: not at the first "
+                          "failed write";
+  EXPECT_TRUE(wearlink::testing::files_in(dir).empty()) << "the temporary is removed";
+}
+
+TEST(AtomicFile, FailedCopyIsAnIoErrorAndLeavesNoPartialCopy)
+{
+  const std::string dir  = wearlink::testing::fresh_directory("atomic_copy");
+  const std::string from = dir + "/source.msh";
+  const std::string to   = dir + "/fe_mesh.msh";
+  std::ofstream(from) << std::string(1 << 20, 'x');
+  const int status = in_child([&] {
+    const rlimit limit = {4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    install_interrupt_handlers();
+    try
+      {
+        copy_file_atomically(from, to);
+      }
+    catch (const IoError &e)
+      {
+        return e.message().find("Writing '" + to + "' failed") != std::string::npos ? 0 : 2;
+      }
+    catch (...)
+      {
+        return 3; // std::filesystem::filesystem_error: an "internal error" of the program
+      }
+    return 1;
+  });
+  EXPECT_EQ(status, 0) << "1: no error, 2: the message does not name the copy, 3: not an IoError";
+  EXPECT_FALSE(fs::exists(to));
+  EXPECT_TRUE(wearlink::testing::partial_files_in(dir).empty());
+  copy_file_atomically(from, to); // without the limit the same copy succeeds
+  EXPECT_EQ(fs::file_size(to), fs::file_size(from));
+}
+
 TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemoved)
 {
   const std::string dir = wearlink::testing::fresh_directory("atomic_stale");
@@ -112,6 +180,31 @@ TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemoved)
   EXPECT_TRUE(fs::exists(dir + "/.time_series.csv.partial-" + mine + ".csv")) << "a running writer's";
   EXPECT_TRUE(fs::exists(dir + "/notes.partial-" + dead + ".txt"));
   EXPECT_TRUE(fs::exists(dir + "/summary.json"));
+}
+
+// The scratch folder of a process killed while it plotted (or meshed) is removed by the
+// next one; a running process's and folders of other names are kept.
+TEST(TemporaryDirectory, StaleScratchOfKilledProcessesIsRemoved)
+{
+  const std::string parent = wearlink::testing::fresh_directory("scratch_parent");
+  const std::string dead   = std::to_string(dead_pid());
+  const std::string mine   = std::to_string(::getpid());
+  for (const std::string &d : {"wearlink-plot-" + dead + "-0",
+                               "wearlink-fe-" + mine + "-3",
+                               std::string("wearlink-notes"),
+                               "wearlink-plot-" + dead + "-x-y",
+                               "other-plot-" + dead + "-0"})
+    {
+      fs::create_directories(parent + "/" + d);
+      std::ofstream(parent + "/" + d + "/plot.gp") << "x";
+    }
+  const auto removed = remove_stale_temporary_directories(parent);
+  ASSERT_EQ(removed.size(), 1u);
+  EXPECT_FALSE(fs::exists(parent + "/wearlink-plot-" + dead + "-0"));
+  EXPECT_TRUE(fs::exists(parent + "/wearlink-fe-" + mine + "-3")) << "a running process's";
+  EXPECT_TRUE(fs::exists(parent + "/wearlink-notes"));
+  EXPECT_TRUE(fs::exists(parent + "/wearlink-plot-" + dead + "-x-y")) << "not a name wearlink makes";
+  EXPECT_TRUE(fs::exists(parent + "/other-plot-" + dead + "-0"));
 }
 
 TEST(OutputDirectory, LockedDirectoryIsRefusedNamingTheHolder)
@@ -190,4 +283,29 @@ TEST(Interrupt, SignalIsThrownAtTheNextCheckAndASecondOneExitsAtOnce)
   });
   EXPECT_EQ(second, 128 + SIGTERM);
   EXPECT_FALSE(fs::exists(path)) << "removed by the handler of the second signal";
+}
+
+TEST(Interrupt, SighupStopsAsSigtermUnlessIgnoredAtTheStart)
+{
+  const int stopped = in_child([] {
+    install_interrupt_handlers();
+    ::raise(SIGHUP);
+    try
+      {
+        throw_if_interrupted();
+      }
+    catch (const Interrupted &e)
+      {
+        return e.signal_number() == SIGHUP && e.message().find("Stopped by SIGHUP") != std::string::npos ? 0 : 2;
+      }
+    return 3;
+  });
+  EXPECT_EQ(stopped, 0) << "2: another signal or message, 3: not recorded";
+  const int ignored = in_child([] {
+    ::signal(SIGHUP, SIG_IGN); // nohup
+    install_interrupt_handlers();
+    ::raise(SIGHUP);
+    return interrupt_signal();
+  });
+  EXPECT_EQ(ignored, 0) << "a SIGHUP ignored at the start stays ignored";
 }

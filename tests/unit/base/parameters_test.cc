@@ -217,3 +217,24 @@ TEST(Text, Utf8ValidationAcceptsTextAndRefusesStrayBytes)
   EXPECT_FALSE(is_valid_utf8("surrogate \xed\xa0\x80"));  // U+D800
   EXPECT_FALSE(is_valid_utf8("beyond \xf4\x90\x80\x80")); // U+110000
 }
+
+// A message echoes the user's value; a value of megabytes is cut to its start and its
+// length, so that the message stays readable. Words up to the limit and multi-byte
+// characters at the cut are kept whole.
+TEST(Text, LongWordsAreShortenedInMessages)
+{
+  const std::string huge(10 * 1000 * 1000, '7');
+  const std::string message = "In scene.prm, 'Simulation/End time' is '" + huge + "'; it must be a number.";
+  const std::string shown   = shorten_long_words(message);
+  EXPECT_LT(shown.size(), 300u);
+  // The word is the value with its quotes and the ';': 10,000,003 characters, 80 kept.
+  EXPECT_NE(shown.find("'Simulation/End time' is '" + std::string(79, '7') + "… [10000003 characters] it must be"),
+            std::string::npos)
+    << shown;
+  const std::string ordinary = "a path /" + std::string(990, 'p') + " stays whole";
+  EXPECT_EQ(shorten_long_words(ordinary), ordinary);
+  // "é" is two bytes: a cut after 3 bytes of "éééé…" would split the second one.
+  const std::string accents = shorten_long_words(std::string(2000, 'x').replace(0, 4, "éé"), 1000, 3);
+  EXPECT_EQ(accents.substr(0, 2), "é") << "cut before the character it would split";
+  EXPECT_TRUE(is_valid_utf8(accents));
+}

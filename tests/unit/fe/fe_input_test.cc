@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Bad input to the FE layer is a clear InputError (exit status 2 from the program), and
 // nothing is meshed for it: self-intersecting or non-finite profiles, fewer than 8
-// profile points, a pin that does not fit in the bore, negative sizes.
+// profile points, a profile in millimetres, a pin that does not fit in the bore, negative
+// sizes, a --set of the load list that the chosen control does not read.
 #include "base/effect_ledger.h"
 #include "base/exceptions.h"
 #include "fe/pin_bushing_mesher.h"
@@ -93,6 +94,13 @@ TEST(FeInput, ContactCommandRejectsBadCasesWithoutPartialOutput)
     for (int k = 0; k < 12; ++k)
       f << (k == 6 ? 0.5 : k * 0.5) << ",0.012\n";
   }
+  // The round 12 mm bore written in millimetres.
+  {
+    std::ofstream f(dir + "/millimetres.csv");
+    f << "angle_rad,radius_m\n";
+    for (int k = 0; k < 12; ++k)
+      f << k * 0.5 << ",12.0\n";
+  }
   const std::string prm = wearlink::testing::source_path("params/pin_bushing.prm");
   struct Case
   {
@@ -104,6 +112,14 @@ TEST(FeInput, ContactCommandRejectsBadCasesWithoutPartialOutput)
     {{"Geometry/Pin radius=0.0125"}, "Pin radius"},
     {{"Geometry/Number of profile points=4"}, "Number of profile points"},
     {{"FE model/Surface element size=-1e-5"}, "Surface element size"},
+    {{"Geometry/Bore profile file=" + dir + "/millimetres.csv"},
+     "the profile's mean radius is 12 m, but the joint's Bore radius is 0.012 m"},
+    // A list the chosen control does not read: the run used the other list (the default
+    // eccentricity, the clearance itself: 0 N) and said nothing.
+    {{"Loads/Control=displacement", "Loads/Load magnitudes=1"},
+     "--set \"Loads/Load magnitudes=1\" has no effect: under Loads/Control = displacement the load states are "
+     "Loads/Eccentricities"},
+    {{"Loads/Eccentricities=1e-3"}, "under Loads/Control = force the load states are Loads/Load magnitudes"},
   };
   for (const auto &c : cases)
     {

@@ -10,7 +10,9 @@
 //    accepted at the maximum step) halving the step divides the error by 2⁸ = 256
 //    (accepted 180 … 360), it meets its tolerance like dopri5, its 7th-order dense output
 //    is as accurate as its steps, and after a dense output the system was last evaluated
-//    at the accepted state (observers read the system's workspace after a step).
+//    at the accepted state (observers read the system's workspace after a step);
+//  - a step size that collapses (y' = y² towards its blow-up at t = 1) is a
+//    NumericalError whose advice fits the tolerance: loosen it where there is room.
 #include "base/exceptions.h"
 #include "mbs/integrator.h"
 
@@ -365,4 +367,61 @@ TEST(Integrators, Dopri5StiffHandsOverInTheStiffPhaseAndBack)
   EXPECT_NEAR(switching.at_off[0], at_off[0], 1e-6);
   EXPECT_NEAR(switching.at_end[0], at_end[0], 1e-6);
   EXPECT_NEAR(switching.at_end[1], at_end[1], 1e-6);
+}
+
+namespace
+{
+  /** y' = y², y(0) = 1: y = 1/(1 − t) blows up at t = 1, where no step meets any tolerance. */
+  class BlowUp : public OdeSystem
+  {
+  public:
+    unsigned int
+    size() const override
+    {
+      return 1;
+    }
+    void
+    rhs(double, const double *y, double *f) override
+    {
+      f[0] = y[0] * y[0];
+    }
+  };
+
+  /** The message of the NumericalError that dopri5 throws before t = 1 at @p relative_tolerance. */
+  std::string
+  blow_up_message(const double relative_tolerance)
+  {
+    BlowUp             ode;
+    IntegratorSettings s;
+    s.relative_tolerance = relative_tolerance;
+    s.absolute_tolerance = {1.0};
+    s.min_step           = 1e-3; // reached when 1 − t is about a millisecond
+    auto integ           = make_integrator(ode, s);
+    integ->reset(0, Eigen::VectorXd::Ones(1));
+    try
+      {
+        while (integ->time() < 2.0)
+          integ->step(2.0);
+      }
+    catch (const wearlink::NumericalError &e)
+      {
+        return e.message();
+      }
+    return "(no NumericalError)";
+  }
+} // namespace
+
+// When the step size collapses, the message advises loosening the relative tolerance
+// only where there is room to: at 1 (the entry's maximum) it says that loosening will
+// not help and names what may.
+TEST(Integrators, StepSizeCollapseAdvisesWhatCanHelp)
+{
+  const std::string tight = blow_up_message(1e-6);
+  EXPECT_NE(tight.find("the step size fell to"), std::string::npos) << tight;
+  EXPECT_NE(tight.find("Loosen Integrator/Relative tolerance (now 1e-06)"), std::string::npos) << tight;
+  const std::string loose = blow_up_message(1.0);
+  EXPECT_NE(loose.find("the step size fell to"), std::string::npos) << loose;
+  EXPECT_EQ(loose.find("Loosen Integrator/Relative tolerance"), std::string::npos) << loose;
+  EXPECT_NE(loose.find("Integrator/Relative tolerance is 1 already, so loosening it will not help"), std::string::npos)
+    << loose;
 }
