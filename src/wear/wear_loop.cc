@@ -183,11 +183,6 @@ namespace wearlink::wear
     ++st.iterations_done;
     own_timings.wear_bookkeeping += bookkeeping.seconds();
     update_clearance_model();
-    if (iteration_outputs)
-      iteration_outputs();
-    bookkeeping.restart();
-    checkpoint();
-    own_timings.wear_bookkeeping += bookkeeping.seconds();
   }
 
   std::unique_ptr<LoadRecorder>
@@ -435,8 +430,9 @@ namespace wearlink::wear
   }
 
   void
-  WearLoop::checkpoint()
+  WearLoop::commit()
   {
+    const Stopwatch bookkeeping;
     EffectLedger::instance().add_calls("wear iterations", 1);
     st.ledger        = EffectLedger::instance().snapshot();
     st.timings       = timings();
@@ -445,6 +441,7 @@ namespace wearlink::wear
       st.warnings = *warnings;
     if (!checkpoint_path.empty())
       st.write(checkpoint_path);
+    own_timings.wear_bookkeeping += bookkeeping.seconds();
   }
 
   void

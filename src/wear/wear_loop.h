@@ -15,8 +15,8 @@
 //   5. update_clearance_model rebuild the clearance joints' gap from the new profiles and
 //                             give the pressure models the new geometry (the fe model
 //                             re-meshes only beyond its 'Remesh depth');
-//   6. checkpoint             write the iteration's files (set_iteration_outputs), count
-//                             the iteration in the effect ledger, keep the ledger,
+//   6. commit                 (called by the workflow once it wrote the iteration's files)
+//                             count the iteration in the effect ledger, keep the ledger,
 //                             the phase timings and the validity warnings in the
 //                             state, and write the state (wear/wear_state.h), if a
 //                             path is set.
@@ -185,19 +185,8 @@ namespace wearlink::wear
     }
 
     /**
-     * Called at the end of every iteration, before its checkpoint: the workflow writes
-     * the iteration's files there, so that a checkpoint never stands for an iteration
-     * whose files are missing (a run killed in between redoes the iteration).
-     */
-    void
-    set_iteration_outputs(std::function<void()> write)
-    {
-      iteration_outputs = std::move(write);
-    }
-
-    /**
      * Keep @p peaks (the response body's per-cycle peaks before wear [m/s²]) in the
-     * state and so in the checkpoints; call from the first iteration's outputs.
+     * state and so in the checkpoints; call after the first iteration, before its commit().
      */
     void
     keep_response_before(std::vector<double> peaks)
@@ -220,9 +209,17 @@ namespace wearlink::wear
     bool
     finished() const;
 
-    /** One iteration (steps 1–6), with @p extra_observers of its dynamics. */
+    /**
+     * One iteration (steps 1–5), with @p extra_observers of its dynamics. The workflow
+     * writes the iteration's files next, then commit()s it: a checkpoint never stands
+     * for an iteration whose files are missing (a run killed in between redoes it).
+     */
     void
     iterate(const std::vector<mbs::StepObserver *> &extra_observers = {});
+
+    /** Step 6 of the iteration just done: count it and write its checkpoint. */
+    void
+    commit();
 
     const WearState &
     state() const
@@ -308,8 +305,6 @@ namespace wearlink::wear
     update_clearance_model();
 
     /** Step 6. */
-    void
-    checkpoint();
 
     /** The contact modes of the clearance joints into / out of the state. */
     void
@@ -328,8 +323,7 @@ namespace wearlink::wear
     AdvanceDynamics                        advance;
     WearState                              st;
     std::string                            checkpoint_path;
-    std::function<void()>                  iteration_outputs; ///< see set_iteration_outputs()
-    FactorLimit                            factor_limit;      ///< see set_factor_limit()
+    FactorLimit                            factor_limit; ///< see set_factor_limit()
     PhaseTimings                           own_timings;
     double                                 earlier_total = 0;  ///< see earlier_wall_time()
     Stopwatch                              process_time;       ///< since start() or resume()

@@ -170,9 +170,8 @@ memory that ran out, 130 / 143 / 129 stopped by SIGINT / SIGTERM / SIGHUP, 1 an 
       workflows::RunOptions options;
       options.output_directory = out;
       options.progress         = !a.has("--quiet");
-      workflows::FirstLook look;
-      options.first_look = &look;
-      const Json summary = workflows::run_scene(scene, options);
+      const auto  run          = workflows::run_with_first_look(scene, options);
+      const Json &summary      = run.summary;
       std::cout << "wrote " << out << "/summary.json (" << json_number(summary.at("steps")) << " steps, "
                 << json_number(summary.at("wall_time_s")) << " s wall)\n";
       if (summary.contains("analyses") && summary.at("analyses").contains("lyapunov"))
@@ -189,7 +188,7 @@ memory that ran out, 130 / 143 / 129 stopped by SIGINT / SIGTERM / SIGHUP, 1 an 
               std::cout << "\n";
             }
         }
-      print_first_look(look);
+      print_first_look(run.look);
       return 0;
     }
 

@@ -203,4 +203,15 @@ namespace wearlink::workflows
       keep(stacked_png(accelerations, title, directory + "/accelerations.png"), directory + "/accelerations.png");
     return look;
   }
+
+  LookedAtRun
+  run_with_first_look(io::Scene &scene, const RunOptions &options)
+  {
+    const auto  start = std::filesystem::file_time_type::clock::now();
+    LookedAtRun r;
+    r.summary      = run_scene(scene, options);
+    r.look         = write_first_look(scene, r.summary, options.output_directory);
+    r.look.written = files_written_since(options.output_directory, start);
+    return r;
+  }
 } // namespace wearlink::workflows

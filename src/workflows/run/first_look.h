@@ -16,6 +16,7 @@
 
 #include "base/json.h"
 #include "io/scene.h"
+#include "workflows/run/run.h"
 
 #include <filesystem>
 #include <string>
@@ -58,4 +59,18 @@ namespace wearlink::workflows
    */
   FirstLook
   write_first_look(const io::Scene &scene, const Json &summary, const std::string &directory);
+
+  /** What run_with_first_look() returns. */
+  struct LookedAtRun
+  {
+    Json      summary;
+    FirstLook look;
+  };
+
+  /**
+   * `wearlink run` of a scene without wear: run_scene() into options.output_directory
+   * (which must be set), then its first look, with every file the run wrote listed.
+   */
+  LookedAtRun
+  run_with_first_look(io::Scene &scene, const RunOptions &options);
 } // namespace wearlink::workflows

@@ -12,7 +12,6 @@
 #include "mbs/assembly.h"
 #include "mbs/body_trig.h"
 #include "workflows/run/analyses.h"
-#include "workflows/run/first_look.h"
 
 #include <algorithm>
 #include <chrono>
@@ -460,15 +459,14 @@ namespace wearlink::workflows
   {
     /**
      * The files of a finished run: time_series.csv committed, parameters.prm, summary.json
-     * (and its warnings on stderr), then the first look if asked for.
+     * (and its warnings on stderr).
      */
     void
-    write_run_files(const io::Scene                      &scene,
-                    const RunOptions                     &options,
-                    const Json                           &summary,
-                    const ValidityWarnings               &warnings,
-                    AtomicFile                           *csv,
-                    const std::filesystem::file_time_type start)
+    write_run_files(const io::Scene        &scene,
+                    const RunOptions       &options,
+                    const Json             &summary,
+                    const ValidityWarnings &warnings,
+                    AtomicFile             *csv)
     {
       if (csv)
         csv->commit();
@@ -477,11 +475,6 @@ namespace wearlink::workflows
       write_file_atomically(options.output_directory + "/" + io::outputs::parameters, prm.str());
       write_file_atomically(options.output_directory + "/" + io::outputs::summary, summary.dump(2));
       warnings.print(std::cerr);
-      if (options.first_look != nullptr)
-        {
-          *options.first_look         = write_first_look(scene, summary, options.output_directory);
-          options.first_look->written = files_written_since(options.output_directory, start);
-        }
     }
   } // namespace
 
@@ -545,7 +538,6 @@ namespace wearlink::workflows
   {
     if (options.output_directory.empty())
       return integrate_scene(scene, options).summary;
-    const auto                  files_start = std::filesystem::file_time_type::clock::now();
     std::unique_ptr<AtomicFile> csv;
     // The folder and the time series are made after assembly: a scene that cannot be
     // assembled leaves nothing behind.
@@ -557,7 +549,7 @@ namespace wearlink::workflows
       return csv.get();
     };
     const IntegratedRun run = integrate_scene(scene, options, open_time_series);
-    write_run_files(scene, options, run.summary, run.warnings, csv.get(), files_start);
+    write_run_files(scene, options, run.summary, run.warnings, csv.get());
     return run.summary;
   }
 } // namespace wearlink::workflows

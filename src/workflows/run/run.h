@@ -21,8 +21,6 @@
 
 namespace wearlink::workflows
 {
-  struct FirstLook;
-
   struct RunOptions
   {
     /** Where to write; empty: write nothing (library use, tests). */
@@ -56,12 +54,6 @@ namespace wearlink::workflows
      * to stderr when the run writes its summary.json.
      */
     ValidityWarnings *warnings = nullptr;
-    /**
-     * If set (and the run writes its files, and Output/Plots is true), the run also
-     * writes the first-look PNGs of its clearance joints and bodies and fills this with
-     * their names and a short summary (workflows/run/first_look.h).
-     */
-    FirstLook *first_look = nullptr;
   };
 
   /** The columns of the time_series.csv a run of @p scene writes, in order. */

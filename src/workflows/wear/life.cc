@@ -36,33 +36,40 @@ namespace wearlink::workflows
     }
 
     /**
-     * One life run: the criteria, their history, and the hooks it gives the wear run
-     * (see the header).
+     * One life run: the criteria and their history, and what it adds to the wear run's
+     * phases (see the header).
      */
     class LifeRun
     {
     public:
       LifeRun(io::Scene &scene, const LifeRunOptions &options);
 
-      /** The wear run's options with the life run's hooks (valid while this object lives). */
+      /** The options of the wear run under this life. */
       WearRunOptions
-      wear_options();
+      wear_options() const;
+
+      /** The largest factor of the coming iteration (wear::WearLoop::set_factor_limit). */
+      double
+      factor_limit(const wear::StepPreview &p) const;
+
+      /** The row of the iteration just done, before its commit. */
+      void
+      record(const wear::WearLoop &loop);
+
+      /** True when the run is to end before the next iteration (then with its warnings). */
+      bool
+      stop(const wear::WearLoop &loop);
 
       /** summary.json's `life` block. */
       Json
       block() const;
 
       analysis::LifeHistory history;
+      ValidityWarnings      response_warnings; ///< of the response runs
 
     private:
-      double
-      factor_limit(const wear::StepPreview &p) const;
-      void
-      after_iteration(const wear::WearLoop &loop);
       bool
       done(const wear::WearLoop &loop) const;
-      bool
-      stop(const wear::WearLoop &loop);
       void
       warn_if_undecided_may_come_first();
       bool
@@ -93,7 +100,6 @@ namespace wearlink::workflows
       std::vector<analysis::JointDensities> densities;
       const double                          period;
       const int                             body;
-      ValidityWarnings                      response_warnings; ///< of the response runs
       double                                revolutions_run = 0;
       unsigned int                          iterations_run  = 0;
     };
@@ -133,26 +139,13 @@ namespace wearlink::workflows
     }
 
     WearRunOptions
-    LifeRun::wear_options()
+    LifeRun::wear_options() const
     {
       WearRunOptions w;
       w.output_directory = options.output_directory;
       w.resume           = options.resume;
       w.progress         = options.progress;
       w.progress_prefix  = options.progress_prefix;
-      w.factor_limit     = [this](const wear::StepPreview &p) {
-        return factor_limit(p);
-      };
-      w.after_iteration = [this](const wear::WearLoop &loop) {
-        after_iteration(loop);
-      };
-      w.stop = [this](const wear::WearLoop &loop) {
-        return stop(loop);
-      };
-      w.extend_summary = [this](Json &summary) {
-        summary["life"] = block();
-      };
-      w.more_warnings = &response_warnings;
       return w;
     }
 
@@ -199,7 +192,7 @@ namespace wearlink::workflows
 
     /** The row of the iteration just done (before its checkpoint), and life_history.csv. */
     void
-    LifeRun::after_iteration(const wear::WearLoop &loop)
+    LifeRun::record(const wear::WearLoop &loop)
     {
       const auto &st = loop.state();
       history.truncate(st.iterations_done - 1); // rows a killed run wrote past its checkpoint
@@ -320,7 +313,7 @@ namespace wearlink::workflows
       return true;
     }
 
-    /** The wear run's stop hook: done(), and the life's warnings once it is. */
+    /** done(), and the life's warnings once it is. */
     bool
     LifeRun::stop(const wear::WearLoop &loop)
     {
@@ -561,17 +554,24 @@ namespace wearlink::workflows
     scene.wear_loop.n_iterations = scene.life.max_iterations;
     if (scene.wear_loop.extrapolation == wear::Extrapolation::adaptive)
       scene.wear_loop.target_revolutions = scene.life.max_revolutions;
-    LifeRunResult result;
-    result.wear    = run_wear(scene, life.wear_options());
-    result.history = life.history;
-    if (result.wear.finished)
+    WearRun run(scene, life.wear_options());
+    run.loop().set_factor_limit([&life](const wear::StepPreview &p) { return life.factor_limit(p); });
+    while (!run.finished() && !life.stop(run.loop()))
       {
-        result.life = life.block();
-        if (!options.output_directory.empty())
-          io::plot_life(options.output_directory + "/" + io::outputs::life_plot,
-                        life.history,
-                        "Life criteria against revolutions: " + scene.title);
+        run.iterate();
+        life.record(run.loop()); // its row belongs to the iteration's checkpoint
+        run.commit();
       }
+    LifeRunResult result;
+    result.wear                 = run.finish(&life.response_warnings);
+    result.life                 = life.block();
+    result.wear.summary["life"] = result.life;
+    run.write_summary(result.wear);
+    result.history = life.history;
+    if (!options.output_directory.empty())
+      io::plot_life(options.output_directory + "/" + io::outputs::life_plot,
+                    life.history,
+                    "Life criteria against revolutions: " + scene.title);
     return result;
   }
 

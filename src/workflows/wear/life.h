@@ -7,7 +7,7 @@
 // criterion, its status and the revolutions to reach it (and the hours at the scene's
 // driving speed), in summary.json (`life`) and in life_history.csv / life.png.
 //
-// What a life run adds to a wear run, through the wear run's hooks:
+// What a life run adds to the phases of a wear run (workflows::WearRun):
 //  - the factor limit of every iteration (the crossing of the nearest wear criterion);
 //  - after every iteration: the criteria's values, and with `Response rise` a run of
 //    1 + Response cycles cycles from the initial assembly with the current profiles for

@@ -421,7 +421,11 @@ namespace wearlink::workflows
      * comparison if the scene lists analyses.
      */
     void
-    after_wear(io::Scene &scene, const WearSetup &setup, const WearRunOptions &options, WearRunResult &result)
+    after_wear(io::Scene              &scene,
+               const WearSetup        &setup,
+               const WearRunOptions   &options,
+               const ValidityWarnings *more_warnings,
+               WearRunResult          &result)
     {
       const bool        write  = !options.output_directory.empty();
       const std::string dir    = options.output_directory;
@@ -440,8 +444,8 @@ namespace wearlink::workflows
       ro.warnings  = &result.warnings;
       Stopwatch dynamics;
       result.summary = integrate_scene(scene, ro).summary;
-      if (options.more_warnings)
-        result.warnings.merge(*options.more_warnings);
+      if (more_warnings != nullptr)
+        result.warnings.merge(*more_warnings);
       wear::check_roughness(st, result.warnings);
       check_target_reached(ws, st, result.warnings);
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
@@ -561,82 +565,142 @@ namespace wearlink::workflows
     }
   } // namespace
 
+  struct WearRun::Members
+  {
+    Members(io::Scene &scene, const WearRunOptions &options)
+      : scene(scene)
+      , options(options)
+      , dir(options.output_directory)
+      , write(!dir.empty())
+      , checkpoint(dir + "/" + io::outputs::checkpoint)
+      , setup(wear_setup(scene))
+      , loop(scene.wear_loop, setup.wearing, scene.clearance_joints, setup.period, dynamics_of(scene, result.warnings))
+      , before_peaks(scene.mechanism->n_coordinates(), setup.response, setup.period)
+      , before(*scene.mechanism, setup.response, setup.period / 400, scene.wear_loop.response_cycles * setup.period)
+    {
+    }
+
+    io::Scene                  &scene;
+    const WearRunOptions        options;
+    const Stopwatch             total;
+    const std::string           dir;
+    const bool                  write;
+    const std::string           checkpoint;
+    const WearSetup             setup;
+    WearRunResult               result;
+    wear::WearLoop              loop;
+    analysis::CyclePeakRecorder before_peaks; ///< the response before wear: the first iteration's
+    analysis::ResponseRecorder  before;
+    std::vector<std::string>    fe_meshes_copied;
+  };
+
+  WearRun::WearRun(io::Scene &scene, const WearRunOptions &options)
+  {
+    AssertThrow(has_wear(scene), dealii::ExcMessage("WearRun on a scene without wear."));
+    if (options.resume && options.output_directory.empty())
+      throw InputError("--resume needs the output directory of the run to continue.");
+    m = std::make_unique<Members>(scene, options);
+    m->loop.set_warnings(&m->result.warnings); // kept in the checkpoints: a resumed run reports them all
+    m->loop.set_checkpoint(m->write ? m->checkpoint : std::string());
+    start_or_resume(m->loop, scene, options, m->checkpoint);
+  }
+
+  WearRun::~WearRun() = default;
+
+  bool
+  WearRun::finished() const
+  {
+    return m->loop.finished();
+  }
+
+  wear::WearLoop &
+  WearRun::loop()
+  {
+    return m->loop;
+  }
+
+  void
+  WearRun::iterate()
+  {
+    const Stopwatch iteration;
+    auto           &loop      = m->loop;
+    const auto     &ws        = m->scene.wear_loop;
+    auto            observers = m->options.observers;
+    const bool      first     = loop.state().iterations_done == 0;
+    if (first)
+      {
+        observers.push_back(&m->before);
+        observers.push_back(&m->before_peaks);
+      }
+    loop.iterate(observers);
+    if (first)
+      loop.keep_response_before(m->before_peaks.peaks());
+    if (m->write)
+      {
+        if (first && m->options.final_outputs)
+          io::write_response_csv(m->dir + "/" + io::outputs::response_before, m->before);
+        io::write_wear_history(m->dir + "/" + io::outputs::wear_history, m->scene, loop.state());
+        write_profile_frames(m->setup.wearing, loop, m->dir, ws.cycles_per_iteration);
+        if (ws.fe_output)
+          write_fe_files(m->setup.wearing, loop, m->dir, ws.cycles_per_iteration, m->fe_meshes_copied);
+      }
+    if (m->options.progress)
+      print_progress(loop, ws.n_iterations, iteration.seconds(), m->options.progress_prefix);
+  }
+
+  void
+  WearRun::commit()
+  {
+    m->loop.commit();
+  }
+
+  WearRunResult
+  WearRun::interrupted() const
+  {
+    WearRunResult r;
+    r.state         = m->loop.state();
+    r.timings       = m->loop.timings();
+    r.timings.total = m->loop.earlier_wall_time() + m->total.seconds();
+    r.warnings      = m->result.warnings;
+    return r;
+  }
+
+  WearRunResult
+  WearRun::finish(const ValidityWarnings *more_warnings)
+  {
+    auto &result    = m->result;
+    result.state    = m->loop.state();
+    result.timings  = m->loop.timings();
+    result.finished = true;
+    if (m->options.final_outputs)
+      after_wear(m->scene, m->setup, m->options, more_warnings, result);
+    // A resumed run's wall time includes its earlier processes' up to the checkpoint.
+    result.timings.total = m->loop.earlier_wall_time() + m->total.seconds();
+    return result;
+  }
+
+  void
+  WearRun::write_summary(WearRunResult &result) const
+  {
+    if (m->options.final_outputs && m->write)
+      write_run_files(m->scene, m->dir, result, result.timings.total);
+  }
+
   WearRunResult
   run_wear(io::Scene &scene, const WearRunOptions &options)
   {
-    const Stopwatch total;
-    AssertThrow(has_wear(scene), dealii::ExcMessage("run_wear() on a scene without wear."));
-    const bool        write      = !options.output_directory.empty();
-    const std::string dir        = options.output_directory;
-    const std::string checkpoint = dir + "/" + io::outputs::checkpoint;
-    if (options.resume && !write)
-      throw InputError("--resume needs the output directory of the run to continue.");
-
-    const WearSetup                       setup   = wear_setup(scene);
-    const double                          period  = setup.period;
-    const std::vector<wear::WearingJoint> wearing = setup.wearing;
-    std::vector<std::string>              fe_meshes_copied;
-    WearRunResult                         result;
-    wear::WearLoop loop(scene.wear_loop, wearing, scene.clearance_joints, period, dynamics_of(scene, result.warnings));
-    loop.set_warnings(&result.warnings); // kept in the checkpoints: a resumed run reports them all
-    start_or_resume(loop, scene, options, checkpoint);
-    if (write)
-      loop.set_checkpoint(checkpoint);
-
-    unsigned int                done_here = 0;
-    analysis::CyclePeakRecorder before_peaks(scene.mechanism->n_coordinates(), setup.response, period);
-    analysis::ResponseRecorder  before(*scene.mechanism,
-                                      setup.response,
-                                      period / 400,
-                                      scene.wear_loop.response_cycles * period);
-    loop.set_iteration_outputs([&]() {
-      if (loop.state().iterations_done == 1)
-        loop.keep_response_before(before_peaks.peaks());
-      if (write && options.final_outputs && loop.state().iterations_done == 1)
-        io::write_response_csv(dir + "/" + io::outputs::response_before, before);
-      if (write)
-        io::write_wear_history(dir + "/" + io::outputs::wear_history, scene, loop.state());
-      if (write)
-        write_profile_frames(wearing, loop, dir, scene.wear_loop.cycles_per_iteration);
-      if (write && scene.wear_loop.fe_output)
-        write_fe_files(wearing, loop, dir, scene.wear_loop.cycles_per_iteration, fe_meshes_copied);
-      if (options.after_iteration)
-        options.after_iteration(loop);
-    });
-    if (options.factor_limit)
-      loop.set_factor_limit(options.factor_limit);
-    while (!loop.finished() && !(options.stop && options.stop(loop)))
+    WearRun      run(scene, options);
+    unsigned int done_here = 0;
+    while (!run.finished())
       {
         if (options.stop_after > 0 && done_here == options.stop_after)
-          {
-            result.state         = loop.state();
-            result.timings       = loop.timings();
-            result.timings.total = loop.earlier_wall_time() + total.seconds();
-            return result;
-          }
-        const Stopwatch iteration;
-        auto            observers = options.observers;
-        if (loop.state().iterations_done == 0)
-          {
-            observers.push_back(&before);
-            observers.push_back(&before_peaks);
-          }
-        loop.iterate(observers);
+          return run.interrupted();
+        run.iterate();
+        run.commit();
         ++done_here;
-        if (options.progress)
-          print_progress(loop, scene.wear_loop.n_iterations, iteration.seconds(), options.progress_prefix);
       }
-    result.state    = loop.state();
-    result.timings  = loop.timings();
-    result.finished = true;
-    if (options.final_outputs)
-      after_wear(scene, setup, options, result);
-    if (options.final_outputs && options.extend_summary)
-      options.extend_summary(result.summary);
-    // A resumed run's wall time includes its earlier processes' up to the checkpoint.
-    if (options.final_outputs && write)
-      write_run_files(scene, dir, result, loop.earlier_wall_time() + total.seconds());
-    result.timings.total = loop.earlier_wall_time() + total.seconds();
+    auto result = run.finish();
+    run.write_summary(result);
     return result;
   }
 } // namespace wearlink::workflows

@@ -15,6 +15,7 @@
 #include "wear/wear_state.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace wearlink::workflows
@@ -38,24 +39,6 @@ namespace wearlink::workflows
     bool final_outputs = true;
     /** Prefix of the progress lines (an ensemble's member). */
     std::string progress_prefix;
-
-    // Hooks of a run that is more than a wear run (workflows/wear/life.h); none by default.
-    /** Limits every iteration's factor (wear::WearLoop::set_factor_limit). */
-    wear::FactorLimit factor_limit;
-    /**
-     * Called after every iteration with the loop (the joints hold the new profiles),
-     * after the iteration's own files and before its checkpoint.
-     */
-    std::function<void(const wear::WearLoop &loop)> after_iteration;
-    /** Ends the loop before the next iteration when it returns true (then as if finished). */
-    std::function<bool(const wear::WearLoop &loop)> stop;
-    /** Adds to the summary of a finished run before it is written. */
-    std::function<void(Json &summary)> extend_summary;
-    /**
-     * Warnings of other runs of this command (a life run's response runs), merged into
-     * the summary's and printed with them; not kept in the checkpoint.
-     */
-    const ValidityWarnings *more_warnings = nullptr;
   };
 
   struct WearRunResult
@@ -82,7 +65,76 @@ namespace wearlink::workflows
   bool
   has_wear(const io::Scene &scene);
 
-  /** Run (or resume) the wear loop of @p scene. */
+  /**
+   * A wear run in its three phases, for a workflow that composes more around them (the
+   * life run of workflows/wear/life.h reads every iteration before its commit, limits
+   * the factors and stops the loop on its criteria):
+   *
+   *     WearRun run(scene, options);          // set-up, start or resume
+   *     while (!run.finished()) {
+   *       run.iterate();                      // dynamics, wear, the iteration's files
+   *       run.commit();                       // its checkpoint
+   *     }
+   *     auto result = run.finish();           // response after wear, summary, outputs
+   *     run.write_summary(result);            // summary.json, parameters.prm
+   *
+   * The scene must outlive the run. Not copyable: the loop refers to the run's members.
+   */
+  class WearRun
+  {
+  public:
+    WearRun(io::Scene &scene, const WearRunOptions &options);
+    ~WearRun();
+    WearRun(const WearRun &) = delete;
+    WearRun &
+    operator=(const WearRun &) = delete;
+
+    /** True when the loop's iterations are done or its adaptive target is reached. */
+    bool
+    finished() const;
+
+    /** The loop: its state, last factor and peak loads; set_factor_limit() on it. */
+    wear::WearLoop &
+    loop();
+
+    /**
+     * One iteration of the loop (with options.observers on its dynamics, and the
+     * response before wear recorded in the first), then its files: the wear history,
+     * the profile frames and, with Wear/FE output, the FE meshes and fields.
+     */
+    void
+    iterate();
+
+    /** The checkpoint of the iteration just done (wear::WearLoop::commit). */
+    void
+    commit();
+
+    /**
+     * The run so far, without the outputs after wear (the loop's state and timings): a
+     * run that stops here leaves its last checkpoint, as a killed one would.
+     */
+    WearRunResult
+    interrupted() const;
+
+    /**
+     * After the loop: the response after wear from the initial assembly with the final
+     * profiles, the summary (with @p more_warnings, a composing workflow's own), the
+     * worn profiles and plots, and the before/after-wear comparison if the scene lists
+     * analyses.
+     */
+    WearRunResult
+    finish(const ValidityWarnings *more_warnings = nullptr);
+
+    /** summary.json and parameters.prm of @p result into the output directory (if any). */
+    void
+    write_summary(WearRunResult &result) const;
+
+  private:
+    struct Members;
+    std::unique_ptr<Members> m;
+  };
+
+  /** Run (or resume) the wear loop of @p scene: WearRun's phases one after the other. */
   WearRunResult
   run_wear(io::Scene &scene, const WearRunOptions &options);
 } // namespace wearlink::workflows
