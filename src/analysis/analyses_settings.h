@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// What a scene's `subsection Analyses` asks for (read by io/analyses_parameters.h, run by
+// What a scene's `subsection Analyses` asks for (read by analysis/analyses_parameters.h, run by
 // workflows/run/analyses.h): which nonlinear-dynamics analyses, of which joints and bodies,
 // with which sampling and embedding, and the before/after-wear comparison settings.
 #pragma once

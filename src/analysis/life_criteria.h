@@ -84,7 +84,7 @@ namespace wearlink::analysis
     response_rise
   };
 
-  /** The scene's "Life" section (declared and read by io/life_parameters.h). */
+  /** The scene's "Life" section (declared and read by analysis/life_parameters.h). */
   struct LifeSettings
   {
     double       max_wear_depth    = 0;     ///< [m]; 0: off

@@ -2,18 +2,13 @@
 #include "io/calibration_files.h"
 
 #include "base/atomic_file.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 
 #include <cmath>
 
 namespace wearlink::io
 {
-  RunFiles
-  calibration_files()
-  {
-    return {{"calibration.json", "calibrated.prm", "calibration.png"}, {}};
-  }
-
   namespace
   {
     /** A vertical bar at @p x from @p low to @p high into @p s (NaN-separated segments). */
@@ -70,12 +65,13 @@ namespace wearlink::io
   write_calibration_files(const std::string &directory, const Json &report, const std::string &calibrated_prm)
   {
     std::vector<std::string> files;
-    write_file_atomically(directory + "/calibration.json", report.dump(2));
-    files.push_back(directory + "/calibration.json");
-    write_file_atomically(directory + "/calibrated.prm", calibrated_prm);
-    files.push_back(directory + "/calibrated.prm");
-    if (plot_png(mass_loss_plot(report), directory + "/calibration.png"))
-      files.push_back(directory + "/calibration.png");
+    const std::string        dir = directory + "/";
+    write_file_atomically(dir + outputs::calibration_report, report.dump(2));
+    files.push_back(dir + outputs::calibration_report);
+    write_file_atomically(dir + outputs::calibrated_scene, calibrated_prm);
+    files.push_back(dir + outputs::calibrated_scene);
+    if (plot_png(mass_loss_plot(report), dir + outputs::calibration_plot))
+      files.push_back(dir + outputs::calibration_plot);
     return files;
   }
 } // namespace wearlink::io

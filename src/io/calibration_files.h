@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The files of `wearlink calibrate` (workflows/wear/calibration.h), each written atomically:
+// The files of `wearlink calibrate` (workflows/wear/calibration.h; names in
+// io/output_names.h), each written atomically:
 //  - calibration.json  the report (per joint and surface the calibrated coefficient with
 //                      its 95 % interval and prior, measured and predicted mass loss with
 //                      the ensemble's spread, the secant's runs and residuals);
@@ -11,17 +12,12 @@
 #pragma once
 
 #include "base/json.h"
-#include "base/output_directory.h"
 
 #include <string>
 #include <vector>
 
 namespace wearlink::io
 {
-  /** The names calibrate writes (for the output folder's claim). */
-  RunFiles
-  calibration_files();
-
   /** Write the three files into @p directory (existing); returns the paths written. */
   std::vector<std::string>
   write_calibration_files(const std::string &directory, const Json &report, const std::string &calibrated_prm);

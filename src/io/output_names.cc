@@ -98,13 +98,50 @@ namespace wearlink::io::outputs
             {}};
   }
 
+  RunFiles
+  compare_pressure()
+  {
+    return {{compare_pressure_table, "compare_depth_*.csv", "compare_depth_*.png"}, {}};
+  }
+
+  RunFiles
+  compare_dynamics()
+  {
+    return {{"before_after_phase_*.png", before_after_table, "before_after_delay_scan.*", before_after_report}, {}};
+  }
+
+  RunFiles
+  compare_signal()
+  {
+    return {{signal_overlay, signal_spectrum, signal_comparison}, {signal_simulated}};
+  }
+
+  RunFiles
+  compare_profile()
+  {
+    return {{profile_comparison_plot, profile_comparison_json}, {}};
+  }
+
+  RunFiles
+  calibrate()
+  {
+    return {{calibration_report, calibrated_scene, calibration_plot}, {}};
+  }
+
+  RunFiles
+  lyapunov()
+  {
+    return {{"lyapunov_*_*.csv", "lyapunov_*_*.json", "lyapunov_*_*.png"}, {}};
+  }
+
   std::string
-  listing(const RunFiles &files)
+  listing(const RunFiles &files, const bool removable)
   {
     std::vector<std::string> names = files.patterns;
     for (const auto &d : files.subdirectories)
       names.push_back(d + "/");
-    std::string out  = "Files and folders this command may write (the names --overwrite removes):\n";
+    std::string out  = removable ? "Files and folders this command may write (the names --overwrite removes):\n" :
+                                   "Files this command may write (an earlier run's are kept or replaced):\n";
     std::string line = " ";
     for (std::size_t i = 0; i < names.size(); ++i)
       {

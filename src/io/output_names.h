@@ -48,6 +48,23 @@ namespace wearlink::io::outputs
   inline constexpr const char *pressure_table       = "pressure.csv";
   inline constexpr const char *pressure_plot        = "pressure.png";
   inline constexpr const char *compare_contact_log  = "compare_contact.txt";
+  // `wearlink compare-pressure`
+  inline constexpr const char *compare_pressure_table = "compare_pressure.csv";
+  // `wearlink compare-dynamics` (and a wear run whose scene lists analyses)
+  inline constexpr const char *before_after_report = "before_after.md";
+  inline constexpr const char *before_after_table  = "before_after_lyapunov.csv";
+  // `wearlink compare-signal`
+  inline constexpr const char *signal_overlay    = "signal_overlay.png";
+  inline constexpr const char *signal_spectrum   = "signal_spectrum.png";
+  inline constexpr const char *signal_comparison = "signal_comparison.json";
+  inline constexpr const char *signal_simulated  = "simulated";
+  // `wearlink compare-profile`
+  inline constexpr const char *profile_comparison_plot = "profile_comparison.png";
+  inline constexpr const char *profile_comparison_json = "profile_comparison.json";
+  // `wearlink calibrate`
+  inline constexpr const char *calibration_report = "calibration.json";
+  inline constexpr const char *calibrated_scene   = "calibrated.prm";
+  inline constexpr const char *calibration_plot   = "calibration.png";
 
   /** Every file and folder of `wearlink run` (plain and wear runs). */
   RunFiles
@@ -73,11 +90,30 @@ namespace wearlink::io::outputs
   /** `wearlink compare-contact`. */
   RunFiles
   compare_contact();
+  /** `wearlink compare-pressure`. */
+  RunFiles
+  compare_pressure();
+  /** `wearlink compare-dynamics`. */
+  RunFiles
+  compare_dynamics();
+  /** `wearlink compare-signal`. */
+  RunFiles
+  compare_signal();
+  /** `wearlink compare-profile`. */
+  RunFiles
+  compare_profile();
+  /** `wearlink calibrate`. */
+  RunFiles
+  calibrate();
+  /** `wearlink lyapunov`: per column and method a CSV, a JSON and a PNG. */
+  RunFiles
+  lyapunov();
 
   /**
    * The paragraph of a command's --help that names every file and folder of @p files
-   * (what --overwrite removes), wrapped at 88 columns.
+   * (what --overwrite removes; with @p removable false, a command that keeps earlier
+   * files), wrapped at 88 columns.
    */
   std::string
-  listing(const RunFiles &files);
+  listing(const RunFiles &files, bool removable = true);
 } // namespace wearlink::io::outputs

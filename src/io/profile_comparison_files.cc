@@ -6,6 +6,7 @@
 #include "base/numbers.h"
 #include "base/text.h"
 #include "io/csv.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/profile_file.h"
 
@@ -129,11 +130,12 @@ namespace wearlink::io
                            const ProfileOverlayLabels        &labels)
   {
     std::vector<std::string> files;
-    const std::string        png = directory + "/profile_comparison.png";
+    const std::string        png = directory + "/" + outputs::profile_comparison_plot;
     if (plot_png(overlay_plot(json, c, labels), png))
       files.push_back(png);
-    write_file_atomically(directory + "/profile_comparison.json", json.dump(2));
-    files.push_back(directory + "/profile_comparison.json");
+    const std::string file = directory + "/" + outputs::profile_comparison_json;
+    write_file_atomically(file, json.dump(2));
+    files.push_back(file);
     return files;
   }
 } // namespace wearlink::io

@@ -64,7 +64,7 @@ namespace wearlink::io
     std::vector<std::unique_ptr<wear::JointWear>> wear;
     /** The "Wear" section (used when wear is non-empty). */
     wear::WearLoopSettings wear_loop;
-    /** The "Life" section: the stop criteria of `wearlink life` (io/life_parameters.h). */
+    /** The "Life" section: the stop criteria of `wearlink life` (analysis/life_parameters.h). */
     analysis::LifeSettings life;
     /** The "Uncertainty" section: the uncertain inputs of an ensemble (io/uncertainty_parameters.h). */
     analysis::UncertaintySettings uncertainty;

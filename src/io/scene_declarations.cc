@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "io/scene_declarations.h"
 
+#include "analysis/analyses_parameters.h"
+#include "analysis/life_parameters.h"
+#include "analysis/uncertainty_parameters.h"
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "base/text.h"
 #include "contact/clearance_parameters.h"
-#include "io/analyses_parameters.h"
-#include "io/life_parameters.h"
-#include "io/uncertainty_parameters.h"
 #include "mbs/mbs_parameters.h"
 #include "wear/wear_settings.h"
 
@@ -159,9 +159,9 @@ namespace wearlink::io
         prm.leave_subsection();
       }
     declare_numerics(prm);
-    declare_analyses(prm);
+    analysis::declare_analyses(prm);
     wear::declare_wear_loop(prm);
-    declare_life(prm);
-    declare_uncertainty(prm);
+    analysis::declare_life(prm);
+    analysis::declare_uncertainty(prm);
   }
 } // namespace wearlink::io

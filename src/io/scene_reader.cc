@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Reading a scene: see scene.h for the sequence. The tree is declared in
 // scene_declarations.cc; this file reads it and assembles the scene.
+#include "analysis/analyses_parameters.h"
+#include "analysis/life_parameters.h"
+#include "analysis/uncertainty_parameters.h"
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "base/profile.h"
@@ -8,13 +11,10 @@
 #include "contact/clearance_parameters.h"
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
-#include "io/analyses_parameters.h"
-#include "io/life_parameters.h"
 #include "io/profile_file.h"
 #include "io/scene.h"
 #include "io/scene_declarations.h"
 #include "io/scene_periods.h"
-#include "io/uncertainty_parameters.h"
 #include "mbs/assembly.h"
 #include "mbs/mbs_parameters.h"
 
@@ -323,6 +323,31 @@ namespace wearlink::io
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * The sections the analysis layer declares (Analyses, Life, Uncertainty), read
+     * against the built scene; a Poincaré section also needs the driving period.
+     */
+    void
+    read_analysis_sections(Scene &scene, dealii::ParameterHandler &prm, const std::vector<std::string> &inactive)
+    {
+      analysis::AnalysedScene analysed;
+      analysed.file       = scene.file;
+      analysed.start_time = scene.start_time;
+      analysed.end_time   = scene.end_time;
+      for (const auto *j : scene.clearance_joints)
+        analysed.clearance_joints.push_back(j->name());
+      for (const auto &b : scene.mechanism->get_bodies())
+        analysed.bodies.push_back(b.name);
+      scene.analyses = analysis::read_analyses(prm, analysed);
+      if (scene.analyses.poincare)
+        driving_period(scene, scene.analyses); // throws if there is none, or the phase exceeds it
+      scene.life        = analysis::read_life(prm, scene.file, analysed.bodies);
+      scene.uncertainty = analysis::read_uncertainty(prm, scene.file, inactive);
+    }
+  } // namespace
+
   Scene
   read_scene(const std::string &file, const ParameterOverrides &overrides)
   {
@@ -365,9 +390,7 @@ namespace wearlink::io
     check_active_required_entries(prm, file, inactive);
 
     build_scene(scene, prm, bodies, joints);
-    scene.analyses    = parse_analyses(prm, scene);
-    scene.life        = parse_life(prm, scene);
-    scene.uncertainty = parse_uncertainty(prm, file, inactive);
+    read_analysis_sections(scene, prm, inactive);
     check_cycle_period(scene, scene.warnings);
     return scene;
   }

@@ -120,6 +120,19 @@ TEST(CompareSignal, RecoversTheLagOfTheSimulationsOwnSignalDelayed)
   ASSERT_EQ(ran.exit_status, 0) << ran.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/ran/simulated/time_series.csv"));
   expect_recovered_lag(dir + "/ran");
+
+  // The folder of an earlier comparison is refused (exit 2, nothing replaced) unless
+  // --overwrite, which removes the command's files (also the simulated/ folder).
+  const std::vector<std::string>
+             again{"compare-signal", scene, measured, "--channel", channel, "--output", dir + "/ran"};
+  const auto refused = wl::run_wearlink(with_scene_settings(again));
+  EXPECT_EQ(refused.exit_status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("signal_comparison.json"), std::string::npos) << refused.output;
+  auto overwrite = again;
+  overwrite.push_back("--overwrite");
+  const auto replaced = wl::run_wearlink(with_scene_settings(overwrite));
+  ASSERT_EQ(replaced.exit_status, 0) << replaced.output;
+  expect_recovered_lag(dir + "/ran");
 }
 
 TEST(CompareSignal, BadInputIsRefusedBeforeAnythingIsWritten)

@@ -5,6 +5,7 @@
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "io/calibration_files.h"
+#include "io/output_names.h"
 #include "workflows/wear/calibration.h"
 
 #include <deal.II/base/mpi.h>
@@ -97,7 +98,7 @@ profile file that cannot be read or has no uncertainty; a scene that does not we
 no wear of a measured surface; also: output directory in use, earlier files) - the
 message names the file, the line and the entry, and nothing is written; 3 a forward
 run that failed numerically; 4 an output that cannot be written; 1 an internal error.
-)";
+)" + io::outputs::listing(io::outputs::calibrate());
 
     /** The options of @p a (InputError for a bad value). */
     workflows::CalibrationOptions
@@ -154,7 +155,7 @@ run that failed numerically; 4 an output that cannot be written; 1 an internal e
       char     **argv           = argv_storage;
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       const auto                               claimed =
-        claim_output_directory_on_root(output_claim(options.output_directory, io::calibration_files(), a));
+        claim_output_directory_on_root(output_claim(options.output_directory, io::outputs::calibrate(), a));
       const Json report = workflows::calibrate(problem, options);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         std::cout << workflows::calibration_table(report) << "wrote " << options.output_directory

@@ -3,11 +3,11 @@
 // workflows/compare/dynamics_comparison.h for two runs recorded earlier (each a `wearlink run` output
 // directory with analyses), e.g. a clearance scene run once with fresh and once with
 // worn profile files. A wear scene with analyses does the same by itself.
+#include "analysis/analyses_parameters.h"
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/text.h"
-#include "io/analyses_parameters.h"
 #include "io/json_file.h"
 #include "io/output_names.h"
 #include "io/recorded_run_files.h"
@@ -62,7 +62,7 @@ of different mechanisms, a body not in the runs, a channel not recorded in both,
 delay below the sample interval; also: output directory
 in use, earlier comparison's files), 4 an output that cannot be written or memory that
 ran out, 1 an internal error (see `wearlink --help`).
-)";
+)" + io::outputs::listing(io::outputs::compare_dynamics());
 
     workflows::ComparedRun
     read_run(const std::string &dir, const std::string &label)
@@ -134,10 +134,7 @@ ran out, 1 an internal error (see `wearlink --help`).
         throw InputError("`wearlink compare-dynamics` needs two run directories, BEFORE and AFTER (given " +
                          std::to_string(a.positional.size()) + "). See --help.");
       const std::string      out     = a.value("--output", "output/compare_dynamics");
-      const auto             claimed = claim_output_directory(output_claim(
-        out,
-        {{"before_after_phase_*.png", "before_after_lyapunov.csv", "before_after_delay_scan.*", "before_after.md"}, {}},
-        a));
+      const auto             claimed = claim_output_directory(output_claim(out, io::outputs::compare_dynamics(), a));
       workflows::ComparedRun before  = read_run(a.positional[0], "before: " + a.positional[0]);
       workflows::ComparedRun after   = read_run(a.positional[1], "after: " + a.positional[1]);
       check_same_mechanism(before, after, a.positional);
@@ -191,11 +188,11 @@ ran out, 1 an internal error (see `wearlink --help`).
           }
       s.bodies = a.list("--bodies");
       check_bodies(s.bodies, before.summary);
-      s.published      = io::parse_published_exponents(a.value("--published", ""), "--published");
+      s.published      = analysis::parse_published_exponents(a.value("--published", ""), "--published");
       s.published_note = a.value("--published-note", "");
 
       const auto c = workflows::compare_dynamics(before, after, s, out);
-      std::cout << c.report << "\nwrote " << out << "/before_after.md\n";
+      std::cout << c.report << "\nwrote " << out << "/" << io::outputs::before_after_report << "\n";
       return 0;
     }
   } // namespace

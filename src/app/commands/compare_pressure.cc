@@ -6,6 +6,7 @@
 #include "app/output_claim.h"
 #include "base/exceptions.h"
 #include "base/text.h"
+#include "io/output_names.h"
 #include "io/scene.h"
 #include "workflows/compare/pressure_comparison.h"
 
@@ -35,7 +36,7 @@ compare_depth_<J>.csv and compare_depth_<J>.png.
 Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
 3 numerical failure, 4 an output that cannot be written or memory that ran out, 1 an
 internal error (see `wearlink --help`).
-)";
+)" + io::outputs::listing(io::outputs::compare_pressure());
 
     int
     run(const std::vector<std::string> &args)
@@ -54,9 +55,8 @@ internal error (see `wearlink --help`).
         throw InputError("--cycles is " + format_number(cycles) +
                          "; it must be > 0 and at most 1e4 (the load history of the cycles is kept in memory).");
       const std::string out = a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_compare");
-      const auto        claimed = claim_output_directory(
-        output_claim(out, {{"compare_pressure.csv", "compare_depth_*.csv", "compare_depth_*.png"}, {}}, a));
-      const auto c = workflows::compare_pressure_models(scene, models, cycles);
+      const auto        claimed = claim_output_directory(output_claim(out, io::outputs::compare_pressure(), a));
+      const auto        c       = workflows::compare_pressure_models(scene, models, cycles);
       std::cout << c.table();
       workflows::write_pressure_comparison(out, c);
       std::cout << "\nwrote " << out << "/compare_pressure.csv\n";

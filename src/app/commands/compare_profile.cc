@@ -5,6 +5,7 @@
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "io/output_names.h"
 #include "workflows/compare/profile_comparison.h"
 
 #include <iostream>
@@ -63,7 +64,7 @@ angle, fewer than 8 points, an unknown --surface, --angle-search outside 0 ... 1
 also: output directory in use, earlier comparison's files) — the message names the
 file, the line and the column, and nothing is written; 4 an output that cannot be
 written; 1 an internal error (see `wearlink --help`).
-)";
+)" + io::outputs::listing(io::outputs::compare_profile());
 
     int
     compare_profile(const std::vector<std::string> &args)
@@ -89,7 +90,7 @@ written; 1 an internal error (see `wearlink --help`).
       o.joint            = a.value("--joint");
       o.angle_search_deg = a.number("--angle-search", 180);
       o.output_directory = a.value("--output", "output/compare_profile_" + o.joint + "_" + o.surface);
-      const auto claimed = claim_output_directory(output_claim(o.output_directory, {{"profile_comparison.*"}, {}}, a));
+      const auto claimed = claim_output_directory(output_claim(o.output_directory, io::outputs::compare_profile(), a));
       const auto r       = workflows::compare_profile(o);
       std::cout << r.table << "files written:\n";
       for (const auto &f : r.files)

@@ -3,7 +3,9 @@
 // against a measured one (workflows/compare/signal_comparison.h): a printed table, an overlay
 // and a spectrum PNG, signal_comparison.json.
 #include "app/command_line.h"
+#include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "io/output_names.h"
 #include "workflows/compare/signal_comparison.h"
 
 #include <filesystem>
@@ -13,8 +15,8 @@ namespace wearlink::app
 {
   namespace
   {
-    const char *const help_text =
-      R"(wearlink compare-signal SCENE.prm MEASURED.csv --channel NAME [--column NAME]
+    const std::string help_text = std::string(
+                                    R"(wearlink compare-signal SCENE.prm MEASURED.csv --channel NAME [--column NAME]
                         [--simulated RUN_DIR] [--output DIR] [--set S/E=V ...] [--quiet]
 
 Compares a simulated signal with a measured one. MEASURED.csv has a header row with a
@@ -28,6 +30,7 @@ column 'time_s' (seconds, in the scene's time, strictly increasing) and a value 
                       finished `wearlink run` of the same scene; without it, the scene
                       is run now into DIR/simulated/
   --output DIR        where to write (default: output/<scene name>_signal)
+  --overwrite         replace the files of an earlier comparison in DIR
   --set S/E=V         scene overrides, as for `wearlink run`
   --quiet             no progress lines of the simulation
 
@@ -51,7 +54,7 @@ Prints a table (simulated, measured, difference) and writes into DIR, atomically
 Bad input (a missing file or column, a time that does not increase, a field that is
 not a number, too few samples, no overlap with the simulated interval) is refused with
 exit status 2 before anything is run or written.
-)";
+)") + output_folder_help + io::outputs::listing(io::outputs::compare_signal());
 
     int
     compare_signal(const std::vector<std::string> &args)
@@ -62,7 +65,8 @@ exit status 2 before anything is run or written.
                                       {"--simulated", true},
                                       {"--output", true},
                                       {"--set", true, true},
-                                      {"--quiet", false}},
+                                      {"--quiet", false},
+                                      {"--overwrite", false}},
                                      "compare-signal");
       if (a.positional.size() != 2)
         throw InputError("`wearlink compare-signal` needs a scene and a measured CSV file (given " +
@@ -76,8 +80,9 @@ exit status 2 before anything is run or written.
       o.simulated_directory = a.value("--simulated");
       o.output_directory =
         a.value("--output", "output/" + std::filesystem::path(o.scene_file).stem().string() + "_signal");
-      o.progress   = !a.has("--quiet");
-      const auto r = workflows::compare_signal(o);
+      o.progress         = !a.has("--quiet");
+      const auto claimed = claim_output_directory(output_claim(o.output_directory, io::outputs::compare_signal(), a));
+      const auto r       = workflows::compare_signal(o);
       std::cout << r.table << "files written:\n";
       for (const auto &f : r.files)
         std::cout << "  " << f << "\n";
@@ -89,6 +94,6 @@ exit status 2 before anything is run or written.
   const Command        compare_signal_command = {"compare-signal",
                                                  "compare-signal SCENE.prm MEASURED.csv --channel NAME  "
                                                         "simulated against measured signal: peaks, RMS, spectra, lag",
-                                                 help_text,
+                                                 help_text.c_str(),
                                                  compare_signal};
 } // namespace wearlink::app

@@ -7,7 +7,6 @@
 #include "app/ensemble_command.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
-#include "io/life_parameters.h"
 #include "io/output_names.h"
 #include "workflows/ensemble/ensemble.h"
 
@@ -153,7 +152,7 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
                          a.value("--resume") + ", --overwrite removes its files.");
       const std::string file  = a.positional[0];
       io::Scene         scene = io::read_scene(file, a.all("--set"));
-      io::check_life_criteria(scene); // before the folder is claimed: a bad input writes nothing
+      workflows::check_life_criteria(scene); // before the folder is claimed: a bad input writes nothing
       if (a.has("--ensemble") || a.has("--seed") || a.has("--perturbation") || a.has("--sensitivity"))
         {
           ensemble_request(a); // a bad value is refused before anything runs

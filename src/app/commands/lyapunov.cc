@@ -10,6 +10,7 @@
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
+#include "io/output_names.h"
 #include "workflows/run/lyapunov_series.h"
 
 #include <iostream>
@@ -23,7 +24,7 @@ namespace wearlink::app
     using namespace wearlink::analysis;
 
 
-    const char *const help_text = R"(wearlink lyapunov SERIES.csv --column NAME [options]
+    const std::string help_text = R"(wearlink lyapunov SERIES.csv --column NAME [options]
 
 Largest Lyapunov exponent (LLE) of one column of a CSV file (first row: column names,
 comma-separated; lines starting with # are ignored).
@@ -76,7 +77,7 @@ and method replaced (each name says what it holds, and DIR is often a run's fold
 Exit status: 0 success, 2 bad input (missing file, unknown column, NaN or too short
 series, bad option value, DIR in use), 4 an output that cannot be written or memory
 that ran out, 1 an internal error (see `wearlink --help`).
-)";
+)" + io::outputs::listing(io::outputs::lyapunov(), false);
 
     /** A non-negative integer option (at least @p min), or unset. */
     template <class T>
@@ -152,7 +153,7 @@ that ran out, 1 an internal error (see `wearlink --help`).
       request.column           = column;
       request.settings         = settings;
       request.output_directory = args.value("--output", ".");
-      OutputClaim claim        = output_claim(request.output_directory, {}, args);
+      OutputClaim claim        = output_claim(request.output_directory, io::outputs::lyapunov(), args);
       claim.earlier            = EarlierRun::resume; // see the help: earlier files are kept
       const auto claimed       = claim_output_directory(claim);
       std::cout << workflows::analyse_lyapunov_series(request);
@@ -165,6 +166,6 @@ that ran out, 1 an internal error (see `wearlink --help`).
            "lyapunov",
            "lyapunov SERIES.csv --column NAME [--method wolf|rosenstein] [--dt S] [--embedding M] "
                   "[--delay K] [--output DIR]",
-           help_text,
+           help_text.c_str(),
            run};
 } // namespace wearlink::app

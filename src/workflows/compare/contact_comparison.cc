@@ -8,7 +8,6 @@
 #include "base/timings.h"
 #include "contact/cylindrical_contact.h"
 #include "fe/fe_normal_force_law.h"
-#include "io/analyses_parameters.h"
 #include "io/output_names.h"
 #include "io/plot.h"
 #include "io/profile_file.h"

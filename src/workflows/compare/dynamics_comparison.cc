@@ -5,6 +5,7 @@
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/text.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 
 #include <deal.II/base/utilities.h>
@@ -502,8 +503,8 @@ namespace wearlink::workflows
       const auto &csv         = t.csv;
       const auto &scan_csv    = t.scan_csv;
       const auto &scan_panels = t.scan_panels;
-      write_file_atomically(dir + "before_after_lyapunov.csv", csv.str());
-      files.push_back("before_after_lyapunov.csv");
+      write_file_atomically(dir + io::outputs::before_after_table, csv.str());
+      files.push_back(io::outputs::before_after_table);
       if (scanned)
         {
           write_file_atomically(dir + "before_after_delay_scan.csv", scan_csv.str());
@@ -607,8 +608,8 @@ namespace wearlink::workflows
     out.report = report.md.str();
     if (write)
       {
-        write_file_atomically(dir + "before_after.md", out.report);
-        report.files.push_back("before_after.md");
+        write_file_atomically(dir + io::outputs::before_after_report, out.report);
+        report.files.push_back(io::outputs::before_after_report);
         out.json["files"] = report.files;
       }
     return out;

@@ -3,6 +3,7 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene_periods.h"
 #include "wear/archard.h"
@@ -147,7 +148,7 @@ namespace wearlink::workflows
       os << r.joint << ',' << r.model << ',' << r.volume_pin << ',' << r.volume_bore << ',' << r.archard_volume << ','
          << r.max_depth_pin << ',' << r.peak_angle_pin << ',' << r.max_depth_bore << ',' << r.peak_angle_bore << ','
          << r.difference_pin << ',' << r.difference_bore << ',' << r.evaluations << ',' << r.wall_time << '\n';
-    write_file_atomically(dir + "/compare_pressure.csv", os.str());
+    write_file_atomically(dir + "/" + io::outputs::compare_pressure_table, os.str());
 
     std::vector<std::string> joints;
     for (const auto &r : c.rows)

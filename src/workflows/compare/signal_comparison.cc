@@ -5,7 +5,6 @@
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/text.h"
-#include "io/analyses_parameters.h"
 #include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene.h"
@@ -73,7 +72,7 @@ namespace wearlink::workflows
                                     what,
                                     "--channel");
       RunOptions run;
-      run.output_directory    = o.output_directory + "/simulated";
+      run.output_directory    = o.output_directory + "/" + io::outputs::signal_simulated;
       run.progress            = o.progress;
       scene.write_time_series = true;
       run_scene(scene, run);
@@ -217,15 +216,15 @@ namespace wearlink::workflows
 
     SignalComparisonResult r;
     make_output_directory(o.output_directory);
-    r.json                 = comparison_json(c, o, simulated, measured, period);
-    r.table                = table_of(r.json);
-    const std::string base = o.output_directory + "/signal_";
-    if (io::plot_png(overlay_plot(c, o, measured.column), base + "overlay.png"))
-      r.files.push_back(base + "overlay.png");
-    if (io::plot_png(spectrum_plot(c, o), base + "spectrum.png"))
-      r.files.push_back(base + "spectrum.png");
-    write_file_atomically(base + "comparison.json", r.json.dump(2));
-    r.files.push_back(base + "comparison.json");
+    r.json                = comparison_json(c, o, simulated, measured, period);
+    r.table               = table_of(r.json);
+    const std::string dir = o.output_directory + "/";
+    if (io::plot_png(overlay_plot(c, o, measured.column), dir + io::outputs::signal_overlay))
+      r.files.push_back(dir + io::outputs::signal_overlay);
+    if (io::plot_png(spectrum_plot(c, o), dir + io::outputs::signal_spectrum))
+      r.files.push_back(dir + io::outputs::signal_spectrum);
+    write_file_atomically(dir + io::outputs::signal_comparison, r.json.dump(2));
+    r.files.push_back(dir + io::outputs::signal_comparison);
     return r;
   }
 } // namespace wearlink::workflows

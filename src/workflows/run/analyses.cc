@@ -9,7 +9,6 @@
 #include "base/numbers.h"
 #include "base/parameters.h"
 #include "base/text.h"
-#include "io/analyses_parameters.h"
 #include "io/lyapunov_report.h"
 #include "io/plot.h"
 #include "io/recorded_run_files.h"

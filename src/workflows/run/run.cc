@@ -6,7 +6,6 @@
 #include "base/exceptions.h"
 #include "base/interrupt.h"
 #include "base/text.h"
-#include "io/analyses_parameters.h"
 #include "io/output_names.h"
 #include "io/scene_periods.h"
 #include "mbs/assembly.h"

@@ -4,7 +4,6 @@
 #include "base/exceptions.h"
 #include "base/interrupt.h"
 #include "base/timings.h"
-#include "io/analyses_parameters.h"
 #include "io/scene_periods.h"
 #include "io/wear_outputs.h"
 #include "workflows/run/run.h"

@@ -10,7 +10,6 @@
 #include "base/parameters.h"
 #include "base/text.h"
 #include "base/timings.h"
-#include "io/analyses_parameters.h"
 #include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene.h"

@@ -5,7 +5,6 @@
 #include "base/exceptions.h"
 #include "base/text.h"
 #include "io/life_outputs.h"
-#include "io/life_parameters.h"
 #include "io/output_names.h"
 #include "io/scene_periods.h"
 #include "io/wear_outputs.h"
@@ -546,10 +545,27 @@ namespace wearlink::workflows
     }
   } // namespace
 
+  void
+  check_life_criteria(const io::Scene &scene)
+  {
+    if (!analysis::active_criteria(scene.life).empty() && !scene.wear.empty())
+      return;
+    if (scene.wear.empty())
+      throw InputError("`wearlink life` runs the wear loop, but no clearance joint of " + scene.file +
+                       " has a Wear law: set 'Joint <J>/Clearance/Wear law = archard' with its Pressure "
+                       "model and archard data (see params/nine_bar_wear.prm).");
+    throw InputError("In " + scene.file +
+                     ", subsection 'Life' sets no stop criterion, so `wearlink life` would not know when "
+                     "the joint is worn out. Set at least one of 'Life/Maximum wear depth' (m, > 0 … 0.1), "
+                     "'Life/Radial clearance growth' (m, > 0 … 0.1), 'Life/Pin mass loss' (mg, > 0 … 1e9), "
+                     "'Life/Bushing mass loss' (mg, > 0 … 1e9), 'Life/Response rise' (%, > 0 … 1e4) to a "
+                     "positive limit, e.g. --set \"Life/Maximum wear depth=5e-5\".");
+  }
+
   LifeRunResult
   run_life(io::Scene &scene, const LifeRunOptions &options)
   {
-    io::check_life_criteria(scene);
+    check_life_criteria(scene);
     LifeRun life(scene, options); // the fresh response, or the history of a resumed run
     scene.wear_loop.n_iterations = scene.life.max_iterations;
     if (scene.wear_loop.extrapolation == wear::Extrapolation::adaptive)

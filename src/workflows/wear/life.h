@@ -50,6 +50,13 @@ namespace wearlink::workflows
   };
 
   /**
+   * For `wearlink life`: InputError naming the file and every criterion entry with its
+   * unit and range unless @p scene switches on at least one criterion and wears.
+   */
+  void
+  check_life_criteria(const io::Scene &scene);
+
+  /**
    * Run (or resume) the life of @p scene. InputError (before anything is written) if it
    * has no wearing joint or no criterion.
    */

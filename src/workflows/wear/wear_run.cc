@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/wear/wear_run.h"
 
+#include "analysis/analyses_parameters.h"
 #include "analysis/cycle_peaks.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/text.h"
-#include "io/analyses_parameters.h"
 #include "io/output_names.h"
 #include "io/profile_series.h"
 #include "io/scene_periods.h"
@@ -155,7 +155,7 @@ namespace wearlink::workflows
       cs.bodies     = a.bodies;
       if (!response.empty() && std::find(cs.bodies.begin(), cs.bodies.end(), response) == cs.bodies.end())
         cs.bodies.push_back(response);
-      cs.published      = io::parse_published_exponents(a.published_exponents, scene.file);
+      cs.published      = analysis::parse_published_exponents(a.published_exponents, scene.file);
       cs.published_note = a.published_note;
       if (two_trajectory && !dir.empty())
         cs.simulation_exponents = two_trajectory_exponents(scene, st, dir, progress);

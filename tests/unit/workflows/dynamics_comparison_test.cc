@@ -9,8 +9,8 @@
 //    (after/before near 1): the common delay is converted to each run's samples;
 //  - a run compared with itself gives exactly 1 everywhere and writes the files;
 //  - a channel missing from one run is an InputError before anything is written.
+#include "analysis/analyses_parameters.h"
 #include "base/exceptions.h"
-#include "io/analyses_parameters.h"
 #include "io/plot.h"
 #include "support/test_support.h"
 #include "unit/analysis/reference_series.h"
@@ -118,7 +118,7 @@ TEST(DynamicsComparison, ARunComparedWithItselfGivesOneEverywhereAndWritesTheFil
         "max_normal_force_N": 1000}}})");
   auto s                = lorenz_settings();
   s.delay_scan          = {0.05, 0.1, 0.2};
-  s.published           = wearlink::io::parse_published_exponents("A_ex_m: 0.041 0.076", "test");
+  s.published           = wearlink::analysis::parse_published_exponents("A_ex_m: 0.041 0.076", "test");
   const std::string dir = wearlink::testing::fresh_directory("dynamics_comparison_self");
   const auto        c   = compare_dynamics(run, run, s, dir);
   const auto       &l   = c.json.at("lyapunov");
@@ -156,12 +156,12 @@ TEST(DynamicsComparison, AChannelMissingFromOneRunIsAnErrorAndWritesNothing)
 
 TEST(PublishedExponents, ParsesPairsAndRejectsMalformedText)
 {
-  const auto p = wearlink::io::parse_published_exponents("A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052", "x");
+  const auto p = wearlink::analysis::parse_published_exponents("A_ex_m: 0.041 0.076, B_ex_m: 0.030 0.052", "x");
   ASSERT_EQ(p.size(), 2u);
   EXPECT_EQ(p[1].channel, "B_ex_m");
   EXPECT_DOUBLE_EQ(p[1].before, 0.030);
   EXPECT_DOUBLE_EQ(p[1].after, 0.052);
-  EXPECT_TRUE(wearlink::io::parse_published_exponents("", "x").empty());
+  EXPECT_TRUE(wearlink::analysis::parse_published_exponents("", "x").empty());
   for (const char *bad : {"A_ex_m 0.041 0.076", "A_ex_m: 0.041", "A_ex_m: 0.041 0.076 9", ": 1 2", "A: x y"})
-    EXPECT_THROW(wearlink::io::parse_published_exponents(bad, "x"), InputError) << bad;
+    EXPECT_THROW(wearlink::analysis::parse_published_exponents(bad, "x"), InputError) << bad;
 }

@@ -1,21 +1,18 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/analyses_parameters.h"
+#include "analysis/analyses_parameters.h"
 
 #include "base/exceptions.h"
 #include "base/numbers.h"
 #include "base/parameters.h"
 #include "base/text.h"
-#include "io/scene.h"
-#include "io/scene_periods.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-namespace wearlink::io
+namespace wearlink::analysis
 {
-  using analysis::AnalysesSettings;
-
   namespace
   {
     namespace P                      = dealii::Patterns;
@@ -226,7 +223,7 @@ namespace wearlink::io
       for (const auto &m : r.get_list("Methods"))
         if (m == "two-trajectory")
           s.two_trajectory = true;
-        else if (const auto method = analysis::parse_method(m))
+        else if (const auto method = parse_method(m))
           s.methods.push_back(*method);
       s.two_trajectory_separation = r.get_double("Two-trajectory separation");
       s.renormalization_interval  = r.get_double("Renormalization interval");
@@ -281,24 +278,24 @@ namespace wearlink::io
      * only at the estimate).
      */
     void
-    check_lyapunov_samples(const ParameterReader &r, const Scene &scene, const analysis::AnalysesSettings &s)
+    check_lyapunov_samples(const ParameterReader &r, const AnalysedScene &scene, const AnalysesSettings &s)
     {
       if (!s.lyapunov)
         return;
       const double span    = scene.end_time - scene.start_time - s.transient;
       const double samples = std::floor(span / s.sample_interval + 1e-9) + 1;
-      if (samples < static_cast<double>(analysis::min_lyapunov_samples))
+      if (samples < static_cast<double>(min_lyapunov_samples))
         r.fail("Sample interval",
                "the run records " + format_number(samples, 6) + " samples of each channel after the Transient ((" +
                  format_number(span, 6) + " s) / Sample interval + 1); the Lyapunov exponent needs at least " +
-                 std::to_string(analysis::min_lyapunov_samples) + " (in practice thousands)",
+                 std::to_string(min_lyapunov_samples) + " (in practice thousands)",
                "Lengthen Simulation/End time, shorten Analyses/Sample interval or Transient, or remove lyapunov "
                "from 'List of analyses'.");
     }
   } // namespace
 
   AnalysesSettings
-  parse_analyses(dealii::ParameterHandler &prm, const Scene &scene)
+  read_analyses(dealii::ParameterHandler &prm, const AnalysedScene &scene)
   {
     AnalysesSettings s;
     ParameterReader  r(prm, scene.file);
@@ -315,10 +312,8 @@ namespace wearlink::io
           r.fail("List of analyses", "valid analyses are " + std::string(analysis_names));
       }
 
-    std::vector<std::string> clearance;
-    for (const auto *j : scene.clearance_joints)
-      clearance.push_back(j->name());
-    s.joints = r.get_list("Joints");
+    const auto &clearance = scene.clearance_joints;
+    s.joints              = r.get_list("Joints");
     if (s.joints.empty())
       s.joints = clearance;
     for (const auto &j : s.joints)
@@ -335,7 +330,7 @@ namespace wearlink::io
         }
     s.bodies = r.get_list("Bodies");
     for (const auto &b : s.bodies)
-      if (scene.mechanism->body_index(b) < 0)
+      if (std::find(scene.bodies.begin(), scene.bodies.end(), b) == scene.bodies.end())
         r.fail("Bodies", "'" + b + "' is not a body of this scene (ground cannot be analysed)");
 
     s.given_driving_period = r.get_double("Driving period");
@@ -363,8 +358,6 @@ namespace wearlink::io
     parse_before_after(r, s);
     r.leave();
     r.leave();
-    if (s.poincare)
-      driving_period(scene, s); // throws if there is none, or the phase exceeds it
     if (s.lyapunov && !s.methods.empty() && s.joints.empty() && s.bodies.empty())
       throw InputError("In " + scene.file +
                        ", 'Analyses/List of analyses' has lyapunov but there is nothing to "
@@ -372,17 +365,17 @@ namespace wearlink::io
     return s;
   }
 
-  std::vector<analysis::PublishedExponents>
+  std::vector<PublishedExponents>
   parse_published_exponents(const std::string &text, const std::string &where)
   {
-    std::vector<analysis::PublishedExponents> out;
+    std::vector<PublishedExponents> out;
     for (const auto &item : dealii::Utilities::split_string_list(text, ','))
       {
         if (item.empty())
           continue;
-        const auto                   colon = item.find(':');
-        std::istringstream           values(colon == std::string::npos ? std::string() : item.substr(colon + 1));
-        analysis::PublishedExponents p;
+        const auto         colon = item.find(':');
+        std::istringstream values(colon == std::string::npos ? std::string() : item.substr(colon + 1));
+        PublishedExponents p;
         p.channel = dealii::Utilities::trim(item.substr(0, colon));
         std::string rest;
         if (colon == std::string::npos || p.channel.empty() || !(values >> p.before >> p.after) || (values >> rest) ||
@@ -398,4 +391,4 @@ namespace wearlink::io
     return out;
   }
 
-} // namespace wearlink::io
+} // namespace wearlink::analysis

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/uncertainty_parameters.h"
+#include "analysis/uncertainty_parameters.h"
 
 #include "base/exceptions.h"
 #include "base/parameters.h"
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <set>
 
-namespace wearlink::io
+namespace wearlink::analysis
 {
   namespace P = dealii::Patterns;
 
@@ -91,10 +91,10 @@ namespace wearlink::io
     }
   } // namespace
 
-  analysis::InputDistribution
+  InputDistribution
   parse_distribution(const std::string &text)
   {
-    using D                  = analysis::InputDistribution;
+    using D                  = InputDistribution;
     const std::string family = trim(text.substr(0, text.find('(')));
     if (family == "normal")
       {
@@ -166,12 +166,12 @@ namespace wearlink::io
     }
   } // namespace
 
-  analysis::UncertaintySettings
-  parse_uncertainty(dealii::ParameterHandler       &prm,
-                    const std::string              &file,
-                    const std::vector<std::string> &inactive_prefixes)
+  UncertaintySettings
+  read_uncertainty(dealii::ParameterHandler       &prm,
+                   const std::string              &file,
+                   const std::vector<std::string> &inactive_prefixes)
   {
-    analysis::UncertaintySettings s;
+    UncertaintySettings s;
     prm.enter_subsection("Uncertainty");
     const std::string inputs = prm.get("Inputs");
     s.seed                   = static_cast<std::uint64_t>(prm.get_integer("Seed"));
@@ -208,4 +208,4 @@ namespace wearlink::io
       }
     return s;
   }
-} // namespace wearlink::io
+} // namespace wearlink::analysis

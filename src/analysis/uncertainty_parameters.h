@@ -31,9 +31,9 @@
 #include <string>
 #include <vector>
 
-namespace wearlink::io
+namespace wearlink::analysis
 {
-  /** Declare `subsection Uncertainty` (called by the scene reader). */
+  /** Declare `subsection Uncertainty` (called by the scene reader, io/scene_declarations.cc). */
   void
   declare_uncertainty(dealii::ParameterHandler &prm);
 
@@ -41,7 +41,7 @@ namespace wearlink::io
    * One distribution from its text, e.g. "lognormal(4.6e-14, 0.3)". InputError naming
    * the family, the parameter and the allowed range (the caller adds the file and entry).
    */
-  analysis::InputDistribution
+  InputDistribution
   parse_distribution(const std::string &text);
 
   /**
@@ -50,12 +50,12 @@ namespace wearlink::io
    * does not use. InputError naming the file, `Uncertainty/Inputs`, the input, what is
    * allowed and what to do.
    */
-  analysis::UncertaintySettings
-  parse_uncertainty(dealii::ParameterHandler       &prm,
-                    const std::string              &file,
-                    const std::vector<std::string> &inactive_prefixes);
+  UncertaintySettings
+  read_uncertainty(dealii::ParameterHandler       &prm,
+                   const std::string              &file,
+                   const std::vector<std::string> &inactive_prefixes);
 
   /** The syntax of an input as a user writes it, for messages and documentation. */
   std::string
   uncertainty_syntax();
-} // namespace wearlink::io
+} // namespace wearlink::analysis

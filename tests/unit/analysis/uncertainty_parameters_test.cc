@@ -3,9 +3,9 @@
 // distributions in their documented parametrisation, the entry checks (a declared,
 // numeric entry in a part the scene uses, listed once) and the messages of bad input
 // (file, entry, what is allowed).
+#include "analysis/uncertainty_parameters.h"
 #include "base/exceptions.h"
 #include "io/scene.h"
-#include "io/uncertainty_parameters.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -35,15 +35,15 @@ namespace
 
 TEST(UncertaintyParameters, DistributionsInTheirDocumentedParametrisation)
 {
-  const auto n = io::parse_distribution("normal(0.15, 0.02)");
+  const auto n = analysis::parse_distribution("normal(0.15, 0.02)");
   EXPECT_EQ(n.kind, analysis::DistributionKind::normal);
   EXPECT_DOUBLE_EQ(n.quantile(0.5), 0.15);
-  const auto l = io::parse_distribution("lognormal(4.6e-14, 0.3)");
+  const auto l = analysis::parse_distribution("lognormal(4.6e-14, 0.3)");
   EXPECT_DOUBLE_EQ(l.quantile(0.5), 4.6e-14) << "the first parameter is the median";
   EXPECT_NEAR(l.quantile(0.8413447460685429), 4.6e-14 * std::exp(0.3), 1e-26) << "the second the σ of ln x";
-  const auto u = io::parse_distribution("uniform( 0.8 , 0.95 )");
+  const auto u = analysis::parse_distribution("uniform( 0.8 , 0.95 )");
   EXPECT_DOUBLE_EQ(u.quantile(0.25), 0.8375);
-  const auto t = io::parse_distribution("truncated normal(2e-4, 1e-5, 1.95e-4, 2e-4)");
+  const auto t = analysis::parse_distribution("truncated normal(2e-4, 1e-5, 1.95e-4, 2e-4)");
   EXPECT_EQ(t.kind, analysis::DistributionKind::truncated_normal);
   EXPECT_LE(t.quantile(0.999999), 2e-4);
   EXPECT_GE(t.quantile(1e-6), 1.95e-4);
@@ -58,7 +58,7 @@ TEST(UncertaintyParameters, DistributionsInTheirDocumentedParametrisation)
                           "uniform(1, 1)",
                           "truncated normal(0, 1, 1, 0)",
                           "uniform(a, 1)"})
-    EXPECT_THROW(io::parse_distribution(bad), InputError) << bad;
+    EXPECT_THROW(analysis::parse_distribution(bad), InputError) << bad;
 }
 
 TEST(UncertaintyParameters, TheSceneReadsItsUncertainInputs)

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include "io/life_parameters.h"
+#include "analysis/life_parameters.h"
 
 #include "base/exceptions.h"
 #include "base/parameters.h"
-#include "io/scene.h"
 
-namespace wearlink::io
+#include <algorithm>
+
+namespace wearlink::analysis
 {
   namespace
   {
@@ -126,11 +127,11 @@ namespace wearlink::io
     prm.leave_subsection();
   }
 
-  analysis::LifeSettings
-  parse_life(dealii::ParameterHandler &prm, const Scene &scene)
+  LifeSettings
+  read_life(dealii::ParameterHandler &prm, const std::string &file, const std::vector<std::string> &bodies)
   {
-    analysis::LifeSettings s;
-    ParameterReader        r(prm, scene.file);
+    LifeSettings    s;
+    ParameterReader r(prm, file);
     r.enter("Life");
     s.max_wear_depth     = r.get_double("Maximum wear depth");
     s.clearance_growth   = r.get_double("Radial clearance growth");
@@ -145,30 +146,11 @@ namespace wearlink::io
     s.max_iterations     = static_cast<unsigned int>(r.get_integer("Maximum iterations"));
     if (!s.response_body.empty())
       {
-        bool known = false;
-        for (const auto &b : scene.mechanism->get_bodies())
-          known = known || b.name == s.response_body;
-        if (!known)
+        if (std::find(bodies.begin(), bodies.end(), s.response_body) == bodies.end())
           r.fail("Response body", "it must be a body of the scene (Mechanism/Bodies)");
       }
     r.leave();
     return s;
   }
 
-  void
-  check_life_criteria(const Scene &scene)
-  {
-    if (!analysis::active_criteria(scene.life).empty() && !scene.wear.empty())
-      return;
-    if (scene.wear.empty())
-      throw InputError("`wearlink life` runs the wear loop, but no clearance joint of " + scene.file +
-                       " has a Wear law: set 'Joint <J>/Clearance/Wear law = archard' with its Pressure "
-                       "model and archard data (see params/nine_bar_wear.prm).");
-    throw InputError("In " + scene.file +
-                     ", subsection 'Life' sets no stop criterion, so `wearlink life` would not know when "
-                     "the joint is worn out. Set at least one of 'Life/Maximum wear depth' (m, > 0 … 0.1), "
-                     "'Life/Radial clearance growth' (m, > 0 … 0.1), 'Life/Pin mass loss' (mg, > 0 … 1e9), "
-                     "'Life/Bushing mass loss' (mg, > 0 … 1e9), 'Life/Response rise' (%, > 0 … 1e4) to a "
-                     "positive limit, e.g. --set \"Life/Maximum wear depth=5e-5\".");
-  }
-} // namespace wearlink::io
+} // namespace wearlink::analysis
