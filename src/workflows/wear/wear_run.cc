@@ -186,7 +186,12 @@ namespace wearlink::workflows
       return s;
     }
 
-    /** The scene's dynamics as the wear loop advances them (no analyses per iteration). */
+    /**
+     * The scene's dynamics as the wear loop advances them (no analyses per iteration).
+     * Their validity warnings go into @p warnings named as the iterations' ("wear
+     * iterations' dynamics: largest constraint violation …", the largest over them): the
+     * summary's dynamics figures are those of the response run after wear.
+     */
     wear::AdvanceDynamics
     dynamics_of(io::Scene &scene, ValidityWarnings &warnings)
     {
@@ -202,8 +207,14 @@ namespace wearlink::workflows
         ro.final_state   = &y1;
         ro.observers     = observers;
         ro.analyses      = false; // the scene's analyses run before and after wear instead
-        ro.warnings      = &warnings;
+        ValidityWarnings own;
+        ro.warnings = &own;
         integrate_scene(scene, ro);
+        for (auto w : own.warnings())
+          {
+            w.quantity = "wear iterations' dynamics: " + w.quantity;
+            warnings.check(w);
+          }
         return y1;
       };
     }
