@@ -321,10 +321,7 @@ namespace wearlink::io
                          " coordinates (3 per body): the mechanism is over-constrained. "
                          "Remove a joint or driver.");
     }
-  } // namespace
 
-  namespace
-  {
     /**
      * The sections the analysis layer declares (Analyses, Life, Uncertainty), read
      * against the built scene; a Poincaré section also needs the driving period.

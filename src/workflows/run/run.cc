@@ -469,13 +469,22 @@ namespace wearlink::workflows
     {
       if (csv)
         csv->commit();
-      std::ostringstream prm;
-      scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
-      write_file_atomically(options.output_directory + "/" + io::outputs::parameters, prm.str());
-      write_file_atomically(options.output_directory + "/" + io::outputs::summary, summary.dump(2));
-      warnings.print(std::cerr);
+      write_run_summary(scene, options.output_directory, summary, warnings);
     }
   } // namespace
+
+  void
+  write_run_summary(const io::Scene        &scene,
+                    const std::string      &directory,
+                    const Json             &summary,
+                    const ValidityWarnings &warnings)
+  {
+    std::ostringstream prm;
+    scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
+    write_file_atomically(directory + "/" + io::outputs::parameters, prm.str());
+    write_file_atomically(directory + "/" + io::outputs::summary, summary.dump(2));
+    warnings.print(std::cerr);
+  }
 
   IntegratedRun
   integrate_scene(io::Scene &scene, const RunOptions &options, const std::function<AtomicFile *()> &time_series)

@@ -82,10 +82,21 @@ namespace wearlink::workflows
   /**
    * A run of @p scene from its start to its end time: integrate_scene(), then, if
    * options.output_directory is set, its files (time_series.csv, parameters.prm,
-   * summary.json, the first look). Returns the run summary (doc/running.md, "What a run writes").
+   * summary.json). Returns the run summary (doc/running.md, "What a run writes").
    */
   Json
   run_scene(io::Scene &scene, const RunOptions &options);
+
+  /**
+   * The closing files of a run of @p scene in @p directory, each atomically: parameters.prm
+   * (the effective scene), then @p summary as summary.json; @p warnings printed to stderr.
+   * run_scene() ends with it, and so does a wear run.
+   */
+  void
+  write_run_summary(const io::Scene        &scene,
+                    const std::string      &directory,
+                    const Json             &summary,
+                    const ValidityWarnings &warnings);
 
   /**
    * The results of a run (its @p summary) beyond the validity of their models: a

@@ -488,15 +488,10 @@ namespace wearlink::workflows
 
     /** summary.json and parameters.prm of a finished wear run. */
     void
-    write_run_files(const io::Scene &scene, const std::string &dir, WearRunResult &result, const double total)
+    write_run_files(const io::Scene &scene, const std::string &dir, WearRunResult &result)
     {
-      result.timings.total            = total;
       result.summary["wear_timing_s"] = result.timings.to_json();
-      std::ostringstream prm;
-      scene.parameters->print_parameters(prm, dealii::ParameterHandler::ShortText);
-      write_file_atomically(dir + "/" + io::outputs::parameters, prm.str());
-      write_file_atomically(dir + "/" + io::outputs::summary, result.summary.dump(2));
-      result.warnings.print(std::cerr);
+      write_run_summary(scene, dir, result.summary, result.warnings);
     }
   } // namespace
 
@@ -694,7 +689,7 @@ namespace wearlink::workflows
   WearRun::write_summary(WearRunResult &result) const
   {
     if (m->options.final_outputs && m->write)
-      write_run_files(m->scene, m->dir, result, result.timings.total);
+      write_run_files(m->scene, m->dir, result);
   }
 
   WearRunResult
