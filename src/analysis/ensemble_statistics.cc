@@ -21,9 +21,9 @@ namespace wearlink::analysis
   EnsembleFigure
   ensemble_figure(const std::vector<double> &values)
   {
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-    EnsembleFigure   f;
-    double           sum = 0;
+    using numbers::nan;
+    EnsembleFigure f;
+    double         sum = 0;
     for (const double v : values)
       if (std::isfinite(v))
         {

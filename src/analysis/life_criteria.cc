@@ -2,6 +2,7 @@
 #include "analysis/life_criteria.h"
 
 #include "analysis/ensemble_statistics.h"
+#include "base/numbers.h"
 #include "base/text.h"
 #include "wear/depth_measures.h"
 
@@ -12,7 +13,7 @@ namespace wearlink::analysis
 {
   namespace
   {
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    using numbers::nan;
 
     /** The envelope depth of h + f Δh over @p window areas [m] (wear/depth_measures.h). */
     double

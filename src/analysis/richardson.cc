@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "analysis/richardson.h"
 
+#include "base/numbers.h"
 #include "base/text.h"
 
 #include <algorithm>
@@ -11,7 +12,7 @@ namespace wearlink::analysis
 {
   namespace
   {
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    using numbers::nan;
 
     /** Not determinable, with why. */
     RichardsonEstimate

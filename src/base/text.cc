@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "base/text.h"
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -21,6 +22,12 @@ namespace wearlink
     std::ostringstream os;
     os << std::setprecision(significant_digits) << value;
     return os.str();
+  }
+
+  std::string
+  format_or_na(const double value, const int significant_digits)
+  {
+    return std::isfinite(value) ? format_number(value, significant_digits) : "n/a";
   }
 
   bool

@@ -21,6 +21,10 @@ namespace wearlink
   std::string
   format_number(double value, int significant_digits = std::numeric_limits<double>::max_digits10);
 
+  /** format_number(), or "n/a" for a value that is not finite (a figure not available). */
+  std::string
+  format_or_na(double value, int significant_digits = 4);
+
   /**
    * Whether @p s is well-formed UTF-8 (no stray continuation bytes, no truncated or
    * overlong sequences, no surrogates, nothing above U+10FFFF). Text that ends up in a

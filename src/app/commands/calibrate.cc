@@ -18,8 +18,9 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text = std::string(
-                                    R"(wearlink calibrate SCENE.prm --measurements MEAS.prm [--ensemble N] [--seed S]
+    const std::string calibrate_help =
+      std::string(
+        R"(wearlink calibrate SCENE.prm --measurements MEAS.prm [--ensemble N] [--seed S]
                    [--perturbation RAD] [--tolerance T] [--max-runs R] [--set "S/E=V" ...]
                    [--output DIR] [--overwrite] [--quiet]
 
@@ -89,7 +90,7 @@ Written into DIR, each file atomically, only when the calibration succeeded:
                     and the intervals
   calibration.png   measured against predicted mass loss per surface
 )") + output_folder_help +
-                                  R"(  --overwrite        replace the files of an earlier calibration in DIR
+      R"(  --overwrite        replace the files of an earlier calibration in DIR
 
 Exit status: 0 success; 2 bad input (a missing or malformed measurements file, an entry
 that is not a finite number, Revolutions <= 0 or fewer than the scene simulates, a
@@ -168,6 +169,6 @@ run that failed numerically; 4 an output that cannot be written; 1 an internal e
   const Command        calibrate_command = {"calibrate",
                                             "calibrate SCENE.prm --measurements MEAS.prm  wear coefficients from "
                                                    "measured mass losses",
-                                            help_text.c_str(),
+                                            calibrate_help.c_str(),
                                             calibrate};
 } // namespace wearlink::app

@@ -16,7 +16,7 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text =
+    const std::string compare_contact_help =
       std::string(R"(wearlink compare-contact SCENE.prm [--output DIR] [--worn DIR] [--cycles N] [--no-effects]
                                   [--overwrite] [--set "Section/Entry=value" ...]
 
@@ -58,7 +58,7 @@ internal error (see `wearlink --help`).
 )" + io::outputs::listing(io::outputs::compare_contact());
 
     int
-    run(const std::vector<std::string> &args)
+    run_compare_contact(const std::vector<std::string> &args)
     {
       const auto a = parse_arguments(args,
                                      {{"--output", true},
@@ -100,6 +100,6 @@ internal error (see `wearlink --help`).
   const Command        compare_contact_command = {"compare-contact",
                                                   "compare-contact SCENE.prm [--worn DIR]  simplified contact laws "
                                                          "against the FE model: curves, deviations, effects, pressures",
-                                                  help_text.c_str(),
-                                                  run};
+                                                  compare_contact_help.c_str(),
+                                                  run_compare_contact};
 } // namespace wearlink::app

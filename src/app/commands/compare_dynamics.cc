@@ -21,7 +21,7 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text =
+    const std::string compare_dynamics_help =
       std::string(
         R"(wearlink compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR] [--overwrite] [--delay S] [--embedding M]
         [--methods wolf,rosenstein] [--directions x,y] [--scan S1,S2,...] [--bodies B1,B2]
@@ -116,7 +116,7 @@ ran out, 1 an internal error (see `wearlink --help`).
     }
 
     int
-    run(const std::vector<std::string> &args)
+    run_compare_dynamics(const std::vector<std::string> &args)
     {
       const auto a = parse_arguments(args,
                                      {{"--output", true},
@@ -201,6 +201,6 @@ ran out, 1 an internal error (see `wearlink --help`).
   const Command        compare_dynamics_command = {"compare-dynamics",
                                                    "compare-dynamics BEFORE_DIR AFTER_DIR [--output DIR]  "
                                                           "dynamics before vs after wear",
-                                                   help_text.c_str(),
-                                                   run};
+                                                   compare_dynamics_help.c_str(),
+                                                   run_compare_dynamics};
 } // namespace wearlink::app

@@ -17,8 +17,9 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text = std::string(
-                                    R"(wearlink compare-pressure SCENE.prm [--models a,b,c] [--cycles N] [--output DIR]
+    const std::string compare_pressure_help =
+      std::string(
+        R"(wearlink compare-pressure SCENE.prm [--models a,b,c] [--cycles N] [--output DIR]
                                    [--overwrite] [--set "Section/Entry=value" ...]
 
 Simulates N cycles (default: Wear/Cycles per iteration) of a wear scene once, records
@@ -32,14 +33,15 @@ pressure evaluations and the wall time. The load sampling follows Wear/Pressure
 evaluation (with fe, 'samples per cycle' keeps it affordable).
 Writes into DIR (default: output/<scene name>_compare): compare_pressure.csv,
 compare_depth_<J>.csv and compare_depth_<J>.png.
-)") + output_folder_help + R"(
+)") + output_folder_help +
+      R"(
 Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files),
 3 numerical failure, 4 an output that cannot be written or memory that ran out, 1 an
 internal error (see `wearlink --help`).
 )" + io::outputs::listing(io::outputs::compare_pressure());
 
     int
-    run(const std::vector<std::string> &args)
+    run_compare_pressure(const std::vector<std::string> &args)
     {
       const auto a = parse_arguments(
         args,
@@ -68,6 +70,6 @@ internal error (see `wearlink --help`).
   const Command        compare_pressure_command = {"compare-pressure",
                                                    "compare-pressure SCENE.prm [--models a,b,c]  same load history "
                                                           "through several pressure models (wear volumes and profiles)",
-                                                   help_text.c_str(),
-                                                   run};
+                                                   compare_pressure_help.c_str(),
+                                                   run_compare_pressure};
 } // namespace wearlink::app

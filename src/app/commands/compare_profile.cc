@@ -14,8 +14,9 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text = std::string(
-                                    R"(wearlink compare-profile RUN_DIR MEASURED.csv --surface bore|pin --joint J
+    const std::string compare_profile_help =
+      std::string(
+        R"(wearlink compare-profile RUN_DIR MEASURED.csv --surface bore|pin --joint J
                          [--angle-search DEG] [--output DIR] [--overwrite] [--quiet]
 
 Compares a measured worn surface (a profilometer or CMM trace of a pin or a bushing
@@ -56,7 +57,7 @@ file atomically:
   profile_comparison.png   wear depth [um] against angle [deg]: predicted, measured
                            (turned by the rotation found), and their difference
 )") + output_folder_help +
-                                  R"(  --overwrite        replace the files of an earlier comparison in DIR
+      R"(  --overwrite        replace the files of an earlier comparison in DIR
 
 Exit status: 0 success; 2 bad input (a missing run folder or file, a line of a CSV
 file that is not two finite numbers, a radius <= 0, two measured points at the same
@@ -103,6 +104,6 @@ written; 1 an internal error (see `wearlink --help`).
   const Command        compare_profile_command = {"compare-profile",
                                                   "compare-profile RUN_DIR MEASURED.csv --surface bore|pin --joint J  "
                                                          "measured against predicted worn profile",
-                                                  help_text.c_str(),
+                                                  compare_profile_help.c_str(),
                                                   compare_profile};
 } // namespace wearlink::app

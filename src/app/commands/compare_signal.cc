@@ -15,8 +15,9 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text = std::string(
-                                    R"(wearlink compare-signal SCENE.prm MEASURED.csv --channel NAME [--column NAME]
+    const std::string compare_signal_help =
+      std::string(
+        R"(wearlink compare-signal SCENE.prm MEASURED.csv --channel NAME [--column NAME]
                         [--simulated RUN_DIR] [--output DIR] [--set S/E=V ...] [--quiet]
 
 Compares a simulated signal with a measured one. MEASURED.csv has a header row with a
@@ -54,7 +55,8 @@ Prints a table (simulated, measured, difference) and writes into DIR, atomically
 Bad input (a missing file or column, a time that does not increase, a field that is
 not a number, too few samples, no overlap with the simulated interval) is refused with
 exit status 2 before anything is run or written.
-)") + output_folder_help + io::outputs::listing(io::outputs::compare_signal());
+)") + output_folder_help +
+      io::outputs::listing(io::outputs::compare_signal());
 
     int
     compare_signal(const std::vector<std::string> &args)
@@ -94,6 +96,6 @@ exit status 2 before anything is run or written.
   const Command        compare_signal_command = {"compare-signal",
                                                  "compare-signal SCENE.prm MEASURED.csv --channel NAME  "
                                                         "simulated against measured signal: peaks, RMS, spectra, lag",
-                                                 help_text.c_str(),
+                                                 compare_signal_help.c_str(),
                                                  compare_signal};
 } // namespace wearlink::app

@@ -26,7 +26,7 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text =
+    const std::string contact_help =
       std::string(R"(wearlink contact CASE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...]
 wearlink contact --print-parameters
 
@@ -122,7 +122,7 @@ internal error (see `wearlink --help`).
     }
 
     int
-    run(const std::vector<std::string> &args)
+    run_contact(const std::vector<std::string> &args)
     {
       // MPI (and PETSc) for the distributed reference solver; a plain run is one rank.
       int                                      mpi_argc   = 1;
@@ -169,6 +169,6 @@ internal error (see `wearlink --help`).
   extern const Command contact_command;
   const Command        contact_command = {"contact",
                                           "contact CASE.prm [--output DIR] [--set S/E=V ...]",
-                                          help_text.c_str(),
-                                          run};
+                                          contact_help.c_str(),
+                                          run_contact};
 } // namespace wearlink::app

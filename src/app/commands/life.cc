@@ -17,7 +17,7 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text =
+    const std::string life_help =
       std::string(R"(wearlink life SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
 wearlink life SCENE.prm --resume DIR [--set ...] [--quiet]
 [mpirun -np R] wearlink life SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [--sensitivity saltelli] [...]
@@ -134,7 +134,7 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
     }
 
     int
-    run(const std::vector<std::string> &args)
+    run_life(const std::vector<std::string> &args)
     {
       std::vector<OptionSpec> spec = {{"--output", true},
                                       {"--set", true, true},
@@ -186,6 +186,6 @@ signal N (the last checkpoint kept), 1 an internal error (see `wearlink --help`)
   const Command        life_command = {"life",
                                        "life SCENE.prm [--output DIR] [--set S/E=V ...]  "
                                               "wear until the scene's Life criteria: revolutions to each",
-                                       help_text.c_str(),
-                                       run};
+                                       life_help.c_str(),
+                                       run_life};
 } // namespace wearlink::app

@@ -24,7 +24,7 @@ namespace wearlink::app
     using namespace wearlink::analysis;
 
 
-    const std::string help_text = R"(wearlink lyapunov SERIES.csv --column NAME [options]
+    const std::string lyapunov_help = R"(wearlink lyapunov SERIES.csv --column NAME [options]
 
 Largest Lyapunov exponent (LLE) of one column of a CSV file (first row: column names,
 comma-separated; lines starting with # are ignored).
@@ -104,7 +104,7 @@ that ran out, 1 an internal error (see `wearlink --help`).
     }
 
     int
-    run(const std::vector<std::string> &argv)
+    run_lyapunov(const std::vector<std::string> &argv)
     {
       const ParsedArguments args = parse_arguments(argv,
                                                    {{"--column", true},
@@ -166,6 +166,6 @@ that ran out, 1 an internal error (see `wearlink --help`).
            "lyapunov",
            "lyapunov SERIES.csv --column NAME [--method wolf|rosenstein] [--dt S] [--embedding M] "
                   "[--delay K] [--output DIR]",
-           help_text.c_str(),
-           run};
+           lyapunov_help.c_str(),
+           run_lyapunov};
 } // namespace wearlink::app

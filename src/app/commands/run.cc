@@ -28,7 +28,7 @@ namespace wearlink::app
 
   namespace
   {
-    const std::string help_text =
+    const std::string run_help =
       std::string(R"(wearlink run SCENE.prm [--output DIR] [--overwrite] [--set "Section/Entry=value" ...] [--quiet]
 wearlink run SCENE.prm --resume DIR [--set ...] [--quiet]
 wearlink run SCENE.prm --ensemble N [--seed S] [--perturbation RAD] [--sensitivity saltelli] [--output DIR] [...]
@@ -229,7 +229,7 @@ memory that ran out, 130 / 143 / 129 stopped by SIGINT / SIGTERM / SIGHUP, 1 an 
     }
 
     int
-    run(const std::vector<std::string> &args)
+    run_run(const std::vector<std::string> &args)
     {
       std::vector<OptionSpec> spec = {{"--output", true},
                                       {"--set", true, true},
@@ -281,6 +281,6 @@ memory that ran out, 130 / 143 / 129 stopped by SIGINT / SIGTERM / SIGHUP, 1 an 
   const Command        run_scene_command = {"run",
                                             "run SCENE.prm [--output DIR] [--set S/E=V ...]  "
                                                    "simulate a mechanism scene",
-                                            help_text.c_str(),
-                                            run};
+                                            run_help.c_str(),
+                                            run_run};
 } // namespace wearlink::app

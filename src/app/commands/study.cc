@@ -25,7 +25,7 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text =
+    const std::string study_help =
       std::string(R"(wearlink study convergence SCENE.prm [--output DIR] [--set "Section/Entry=value" ...]
                      [--refinements 1,2,4] [--ensemble N] [--seed S] [--perturbation RAD]
                      [--overwrite] [--quiet]
@@ -258,7 +258,7 @@ output that cannot be written or memory that ran out, 1 an internal error (see
     }
 
     int
-    run(const std::vector<std::string> &args)
+    run_study(const std::vector<std::string> &args)
     {
       const std::vector<std::string> rest(args.empty() ? args.end() : args.begin() + 1, args.end());
       if (!args.empty() && args[0] == "accuracy")
@@ -274,6 +274,6 @@ output that cannot be written or memory that ran out, 1 an internal error (see
   const Command        study_command = {"study",
                                         "study accuracy|convergence SCENE.prm  what accuracy costs in time "
                                                "(every knob in turn); do the worn profiles converge",
-                                        help_text.c_str(),
-                                        run};
+                                        study_help.c_str(),
+                                        run_study};
 } // namespace wearlink::app

@@ -18,8 +18,8 @@ namespace wearlink::app
 {
   namespace
   {
-    const std::string help_text = std::string(
-                                    R"(wearlink sweep SCENE.prm --parameter "Section/Entry" --values FROM:TO:COUNT
+    const std::string sweep_help = std::string(
+                                     R"(wearlink sweep SCENE.prm --parameter "Section/Entry" --values FROM:TO:COUNT
                [--channel NAME] [--output DIR] [--set "Section/Entry=value" ...]
 mpirun -np N wearlink sweep ...   (the same, members spread over N MPI ranks)
 
@@ -111,7 +111,7 @@ members.csv, bifurcation.png, sweep.json.
     }
 
     int
-    run(const std::vector<std::string> &args)
+    run_sweep(const std::vector<std::string> &args)
     {
       const auto a = parse_arguments(args,
                                      {{"--parameter", true},
@@ -151,6 +151,6 @@ members.csv, bifurcation.png, sweep.json.
   const Command        sweep_command = {"sweep",
                                         "sweep SCENE.prm --parameter \"S/E\" --values FROM:TO:COUNT [--channel NAME] "
                                                "[--output DIR]  bifurcation diagram (MPI: mpirun -np N wearlink sweep ...)",
-                                        help_text.c_str(),
-                                        run};
+                                        sweep_help.c_str(),
+                                        run_sweep};
 } // namespace wearlink::app

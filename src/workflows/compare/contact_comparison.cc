@@ -30,9 +30,9 @@ namespace wearlink::workflows
 {
   namespace
   {
-    constexpr double nan             = std::numeric_limits<double>::quiet_NaN();
-    constexpr int    n_grid          = 48; ///< points of the approach grid
-    const char      *dynamics_laws[] = {"lankarani-nikravesh", "johnson", "esdu-78035", "fe"};
+    using numbers::nan;
+    constexpr int n_grid          = 48; ///< points of the approach grid
+    const char   *dynamics_laws[] = {"lankarani-nikravesh", "johnson", "esdu-78035", "fe"};
 
     /** What the comparison needs of one clearance joint of the scene. */
     struct JointData
@@ -500,20 +500,11 @@ namespace wearlink::workflows
   namespace
   {
     std::string
-    number(const double x, const int digits = 4)
-    {
-      if (!std::isfinite(x))
-        return "n/a";
-      std::ostringstream os;
-      os << std::setprecision(digits) << x;
-      return os.str();
-    }
-
-    std::string
     effects_table(const ContactComparison &c)
     {
       std::ostringstream os;
-      os << "Effect of the law on the dynamics (" << number(c.cycles) << " driving cycles; F_mean: over the time in "
+      os << "Effect of the law on the dynamics (" << format_or_na(c.cycles)
+         << " driving cycles; F_mean: over the time in "
          << "contact):\n";
       os << std::left << std::setw(22) << "law";
       for (const auto &j : c.joints)
@@ -525,10 +516,11 @@ namespace wearlink::workflows
         {
           os << std::left << std::setw(22) << e.law << std::right;
           for (std::size_t k = 0; k < c.joints.size(); ++k)
-            os << std::setw(12) << number(e.contact_fraction[k], 3) << std::setw(12) << number(e.peak_force[k], 5)
-               << std::setw(13) << number(e.mean_contact_force[k], 4) << std::setw(11) << e.impacts[k];
-          os << std::setw(14) << number(e.peak_acceleration, 5) << std::setw(10) << e.steps << std::setw(10)
-             << number(e.wall_time, 3) << std::setw(12) << number(e.table_setup_time, 3) << '\n';
+            os << std::setw(12) << format_or_na(e.contact_fraction[k], 3) << std::setw(12)
+               << format_or_na(e.peak_force[k], 5) << std::setw(13) << format_or_na(e.mean_contact_force[k], 4)
+               << std::setw(11) << e.impacts[k];
+          os << std::setw(14) << format_or_na(e.peak_acceleration, 5) << std::setw(10) << e.steps << std::setw(10)
+             << format_or_na(e.wall_time, 3) << std::setw(12) << format_or_na(e.table_setup_time, 3) << '\n';
         }
       return os.str();
     }
@@ -537,7 +529,7 @@ namespace wearlink::workflows
     wear_table(const ContactComparison &c)
     {
       std::ostringstream os;
-      os << "One wear iteration with each law (" << number(c.wear_cycles)
+      os << "One wear iteration with each law (" << format_or_na(c.wear_cycles)
          << " simulated cycles from assembly, the scene's pressure model, no extrapolation): worn volume Σ h A of pin "
             "and bushing and Archard's k_D ∫ F_n |v_t| dt of the pin [mm³]:\n";
       os << std::left << std::setw(22) << "law";
@@ -549,10 +541,10 @@ namespace wearlink::workflows
         {
           os << std::left << std::setw(22) << e.law << std::right;
           for (std::size_t k = 0; k < c.wear_joints.size(); ++k)
-            os << std::setw(14) << number(e.wear_volume_pin[k] * 1e9, 4) << std::setw(14)
-               << number(e.wear_volume_bushing[k] * 1e9, 4) << std::setw(14)
-               << number(e.archard_volume_pin[k] * 1e9, 4);
-          os << std::setw(10) << number(e.wear_wall_time, 3) << '\n';
+            os << std::setw(14) << format_or_na(e.wear_volume_pin[k] * 1e9, 4) << std::setw(14)
+               << format_or_na(e.wear_volume_bushing[k] * 1e9, 4) << std::setw(14)
+               << format_or_na(e.archard_volume_pin[k] * 1e9, 4);
+          os << std::setw(10) << format_or_na(e.wear_wall_time, 3) << '\n';
         }
       return os.str();
     }
@@ -572,7 +564,7 @@ namespace wearlink::workflows
       {
         os << std::left << std::setw(8) << d.joint << std::setw(22) << d.law << std::setw(8) << d.state;
         for (const double r : d.ratio)
-          os << std::right << std::setw(10) << number(r, 3);
+          os << std::right << std::setw(10) << format_or_na(r, 3);
         os << '\n';
       }
     if (!effects.empty())

@@ -23,9 +23,9 @@ namespace wearlink::workflows
 {
   namespace
   {
+    using numbers::nan;
     using numbers::pi;
     using numbers::two_pi;
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
     /** @p x [N] to three significant digits. */
     double
@@ -220,16 +220,6 @@ namespace wearlink::workflows
 
   namespace
   {
-    std::string
-    number(const double x, const int digits)
-    {
-      if (!std::isfinite(x))
-        return "n/a";
-      std::ostringstream os;
-      os << std::setprecision(digits) << x;
-      return os.str();
-    }
-
     /**
      * True if α_c of @p c is resolved: from 1.5 areas on (within 6 % for a Hertz strip;
      * below it the estimate is off by up to 25 %, see the header).
@@ -244,7 +234,8 @@ namespace wearlink::workflows
     std::string
     half_angle_text(const PressureCurve &c)
     {
-      return resolved(c) ? number(c.half_angle * 180 / pi, 3) : "<" + number(1.5 * c.area_width * 180 / pi, 2);
+      return resolved(c) ? format_or_na(c.half_angle * 180 / pi, 3) :
+                           "<" + format_or_na(1.5 * c.area_width * 180 / pi, 2);
     }
 
     /** The fe curve of @p c's joint, state and load (nullptr if there is none). */
@@ -282,9 +273,9 @@ namespace wearlink::workflows
           }
         os << std::left << std::setw(7) << c.joint << std::setw(7) << c.state << std::right << std::setw(9)
            << load_label(c.load) << "  " << std::left << std::setw(13) << c.model << std::right << std::setw(11)
-           << number(c.peak * 1e-6, 4) << std::setw(8) << number(fe ? c.peak / fe->peak : nan, 3) << std::setw(10)
-           << half_angle_text(c) << std::setw(8)
-           << number(resolved(c) && fe && resolved(*fe) ? c.half_angle / fe->half_angle : nan, 3) << '\n';
+           << format_or_na(c.peak * 1e-6, 4) << std::setw(8) << format_or_na(fe ? c.peak / fe->peak : nan, 3)
+           << std::setw(10) << half_angle_text(c) << std::setw(8)
+           << format_or_na(resolved(c) && fe && resolved(*fe) ? c.half_angle / fe->half_angle : nan, 3) << '\n';
       }
     return os.str();
   }

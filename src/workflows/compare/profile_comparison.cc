@@ -18,7 +18,7 @@ namespace wearlink::workflows
   namespace
   {
     /** Digits of the printed table. */
-    constexpr int table_digits = 5;
+    constexpr int profile_digits = 5;
 
     double
     degrees(const double radians)
@@ -88,11 +88,11 @@ namespace wearlink::workflows
     }
 
     std::string
-    table_of(const Json &j)
+    profile_table(const Json &j)
     {
       std::ostringstream out;
       const auto         number = [&](const char *key) {
-        return format_number(json_number(j.at(key)), table_digits);
+        return format_number(json_number(j.at(key)), profile_digits);
       };
       const auto row = [&](const std::string &name, const std::string &value) {
         out << "  " << std::left << std::setw(34) << name << value << "\n";
@@ -130,7 +130,7 @@ namespace wearlink::workflows
       analysis::compare_profile(measured, run.worn, run.unworn, surface, o.angle_search_deg * numbers::pi / 180);
     ProfileComparisonResult r;
     r.json  = comparison_json(o, run, measured, c);
-    r.table = table_of(r.json);
+    r.table = profile_table(r.json);
     make_output_directory(o.output_directory);
     r.files = io::write_profile_comparison(o.output_directory, r.json, c, {o.joint, o.surface, o.measured_file});
     return r;

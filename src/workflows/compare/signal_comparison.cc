@@ -23,7 +23,7 @@ namespace wearlink::workflows
   namespace
   {
     /** Digits of the printed table. */
-    constexpr int table_digits = 5;
+    constexpr int signal_digits = 5;
     /** The spectrum plot reaches this many times the highest dominant frequency. */
     constexpr double spectrum_reach = 4.0;
 
@@ -129,14 +129,14 @@ namespace wearlink::workflows
     }
 
     std::string
-    table_of(const Json &j)
+    signal_table(const Json &j)
     {
       std::ostringstream out;
       const auto         row = [&](const std::string &name, const std::string &key) {
         const double s = json_number(j.at("simulated").at(key)), m = json_number(j.at("measured").at(key));
         out << "  " << std::left << std::setw(28) << name << std::right << std::setw(14)
-            << format_number(s, table_digits) << std::setw(14) << format_number(m, table_digits) << std::setw(14)
-            << format_number(m - s, table_digits) << "\n";
+            << format_number(s, signal_digits) << std::setw(14) << format_number(m, signal_digits) << std::setw(14)
+            << format_number(m - s, signal_digits) << "\n";
       };
       out << "  " << std::left << std::setw(28) << j.at("channel").get<std::string>() << std::right << std::setw(14)
           << "simulated" << std::setw(14) << "measured" << std::setw(14) << "difference\n";
@@ -145,8 +145,8 @@ namespace wearlink::workflows
       row("rms", "rms");
       row("mean", "mean");
       out << "  cycles: " << j.at("simulated").at("peak_per_cycle").size() << " of "
-          << format_number(json_number(j.at("cycle_period_s")), table_digits)
-          << " s; lag of the measured signal: " << format_number(json_number(j.at("lag_s")), table_digits)
+          << format_number(json_number(j.at("cycle_period_s")), signal_digits)
+          << " s; lag of the measured signal: " << format_number(json_number(j.at("lag_s")), signal_digits)
           << " s (correlation " << format_number(json_number(j.at("correlation_at_lag")), 3) << ")\n";
       return out.str();
     }
@@ -217,7 +217,7 @@ namespace wearlink::workflows
     SignalComparisonResult r;
     make_output_directory(o.output_directory);
     r.json                = comparison_json(c, o, simulated, measured, period);
-    r.table               = table_of(r.json);
+    r.table               = signal_table(r.json);
     const std::string dir = o.output_directory + "/";
     if (io::plot_png(overlay_plot(c, o, measured.column), dir + io::outputs::signal_overlay))
       r.files.push_back(dir + io::outputs::signal_overlay);

@@ -4,6 +4,7 @@
 #include "analysis/ensemble_statistics.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "base/parameters.h"
 #include "base/text.h"
 #include "io/output_names.h"
@@ -35,7 +36,7 @@ namespace wearlink::workflows
 
   namespace
   {
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    using numbers::nan;
 
     /** The scene's effective parameters under @p overrides, as text: equal texts are equal runs. */
     std::string

@@ -3,6 +3,7 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "base/text.h"
 #include "io/output_names.h"
 #include "io/plot.h"
@@ -20,7 +21,7 @@ namespace wearlink::workflows
 {
   namespace
   {
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    using numbers::nan;
 
     /** The two surfaces of a wearing joint: the measurement's tag and the name shown. */
     const std::vector<std::pair<std::string, std::string>> surface_tags = {{"pin", "pin"}, {"bush", "bushing"}};

@@ -3,6 +3,7 @@
 
 #include "analysis/cycle_peaks.h"
 #include "base/exceptions.h"
+#include "base/numbers.h"
 #include "base/text.h"
 #include "io/life_outputs.h"
 #include "io/output_names.h"
@@ -21,7 +22,7 @@ namespace wearlink::workflows
 {
   namespace
   {
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    using numbers::nan;
 
     /** Index of the Life response body (Life/Response body, else Wear/Response body). */
     int

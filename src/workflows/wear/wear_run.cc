@@ -27,6 +27,18 @@
 
 namespace wearlink::workflows
 {
+  /**
+   * What a wear run takes from its scene, read once. Outside the anonymous namespace
+   * because WearRun::Members holds one (GCC's -Wsubobject-linkage in a unity build).
+   */
+  struct WearSetup
+  {
+    double                          period   = 0; ///< one wear cycle [s]
+    int                             response = 0; ///< index of the response body
+    std::string                     response_name;
+    std::vector<wear::WearingJoint> wearing; ///< in the order of scene.wear
+  };
+
   namespace
   {
     /**
@@ -162,14 +174,6 @@ namespace wearlink::workflows
       return compare_dynamics(runs[0], runs[1], cs, dir);
     }
 
-    /** What a wear run takes from its scene, read once. */
-    struct WearSetup
-    {
-      double                          period   = 0; ///< one wear cycle [s]
-      int                             response = 0; ///< index of the response body
-      std::string                     response_name;
-      std::vector<wear::WearingJoint> wearing; ///< in the order of scene.wear
-    };
 
     WearSetup
     wear_setup(io::Scene &scene)
