@@ -10,6 +10,7 @@
 // worn clearance at the start of every iteration and the mean contact force exceeds m g
 // by a few tenths of a percent).
 #include "base/json.h"
+#include "base/numbers.h"
 #include "base/output_directory.h"
 #include "io/json_file.h"
 #include "support/test_support.h"
@@ -26,7 +27,7 @@ using namespace wearlink::testing;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using wearlink::numbers::pi;
 
   /** N = M / (ρ k_D m g 2π R): revolutions to wear mass @p mg_limit off a surface. */
   double

@@ -33,12 +33,7 @@ namespace
                                                "Wear/Number of iterations=3",
                                                "Wear/Extrapolation factor=2000"};
 
-  std::vector<std::string>
-  with(std::vector<std::string> a, const std::vector<std::string> &b)
-  {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-  }
+  using wearlink::testing::with;
 
   /** Wait until a temporary file appears in @p dir (the run has started writing). */
   bool

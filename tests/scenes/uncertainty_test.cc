@@ -57,15 +57,7 @@ namespace
             "Uncertainty/Seed=5"};
   }
 
-  /** P_p of @p v by linear interpolation between the order statistics (type 7). */
-  double
-  type7(std::vector<double> v, const double p)
-  {
-    std::sort(v.begin(), v.end());
-    const double      h = (v.size() - 1) * p;
-    const std::size_t k = static_cast<std::size_t>(h);
-    return k + 1 < v.size() ? v[k] + (h - k) * (v[k + 1] - v[k]) : v[k];
-  }
+  using wearlink::testing::type7;
 } // namespace
 
 TEST(UncertainEnsemble, TheWearCoefficientDrivesTheWornVolumeOnAnyRankCount)

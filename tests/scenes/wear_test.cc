@@ -75,12 +75,7 @@ namespace
 
   const std::vector<std::string> short_run = {"Wear/Cycles per iteration=0.5", "Wear/Response cycles=0.1"};
 
-  std::vector<std::string>
-  with(std::vector<std::string> a, const std::vector<std::string> &b)
-  {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-  }
+  using wearlink::testing::with;
 } // namespace
 
 TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)

@@ -3,6 +3,7 @@
 
 #include "base/exceptions.h"
 
+#include <algorithm>
 #include <array>
 #include <csignal>
 #include <cstdio>
@@ -223,5 +224,21 @@ namespace wearlink::testing
     if (::waitpid(pid, &status, 0) != pid)
       return -1;
     return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
+  }
+
+  std::vector<std::string>
+  with(std::vector<std::string> a, const std::vector<std::string> &b)
+  {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  }
+
+  double
+  type7(std::vector<double> v, const double p)
+  {
+    std::sort(v.begin(), v.end());
+    const double      h = (v.size() - 1) * p;
+    const std::size_t k = static_cast<std::size_t>(h);
+    return k + 1 < v.size() ? v[k] + (h - k) * (v[k + 1] - v[k]) : v[k];
   }
 } // namespace wearlink::testing

@@ -84,4 +84,15 @@ namespace wearlink::testing
   /** Wait for @p pid; its exit status, or 128 + the signal that ended it. */
   int
   wait_for(int pid);
+
+  /** @p a followed by @p b (scene overrides added to a list). */
+  std::vector<std::string>
+  with(std::vector<std::string> a, const std::vector<std::string> &b);
+
+  /**
+   * The @p p quantile of @p v by linear interpolation between the order statistics
+   * (Hyndman & Fan's type 7), written here independently of the library's.
+   */
+  double
+  type7(std::vector<double> v, double p);
 } // namespace wearlink::testing

@@ -15,7 +15,7 @@ using wearlink::io::read_time_signal;
 namespace
 {
   std::string
-  write(const std::string &name, const std::string &text)
+  write_signal(const std::string &name, const std::string &text)
   {
     const std::string file = wearlink::testing::fresh_directory("signal_" + name) + "/" + name + ".csv";
     std::ofstream(file) << text;
@@ -43,12 +43,13 @@ namespace
 
 TEST(SignalFile, ReadsTheOnlyValueColumnOrTheNamedOne)
 {
-  const auto one = read_time_signal(write("one", rows("time_s,a_m_s2", 20)), "", "measured signal", "--column");
+  const auto one = read_time_signal(write_signal("one", rows("time_s,a_m_s2", 20)), "", "measured signal", "--column");
   EXPECT_EQ(one.column, "a_m_s2");
   ASSERT_EQ(one.values.size(), 20u);
   EXPECT_DOUBLE_EQ(one.time[5], 5e-3);
   EXPECT_DOUBLE_EQ(one.values[5], 5);
-  const auto two = read_time_signal(write("two", rows("time_s,a,b", 20, ",7")), "b", "measured signal", "--column");
+  const auto two =
+    read_time_signal(write_signal("two", rows("time_s,a,b", 20, ",7")), "b", "measured signal", "--column");
   EXPECT_EQ(two.values[3], 7);
 }
 
@@ -57,31 +58,31 @@ TEST(SignalFile, BadInputNamesTheFileAndTheColumn)
   const std::string missing = message("/no/such/measured.csv", "");
   EXPECT_NE(missing.find("/no/such/measured.csv"), std::string::npos) << missing;
 
-  const std::string file_b = write("no_column", rows("time_s,a", 20));
+  const std::string file_b = write_signal("no_column", rows("time_s,a", 20));
   const std::string no_col = message(file_b, "accel");
   EXPECT_NE(no_col.find(file_b), std::string::npos) << no_col;
   EXPECT_NE(no_col.find("'accel'"), std::string::npos) << no_col;
   EXPECT_NE(no_col.find("--column"), std::string::npos) << no_col;
 
-  const std::string several = message(write("several", rows("time_s,a,b", 20, ",1")), "");
+  const std::string several = message(write_signal("several", rows("time_s,a,b", 20, ",1")), "");
   EXPECT_NE(several.find("--column"), std::string::npos) << several;
 
-  const std::string no_time = message(write("no_time", rows("t,a", 20)), "");
+  const std::string no_time = message(write_signal("no_time", rows("t,a", 20)), "");
   EXPECT_NE(no_time.find("'time_s'"), std::string::npos) << no_time;
 
   std::string text = rows("time_s,a", 20);
   text += "0.005,3\n"; // back in time
-  const std::string back = message(write("non_monotone", text), "a");
+  const std::string back = message(write_signal("non_monotone", text), "a");
   EXPECT_NE(back.find("'time_s'"), std::string::npos) << back;
   EXPECT_NE(back.find("line 22"), std::string::npos) << back;
 
   std::string nan = rows("time_s,a", 20);
   nan += "0.5,nan\n";
-  const std::string not_a_number = message(write("nan", nan), "a");
+  const std::string not_a_number = message(write_signal("nan", nan), "a");
   EXPECT_NE(not_a_number.find("column 'a'"), std::string::npos) << not_a_number;
   EXPECT_NE(not_a_number.find("line 22"), std::string::npos) << not_a_number;
 
-  const std::string file_few = write("few", rows("time_s,a", 5));
+  const std::string file_few = write_signal("few", rows("time_s,a", 5));
   const std::string few      = message(file_few, "a");
   EXPECT_NE(few.find(file_few), std::string::npos) << few;
   EXPECT_NE(few.find("at least 16"), std::string::npos) << few;

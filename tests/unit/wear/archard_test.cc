@@ -16,6 +16,7 @@
 //    relative leaves room for rounding only);
 //  - the bushing wear is localized: non-zero only within b/R1 + one area of φ*, with
 //    its maximum on the area facing the load.
+#include "base/numbers.h"
 #include "base/parameters.h"
 #include "contact/pressure_model.h"
 #include "unit/contact/pressure_model_support.h"
@@ -31,7 +32,7 @@ using namespace wearlink::wear::testing;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using wearlink::numbers::pi;
 } // namespace
 
 TEST(Archard, ConstantLoadOnRotatingPin)

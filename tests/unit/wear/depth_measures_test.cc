@@ -4,6 +4,7 @@
 // roughness of a smooth pocket is ~0 whatever its curvature, that of a saw-tooth between
 // neighbouring areas is its amplitude over the depth; the window is the odd number of
 // areas nearest to the contact width, at least 3.
+#include "base/numbers.h"
 #include "wear/depth_measures.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,7 @@ using namespace wearlink::wear;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using wearlink::numbers::pi;
 
   /** A 30 µm pocket of half-width @p half_deg degrees (a cosine bell) on @p n areas. */
   std::vector<double>

@@ -8,6 +8,7 @@
 // rigid imprint of a 15 µm deep pocket, ±14° against the strip's ±2°). Both remove the
 // same Archard volume k_D F s f; the sequential pocket is smooth (roughness below 5 %).
 // Each pressure model: hertz-strip (explicit, split states), winkler (implicit).
+#include "base/numbers.h"
 #include "unit/contact/pressure_model_support.h"
 #include "wear/archard.h"
 #include "wear/depth_measures.h"
@@ -22,7 +23,7 @@ using namespace wearlink::wear::testing;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using wearlink::numbers::pi;
 
   /** Width of the region deeper than half the deepest area [areas]. */
   unsigned int

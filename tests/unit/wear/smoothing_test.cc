@@ -3,6 +3,7 @@
 // Σ h_k R_k is kept to rounding, also on a worn surface whose radii differ from area to
 // area, a sinusoid at the stated wavelength keeps half its amplitude, long waves pass,
 // the saw-tooth of neighbouring areas is removed, 0 changes nothing.
+#include "base/numbers.h"
 #include "wear/wear_loop.h"
 
 #include <gtest/gtest.h>
@@ -15,8 +16,8 @@ using wearlink::wear::smoothed;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
-  constexpr double R  = 0.012;
+  using wearlink::numbers::pi;
+  constexpr double R = 0.012;
 
   /** A round surface of radius R on @p n samples. */
   std::vector<double>
