@@ -13,6 +13,7 @@
 //     quadrature and the finite-ring mode truncation;
 //   - the size of the pairing choice (ray of the pin normal, as in the FE model, against
 //     the closest point with the bore normal).
+#include "base/numbers.h"
 #include "exact_kernel_contact.h"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,6 @@ using namespace wearlink::validation;
 
 namespace
 {
-  constexpr double pi = 3.141592653589793238462643383279502884;
 
   ElasticRing
   pin_ring(const ExactKernelPair &p)
@@ -173,9 +173,9 @@ TEST(ExactKernelModes, KernelAgainstDirectModeSum)
             }
           const auto   k     = ring_point_force_response(ring, d);
           const double scale = std::abs(k[0]);
-          EXPECT_LT(std::abs(k[0] - mean_rr / (pi * R)), 2e-6 * scale) << "d = " << d;
-          EXPECT_LT(std::abs(k[1] - mean_tr / (pi * R)), 2e-6 * scale) << "d = " << d;
-          EXPECT_LT(std::abs(k[2] - mean_tt / (pi * R)), 2e-6 * scale) << "d = " << d;
+          EXPECT_LT(std::abs(k[0] - mean_rr / (wearlink::numbers::pi * R)), 2e-6 * scale) << "d = " << d;
+          EXPECT_LT(std::abs(k[1] - mean_tr / (wearlink::numbers::pi * R)), 2e-6 * scale) << "d = " << d;
+          EXPECT_LT(std::abs(k[2] - mean_tt / (wearlink::numbers::pi * R)), 2e-6 * scale) << "d = " << d;
         }
     }
 }
@@ -191,8 +191,8 @@ TEST(ExactKernelContact, HertzLimitAt100N)
   const double          P  = 100 / p.axial_length;
   const double          Rs = p.bore_radius * p.pin_radius / (p.bore_radius - p.pin_radius);
   const double Es = 1 / ((1 - p.nu_bushing * p.nu_bushing) / p.E_bushing + (1 - p.nu_pin * p.nu_pin) / p.E_pin);
-  const double b = std::sqrt(4 * P * Rs / (pi * Es)), p0 = 2 * P / (pi * b);
-  const auto   r = solve_exact_kernel_contact(p, 100, -pi / 2);
+  const double b = std::sqrt(4 * P * Rs / (wearlink::numbers::pi * Es)), p0 = 2 * P / (wearlink::numbers::pi * b);
+  const auto   r = solve_exact_kernel_contact(p, 100, -wearlink::numbers::pi / 2);
   std::cout << std::setprecision(7) << "  Hertz b = " << b * 1e3 << " mm, p0 = " << p0 / 1e6 << " MPa\n"
             << "  exact kernel: half-width " << r.half_width * 1e3 << " mm (" << 100 * (r.half_width / b - 1)
             << " %), peak " << r.peak_pressure / 1e6 << " MPa (" << 100 * (r.peak_pressure / p0 - 1) << " %)\n";
@@ -201,7 +201,7 @@ TEST(ExactKernelContact, HertzLimitAt100N)
   EXPECT_LT(rel(r.half_angle, r.half_width / p.bore_radius), 1e-3);
   // conforming small-load limit π ε²/4 = P/(E* ΔR) · R2/R1
   const double conforming = P / (Es * (p.bore_radius - p.pin_radius)) * p.pin_radius / p.bore_radius;
-  EXPECT_LT(rel(pi * r.half_angle * r.half_angle / 4, conforming), 1e-2);
+  EXPECT_LT(rel(wearlink::numbers::pi * r.half_angle * r.half_angle / 4, conforming), 1e-2);
 }
 
 
@@ -216,17 +216,18 @@ TEST(ExactKernelContact, GridConvergence)
   for (const double F : {100.0, 1e3, 1e4, 1e5})
     {
       ExactKernelOptions opt;
-      opt.window_half_angle = solve_exact_kernel_contact(p, F, -pi / 2).window_half_angle;
+      opt.window_half_angle = solve_exact_kernel_contact(p, F, -wearlink::numbers::pi / 2).window_half_angle;
       std::vector<ExactKernelResult> levels;
       for (const unsigned int J : {50u, 100u, 200u, 400u})
         {
           opt.nodes_per_half_window = J;
-          levels.push_back(solve_exact_kernel_contact(p, F, -pi / 2, opt));
+          levels.push_back(solve_exact_kernel_contact(p, F, -wearlink::numbers::pi / 2, opt));
           const auto &r = levels.back();
           std::cout << std::setw(8) << static_cast<long>(F) << std::setw(6) << J << std::fixed << std::setprecision(5)
-                    << std::setw(13) << r.peak_pressure / 1e6 << std::setw(18) << r.half_angle * 180 / pi
-                    << std::setw(17) << r.half_width * 1e3 << std::setw(15) << r.approach * 1e6 << std::setprecision(2)
-                    << std::setw(10) << r.solve_time << std::defaultfloat << "\n";
+                    << std::setw(13) << r.peak_pressure / 1e6 << std::setw(18)
+                    << r.half_angle * 180 / wearlink::numbers::pi << std::setw(17) << r.half_width * 1e3
+                    << std::setw(15) << r.approach * 1e6 << std::setprecision(2) << std::setw(10) << r.solve_time
+                    << std::defaultfloat << "\n";
         }
       const auto &fine = levels[3], &coarse = levels[2];
       EXPECT_LT(rel(coarse.peak_pressure, fine.peak_pressure), 1e-3) << "F = " << F;
@@ -245,7 +246,7 @@ TEST(ExactKernelContact, EquilibriumAndConsistency)
   const ExactKernelPair p;
   for (const double F : {100.0, 1e3, 1e4, 1e5})
     {
-      const auto r = solve_exact_kernel_contact(p, F, -pi / 2);
+      const auto r = solve_exact_kernel_contact(p, F, -wearlink::numbers::pi / 2);
       EXPECT_LT(std::hypot(r.resultant[0], r.resultant[1] + F) / F, 1e-10) << "F = " << F;
       EXPECT_LT(std::abs(r.pin_displacement[0]), 1e-12 * r.approach);
       EXPECT_LT(rel(r.elastic_approach, r.approach), 1e-5);
@@ -267,7 +268,7 @@ TEST(ExactKernelContact, DirectionQuadratureAndModes)
     {
       ExactKernelOptions opt;
       opt.nodes_per_half_window = 200;
-      const auto ref            = solve_exact_kernel_contact(p, F, -pi / 2, opt);
+      const auto ref            = solve_exact_kernel_contact(p, F, -wearlink::numbers::pi / 2, opt);
       opt.window_half_angle     = ref.window_half_angle;
       const auto rotated        = solve_exact_kernel_contact(p, F, 2.1, opt);
       EXPECT_LT(rel(rotated.peak_pressure, ref.peak_pressure), 1e-10);
@@ -277,7 +278,7 @@ TEST(ExactKernelContact, DirectionQuadratureAndModes)
       ExactKernelOptions other = opt;
       other.quadrature_points  = 8;
       other.mode_tolerance     = 1e-8;
-      const auto r             = solve_exact_kernel_contact(p, F, -pi / 2, other);
+      const auto r             = solve_exact_kernel_contact(p, F, -wearlink::numbers::pi / 2, other);
       EXPECT_LT(rel(r.peak_pressure, ref.peak_pressure), 1e-6);
       EXPECT_LT(rel(r.half_angle, ref.half_angle), 1e-6);
       EXPECT_LT(rel(r.approach, ref.approach), 1e-6);
@@ -296,10 +297,10 @@ TEST(ExactKernelContact, PairingChoice)
   for (const auto &[F, tol] : {std::pair<double, double>{100, 1e-4}, {1e5, 5e-3}})
     {
       ExactKernelOptions opt;
-      const auto         ray    = solve_exact_kernel_contact(p, F, -pi / 2, opt);
+      const auto         ray    = solve_exact_kernel_contact(p, F, -wearlink::numbers::pi / 2, opt);
       opt.window_half_angle     = ray.window_half_angle;
       opt.closest_point_pairing = true;
-      const auto closest        = solve_exact_kernel_contact(p, F, -pi / 2, opt);
+      const auto closest        = solve_exact_kernel_contact(p, F, -wearlink::numbers::pi / 2, opt);
       std::cout << "  F = " << F << " N, closest point vs ray: peak "
                 << 100 * (closest.peak_pressure / ray.peak_pressure - 1) << " %, half-angle "
                 << 100 * (closest.half_angle / ray.half_angle - 1) << " %, approach "
