@@ -314,7 +314,7 @@ namespace wearlink::validation
           sn                = sn * c1 + cn * s1;
           cn                = next;
         }
-      return {rr, tr, tt};
+      return {{rr, tr, tt}};
     }
 
     /** Gauss–Legendre points and weights on [0, 1]. */
@@ -398,12 +398,12 @@ namespace wearlink::validation
         {
           const Eigen::Vector2d x     = e + pair.pin_radius * n;
           const double          alpha = wrap(std::atan2(x[1], x[0]) - phi);
-          return {pair.bore_radius - x.norm(), alpha, alpha};
+          return {{pair.bore_radius - x.norm(), alpha, alpha}};
         }
       const double          en = e.dot(n);
       const double          s  = -en + std::sqrt(en * en + pair.bore_radius * pair.bore_radius - e.squaredNorm());
       const Eigen::Vector2d x  = e + s * n;
-      return {s - pair.pin_radius, wrap(std::atan2(x[1], x[0]) - phi), psi};
+      return {{s - pair.pin_radius, wrap(std::atan2(x[1], x[0]) - phi), psi}};
     }
 
     Kinematics
@@ -449,7 +449,7 @@ namespace wearlink::validation
       const double J0 = F0(1 - c) - F0(-c);          // ∫ ln|t − c| dt
       const double J1 = F1(1 - c) - F1(-c) + c * J0; // ∫ t ln|t − c| dt
       const double lh = -0.5 * std::log(h);
-      return {h * (lh - (J0 - J1)), h * (lh - J1)};
+      return {{h * (lh - (J0 - J1)), h * (lh - J1)}};
     }
 
     /**
@@ -829,7 +829,7 @@ namespace wearlink::validation
           r.pressure.push_back(j == 0 || j == nodes - 1 ? 0.0 : s.contact.lambda[j - 1]);
         }
       const Eigen::Vector2d resultant = pair.axial_length * s.W.transpose() * s.contact.lambda;
-      r.resultant                     = {resultant[0], resultant[1]};
+      r.resultant                     = {{resultant[0], resultant[1]}};
       const auto top                  = std::max_element(r.pressure.begin(), r.pressure.end()) - r.pressure.begin();
       r.peak_pressure                 = r.pressure[top];
       if (top > 0 && top + 1 < nodes) // vertex of the parabola through the three nodes
@@ -840,14 +840,14 @@ namespace wearlink::validation
         }
       const double          c = pair.bore_radius - pair.pin_radius;
       const Eigen::Vector2d d(std::cos(pb.phi), std::sin(pb.phi));
-      r.pin_displacement   = {s.e[0], s.e[1]};
+      r.pin_displacement   = {{s.e[0], s.e[1]}};
       r.approach           = s.e.norm() - c;
       r.elastic_approach   = (s.e - c * d).dot(d);
       r.centre_compression = s.centre_compression;
       r.window_half_angle  = grid.J * grid.h;
       r.iterations         = s.iterations;
       r.relinearizations   = s.relinearizations;
-      r.correction_modes   = {pb.pin.n_modes(), pb.bushing.n_modes()};
+      r.correction_modes   = {{pb.pin.n_modes(), pb.bushing.n_modes()}};
       return r;
     }
 
@@ -943,7 +943,7 @@ namespace wearlink::validation
           if (inside_window(r, 0.2))
             {
               const double psi_c = r.half_width / pb.pair.pin_radius;
-              return {opt.window_factor * psi_c, psi_c};
+              return {{opt.window_factor * psi_c, psi_c}};
             }
           window = std::min(1.5 * window, 0.45 * pi);
         }
@@ -1009,7 +1009,7 @@ namespace wearlink::validation
                                 options.max_correction_modes),
                      force_N / pair.axial_length,
                      load_direction_rad};
-    std::array<double, 2> window{options.window_half_angle, 0.8 * options.window_half_angle};
+    std::array<double, 2> window{{options.window_half_angle, 0.8 * options.window_half_angle}};
     if (!(window[0] > 0))
       window = automatic_window(pb, options);
     ExactKernelResult r = solve_window(pb, window[0], options.nodes_per_half_window, options, window[1]);

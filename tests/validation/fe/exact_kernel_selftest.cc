@@ -89,7 +89,8 @@ TEST(ExactKernelModes, FirstModeEquilibrium)
 {
   const ExactKernelPair p;
   for (const ElasticRing &ring : {pin_ring(p), bushing_ring(p)})
-    for (const auto &load : {std::array<double, 2>{1, 0}, std::array<double, 2>{0, 1}, std::array<double, 2>{0.3, -2}})
+    for (const auto &load :
+         {std::array<double, 2>{{1, 0}}, std::array<double, 2>{{0, 1}}, std::array<double, 2>{{0.3, -2}}})
       {
         const double R       = ring.loaded_outside ? ring.outer_radius : ring.inner_radius;
         const double applied = (ring.loaded_outside ? 1 : -1) * R * (load[0] - load[1]);

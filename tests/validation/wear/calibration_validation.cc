@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The seed rig's pin wear coefficient from its measured mass loss (§4.3):
-//   wearlink calibrate params/nine_bar_experiment.prm \
-//     --measurements params/nine_bar_experiment_measurements.prm --ensemble 4
+//   wearlink calibrate params/nine_bar_experiment.prm
+//     --measurements params/nine_bar_experiment_measurements.prm --ensemble 4 (one line)
 // (the whole wear loop, 10 iterations of 5 cycles × 1000, about 5 s a forward run;
 // measured: 6 forward runs, 32 s). Asserted: the calibration succeeds, the ensemble's mean
 // mass loss at the secant's coefficient is within 1 % of the measured 6.3 mg, the
