@@ -2,6 +2,7 @@
 #include "analysis/channels.h"
 
 #include "base/exceptions.h"
+#include "base/numbers.h"
 
 #include <cmath>
 
@@ -9,7 +10,7 @@ namespace wearlink::analysis
 {
   namespace
   {
-    constexpr double two_pi = 6.28318530717958647692;
+    using numbers::two_pi;
   }
 
   double

@@ -81,7 +81,7 @@ namespace wearlink::analysis
      * Mean sample-to-sample step of the delay vectors below this fraction of the
      * attractor extent: the series resolves a continuous trajectory [-].
      */
-    constexpr double max_flow_step = 0.1;
+    constexpr double max_trajectory_step = 0.1;
 
     /**
      * Rise of the smoothed curve from sample @p start to its later peak [nats]. The
@@ -200,7 +200,7 @@ namespace wearlink::analysis
     }
 
     /**
-     * True if consecutive delay vectors are, on average, closer than max_flow_step times
+     * True if consecutive delay vectors are, on average, closer than max_trajectory_step times
      * the attractor extent: the samples resolve a continuous trajectory, so
      * interpolating between them is meaningful (false for maps such as Hénon).
      */
@@ -213,7 +213,7 @@ namespace wearlink::analysis
       for (std::size_t i = 0; i + 1 < M; i += stride, ++n)
         step += distance(series, emb, i, i + 1);
       const double extent = series_extent(series) * std::sqrt(static_cast<double>(emb.dimension));
-      return n > 0 && step / n < max_flow_step * extent;
+      return n > 0 && step / n < max_trajectory_step * extent;
     }
 
     struct FitRegion
