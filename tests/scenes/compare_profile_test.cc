@@ -35,13 +35,13 @@ using wearlink::numbers::two_pi;
 
 namespace
 {
-  const std::vector<std::string> short_wear = {"--set",
-                                               "Wear/Cycles per iteration=0.5",
-                                               "--set",
-                                               "Wear/Response cycles=0.1",
-                                               "--set",
-                                               "Wear/Number of iterations=1",
-                                               "--quiet"};
+  const std::vector<std::string> short_wear_arguments = {"--set",
+                                                         "Wear/Cycles per iteration=0.5",
+                                                         "--set",
+                                                         "Wear/Response cycles=0.1",
+                                                         "--set",
+                                                         "Wear/Number of iterations=1",
+                                                         "--quiet"};
 
   /** The run folder, written once for the tests below. */
   const std::string &
@@ -50,7 +50,7 @@ namespace
     static const std::string dir = [] {
       const std::string out = wl::fresh_directory("compare_profile_run");
       auto args = std::vector<std::string>{"run", wl::source_path("params/nine_bar_wear.prm"), "--output", out};
-      args.insert(args.end(), short_wear.begin(), short_wear.end());
+      args.insert(args.end(), short_wear_arguments.begin(), short_wear_arguments.end());
       const auto r = wl::run_wearlink(args);
       EXPECT_EQ(r.exit_status, 0) << r.output;
       return out;

@@ -27,7 +27,7 @@ namespace
   constexpr double               lag             = 0.37e-3; // s
   constexpr double               dt              = 1e-5;    // the scene's Time series interval
   const std::string              channel         = "slider_ax_m_s2";
-  const std::string              scene           = wl::source_path("params/slider_crank_flores.prm");
+  const std::string              flores_scene    = wl::source_path("params/slider_crank_flores.prm");
   const std::vector<std::string> two_revolutions = {"--set", "Simulation/End time=0.024", "--quiet"};
 
   std::vector<std::string>
@@ -102,21 +102,28 @@ namespace
 TEST(CompareSignal, RecoversTheLagOfTheSimulationsOwnSignalDelayed)
 {
   const std::string dir = wl::fresh_directory("compare_signal");
-  const auto        run =
-    wl::run_wearlink(with_scene_settings({"run", scene, "--output", dir + "/run", "--set", "Output/Plots=false"}));
+  const auto        run = wl::run_wearlink(
+    with_scene_settings({"run", flores_scene, "--output", dir + "/run", "--set", "Output/Plots=false"}));
   ASSERT_EQ(run.exit_status, 0) << run.output;
   const std::string measured = delayed_measurement(dir + "/run", dir + "/measured.csv");
 
   // From the finished run (--simulated).
-  const auto read = wl::run_wearlink(with_scene_settings(
-    {"compare-signal", scene, measured, "--channel", channel, "--simulated", dir + "/run", "--output", dir + "/read"}));
+  const auto read = wl::run_wearlink(with_scene_settings({"compare-signal",
+                                                          flores_scene,
+                                                          measured,
+                                                          "--channel",
+                                                          channel,
+                                                          "--simulated",
+                                                          dir + "/run",
+                                                          "--output",
+                                                          dir + "/read"}));
   ASSERT_EQ(read.exit_status, 0) << read.output;
   EXPECT_NE(read.output.find("dominant frequency [Hz]"), std::string::npos) << read.output;
   expect_recovered_lag(dir + "/read");
 
   // Running the scene itself (into OUTPUT/simulated/).
   const auto ran = wl::run_wearlink(
-    with_scene_settings({"compare-signal", scene, measured, "--channel", channel, "--output", dir + "/ran"}));
+    with_scene_settings({"compare-signal", flores_scene, measured, "--channel", channel, "--output", dir + "/ran"}));
   ASSERT_EQ(ran.exit_status, 0) << ran.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/ran/simulated/time_series.csv"));
   expect_recovered_lag(dir + "/ran");
@@ -124,7 +131,7 @@ TEST(CompareSignal, RecoversTheLagOfTheSimulationsOwnSignalDelayed)
   // The folder of an earlier comparison is refused (exit 2, nothing replaced) unless
   // --overwrite, which removes the command's files (also the simulated/ folder).
   const std::vector<std::string>
-             again{"compare-signal", scene, measured, "--channel", channel, "--output", dir + "/ran"};
+             again{"compare-signal", flores_scene, measured, "--channel", channel, "--output", dir + "/ran"};
   const auto refused = wl::run_wearlink(with_scene_settings(again));
   EXPECT_EQ(refused.exit_status, 2) << refused.output;
   EXPECT_NE(refused.output.find("signal_comparison.json"), std::string::npos) << refused.output;
@@ -167,7 +174,7 @@ TEST(CompareSignal, BadInputIsRefusedBeforeAnythingIsWritten)
   for (std::size_t k = 0; k < cases.size(); ++k)
     {
       const std::string        out = dir + "/out" + std::to_string(k);
-      std::vector<std::string> args{"compare-signal", scene};
+      std::vector<std::string> args{"compare-signal", flores_scene};
       args.insert(args.end(), cases[k].args.begin(), cases[k].args.end());
       args.insert(args.end(), {"--output", out});
       const auto r = wl::run_wearlink(with_scene_settings(args));

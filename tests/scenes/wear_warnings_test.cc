@@ -30,10 +30,10 @@ using namespace wearlink;
 
 namespace
 {
-  const std::vector<std::string> short_wear = {"Wear/Cycles per iteration=0.5",
-                                               "Wear/Response cycles=0.1",
-                                               "Wear/Number of iterations=3",
-                                               "Wear/Extrapolation factor=2000"};
+  const std::vector<std::string> warning_wear = {"Wear/Cycles per iteration=0.5",
+                                                 "Wear/Response cycles=0.1",
+                                                 "Wear/Number of iterations=3",
+                                                 "Wear/Extrapolation factor=2000"};
 
   /** Joints A and B 1 µm long: the Hertz strip of every contact is wider than half the pin. */
   const std::vector<std::string> knife_edge_joints = {"Joint A/Clearance/Axial length=1e-6",
@@ -99,7 +99,7 @@ TEST(WearWarnings, ShippedNineBarWearHasNoHertzHalfAngleWarning)
   workflows::WearRunOptions o;
   o.progress      = false;
   o.final_outputs = true;
-  const auto r    = run_wear(short_wear, o);
+  const auto r    = run_wear(warning_wear, o);
   EXPECT_TRUE(containing(warnings_of(r.summary), "half-angle").empty()) << r.summary.at("warnings").dump(1);
 }
 
