@@ -93,6 +93,8 @@ namespace wearlink::contact
     if (!(c.gap.penetration > 0))
       return;
     ++force_evaluations;
+    if (held) // the mechanism applies the held force (held_contact())
+      return;
     double fn, fel, ft;
     forces(c, fn, fel, ft);
     const mbs::Vec2 f_pin = -fn * c.gap.normal + ft * c.t;
@@ -111,6 +113,24 @@ namespace wearlink::contact
   }                                                     // namespace
 
   void
+  ClearanceJoint::velocity_gradient(const mbs::StateView &s,
+                                    const Contact        &c,
+                                    const mbs::Vec2      &dir,
+                                    const double          sign,
+                                    double               *w) const
+  {
+    auto add = [&](int body, const mbs::Vec2 &point, double side) {
+      if (body == mbs::ground)
+        return;
+      w[3 * body] += sign * side * dir.x();
+      w[3 * body + 1] += sign * side * dir.y();
+      w[3 * body + 2] += sign * side * mbs::cross(point - s.position(body), dir);
+    };
+    add(description.pin_body, c.q_pin, 1);
+    add(description.bushing_body, c.q_bore, -1);
+  }
+
+  void
   ClearanceJoint::stiff_directions(const mbs::StateView             &s,
                                    const unsigned int                n_coordinates,
                                    std::vector<mbs::StiffDirection> &out) const
@@ -119,34 +139,111 @@ namespace wearlink::contact
     contact_kinematics(s, c);
     if (!(c.gap.penetration > 0))
       return;
-    // The gradient of the relative velocity of the contact points along @p dir.
-    auto gradient = [&](const mbs::Vec2 &dir) {
-      Eigen::VectorXd w   = Eigen::VectorXd::Zero(n_coordinates);
-      auto            add = [&](int body, const mbs::Vec2 &point, double sign) {
-        if (body == mbs::ground)
-          return;
-        w[3 * body] += sign * dir.x();
-        w[3 * body + 1] += sign * dir.y();
-        w[3 * body + 2] += sign * mbs::cross(point - s.position(body), dir);
-      };
-      add(description.pin_body, c.q_pin, 1);
-      add(description.bushing_body, c.q_bore, -1);
-      return w;
-    };
-    mbs::StiffDirection normal;
-    normal.w             = gradient(c.gap.normal);
-    normal.position      = true;
-    normal.velocity      = true;
-    normal.position_step = std::max(min_penetration_step, penetration_step_fraction * c.gap.penetration);
-    normal.velocity_step = velocity_step;
-    out.push_back(std::move(normal));
+    // A held contact has no normal compliance left; its friction ramp is still stiff.
+    if (!held)
+      {
+        mbs::StiffDirection normal;
+        normal.w = Eigen::VectorXd::Zero(n_coordinates);
+        velocity_gradient(s, c, c.gap.normal, 1, normal.w.data());
+        normal.position      = true;
+        normal.velocity      = true;
+        normal.position_step = std::max(min_penetration_step, penetration_step_fraction * c.gap.penetration);
+        normal.velocity_step = velocity_step;
+        out.push_back(std::move(normal));
+      }
     if (!friction_law)
       return;
     mbs::StiffDirection sliding;
-    sliding.w             = gradient(c.t);
+    sliding.w = Eigen::VectorXd::Zero(n_coordinates);
+    velocity_gradient(s, c, c.t, 1, sliding.w.data());
     sliding.velocity      = true;
     sliding.velocity_step = velocity_step;
     out.push_back(std::move(sliding));
+  }
+
+  namespace
+  {
+    /** Time shift of the held row's convective difference [s]: q moves by q̇ × this. */
+    constexpr double convective_shift = 1e-6;
+  } // namespace
+
+  double
+  ClearanceJoint::convective_rate(const mbs::StateView &s, const unsigned int n) const
+  {
+    shifted.resize(2 * n);
+    double *q = shifted.data(), *v = shifted.data() + n;
+    for (unsigned int b = 0; 3 * b < n; ++b)
+      {
+        const mbs::Vec2 p = s.position(static_cast<int>(b)), u = s.velocity(static_cast<int>(b));
+        v[3 * b]     = u.x();
+        v[3 * b + 1] = u.y();
+        v[3 * b + 2] = s.angular_velocity(static_cast<int>(b));
+        q[3 * b]     = p.x();
+        q[3 * b + 1] = p.y();
+        q[3 * b + 2] = s.angle(static_cast<int>(b));
+      }
+    double rate[2];
+    for (int side = 0; side < 2; ++side)
+      {
+        const double h = side == 0 ? convective_shift : -2 * convective_shift; // +h, then −h
+        for (unsigned int i = 0; i < n; ++i)
+          q[i] += h * v[i];
+        Contact c;
+        contact_kinematics(mbs::StateView(q, v), c);
+        rate[side] = c.rate;
+      }
+    return (rate[0] - rate[1]) / (2 * convective_shift);
+  }
+
+  void
+  ClearanceJoint::held_contact(const mbs::StateView &s, mbs::HeldContact &out) const
+  {
+    Contact c;
+    contact_kinematics(s, c);
+    const double phi = friction_law ? friction_law->force(1.0, c.slide) : 0.0;
+    velocity_gradient(s, c, c.gap.normal, 1, out.w.data());
+    velocity_gradient(s, c, c.gap.normal, -1, out.g.data());
+    if (phi != 0)
+      velocity_gradient(s, c, c.t, phi, out.g.data());
+    out.penetration        = c.gap.penetration;
+    out.rate               = c.rate;
+    out.stiffness          = c.stiffness;
+    out.exponent           = normal_law->exponent();
+    out.sliding_velocity   = c.slide;
+    out.friction_per_force = phi;
+    out.convective         = convective_rate(s, static_cast<unsigned int>(out.w.size()));
+  }
+
+  bool
+  ClearanceJoint::update_hold(double, const mbs::StateView &s, const double *a)
+  {
+    if (held)
+      {
+        if (held_normal_force > 0)
+          return false;
+        held = false; // no longer pressed: the compliant law takes over towards separation
+        return true;
+      }
+    if (!in_contact)
+      return false;
+    Contact c;
+    contact_kinematics(s, c);
+    if (!(c.gap.penetration > 0) || !(std::abs(c.rate) < description.hold_velocity))
+      return false;
+    // δ̈ = w·q̈ + c: w is non-zero on the two bodies' coordinates only, which the
+    // coordinates up to the later of them cover.
+    const auto n = static_cast<unsigned int>(3 * (std::max(description.pin_body, description.bushing_body) + 1));
+    hold_row.assign(n, 0.0);
+    velocity_gradient(s, c, c.gap.normal, 1, hold_row.data());
+    double acceleration = convective_rate(s, n);
+    for (unsigned int i = 0; i < n; ++i)
+      acceleration += hold_row[i] * a[i];
+    if (!(std::abs(acceleration) < description.hold_acceleration))
+      return false;
+    held              = true;
+    held_normal_force = 0;
+    ++holds;
+    return true;
   }
 
   double
@@ -193,6 +290,7 @@ namespace wearlink::contact
   ClearanceJoint::on_event(double, const mbs::StateView &s, bool onset)
   {
     in_contact = onset;
+    held       = held && onset;
     if (onset)
       {
         Contact c;
@@ -219,6 +317,11 @@ namespace wearlink::contact
     if (c.gap.penetration > 0)
       {
         forces(c, d.normal_force, d.elastic_force, d.friction_force);
+        if (held)
+          {
+            d.normal_force   = held_normal_force;
+            d.friction_force = friction_law ? friction_law->force(held_normal_force, c.slide) : 0.0;
+          }
         d.penetration_rate = c.rate;
         d.sliding_velocity = c.slide;
         d.force_on_pin     = -d.normal_force * c.gap.normal + d.friction_force * c.t;

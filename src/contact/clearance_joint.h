@@ -22,6 +22,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace wearlink::contact
 {
@@ -57,6 +58,14 @@ namespace wearlink::contact
     JointGeometry   geometry;
     EffectiveRadius effective_radius = EffectiveRadius::internal;
     ClearanceForm   clearance_form   = ClearanceForm::exact;
+    /**
+     * Persistent contact held as a constraint (doc/models.md §1.6): taken up after a step
+     * that ends in contact with |δ̇| < hold_velocity and |δ̈| < hold_acceleration, given up
+     * when the held normal force is no longer compressive.
+     */
+    bool   hold_persistent_contact = false;
+    double hold_velocity           = 1e-3; ///< [m/s]
+    double hold_acceleration       = 50;   ///< [m/s²]
   };
 
   /** Everything about the joint at one state, for recording and pressure models. */
@@ -120,6 +129,31 @@ namespace wearlink::contact
     void
     on_event(double t, const mbs::StateView &s, bool onset) override;
 
+    bool
+    can_hold() const override
+    {
+      return description.hold_persistent_contact;
+    }
+    bool
+    holds_contact() const override
+    {
+      return held;
+    }
+    void
+    held_contact(const mbs::StateView &s, mbs::HeldContact &out) const override;
+    void
+    set_held_force(double force) const override
+    {
+      held_normal_force = force;
+    }
+    double
+    held_force() const override
+    {
+      return held ? held_normal_force : 0.0;
+    }
+    bool
+    update_hold(double t, const mbs::StateView &s, const double *a) override;
+
     /** Full evaluation at a state (not counted as a force evaluation). */
     JointDiagnostics
     diagnostics(const mbs::StateView &s) const;
@@ -175,12 +209,19 @@ namespace wearlink::contact
     {
       return captured_impact_velocity;
     }
-    /** Restore the mode (checkpoint / continuation). */
+    /** Restore the mode (checkpoint / continuation); @p hold: the contact was held. */
     void
-    set_mode(bool contact, double impact_velocity)
+    set_mode(bool contact, double impact_velocity, bool hold = false)
     {
       in_contact               = contact;
       captured_impact_velocity = impact_velocity;
+      held                     = contact && hold;
+    }
+    /** Episodes of held contact so far. */
+    long
+    n_holds() const
+    {
+      return holds;
     }
 
   private:
@@ -206,10 +247,22 @@ namespace wearlink::contact
     Gap                             gap;
     double                          contact_stiffness;
 
-    bool         in_contact               = false;
-    double       captured_impact_velocity = 0;
-    long         impacts                  = 0;
-    mutable long force_evaluations        = 0;
+    /** ∂(w·q̇)/∂q q̇ of the held row: δ̇ along a small shift of q by q̇ (central difference). */
+    double
+    convective_rate(const mbs::StateView &s, unsigned int n) const;
+    /** ∂(v_rel·dir)/∂q̇ over @p n coordinates: pin +, bushing − (a stiff or held row). */
+    void
+    velocity_gradient(const mbs::StateView &s, const Contact &c, const mbs::Vec2 &dir, double sign, double *w) const;
+
+    bool                        in_contact               = false;
+    double                      captured_impact_velocity = 0;
+    long                        impacts                  = 0;
+    mutable long                force_evaluations        = 0;
+    bool                        held                     = false;
+    long                        holds                    = 0;
+    mutable double              held_normal_force        = 0;
+    mutable std::vector<double> shifted;  ///< (q, q̇) shifted along q̇ (convective_rate)
+    std::vector<double>         hold_row; ///< w of update_hold()
   };
 
   /** K = 4/(3(σ1 + σ2)) √R* (seed eq. 10), R* per @p form from the nominal radii. */

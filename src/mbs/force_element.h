@@ -38,6 +38,28 @@ namespace wearlink::mbs
     }
   };
 
+  /**
+   * A contact that a force element holds as a constraint while it persists (the journal
+   * sliding on the bore, doc/models.md §1.6): the normal force F is the constraint's
+   * multiplier, the penetration δ(q) is kept at the quasi-static value of that force,
+   * δ_s(F) = (F/K)^(1/e), through Baumgarte's terms at the rate b,
+   *   w·q̈ + c = −2b δ̇ − b² (δ − δ_s(F)),
+   * and the contact applies the generalized force F g. Mechanism::accelerations solves
+   * for F (held_contacts.cc).
+   */
+  struct HeldContact
+  {
+    std::vector<double> w;                        ///< ∂δ/∂q over the n coordinates
+    std::vector<double> g;                        ///< generalized force per newton of F (normal and friction)
+    double              convective         = 0;   ///< c = δ̈ − w·q̈ at this state [m/s²]
+    double              penetration        = 0;   ///< δ [m]
+    double              rate               = 0;   ///< δ̇ [m/s]
+    double              stiffness          = 0;   ///< K [N/mᵉ]
+    double              exponent           = 1.5; ///< e [-]
+    double              sliding_velocity   = 0;   ///< v_t [m/s]
+    double              friction_per_force = 0;   ///< F_t / F at v_t [-]
+  };
+
   class ForceElement
   {
   public:
@@ -92,6 +114,45 @@ namespace wearlink::mbs
     virtual void
     on_event(double /*t*/, const StateView & /*s*/, bool /*onset*/)
     {
+    }
+
+    /** True if the element may hold its contact (update_hold() is called after each step). */
+    virtual bool
+    can_hold() const
+    {
+      return false;
+    }
+    /** True while the element holds its contact as a constraint (HeldContact). */
+    virtual bool
+    holds_contact() const
+    {
+      return false;
+    }
+    /** The held contact's rows at state @p s (w and g sized n already). */
+    virtual void
+    held_contact(const StateView & /*s*/, HeldContact & /*out*/) const
+    {
+    }
+    /** The normal force [N] the mechanism solved for at its last evaluation. */
+    virtual void
+    set_held_force(double /*force*/) const
+    {
+    }
+    /** That force [N] (0 when the contact is not held). */
+    virtual double
+    held_force() const
+    {
+      return 0;
+    }
+    /**
+     * After an accepted step, between steps: take up or give up holding the contact at
+     * state @p s with accelerations @p a (q̈). True if the mode changed (the right-hand
+     * side changes with it).
+     */
+    virtual bool
+    update_hold(double /*t*/, const StateView & /*s*/, const double * /*a*/)
+    {
+      return false;
     }
   };
 } // namespace wearlink::mbs

@@ -266,7 +266,13 @@ namespace wearlink::mbs
     assemble_schur_complement();
     factor_schur_complement(t);
     solve_multipliers();
-    constrained_accelerations(v, a, power);
+    if (solve_held_contacts(s, v, a, power))
+      {
+        held_state.assign(q, q + n_coordinates());
+        held_state.insert(held_state.end(), v, v + n_coordinates());
+      }
+    else
+      constrained_accelerations(v, a, power);
   }
 
   void

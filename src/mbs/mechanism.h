@@ -19,6 +19,7 @@
 #include "mbs/types.h"
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include <array>
 #include <memory>
@@ -161,6 +162,10 @@ namespace wearlink::mbs
     double
     potential_energy(const double *q, const double *v, const double *trig = nullptr) const;
 
+    /** True if the last evaluation that held contacts was at (@p q, @p v) (their forces are from there). */
+    bool
+    held_forces_at(const double *q, const double *v) const;
+
     /** Count of right-hand-side evaluations since construction. */
     long
     n_evaluations() const
@@ -204,6 +209,19 @@ namespace wearlink::mbs
     /** q̈ = M⁻¹ (g − Φqᵀ λ) and the reaction power −q̇ᵀ Φqᵀ λ. */
     void
     constrained_accelerations(const double *v, double *a, PowerTerms &power) const;
+    /**
+     * With held contacts (held_contacts.cc): their normal forces from their acceleration
+     * rows, then q̈, λ and the power terms with those forces applied. False if no
+     * element holds its contact (nothing done).
+     */
+    bool
+    solve_held_contacts(const StateView &s, const double *v, double *a, PowerTerms &power);
+    /**
+     * The response of q̈ to the generalized force @p g (S factored) into @p out, λ's into
+     * `lambda`; returns the response's reaction power −q̇ᵀ Φqᵀ λ_g.
+     */
+    double
+    acceleration_response(const double *v, const std::vector<double> &g, std::vector<double> &out);
 
     std::vector<Body>                          bodies;
     std::vector<std::unique_ptr<Constraint>>   constraints;
@@ -257,10 +275,20 @@ namespace wearlink::mbs
     std::vector<ThetaTerm>  theta_terms;
     std::vector<FullTerm>   full_terms;
     Eigen::VectorXd         rhs, lambda, forces;
-    std::vector<double>     scaled_forces; ///< M⁻¹ g
-    std::vector<double>     trig;          ///< cos θ, sin θ per body
-    std::vector<double>     work;          ///< factorization scratch, then the permuted right-hand side / solution
-    std::vector<double>     inverse_pivot; ///< 1 / D_ii of the last factorization
+    /** Held contacts' workspace: the elements, their rows, the responses of q̈ to them. */
+    std::vector<const ForceElement *>    held_elements;
+    std::vector<HeldContact>             held;
+    std::vector<std::vector<double>>     held_response;
+    std::vector<Eigen::VectorXd>         held_lambda;
+    std::vector<double>                  held_reaction_power;
+    std::vector<double>                  held_state; ///< (q, v) of the last evaluation with held contacts
+    Eigen::VectorXd                      held_lambda_base, forces_backup, held_fixed, held_force, held_rhs;
+    Eigen::MatrixXd                      held_coupling;
+    Eigen::PartialPivLU<Eigen::MatrixXd> held_lu;
+    std::vector<double>                  scaled_forces; ///< M⁻¹ g
+    std::vector<double>                  trig;          ///< cos θ, sin θ per body
+    std::vector<double>                  work; ///< factorization scratch, then the permuted right-hand side / solution
+    std::vector<double>                  inverse_pivot; ///< 1 / D_ii of the last factorization
 
     long evaluations = 0;
   };

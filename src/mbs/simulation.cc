@@ -4,6 +4,7 @@
 #include "base/exceptions.h"
 #include "mbs/body_trig.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -226,10 +227,14 @@ namespace wearlink::mbs
       for (auto *o : observers)
         o->on_start(c);
     }
-    std::vector<ForceElement *> event_elements;
+    std::vector<ForceElement *> event_elements, hold_elements;
     for (const auto &e : mechanism.get_force_elements())
-      if (e->has_event())
-        event_elements.push_back(e.get());
+      {
+        if (e->has_event())
+          event_elements.push_back(e.get());
+        if (e->can_hold())
+          hold_elements.push_back(e.get());
+      }
 
     Eigen::VectorXd             y_start, y_event;
     std::vector<ForceElement *> triggered;
@@ -283,6 +288,9 @@ namespace wearlink::mbs
             roots.swap(now_roots);
           }
 
+        if (!hold_elements.empty() && triggered.empty())
+          locate_hold_release(t_start, y_start, hold_elements);
+
         check_step_budget();
         if (!integrator->state().allFinite())
           throw NumericalError("The state became non-finite at t = " + std::to_string(integrator->time()) + " s.");
@@ -310,6 +318,75 @@ namespace wearlink::mbs
             const Eigen::VectorXd y_now = integrator->state();
             integrator->reset(integrator->time(), y_now);
           }
+        if (!hold_elements.empty() && update_holds(hold_elements))
+          {
+            const Eigen::VectorXd y_now = integrator->state();
+            integrator->reset(integrator->time(), y_now);
+          }
       }
+  }
+
+  void
+  Simulation::held_forces_here(double t, const Eigen::VectorXd &y)
+  {
+    const unsigned int n = mechanism.n_coordinates();
+    if (mechanism.held_forces_at(y.data(), y.data() + n))
+      return;
+    hold_accelerations.resize(n);
+    PowerTerms unused;
+    mechanism.accelerations(t, y.data(), y.data() + n, hold_accelerations.data(), unused);
+  }
+
+  void
+  Simulation::locate_hold_release(const double                       t_start,
+                                  const Eigen::VectorXd             &y_start,
+                                  const std::vector<ForceElement *> &elements)
+  {
+    auto released = [&](const double t, const Eigen::VectorXd &y) {
+      held_forces_here(t, y);
+      return std::any_of(elements.begin(), elements.end(), [](const ForceElement *e) {
+        return e->holds_contact() && !(e->held_force() > 0);
+      });
+    };
+    if (!released(integrator->time(), integrator->state()))
+      return;
+    // The held force fell to zero inside the step: end the step there (bisection on the
+    // dense output, each trial one right-hand side), so that no held contact pulls.
+    double lo = integrator->previous_time(), hi = integrator->time();
+    for (int it = 0; it < 60 && hi - lo > settings.event_time_tolerance; ++it)
+      {
+        const double mid = 0.5 * (lo + hi);
+        integrator->dense_output(mid, scratch.data());
+        hold_state                            = scratch;
+        (released(mid, hold_state) ? hi : lo) = mid;
+      }
+    if (hi < integrator->time() - settings.event_time_tolerance && hi > t_start + settings.event_time_tolerance)
+      {
+        ++restarts;
+        integrator->reset(t_start, y_start);
+        integrator->step(hi);
+      }
+  }
+
+  bool
+  Simulation::update_holds(const std::vector<ForceElement *> &elements)
+  {
+    const unsigned int     n = mechanism.n_coordinates();
+    const Eigen::VectorXd &y = integrator->state();
+    const double          *a = integrator->derivative().data() + n;
+    // A held element reads its force at this point: the last evaluation may have been
+    // elsewhere (a stiffness probe), so evaluate here.
+    if (std::any_of(elements.begin(), elements.end(), [](const ForceElement *e) { return e->holds_contact(); }) &&
+        !mechanism.held_forces_at(y.data(), y.data() + n))
+      {
+        held_forces_here(integrator->time(), y);
+        a = hold_accelerations.data();
+      }
+    const StateView s(y.data(), y.data() + n);
+    bool            changed = false;
+    for (auto *e : elements)
+      changed = e->update_hold(integrator->time(), s, a) || changed;
+    hold_switches += changed ? 1 : 0;
+    return changed;
   }
 } // namespace wearlink::mbs

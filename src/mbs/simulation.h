@@ -189,6 +189,12 @@ namespace wearlink::mbs
     {
       return predicted_onsets;
     }
+    /** Steps after which a force element took up or gave up holding its contact. */
+    long
+    n_hold_switches() const
+    {
+      return hold_switches;
+    }
     /** Steps re-taken to land on an event. */
     long
     n_event_restarts() const
@@ -208,6 +214,18 @@ namespace wearlink::mbs
      */
     double
     step_limit(double t_end, const std::vector<ForceElement *> &elements) const;
+    /** The held forces at (@p t, @p y) in the elements (one evaluation unless they are from there). */
+    void
+    held_forces_here(double t, const Eigen::VectorXd &y);
+    /**
+     * If a held force is no longer compressive at the end of the step from (@p t_start,
+     * @p y_start), re-take the step so that it ends where it fell to zero.
+     */
+    void
+    locate_hold_release(double t_start, const Eigen::VectorXd &y_start, const std::vector<ForceElement *> &elements);
+    /** After an accepted step: let @p elements take up or give up holding; true if any did. */
+    bool
+    update_holds(const std::vector<ForceElement *> &elements);
 
     /**
      * How deep a predicted onset may be crossed by the step that meets it: the
@@ -230,9 +248,11 @@ namespace wearlink::mbs
     MechanismOde                system;
     std::unique_ptr<Integrator> integrator;
     bool                        locate_events;
-    long                        events             = 0;
-    long                        restarts           = 0;
-    mutable long                predicted_onsets   = 0;
+    long                        events           = 0;
+    long                        restarts         = 0;
+    mutable long                predicted_onsets = 0;
+    long                        hold_switches    = 0;
+    Eigen::VectorXd             hold_accelerations, hold_state;
     double                      position_tolerance = 1e-9; ///< absolute, of the coordinates q [m]
     double                      budget_start_time  = 0;    ///< time of initialize() [s]
     long                        budget_start_steps = 0;    ///< steps taken before it

@@ -448,7 +448,7 @@ namespace wearlink::wear
   WearLoop::restore_contact_modes()
   {
     for (unsigned int k = 0; k < clearance_joints.size(); ++k)
-      clearance_joints[k]->set_mode(st.modes[2 * k] != 0, st.modes[2 * k + 1]);
+      clearance_joints[k]->set_mode(st.modes[2 * k] != 0, st.modes[2 * k + 1], st.modes[2 * k] == 2);
   }
 
   void
@@ -456,7 +456,8 @@ namespace wearlink::wear
   {
     for (unsigned int k = 0; k < clearance_joints.size(); ++k)
       {
-        st.modes[2 * k]     = clearance_joints[k]->mode() ? 1 : 0;
+        // 0 free, 1 in contact, 2 in contact and held (Persistent contact = held).
+        st.modes[2 * k]     = clearance_joints[k]->holds_contact() ? 2 : (clearance_joints[k]->mode() ? 1 : 0);
         st.modes[2 * k + 1] = clearance_joints[k]->impact_velocity();
       }
   }

@@ -53,6 +53,7 @@ namespace wearlink::workflows
       bool   was_in_contact     = false;
       /** The joint's counters when this run started (a joint object serves many runs). */
       long impacts_at_start     = 0;
+      long holds_at_start       = 0;
       long evaluations_at_start = 0;
     };
 
@@ -74,6 +75,7 @@ namespace wearlink::workflows
         for (unsigned int i = 0; i < joints.size(); ++i)
           {
             joints[i].impacts_at_start     = scene.clearance_joints[i]->n_impacts();
+            joints[i].holds_at_start       = scene.clearance_joints[i]->n_holds();
             joints[i].evaluations_at_start = scene.clearance_joints[i]->n_force_evaluations();
           }
       }
@@ -222,10 +224,12 @@ namespace wearlink::workflows
             o["max_penetration_m"]    = std::max(0.0, x.max_penetration);
             o["fraction_in_contact"]  = x.contact_time / std::max(1e-300, sim.time() - t_start);
             o["impacts"]              = cj->n_impacts() - x.impacts_at_start;
-            o["force_evaluations"]    = cj->n_force_evaluations() - x.evaluations_at_start;
-            o["normal_force_law"]     = cj->get_description().normal_force_law;
-            o["pressure_model"]       = pressure_model_of(scene, cj->name());
-            const Json law            = cj->normal_force_law().report(); // outlives the loop below
+            if (cj->get_description().hold_persistent_contact)
+              o["held_episodes"] = cj->n_holds() - x.holds_at_start;
+            o["force_evaluations"] = cj->n_force_evaluations() - x.evaluations_at_start;
+            o["normal_force_law"]  = cj->get_description().normal_force_law;
+            o["pressure_model"]    = pressure_model_of(scene, cj->name());
+            const Json law         = cj->normal_force_law().report(); // outlives the loop below
             for (const auto &[key, value] : law.items())
               o[key] = value;
             j[cj->name()] = o;

@@ -71,6 +71,7 @@ namespace wearlink::workflows
         {"integrator-step", "rk4 Time step"},
         {"baumgarte", "Baumgarte alpha = beta"},
         {"contact-law", "Normal force law of every clearance joint"},
+        {"persistent-contact", "Persistent contact of every clearance joint: held (a constraint) against compliant"},
         {"discrete-areas", "Number of discrete areas of every wearing joint's profiles"},
         {"load-sampling", "Wear/Pressure evaluation and Load samples per cycle"},
         {"wear-step",
@@ -529,6 +530,12 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     std::vector<Knob> knobs;
     integrator_knobs(c, knobs);
     contact_law_knob(c, knobs);
+    // Held persistent contact against the compliant law (doc/models.md §1.6); not in --quick.
+    if (!c.clearance.empty() && !c.quick)
+      knobs.push_back(make_knob("persistent-contact",
+                                paths(c.clearance, "Persistent contact"),
+                                {"held", "compliant"},
+                                "every contact by its law"));
     wear_knobs(c, knobs);
     fe_knobs(c, knobs);
     return knobs;

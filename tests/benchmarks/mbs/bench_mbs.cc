@@ -114,6 +114,14 @@ main(int argc, char **argv)
   runs.push_back({"dopri5-stiff", run(clearance, overrides(common, "dopri5-stiff", 1))});
   runs.push_back({"dop853", run(clearance, overrides(common, "dop853", 1))});
   runs.push_back({"chaos floor: dopri5, tol x1.01", run(clearance, overrides(common, "dopri5", 1.01))});
+  {
+    auto held = overrides(common, "dopri5-stiff", 1);
+    held.push_back("Joint A/Clearance/Persistent contact=held");
+    held.push_back("Joint B/Clearance/Persistent contact=held");
+    runs.push_back({"dopri5-stiff, contacts held", run(clearance, held)});
+    auto floor = overrides(common, "dopri5-stiff", 1.01);
+    runs.push_back({"dopri5-stiff, tol x1.01", run(clearance, floor)});
+  }
   runs.push_back({"reference: dopri5, tol x0.1", run(clearance, overrides(common, "dopri5", 0.1))});
   const Json ideal = run("params/nine_bar_ideal.prm", overrides(common, "dopri5", 1));
 
