@@ -109,7 +109,8 @@ namespace wearlink::contact
             "|δ̇| below 'Hold velocity' and |δ̈| below 'Hold acceleration', the pin slides on "
             "the bore as a constraint whose multiplier is the normal force, the penetration "
             "at that force's quasi-static value; the compliant law takes over again when "
-            "the force is no longer compressive, and at every impact.",
+            "the force is no longer compressive, and at every impact. Round profiles only: "
+            "worn ones are integrated with the compliant law.",
             "none");
     declare(prm,
             "Hold velocity",

@@ -342,6 +342,8 @@ namespace wearlink::mbs
                                   const Eigen::VectorXd             &y_start,
                                   const std::vector<ForceElement *> &elements)
   {
+    if (std::none_of(elements.begin(), elements.end(), [](const ForceElement *e) { return e->holds_contact(); }))
+      return;
     auto released = [&](const double t, const Eigen::VectorXd &y) {
       held_forces_here(t, y);
       return std::any_of(elements.begin(), elements.end(), [](const ForceElement *e) {

@@ -5,6 +5,9 @@
 //    the held normal force is the weight m g (equilibrium, to 1e-6) and the penetration
 //    its quasi-static value (m g / K)^(1/n) of the law (to 1e-3: Baumgarte's rate of
 //    1000/s over 50 ms leaves e^-50 of the initial difference);
+//  - worn profiles are not held (the compliant law integrates them; on
+//    params/nine_bar_worn.prm a held row let peak forces grow tenfold): no held episode,
+//    the same steps as the compliant run;
 //  - the nine-bar with both joints held for a crank cycle: contacts are held and given
 //    up, no held force pulls (the release is located in time), and the energy balance
 //    closes within the scene's limit (1000 × the relative tolerance; measured 2e-5).
@@ -80,4 +83,21 @@ TEST(HeldContact, NineBarHoldsAndGivesUpWithTheEnergyBalanceClosed)
   // the re-taken step ends a hair past it (measured −0.003 N against peaks of ~2 kN).
   EXPECT_GT(watch.least_held_force, -0.1) << "a held contact is given up before it pulls";
   EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e3 * 1e-6);
+}
+
+TEST(HeldContact, WornProfilesAreLeftToTheCompliantLaw)
+{
+  auto run = [](const std::string &mode) {
+    auto scene = wearlink::testing::scene("params/nine_bar_worn.prm",
+                                          {"Simulation/End time=0.25",
+                                           "Output/Time series=false",
+                                           "Joint A/Clearance/Persistent contact=" + mode,
+                                           "Joint B/Clearance/Persistent contact=" + mode});
+    return wearlink::testing::run(scene);
+  };
+  const Json held = run("held"), compliant = run("compliant");
+  for (const char *j : {"A", "B"})
+    EXPECT_EQ(json_number(held.at("clearance_joints").at(j).at("held_episodes")), 0) << j;
+  EXPECT_EQ(json_number(held.at("steps")), json_number(compliant.at("steps")));
+  EXPECT_EQ(json_number(held.at("rhs_evaluations")), json_number(compliant.at("rhs_evaluations")));
 }
