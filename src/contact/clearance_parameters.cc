@@ -15,6 +15,41 @@ namespace wearlink::contact
    * registered normal force law and friction law (each in its own subsection; only the
    * chosen ones are read).
    */
+  namespace
+  {
+    /** How a persisting contact is integrated (doc/models.md §1.6). */
+    void
+    declare_persistent_contact(ParameterHandler &prm)
+    {
+      declare(prm,
+              "Persistent contact",
+              "compliant",
+              P::Selection("compliant|held"),
+              "How a contact that persists is integrated (doc/models.md §1.6). 'compliant': the "
+              "normal force law throughout, its normal mode (the pin on the bore's compliance, "
+              "kHz) resolved by the integrator. 'held': after a step that ends in contact with "
+              "|δ̇| below 'Hold velocity' and |δ̈| below 'Hold acceleration', the pin slides on "
+              "the bore as a constraint whose multiplier is the normal force, the penetration "
+              "at that force's quasi-static value; the compliant law takes over again when "
+              "the force is no longer compressive, and at every impact. Round profiles only: "
+              "worn ones are integrated with the compliant law.",
+              "none");
+      declare(prm,
+              "Hold velocity",
+              "1e-3",
+              P::Double(0),
+              "|δ̇| below which a persisting contact may be held ('Persistent contact = held').",
+              "m/s");
+      declare(prm,
+              "Hold acceleration",
+              "50",
+              P::Double(0),
+              "|δ̈| below which a persisting contact may be held: far below the deceleration of "
+              "an impact at its deepest point ('Persistent contact = held').",
+              "m/s²");
+    }
+  } // namespace
+
   void
   declare_clearance(ParameterHandler &prm)
   {
@@ -99,32 +134,7 @@ namespace wearlink::contact
             "areas an area of a 10-mm bore is 0.6 µm wide, finer than its roughness and than "
             "any FE mesh of it; more would only exhaust memory.",
             "none");
-    declare(prm,
-            "Persistent contact",
-            "compliant",
-            P::Selection("compliant|held"),
-            "How a contact that persists is integrated (doc/models.md §1.6). 'compliant': the "
-            "normal force law throughout, its normal mode (the pin on the bore's compliance, "
-            "kHz) resolved by the integrator. 'held': after a step that ends in contact with "
-            "|δ̇| below 'Hold velocity' and |δ̈| below 'Hold acceleration', the pin slides on "
-            "the bore as a constraint whose multiplier is the normal force, the penetration "
-            "at that force's quasi-static value; the compliant law takes over again when "
-            "the force is no longer compressive, and at every impact. Round profiles only: "
-            "worn ones are integrated with the compliant law.",
-            "none");
-    declare(prm,
-            "Hold velocity",
-            "1e-3",
-            P::Double(0),
-            "|δ̇| below which a persisting contact may be held ('Persistent contact = held').",
-            "m/s");
-    declare(prm,
-            "Hold acceleration",
-            "50",
-            P::Double(0),
-            "|δ̈| below which a persisting contact may be held: far below the deceleration of "
-            "an impact at its deepest point ('Persistent contact = held').",
-            "m/s²");
+    declare_persistent_contact(prm);
     normal_force_laws().declare_all(prm);
     friction_laws().declare_all(prm);
   }

@@ -221,7 +221,6 @@ namespace wearlink::mbs
   void
   Simulation::run(double t_end, const std::vector<StepObserver *> &observers)
   {
-    const unsigned int n = mechanism.n_coordinates();
     {
       const StepContext c{*this, integrator->time(), integrator->time(), integrator->state(), integrator->derivative()};
       for (auto *o : observers)
@@ -236,7 +235,7 @@ namespace wearlink::mbs
           hold_elements.push_back(e.get());
       }
 
-    Eigen::VectorXd             y_start, y_event;
+    Eigen::VectorXd             y_start;
     std::vector<ForceElement *> triggered;
     std::vector<double>         roots;
     while (integrator->time() < t_end)
@@ -245,48 +244,7 @@ namespace wearlink::mbs
         y_start              = integrator->state();
         integrator->step(step_limit(t_end, event_elements));
 
-        // Which elements' modes no longer match the state at the end of the step?
-        double t_first = std::numeric_limits<double>::infinity();
-        triggered.clear();
-        roots.clear();
-        if (!event_elements.empty())
-          body_trig(integrator->state().data(), mechanism.n_bodies(), end_trig.data());
-        for (auto *e : event_elements)
-          {
-            const double f =
-              e->event_value(StateView(integrator->state().data(), integrator->state().data() + n, end_trig.data()));
-            const bool onset = !e->mode() && f > 0;
-            const bool sep   = e->mode() && f <= 0;
-            if (onset || sep)
-              {
-                triggered.push_back(e);
-                roots.push_back(locate(*e, onset));
-                t_first = std::min(t_first, roots.back());
-              }
-          }
-
-        // With event location, re-take the step so that it ends at the first event;
-        // only the events at that time switch now (later ones are found again).
-        bool at_root = false;
-        if (!triggered.empty() && locate_events && t_first - t_start > settings.event_time_tolerance &&
-            t_first < integrator->time() - settings.event_time_tolerance)
-          {
-            ++restarts;
-            integrator->reset(t_start, y_start);
-            integrator->step(t_first);
-            at_root = integrator->time() >= t_first - settings.event_time_tolerance;
-            std::vector<ForceElement *> now;
-            std::vector<double>         now_roots;
-            if (at_root)
-              for (std::size_t k = 0; k < triggered.size(); ++k)
-                if (roots[k] <= t_first + settings.event_time_tolerance)
-                  {
-                    now.push_back(triggered[k]);
-                    now_roots.push_back(integrator->time());
-                  }
-            triggered.swap(now);
-            roots.swap(now_roots);
-          }
+        find_events(t_start, y_start, event_elements, triggered, roots);
 
         if (!hold_elements.empty() && triggered.empty())
           locate_hold_release(t_start, y_start, hold_elements);
@@ -304,26 +262,82 @@ namespace wearlink::mbs
             o->on_step(c);
         }
 
-        // Switch the modes; the impact velocity is read from the state at the root.
-        if (!triggered.empty())
-          {
-            for (std::size_t k = 0; k < triggered.size(); ++k)
-              {
-                integrator->dense_output(roots[k], scratch.data());
-                y_event = scratch;
-                triggered[k]->on_event(roots[k], StateView(y_event.data(), y_event.data() + n), !triggered[k]->mode());
-                ++events;
-              }
-            // f at the current point changes with the modes.
-            const Eigen::VectorXd y_now = integrator->state();
-            integrator->reset(integrator->time(), y_now);
-          }
-        if (!hold_elements.empty() && update_holds(hold_elements))
+        // The modes change after the observers saw the step; f changes with them.
+        const bool switched = switch_modes(triggered, roots);
+        const bool holds    = !hold_elements.empty() && update_holds(hold_elements);
+        if (switched || holds)
           {
             const Eigen::VectorXd y_now = integrator->state();
             integrator->reset(integrator->time(), y_now);
           }
       }
+  }
+
+  void
+  Simulation::find_events(const double                       t_start,
+                          const Eigen::VectorXd             &y_start,
+                          const std::vector<ForceElement *> &event_elements,
+                          std::vector<ForceElement *>       &triggered,
+                          std::vector<double>               &roots)
+  {
+    const unsigned int n = mechanism.n_coordinates();
+    // Which elements' modes no longer match the state at the end of the step?
+    double t_first = std::numeric_limits<double>::infinity();
+    triggered.clear();
+    roots.clear();
+    if (!event_elements.empty())
+      body_trig(integrator->state().data(), mechanism.n_bodies(), end_trig.data());
+    for (auto *e : event_elements)
+      {
+        const double f =
+          e->event_value(StateView(integrator->state().data(), integrator->state().data() + n, end_trig.data()));
+        const bool onset = !e->mode() && f > 0;
+        const bool sep   = e->mode() && f <= 0;
+        if (onset || sep)
+          {
+            triggered.push_back(e);
+            roots.push_back(locate(*e, onset));
+            t_first = std::min(t_first, roots.back());
+          }
+      }
+
+    // With event location, re-take the step so that it ends at the first event;
+    // only the events at that time switch now (later ones are found again).
+    bool at_root = false;
+    if (!triggered.empty() && locate_events && t_first - t_start > settings.event_time_tolerance &&
+        t_first < integrator->time() - settings.event_time_tolerance)
+      {
+        ++restarts;
+        integrator->reset(t_start, y_start);
+        integrator->step(t_first);
+        at_root = integrator->time() >= t_first - settings.event_time_tolerance;
+        std::vector<ForceElement *> now;
+        std::vector<double>         now_roots;
+        if (at_root)
+          for (std::size_t k = 0; k < triggered.size(); ++k)
+            if (roots[k] <= t_first + settings.event_time_tolerance)
+              {
+                now.push_back(triggered[k]);
+                now_roots.push_back(integrator->time());
+              }
+        triggered.swap(now);
+        roots.swap(now_roots);
+      }
+  }
+
+  bool
+  Simulation::switch_modes(const std::vector<ForceElement *> &triggered, const std::vector<double> &roots)
+  {
+    // The impact velocity is read from the state at the root.
+    const unsigned int n = mechanism.n_coordinates();
+    for (std::size_t k = 0; k < triggered.size(); ++k)
+      {
+        integrator->dense_output(roots[k], scratch.data());
+        event_state = scratch;
+        triggered[k]->on_event(roots[k], StateView(event_state.data(), event_state.data() + n), !triggered[k]->mode());
+        ++events;
+      }
+    return !triggered.empty();
   }
 
   void

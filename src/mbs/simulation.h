@@ -214,6 +214,21 @@ namespace wearlink::mbs
      */
     double
     step_limit(double t_end, const std::vector<ForceElement *> &elements) const;
+    /**
+     * After a step from (@p t_start, @p y_start): the elements of @p event_elements whose
+     * mode no longer matches the state, into @p triggered with their located times in
+     * @p roots; with event location the step is re-taken to end at the first of them,
+     * and only the events at that time are kept (later ones are found again).
+     */
+    void
+    find_events(double                             t_start,
+                const Eigen::VectorXd             &y_start,
+                const std::vector<ForceElement *> &event_elements,
+                std::vector<ForceElement *>       &triggered,
+                std::vector<double>               &roots);
+    /** Switch the modes of @p triggered at their @p roots; true if any switched. */
+    bool
+    switch_modes(const std::vector<ForceElement *> &triggered, const std::vector<double> &roots);
     /** The held forces at (@p t, @p y) in the elements (one evaluation unless they are from there). */
     void
     held_forces_here(double t, const Eigen::VectorXd &y);
@@ -252,7 +267,7 @@ namespace wearlink::mbs
     long                        restarts         = 0;
     mutable long                predicted_onsets = 0;
     long                        hold_switches    = 0;
-    Eigen::VectorXd             hold_accelerations, hold_state;
+    Eigen::VectorXd             hold_accelerations, hold_state, event_state;
     double                      position_tolerance = 1e-9; ///< absolute, of the coordinates q [m]
     double                      budget_start_time  = 0;    ///< time of initialize() [s]
     long                        budget_start_steps = 0;    ///< steps taken before it
