@@ -56,14 +56,15 @@ namespace wearlink::mbs
   void
   AdaptiveRungeKutta::dense_output(const double time, double *out) const
   {
-    const double hs = t - t_prev;
-    if (hs <= 0)
+    if (!(t > t_prev))
       {
         for (Eigen::Index i = 0; i < y.size(); ++i)
           out[i] = y[i];
         return;
       }
-    interpolate((time - t_prev) / hs, out);
+    // The extension belongs to the whole step [t_prev, step_end], also after
+    // end_step_at() moved the current point to an event inside it.
+    interpolate((time - t_prev) / (step_end - t_prev), out);
   }
 
   namespace
@@ -155,12 +156,13 @@ namespace wearlink::mbs
   void
   AdaptiveRungeKutta::advance(const double t_new, const Eigen::VectorXd &y_new, const Eigen::VectorXd &f_new)
   {
-    y_prev = y;
-    f_prev = f;
-    t_prev = t;
-    y      = y_new;
-    f      = f_new;
-    t      = t_new;
+    y_prev   = y;
+    f_prev   = f;
+    t_prev   = t;
+    step_end = t_new;
+    y        = y_new;
+    f        = f_new;
+    t        = t_new;
   }
 
   double

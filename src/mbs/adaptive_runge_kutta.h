@@ -69,7 +69,7 @@ namespace wearlink::mbs
     /** Make the accepted trial step the current point (dense output, advance()). */
     virtual void
     accept(double hs, double t_new) = 0;
-    /** The continuous extension of the last step at s = (time − t_prev)/(t − t_prev). */
+    /** The continuous extension of the last step at s = (time − t_prev)/(step_end − t_prev). */
     virtual void
     interpolate(double s, double *out) const = 0;
     /** The name in messages ("dopri5"). */
@@ -125,7 +125,8 @@ namespace wearlink::mbs
     advance(double t_new, const Eigen::VectorXd &y_new, const Eigen::VectorXd &f_new);
 
     std::vector<double> tolerance;
-    double              h = 0;
+    double              h        = 0;
+    double              step_end = 0; ///< the end of the step the continuous extension belongs to [s]
     Controller          controller;
     int                 order;
 

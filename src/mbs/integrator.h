@@ -100,6 +100,8 @@ namespace wearlink::mbs
     double              max_step     = 1e-3;  ///< [s]
     double              min_step     = 1e-14; ///< below this a step is a NumericalError [s]
     double              initial_step = 0;     ///< 0: automatic [s]
+    /** End a step at an event on dopri5's continuous extension instead of integrating to it. */
+    bool interpolate_events = false;
   };
 
   class Integrator
@@ -114,6 +116,16 @@ namespace wearlink::mbs
     /** Take one accepted step that does not pass @p t_limit. */
     virtual void
     step(double t_limit) = 0;
+
+    /**
+     * End the last accepted step, which began at (@p t_start, @p y_start), at @p t_end ∈
+     * (previous_time(), time()) instead (an event inside it): the step is taken again
+     * from its start with @p t_end as the limit (error-controlled, several steps if need
+     * be), or, with `interpolate_events`, dopri5 takes the point from its continuous
+     * extension. Evaluates f at the new point either way.
+     */
+    virtual void
+    end_step_at(double t_end, double t_start, const Eigen::VectorXd &y_start);
 
     /**
      * The size the next step would try [s] (before the limit passed to step()); 0 if

@@ -93,6 +93,13 @@ namespace wearlink::mbs
   }
 
   void
+  Integrator::end_step_at(const double t_end, const double t_start, const Eigen::VectorXd &y_start)
+  {
+    reset(t_start, y_start);
+    step(t_end);
+  }
+
+  void
   Integrator::start_at(const double time, const Eigen::VectorXd &state, const Eigen::VectorXd &derivative)
   {
     t      = time;
@@ -225,6 +232,27 @@ namespace wearlink::mbs
         prepare_dense_output(hs);
         last_stiffness = stiffness_estimate(hs);
         advance(t_new, tmp, k7);
+      }
+
+      /**
+       * With `interpolate_events`: the point at @p t_end from the step's continuous
+       * extension (order 4, the order of the error estimate that accepted the step)
+       * rather than a second step to it — one right-hand side (f at the new point)
+       * instead of a step's six or more, at an error up to the tolerance's instead of
+       * the much smaller one of the propagated fifth-order solution (doc/performance.md,
+       * "Where an event ends the step"). The extension keeps describing the whole step,
+       * so output sampled inside it is unchanged.
+       */
+      void
+      end_step_at(const double t_end, const double t_start, const Eigen::VectorXd &y_start) override
+      {
+        if (!settings.interpolate_events)
+          return Integrator::end_step_at(t_end, t_start, y_start);
+        dense_output(t_end, tmp.data());
+        evaluate(t_end, tmp, k2);
+        t = t_end;
+        y = tmp;
+        f = k2;
       }
 
       const char *

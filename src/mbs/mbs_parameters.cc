@@ -217,6 +217,17 @@ namespace wearlink::mbs
             "dopri5: absolute error tolerance of velocities (m/s, rad/s), 1e-15 … 1.",
             "m/s");
     declare(prm,
+            "Event point",
+            "integrated",
+            P::Selection("integrated|interpolated"),
+            "Where a step that crosses a contact onset or separation ends: integrated (the step is "
+            "taken again up to the located event, error-controlled) or interpolated (dopri5 and "
+            "dopri5-stiff's explicit phases: the point is read from the step's continuous "
+            "extension, one right-hand side instead of a step's six; ~8 % fewer right-hand sides "
+            "on the nine-bar, but each event point carries an error up to the tolerance rather "
+            "than below it, see doc/performance.md). Other methods always integrate.",
+            "none");
+    declare(prm,
             "Maximum step",
             "1e-3",
             P::Double(1e-7, 1),
@@ -260,6 +271,7 @@ namespace wearlink::mbs
     is.relative_tolerance = r.get_positive("Relative tolerance");
     is.absolute_tolerance = {r.get_positive("Position tolerance"), r.get_positive("Velocity tolerance")};
     is.max_step           = r.get_positive("Maximum step");
+    is.interpolate_events = r.get("Event point") == "interpolated";
     is.min_step           = r.get_positive("Minimum step");
     if (!(is.min_step < is.max_step))
       r.fail("Minimum step", "it must be smaller than Maximum step (" + format_number(is.max_step) + " s)");

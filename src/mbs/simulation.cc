@@ -301,15 +301,14 @@ namespace wearlink::mbs
           }
       }
 
-    // With event location, re-take the step so that it ends at the first event;
-    // only the events at that time switch now (later ones are found again).
+    // With event location, end the step at the first event; only the events at that
+    // time switch now (later ones are found again).
     bool at_root = false;
     if (!triggered.empty() && locate_events && t_first - t_start > settings.event_time_tolerance &&
         t_first < integrator->time() - settings.event_time_tolerance)
       {
         ++restarts;
-        integrator->reset(t_start, y_start);
-        integrator->step(t_first);
+        integrator->end_step_at(t_first, t_start, y_start);
         at_root = integrator->time() >= t_first - settings.event_time_tolerance;
         std::vector<ForceElement *> now;
         std::vector<double>         now_roots;

@@ -6,10 +6,12 @@
 //   - an event is a change of the sign of a force element's event function against its
 //     mode (free → penetration > 0, contact → penetration ≤ 0);
 //   - its time t* is found by Illinois regula falsi on the dense output;
-//   - with `locate` (dopri5) the step is re-taken to end exactly at t*, the mode is
-//     switched there, and integration restarts; without it (rk4, fixed grid as in the
-//     seed) the mode switches at the end of the step, but the impact velocity is still
-//     read from the interpolated state at t* (seed eq. 11's δ̇⁽⁻⁾).
+//   - with `locate` (the adaptive methods) the step is ended at t* (Integrator::
+//     end_step_at: taken again up to t*, or with `Event point = interpolated` cut on
+//     dopri5's continuous extension), the mode is switched there, and
+//     integration restarts; without it (rk4, fixed grid as in the seed) the mode
+//     switches at the end of the step, but the impact velocity is still read from the
+//     interpolated state at t* (seed eq. 11's δ̇⁽⁻⁾).
 // Observers see every accepted step (never a step that was discarded for an event).
 #pragma once
 
@@ -195,7 +197,7 @@ namespace wearlink::mbs
     {
       return hold_switches;
     }
-    /** Steps re-taken to land on an event. */
+    /** Steps ended early at an event or at a held contact's release. */
     long
     n_event_restarts() const
     {
@@ -217,8 +219,9 @@ namespace wearlink::mbs
     /**
      * After a step from (@p t_start, @p y_start): the elements of @p event_elements whose
      * mode no longer matches the state, into @p triggered with their located times in
-     * @p roots; with event location the step is re-taken to end at the first of them,
-     * and only the events at that time are kept (later ones are found again).
+     * @p roots; with event location the step is ended at the first of them
+     * (Integrator::end_step_at), and only the events at that time are kept (later ones
+     * are found again).
      */
     void
     find_events(double                             t_start,
@@ -234,7 +237,7 @@ namespace wearlink::mbs
     held_forces_here(double t, const Eigen::VectorXd &y);
     /**
      * If a held force is no longer compressive at the end of the step from (@p t_start,
-     * @p y_start), re-take the step so that it ends where it fell to zero.
+     * @p y_start), take the step again so that it ends where it fell to zero.
      */
     void
     locate_hold_release(double t_start, const Eigen::VectorXd &y_start, const std::vector<ForceElement *> &elements);

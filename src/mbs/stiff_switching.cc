@@ -67,6 +67,16 @@ namespace wearlink::mbs
         choose_method();
       }
 
+      /** Cut on dopri5's continuous extension (`interpolate_events`), else taken again. */
+      void
+      end_step_at(const double t_end, const double t_start, const Eigen::VectorXd &y_start) override
+      {
+        if (!settings.interpolate_events || active != explicit_method.get())
+          return Integrator::end_step_at(t_end, t_start, y_start);
+        active->end_step_at(t_end, t_start, y_start);
+        synchronize();
+      }
+
       double
       proposed_step() const override
       {

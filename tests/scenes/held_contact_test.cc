@@ -80,7 +80,8 @@ TEST(HeldContact, NineBarHoldsAndGivesUpWithTheEnergyBalanceClosed)
   for (const char *j : {"A", "B"})
     EXPECT_GE(json_number(s.at("clearance_joints").at(j).at("held_episodes")), 1) << j;
   // Given up where the held force falls to zero, located on the step's dense output:
-  // the re-taken step ends a hair past it (measured −0.003 N against peaks of ~2 kN).
+  // the step is taken again to end there, a hair past it (measured −0.003 N against
+  // peaks of ~2 kN).
   EXPECT_GT(watch.least_held_force, -0.1) << "a held contact is given up before it pulls";
   EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e3 * 1e-6);
 }

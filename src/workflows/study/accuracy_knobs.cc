@@ -69,6 +69,9 @@ namespace wearlink::workflows
          "Integrator/Method dopri5 | dopri5-stiff | dop853 at the scene's tolerances, against dopri5 at a tenth of "
          "them"},
         {"integrator-step", "rk4 Time step"},
+        {"event-point",
+         "Integrator/Event point: a step crossing an event cut on dopri5's continuous extension against "
+         "integrated to it"},
         {"baumgarte", "Baumgarte alpha = beta"},
         {"contact-law", "Normal force law of every clearance joint"},
         {"persistent-contact", "Persistent contact of every clearance joint: held (a constraint) against compliant"},
@@ -289,6 +292,12 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
           knobs.push_back(k);
           if (!quick)
             knobs.push_back(method_knob(rel));
+          // Events cut on dopri5's continuous extension against integrated to (not in --quick).
+          if (!quick && (in.type == mbs::IntegratorType::dopri5 || in.type == mbs::IntegratorType::dopri5_stiff))
+            knobs.push_back(make_knob("event-point",
+                                      {"Integrator/Event point"},
+                                      {"interpolated", "integrated"},
+                                      "each event's step integrated"));
         }
       else
         knobs.push_back(

@@ -119,6 +119,9 @@ main(int argc, char **argv)
     held.push_back("Joint A/Clearance/Persistent contact=held");
     held.push_back("Joint B/Clearance/Persistent contact=held");
     runs.push_back({"dopri5-stiff, contacts held", run(clearance, held)});
+    auto interpolated = overrides(common, "dopri5-stiff", 1);
+    interpolated.push_back("Integrator/Event point=interpolated");
+    runs.push_back({"dopri5-stiff, events interp.", run(clearance, interpolated)});
     auto floor = overrides(common, "dopri5-stiff", 1.01);
     runs.push_back({"dopri5-stiff, tol x1.01", run(clearance, floor)});
   }
