@@ -56,6 +56,21 @@ namespace
   {
     return "Joint O/Clearance/Initial eccentricity=0, " + format_number(-(c - gap));
   }
+
+  /** The closed form of an elastic Hertz impact (Johnson, ch. 11). */
+  struct HertzImpact
+  {
+    double approach; ///< δ_max = (5 m v0²/(4K))^(2/5) [m]
+    double force;    ///< F_max = K δ_max^(3/2) [N]
+  };
+
+  /** Mass @p m [kg] arriving at @p v0 [m/s] on the contact of stiffness @p K [N/m^1.5]. */
+  HertzImpact
+  hertz_impact(const double m, const double v0, const double K)
+  {
+    const double approach = std::pow(5 * m * v0 * v0 / (4 * K), 0.4);
+    return {approach, K * std::pow(approach, 1.5)};
+  }
 } // namespace
 
 // Contact that begins with almost no impact velocity: the pin starts 1e-10 m above the
@@ -137,12 +152,11 @@ TEST(HardCases, ContactOnsetExactlyAtAStepBoundary)
       overrides.insert(overrides.end(),
                        {eccentricity(d), "Joint O/Clearance/Normal force law=hertz", "Simulation/End time=0.0106"});
       auto         scene     = wearlink::testing::scene(pendulum, overrides);
-      const double K         = scene.clearance_joints.at(0)->stiffness();
+      const auto   hertz     = hertz_impact(m, v0, scene.clearance_joints.at(0)->stiffness());
       const Json   s         = wearlink::testing::run(scene);
-      const double delta_max = std::pow(5 * m * v0 * v0 / (4 * K), 0.4);
-      const double force_max = K * std::pow(delta_max, 1.5);
-      const auto  &j         = s.at("clearance_joints").at("O");
-      const double peak      = json_number(j.at("max_normal_force_N"));
+      const double delta_max = hertz.approach, force_max = hertz.force;
+      const auto  &j    = s.at("clearance_joints").at("O");
+      const double peak = json_number(j.at("max_normal_force_N"));
       std::cout << integrator[0] << " " << integrator[1] << ": peak force " << peak << " N (Hertz " << force_max
                 << "), approach " << json_number(j.at("max_penetration_m")) << " m (Hertz " << delta_max
                 << "), impacts " << json_number(j.at("impacts")) << ", energy residual "
@@ -180,10 +194,9 @@ TEST(HardCases, InterpolatedEventPointKeepsTheImpact)
                                                          "Integrator/Method=dopri5",
                                                          std::string("Integrator/Event point=") + point,
                                                          "Simulation/End time=0.03"});
-      const double K         = scene.clearance_joints.at(0)->stiffness();
+      const auto   hertz     = hertz_impact(m, v0, scene.clearance_joints.at(0)->stiffness());
       const Json   s         = wearlink::testing::run(scene);
-      const double delta_max = std::pow(5 * m * v0 * v0 / (4 * K), 0.4);
-      const double force_max = K * std::pow(delta_max, 1.5);
+      const double force_max = hertz.force;
       const auto  &j         = s.at("clearance_joints").at("O");
       const double peak      = json_number(j.at("max_normal_force_N"));
       std::cout << point << ": peak force " << peak << " N (Hertz " << force_max << "), events "
