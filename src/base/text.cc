@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "base/text.h"
 
+#include <charconv>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -19,9 +20,28 @@ namespace wearlink
   std::string
   format_number(const double value, const int significant_digits)
   {
-    std::ostringstream os;
+    std::string s;
+    append_number(s, value, significant_digits);
+    return s;
+  }
+
+  void
+  append_number(std::string &out, const double value, const int significant_digits)
+  {
+    if (significant_digits >= 1 && significant_digits <= std::numeric_limits<double>::max_digits10)
+      {
+        char buffer[32]; // sign, 17 digits, point, exponent
+        const auto [end, error] =
+          std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, significant_digits);
+        if (error == std::errc())
+          {
+            out.append(buffer, end);
+            return;
+          }
+      }
+    std::ostringstream os; // more digits than a double carries, or none: as iostream writes them
     os << std::setprecision(significant_digits) << value;
-    return os.str();
+    out += os.str();
   }
 
   std::string

@@ -21,6 +21,14 @@ namespace wearlink
   std::string
   format_number(double value, int significant_digits = std::numeric_limits<double>::max_digits10);
 
+  /**
+   * Append format_number(@p value, @p significant_digits) to @p out: the same characters
+   * (printf's %g, which is also iostream's default), without a stream. Writers of long
+   * tables use it; through an ostream each number costs ten times as much.
+   */
+  void
+  append_number(std::string &out, double value, int significant_digits);
+
   /** format_number(), or "n/a" for a value that is not finite (a figure not available). */
   std::string
   format_or_na(double value, int significant_digits = 4);

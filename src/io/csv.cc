@@ -19,9 +19,35 @@ namespace wearlink::io
      * one quote), or at blanks if the line has no comma; a '#' outside quotes ends it.
      * Blanks around a field are dropped. Empty if the line holds only blanks or a comment.
      */
+    /**
+     * split_fields() of a line that has commas but no quote, comment, tab or carriage
+     * return (every row wearlink writes): the trimmed parts between the commas.
+     */
+    std::vector<std::string>
+    split_plain_fields(const std::string &line)
+    {
+      std::vector<std::string> out;
+      std::size_t              start = 0;
+      while (true)
+        {
+          const std::size_t comma = std::min(line.find(',', start), line.size());
+          std::size_t       first = start, last = comma;
+          while (first < last && line[first] == ' ')
+            ++first;
+          while (last > first && line[last - 1] == ' ')
+            --last;
+          out.emplace_back(line, first, last - first);
+          if (comma == line.size())
+            return out;
+          start = comma + 1;
+        }
+    }
+
     std::vector<std::string>
     split_fields(const std::string &line)
     {
+      if (line.find(',') != std::string::npos && line.find_first_of("\"#\r\t\n") == std::string::npos)
+        return split_plain_fields(line);
       std::string body;
       bool        quoted = false, has_comma = false;
       for (const char c : line)
@@ -74,6 +100,17 @@ namespace wearlink::io
       return out;
     }
 
+    /** The fields of @p fields at @p indices (in range), in that order. */
+    std::vector<std::string>
+    select_fields(std::vector<std::string> &fields, const std::vector<std::size_t> &indices)
+    {
+      std::vector<std::string> out;
+      out.reserve(indices.size());
+      for (const auto c : indices)
+        out.push_back(std::move(fields[c]));
+      return out;
+    }
+
     bool
     all_numbers(const std::vector<std::string> &fields)
     {
@@ -95,25 +132,47 @@ namespace wearlink::io
   CsvTable
   CsvTable::read(const std::string &file, const std::string &what)
   {
+    return read(file, what, {});
+  }
+
+  CsvTable
+  CsvTable::read(const std::string &file, const std::string &what, const std::vector<std::string> &only)
+  {
     std::ifstream in(file);
     if (!in)
       throw InputError("Cannot open the " + what + " '" + file + "': it does not exist or is not readable.");
     CsvTable t;
     t.path        = file;
     t.description = what;
-    std::string line;
+    std::vector<std::size_t> kept; // with a selection: the header's indices of the kept columns
+    std::size_t              header_size = 0;
+    std::string              line;
     for (std::size_t line_no = 1; std::getline(in, line); ++line_no)
       {
         std::vector<std::string> fields = split_fields(line);
         if (fields.empty())
           continue;
         if (t.rows.empty() && t.names.empty() && !all_numbers(fields))
-          t.names = std::move(fields);
-        else
           {
-            t.rows.push_back(std::move(fields));
-            t.lines.push_back(line_no);
+            header_size = fields.size();
+            for (std::size_t c = 0; c < fields.size() && !only.empty(); ++c)
+              if (std::find(only.begin(), only.end(), fields[c]) != only.end())
+                kept.push_back(c);
+            t.names = std::move(fields);
+            if (!only.empty())
+              t.names = select_fields(t.names, kept);
+            continue;
           }
+        if (!kept.empty() || (!only.empty() && header_size > 0))
+          {
+            if (fields.size() < header_size)
+              throw InputError("In '" + file + "', line " + std::to_string(line_no) + " has " +
+                               std::to_string(fields.size()) + " fields; the header has " +
+                               std::to_string(header_size) + ".");
+            fields = select_fields(fields, kept);
+          }
+        t.rows.push_back(std::move(fields));
+        t.lines.push_back(line_no);
       }
     return t;
   }

@@ -21,6 +21,15 @@ namespace wearlink::io
     static CsvTable
     read(const std::string &file, const std::string &what);
 
+    /**
+     * Read only the columns called @p only of @p file (a file with a header; without
+     * one, every column): the table then holds those of them the header has, in the
+     * file's order. A long time series read for a few of its columns keeps a few of its
+     * fields in memory. A row shorter than the header is an InputError here.
+     */
+    static CsvTable
+    read(const std::string &file, const std::string &what, const std::vector<std::string> &only);
+
     const std::string &
     file() const
     {

@@ -7,6 +7,7 @@
 // still holds the data).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,6 +68,18 @@ namespace wearlink::io
       return *this;
     }
   };
+
+  /**
+   * The points of a line over x that a plot @p columns pixels wide can show (its "M4"
+   * envelope), as indices into @p x and @p y: per bin of half a pixel across the data's x
+   * range, the first, lowest, highest and last point, in their order. The line through
+   * them covers the pixels the line through all points covers (50 000 samples of a
+   * 100-cycle history become ~4 per bin, drawn ten times faster). Every index if the line
+   * is short (≤ 8 points per bin), its x decreases somewhere, a value is not finite, or
+   * @p columns ≤ 0.
+   */
+  std::vector<std::size_t>
+  line_envelope(const std::vector<double> &x, const std::vector<double> &y, int columns);
 
   /** A line of @p colour (empty: automatic) and @p width (0: default). */
   Look

@@ -8,6 +8,7 @@
 #include "io/plot.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -31,6 +32,13 @@ namespace wearlink::workflows
       return v;
     }
 
+    /** The time_series.csv columns of joint @p joint's eccentricity in the bushing frame (x, y). */
+    std::array<std::string, 2>
+    orbit_columns(const std::string &joint)
+    {
+      return {{joint + "_ex_local_m", joint + "_ey_local_m"}};
+    }
+
     /** orbit_<J>.png: the eccentricity in the bushing frame inside the clearance circle [mm]. */
     io::PlotSpec
     orbit_plot(const io::CsvTable &table, const std::string &joint, const double clearance)
@@ -52,8 +60,8 @@ namespace wearlink::workflows
           circle.y.push_back(clearance * mm * std::sin(a));
         }
       io::PlotSeries orbit{"journal centre", {}, {}, io::line("#1f77b4", 1)};
-      orbit.x = column(table, joint + "_ex_local_m", mm);
-      orbit.y = column(table, joint + "_ey_local_m", mm);
+      orbit.x = column(table, orbit_columns(joint)[0], mm);
+      orbit.y = column(table, orbit_columns(joint)[1], mm);
       io::PlotSeries start{"start", {orbit.x.front()}, {orbit.y.front()}, io::points("#2ca02c", 1.5)};
       p.series            = {circle, orbit, start};
       const double extent = 1.2 * clearance * mm;
@@ -68,6 +76,39 @@ namespace wearlink::workflows
     {
       std::string title, column, colour;
     };
+
+    /** The curves of joint @p joint's panel of contact_forces.png. */
+    std::vector<Curve>
+    force_curves(const std::string &joint)
+    {
+      return {{"normal force", joint + "_normal_force_N", "#d62728"},
+              {"friction force", joint + "_friction_force_N", "#7f7f7f"}};
+    }
+
+    /** The curves of body @p body's panel of accelerations.png. */
+    std::vector<Curve>
+    acceleration_curves(const std::string &body)
+    {
+      return {{"a_x", body + "_ax_m_s2", "#1f77b4"}, {"a_y", body + "_ay_m_s2", "#ff7f0e"}};
+    }
+
+    /** The columns of time_series.csv the plots of @p scene draw (@p bodies: the plot bodies). */
+    std::vector<std::string>
+    plotted_columns(const io::Scene &scene, const std::vector<std::string> &bodies)
+    {
+      std::vector<std::string> names = {"time_s"};
+      for (const auto *j : scene.clearance_joints)
+        {
+          for (const auto &c : orbit_columns(j->name()))
+            names.push_back(c);
+          for (const auto &c : force_curves(j->name()))
+            names.push_back(c.column);
+        }
+      for (const auto &b : bodies)
+        for (const auto &c : acceleration_curves(b))
+          names.push_back(c.column);
+      return names;
+    }
 
     /** One panel of contact_forces.png or accelerations.png: @p curves against time. */
     io::PlotSpec
@@ -167,9 +208,10 @@ namespace wearlink::workflows
         look.notes.push_back("no plots: gnuplot is not installed (apt-get install gnuplot-nox)");
         return look;
       }
-    const auto table = io::CsvTable::read(directory + "/" + io::outputs::time_series, "time series");
-    const auto time  = column(table, "time_s");
-    const auto keep  = [&](const bool written, const std::string &path) {
+    const auto table =
+      io::CsvTable::read(directory + "/" + io::outputs::time_series, "time series", plotted_columns(scene, bodies));
+    const auto time = column(table, "time_s");
+    const auto keep = [&](const bool written, const std::string &path) {
       if (written)
         look.plots.push_back(path);
       else
@@ -180,19 +222,15 @@ namespace wearlink::workflows
       {
         const std::string path = directory + "/orbit_" + j->name() + ".png";
         keep(io::plot_png(orbit_plot(table, j->name(), j->radial_clearance()), path), path);
-        forces.push_back(history_panel(table,
-                                       time,
-                                       "Joint " + j->name() + ": contact force",
-                                       "force [N]",
-                                       {{"normal force", j->name() + "_normal_force_N", "#d62728"},
-                                        {"friction force", j->name() + "_friction_force_N", "#7f7f7f"}}));
+        forces.push_back(
+          history_panel(table, time, "Joint " + j->name() + ": contact force", "force [N]", force_curves(j->name())));
       }
     for (const auto &b : bodies)
       accelerations.push_back(history_panel(table,
                                             time,
                                             "Body " + b + ": acceleration of its centre of mass",
                                             "acceleration [m/s²]",
-                                            {{"a_x", b + "_ax_m_s2", "#1f77b4"}, {"a_y", b + "_ay_m_s2", "#ff7f0e"}}));
+                                            acceleration_curves(b)));
     // The time series samples the run; summary.json's peaks are over every accepted step.
     const std::string sampled =
       scene.output_interval > 0 ? "sampled every " + format_number(scene.output_interval, 4) + " s" : "every step";

@@ -57,6 +57,9 @@ namespace wearlink::workflows
       long evaluations_at_start = 0;
     };
 
+    /** Significant digits of the numbers in time_series.csv. */
+    constexpr int time_series_digits = 10;
+
     /** Watches accepted steps: extremes, energy balance, time-series samples. */
     class Recorder : public mbs::StepObserver
     {
@@ -292,39 +295,54 @@ namespace wearlink::workflows
             os << sep << c;
             sep = ",";
           }
-        os << '\n' << std::setprecision(10);
+        os << '\n';
       }
 
       void
       sample(double t, const Eigen::VectorXd &y, const Eigen::VectorXd &f, const Eigen::VectorXd &lambda)
       {
-        auto      &os = csv->stream();
-        const auto n  = mech.n_coordinates();
-        os << t;
+        const auto n = mech.n_coordinates();
+        line.clear();
+        append_number(line, t, time_series_digits);
+        const auto put = [this](const double x) {
+          line += ',';
+          append_number(line, x, time_series_digits);
+        };
         for (unsigned int i = 0; i < mech.n_bodies(); ++i)
           {
             for (unsigned int d = 0; d < 3; ++d)
-              os << ',' << y[3 * i + d];
+              put(y[3 * i + d]);
             for (unsigned int d = 0; d < 3; ++d)
-              os << ',' << y[n + 3 * i + d];
+              put(y[n + 3 * i + d]);
             for (unsigned int d = 0; d < 3; ++d)
-              os << ',' << f[n + 3 * i + d];
+              put(f[n + 3 * i + d]);
           }
         const mbs::StateView s(y.data(), y.data() + n);
         for (const auto *j : scene.clearance_joints)
           {
             const auto d = j->diagnostics(s);
-            os << ',' << d.eccentricity.x() << ',' << d.eccentricity.y() << ',' << d.local_eccentricity.x() << ','
-               << d.local_eccentricity.y() << ',' << d.penetration << ',' << d.normal_force << ',' << d.friction_force
-               << ',' << d.sliding_velocity << ',' << d.contact_angle;
+            for (const double x : {d.eccentricity.x(),
+                                   d.eccentricity.y(),
+                                   d.local_eccentricity.x(),
+                                   d.local_eccentricity.y(),
+                                   d.penetration,
+                                   d.normal_force,
+                                   d.friction_force,
+                                   d.sliding_velocity,
+                                   d.contact_angle})
+              put(x);
           }
         // The driver applies −λ to body 2's rotation (Φq row +1 on θ2).
         for (const auto d : scene.drivers)
-          os << ',' << -lambda[mech.constraint_row(d)];
+          put(-lambda[mech.constraint_row(d)]);
         using Q      = mbs::MechanismOde;
         const auto z = 2 * n;
-        os << ',' << mech.kinetic_energy(y.data() + n) << ',' << mech.potential_energy(y.data(), y.data() + n) << ','
-           << y[z + Q::reaction_work] << ',' << y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation] << '\n';
+        put(mech.kinetic_energy(y.data() + n));
+        put(mech.potential_energy(y.data(), y.data() + n));
+        put(y[z + Q::reaction_work]);
+        put(y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation]);
+        line += '\n';
+        csv->stream().write(line.data(), static_cast<std::streamsize>(line.size()));
         csv->throw_if_failed(); // a full disk stops the run here, not at its end
       }
 
@@ -342,6 +360,7 @@ namespace wearlink::workflows
       double                                next_progress = 0.1;
       std::chrono::steady_clock::time_point wall_start;
       Eigen::VectorXd                       y_sample, f_sample;
+      std::string                           line; ///< one time-series row, written at once
     };
   } // namespace
 

@@ -41,6 +41,49 @@ TEST(Csv, HeaderCommentsQuotesAndBlankLines)
   EXPECT_EQ(t.find("y"), CsvTable::npos);
 }
 
+TEST(Csv, PlainRowsSplitAsRowsWithCommentsAndQuotes)
+{
+  // Rows without quotes or comments (all that wearlink writes) take a shorter path; it
+  // must split them as the general one splits the same fields with a comment or quotes.
+  const CsvTable t = CsvTable::read(write("plain",
+                                          "a,b,c,d\n"
+                                          " 1 , 2,, 3 \n"
+                                          " 1 , 2,, 3 # a comment\n"
+                                          "\"1\",2,,3\n"
+                                          ",,,\n"
+                                          "-1.5e-05,2,3,4\n"),
+                                    "test file");
+  ASSERT_EQ(t.n_rows(), 5u);
+  for (std::size_t r = 0; r < 3; ++r)
+    {
+      EXPECT_EQ(t.field(r, 0), "1") << "row " << r;
+      EXPECT_EQ(t.field(r, 1), "2") << "row " << r;
+      EXPECT_EQ(t.field(r, 2), "") << "row " << r;
+      EXPECT_EQ(t.field(r, 3), "3") << "row " << r;
+    }
+  EXPECT_EQ(t.field(3, 3), "");
+  EXPECT_NO_THROW(t.require_rectangular());
+  EXPECT_EQ(t.field(4, 0), "-1.5e-05");
+}
+
+TEST(Csv, ReadsOnlyTheNamedColumns)
+{
+  const std::string file = write("some", "t,x,y,z\n0,1,2,3\n# a comment\n1,4,5,6\n");
+  const CsvTable    t    = CsvTable::read(file, "test file", {"z", "t", "absent"});
+  EXPECT_EQ(t.columns(), (std::vector<std::string>{"t", "z"})) << "the file's order, absent names left out";
+  EXPECT_EQ(t.n_columns(), 2u);
+  EXPECT_EQ(t.numbers(t.find("z")), (std::vector<double>{3, 6}));
+  EXPECT_EQ(t.numbers(t.find("t")), (std::vector<double>{0, 1}));
+  EXPECT_EQ(t.line_of(1), 4u);
+  EXPECT_EQ(t.find("x"), CsvTable::npos);
+  // A row shorter than the header cannot give its columns: said at once, with its line.
+  const std::string short_row = wearlink::testing::input_error_message(
+    [&] { CsvTable::read(write("short", "t,x,y\n0,1,2\n1,2\n"), "test file", {"y"}); });
+  EXPECT_NE(short_row.find("line 3 has 2 fields; the header has 3"), std::string::npos) << short_row;
+  // Without a header there are no names to select by: every column.
+  EXPECT_EQ(CsvTable::read(write("bare", "0,1\n2,3\n"), "test file", {"t"}).n_columns(), 2u);
+}
+
 TEST(Csv, WithoutHeaderAndBlankSeparated)
 {
   const CsvTable t = CsvTable::read(write("blank", "1 2\n3\t4\n"), "test file");
