@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "workflows/run/first_look.h"
 
+#include "base/concurrent.h"
 #include "base/numbers.h"
 #include "base/text.h"
 #include "io/csv.h"
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace wearlink::workflows
@@ -211,17 +213,16 @@ namespace wearlink::workflows
     const auto table =
       io::CsvTable::read(directory + "/" + io::outputs::time_series, "time series", plotted_columns(scene, bodies));
     const auto time = column(table, "time_s");
-    const auto keep = [&](const bool written, const std::string &path) {
-      if (written)
-        look.plots.push_back(path);
-      else
-        look.notes.push_back("gnuplot could not draw " + path);
-    };
-    std::vector<io::PlotSpec> forces, accelerations;
+    // Each plot is its own gnuplot process: they are drawn side by side, then listed in order.
+    std::vector<std::string>           paths;
+    std::vector<std::function<bool()>> draw;
+    std::vector<io::PlotSpec>          forces, accelerations;
     for (const auto *j : scene.clearance_joints)
       {
-        const std::string path = directory + "/orbit_" + j->name() + ".png";
-        keep(io::plot_png(orbit_plot(table, j->name(), j->radial_clearance()), path), path);
+        paths.push_back(directory + "/orbit_" + j->name() + ".png");
+        draw.push_back([spec = orbit_plot(table, j->name(), j->radial_clearance()), path = paths.back()] {
+          return io::plot_png(spec, path);
+        });
         forces.push_back(
           history_panel(table, time, "Joint " + j->name() + ": contact force", "force [N]", force_curves(j->name())));
       }
@@ -235,10 +236,22 @@ namespace wearlink::workflows
     const std::string sampled =
       scene.output_interval > 0 ? "sampled every " + format_number(scene.output_interval, 4) + " s" : "every step";
     const std::string title = scene.title + " (" + sampled + "; summary.json's peaks: every integrator step)";
-    if (!forces.empty())
-      keep(stacked_png(forces, title, directory + "/contact_forces.png"), directory + "/contact_forces.png");
-    if (!accelerations.empty())
-      keep(stacked_png(accelerations, title, directory + "/accelerations.png"), directory + "/accelerations.png");
+    for (const auto &[panels, name] : {std::pair{&forces, "contact_forces.png"}, {&accelerations, "accelerations.png"}})
+      if (!panels->empty())
+        {
+          paths.push_back(directory + "/" + name);
+          draw.push_back([&panels = *panels, &title, path = paths.back()] { return stacked_png(panels, title, path); });
+        }
+    std::vector<char>                  written(draw.size(), 0);
+    std::vector<std::function<void()>> tasks;
+    for (std::size_t k = 0; k < draw.size(); ++k)
+      tasks.push_back([&, k] { written[k] = draw[k]() ? 1 : 0; });
+    run_concurrently(tasks);
+    for (std::size_t k = 0; k < paths.size(); ++k)
+      if (written[k])
+        look.plots.push_back(paths[k]);
+      else
+        look.notes.push_back("gnuplot could not draw " + paths[k]);
     return look;
   }
 
