@@ -3,6 +3,7 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "base/text.h"
 #include "io/csv.h"
 #include "io/json_file.h"
 #include "io/output_names.h"
@@ -16,24 +17,24 @@ namespace wearlink::io
   void
   write_sampled_csv(const analysis::SampledChannels &s, const std::string &path, const bool with_index)
   {
-    std::ostringstream csv;
-    csv << std::setprecision(12);
-    if (with_index)
-      csv << "section,";
-    csv << "time_s";
+    constexpr int digits = 12;
+    std::string   csv    = with_index ? "section,time_s" : "time_s";
     for (const auto &n : s.names)
-      csv << ',' << n;
-    csv << '\n';
+      csv += ',' + n;
+    csv += '\n';
     for (std::size_t k = 0; k < s.n_samples(); ++k)
       {
         if (with_index)
-          csv << k << ',';
-        csv << s.time[k];
+          csv += std::to_string(k) + ',';
+        append_number(csv, s.time[k], digits);
         for (const auto &v : s.values)
-          csv << ',' << v[k];
-        csv << '\n';
+          {
+            csv += ',';
+            append_number(csv, v[k], digits);
+          }
+        csv += '\n';
       }
-    write_file_atomically(path, csv.str());
+    write_file_atomically(path, csv);
   }
 
   namespace
