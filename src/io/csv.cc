@@ -15,11 +15,6 @@ namespace wearlink::io
   namespace
   {
     /**
-     * The fields of one line: split at commas outside double quotes ("" inside quotes is
-     * one quote), or at blanks if the line has no comma; a '#' outside quotes ends it.
-     * Blanks around a field are dropped. Empty if the line holds only blanks or a comment.
-     */
-    /**
      * split_fields() of a line that has commas but no quote, comment, tab or carriage
      * return (every row wearlink writes): the trimmed parts between the commas.
      */
@@ -43,6 +38,11 @@ namespace wearlink::io
         }
     }
 
+    /**
+     * The fields of one line: split at commas outside double quotes ("" inside quotes is
+     * one quote), or at blanks if the line has no comma; a '#' outside quotes ends it.
+     * Blanks around a field are dropped. Empty if the line holds only blanks or a comment.
+     */
     std::vector<std::string>
     split_fields(const std::string &line)
     {
@@ -163,7 +163,7 @@ namespace wearlink::io
               t.names = select_fields(t.names, kept);
             continue;
           }
-        if (!kept.empty() || (!only.empty() && header_size > 0))
+        if (!only.empty() && header_size > 0)
           {
             if (fields.size() < header_size)
               throw InputError("In '" + file + "', line " + std::to_string(line_no) + " has " +
