@@ -441,8 +441,9 @@ namespace wearlink::io
     };
     for (std::size_t first = 0; first < n;)
       {
-        std::size_t last = first, low = first, high = first;
-        while (last + 1 < n && bin(last + 1) == bin(first))
+        const double current = bin(first);
+        std::size_t  last = first, low = first, high = first;
+        while (last + 1 < n && bin(last + 1) == current)
           {
             ++last;
             low  = y[last] < y[low] ? last : low;
