@@ -31,8 +31,11 @@ namespace wearlink::contact
                                                              description.geometry.bushing,
                                                              description.geometry.pin_material,
                                                              description.effective_radius))
+    , reference_radius(description.geometry.bore.mean_radius())
+    , reference_clearance(description.geometry.bore.mean_radius() - description.geometry.pin.mean_radius())
   {
     normal_law->update_geometry(description.geometry);
+    update_field();
   }
 
   void
@@ -43,6 +46,76 @@ namespace wearlink::contact
     gap                       = Gap(bore, pin);
     held                      = held && gap.round();
     normal_law->update_geometry(description.geometry);
+    update_field();
+  }
+
+  void
+  ClearanceJoint::set_clearance_form(const ClearanceForm form, const unsigned int conformal_cells)
+  {
+    description.clearance_form  = form;
+    description.conformal_cells = conformal_cells;
+    update_field();
+  }
+
+  void
+  ClearanceJoint::update_field()
+  {
+    field = nullptr;
+    own_field.reset();
+    if (gap.round() || description.clearance_form != ClearanceForm::conformal)
+      return;
+    field = normal_law->conformal_field();
+    if (field != nullptr)
+      return;
+    const auto  &g = description.geometry;
+    const double n = normal_law->exponent();
+    // The closed-form laws: the foundation that carries the law of the nominal round pair.
+    const Foundation f =
+      std::isfinite(n) ?
+        foundation_of_power_law(contact_stiffness, n, reference_clearance, reference_radius, g.axial_length) :
+        Foundation::of_curve([this](double d) { return normal_law->round_elastic_force(d, contact_stiffness); },
+                             reference_clearance,
+                             reference_radius,
+                             g.axial_length,
+                             1e-12,
+                             std::max(1e-6, reference_clearance),
+                             161);
+    own_field = std::make_unique<OverlapFoundation>(
+      g.bore, g.pin, g.axial_length, reference_radius, f, description.conformal_cells);
+    field = own_field.get();
+  }
+
+  void
+  ClearanceJoint::conformal_contact(const mbs::StateView &s, const mbs::Vec2 &e, Contact &c) const
+  {
+    const int       bb = description.bushing_body, pb = description.pin_body;
+    const mbs::Vec2 e_local = s.to_local(bb, e);
+    // The motion of the pin centre seen from the bushing: d/dt(Aᵀ e) = Aᵀ ė − θ̇_b perp(Aᵀ e).
+    const mbs::Vec2 e_rate = s.point_velocity(pb, description.pin_point) - s.point_velocity(bb, description.bushing_point);
+    const auto      h      = normal_law->hysteresis();
+    ConformalMotion m;
+    m.velocity        = s.to_local(bb, e_rate) - s.angular_velocity(bb) * mbs::perp(e_local);
+    m.relative_rate   = s.angular_velocity(pb) - s.angular_velocity(bb);
+    m.factor          = h.factor;
+    m.impact_velocity = in_contact ? captured_impact_velocity : 0.0;
+    m.min_velocity    = h.min_impact_velocity;
+    ConformalForce cf;
+    field->evaluate(e_local, c.pin_angle - c.bushing_angle, &m, false, cf);
+    // The contact normal: opposite to the force on the pin (from the bore centre towards
+    // the contact); before any force, the direction of the deepest overlap.
+    const double    f       = cf.damped.norm();
+    const mbs::Vec2 n_local = f > 0 ? mbs::Vec2(-cf.damped / f) : mbs::Vec2(std::cos(cf.deepest), std::sin(cf.deepest));
+    const double    psi     = std::atan2(n_local.y(), n_local.x());
+    c.gap.penetration       = cf.overlap;
+    c.gap.normal            = s.to_global(bb, n_local);
+    c.gap.bore_radius       = description.geometry.bore.radius(psi);
+    c.gap.pin_radius        = description.geometry.pin.radius(psi + c.bushing_angle - c.pin_angle);
+    c.conformal             = true;
+    c.elastic               = cf.force.norm();
+    c.damped                = f;
+    c.pin_torque            = cf.pin_torque;
+    c.bushing_torque        = cf.bushing_torque;
+    c.damping_power         = cf.damping_power;
   }
 
   void
@@ -55,8 +128,11 @@ namespace wearlink::contact
     const bool per_area = description.clearance_form == ClearanceForm::per_area && !gap.round();
     c.bushing_angle     = s.angle(bb);
     c.pin_angle         = s.angle(pb);
-    c.gap               = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
-                                     gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
+    if (field != nullptr)
+      conformal_contact(s, p_pin - p_bore, c);
+    else
+      c.gap = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
+                         gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
     c.stiffness         = per_area ? wearlink::contact::contact_stiffness(c.gap.bore_radius,
                                                                   c.gap.pin_radius,
                                                                   description.geometry.bushing,
@@ -79,11 +155,19 @@ namespace wearlink::contact
   ClearanceJoint::forces(const Contact &c, double &fn, double &fel, double &ft) const
   {
     const NormalContactInput in = normal_input(c);
-    NormalContactOutput      out;
-    normal_law->evaluate(in, out);
-    fn  = out.force;
-    fel = out.elastic_force;
-    ft  = friction_law ? friction_law->force(fn, c.slide) : 0.0;
+    if (c.conformal)
+      {
+        fel = c.elastic;
+        fn  = c.damped;
+      }
+    else
+      {
+        NormalContactOutput out;
+        normal_law->evaluate(in, out);
+        fn  = out.force;
+        fel = out.elastic_force;
+      }
+    ft = friction_law ? friction_law->force(fn, c.slide) : 0.0;
   }
 
   void
@@ -101,7 +185,12 @@ namespace wearlink::contact
     const mbs::Vec2 f_pin = -fn * c.gap.normal + ft * c.t;
     out.add_force(description.pin_body, s, f_pin, c.q_pin);
     out.add_force(description.bushing_body, s, -f_pin, c.q_bore);
-    out.damping_power += (fn - fel) * c.rate;
+    if (c.conformal) // the worn profiles' slopes: elastic couples (the field's gradient in the angles)
+      {
+        out.add_torque(description.pin_body, c.pin_torque);
+        out.add_torque(description.bushing_body, c.bushing_torque);
+      }
+    out.damping_power += c.conformal ? c.damping_power : (fn - fel) * c.rate;
     out.friction_power += -ft * c.slide;
   }
 
@@ -253,6 +342,14 @@ namespace wearlink::contact
   double
   ClearanceJoint::potential_energy(const mbs::StateView &s) const
   {
+    if (field != nullptr)
+      {
+        const int      bb = description.bushing_body, pb = description.pin_body;
+        const mbs::Vec2 e = s.point(pb, description.pin_point) - s.point(bb, description.bushing_point);
+        ConformalForce cf;
+        field->evaluate(s.to_local(bb, e), s.angle(pb) - s.angle(bb), nullptr, true, cf);
+        return cf.potential;
+      }
     Contact c;
     contact_kinematics(s, c);
     if (!(c.gap.penetration > 0))
@@ -285,6 +382,8 @@ namespace wearlink::contact
     const auto   e      = p_pin - p_bore;
     const double tb     = s.angle(description.bushing_body);
     const double tp     = s.angle(description.pin_body);
+    if (field != nullptr)
+      return field->overlap(s.to_local(description.bushing_body, e), tp - tb);
     if (description.clearance_form == ClearanceForm::per_area && !gap.round())
       return gap.evaluate_per_area(e, tb, tp).penetration;
     return gap.evaluate(e, tb, tp).penetration;

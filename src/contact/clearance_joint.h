@@ -34,16 +34,22 @@ namespace wearlink::contact
   };
 
   /**
-   * How the gap of worn profiles is evaluated (doc/models.md §1.5):
-   *  - exact: g(φ) = R1*(φ − θ_bushing) − R2*(φ − θ_pin) − e·u(φ) minimized over φ,
-   *    stiffness K from the nominal radii (default);
+   * How a joint with worn (non-round) profiles carries its contact (doc/models.md §1.5,
+   * §1.7):
+   *  - conformal: the resultant of the pressure over the whole arc where the profiles
+   *    overlap, as a function of the pin's displacement (contact/conformal_contact.h;
+   *    default);
+   *  - deepest_point: the normal law at the deepest overlap of the exact gap
+   *    g(φ) = R1*(φ − θ_bushing) − R2*(φ − θ_pin) − e·u(φ), along its radial direction,
+   *    stiffness K from the nominal radii;
    *  - per_area: the seed's eqs 28–31, the area facing e decides: δ*(n) = |e| − c*(n),
    *    K*(n) from R1*(n), R2*(n) (with the chosen effective-radius form).
-   * Both reduce to δ = |e| − c for round profiles.
+   * All three reduce to δ = |e| − c and the point law for round profiles.
    */
   enum class ClearanceForm
   {
-    exact,
+    conformal,
+    deepest_point,
     per_area
   };
 
@@ -57,7 +63,9 @@ namespace wearlink::contact
     mbs::Vec2       pin_point{0, 0}; ///< pin centre in the pin body's frame [m]
     JointGeometry   geometry;
     EffectiveRadius effective_radius = EffectiveRadius::internal;
-    ClearanceForm   clearance_form   = ClearanceForm::exact;
+    ClearanceForm   clearance_form   = ClearanceForm::conformal;
+    /** Cells per discrete bore area of the conformal foundation (contact/conformal_contact.h). */
+    unsigned int conformal_cells = 4;
     /**
      * Persistent contact held as a constraint (doc/models.md §1.6): taken up after a step
      * that ends in contact with |δ̇| < hold_velocity and |δ̈| < hold_acceleration, given up
@@ -181,11 +189,15 @@ namespace wearlink::contact
     void
     set_profiles(const Profile &bore, const Profile &pin);
 
-    /** Select the gap form (see ClearanceForm). */
+    /** Select the gap form (see ClearanceForm) and the conformal foundation's cells per area. */
     void
-    set_clearance_form(ClearanceForm form)
+    set_clearance_form(ClearanceForm form, unsigned int conformal_cells = 4);
+
+    /** The conformal field in use (worn profiles, ClearanceForm::conformal), or nullptr. */
+    const ConformalField *
+    conformal_field() const
     {
-      description.clearance_form = form;
+      return field;
     }
 
     const NormalForceLaw &
@@ -231,6 +243,12 @@ namespace wearlink::contact
       GapResult gap;
       mbs::Vec2 q_bore, q_pin, t;
       double    rate = 0, slide = 0;
+      /**
+       * Conformal contact: the magnitudes of the elastic and of the damped resultant [N],
+       * the couples on both bodies [N m] and the power the hysteresis dissipates [W].
+       */
+      bool   conformal = false;
+      double elastic = 0, damped = 0, pin_torque = 0, bushing_torque = 0, damping_power = 0;
       double    stiffness     = 0;                ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
       double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
     };
@@ -238,6 +256,12 @@ namespace wearlink::contact
     normal_input(const Contact &c) const;
     void
     contact_kinematics(const mbs::StateView &s, Contact &c) const;
+    /** The conformal field's contact (direction, overlap, resultants, couples) into @p c. */
+    void
+    conformal_contact(const mbs::StateView &s, const mbs::Vec2 &e, Contact &c) const;
+    /** Build the conformal field for the current profiles (or none: round, other forms). */
+    void
+    update_field();
     void
     forces(const Contact &c, double &fn, double &fel, double &ft) const;
 
@@ -246,6 +270,10 @@ namespace wearlink::contact
     std::unique_ptr<FrictionLaw>    friction_law;
     Gap                             gap;
     double                          contact_stiffness;
+    /** The nominal bore radius and radial clearance, which K and the foundation are calibrated with [m]. */
+    double                          reference_radius, reference_clearance;
+    std::unique_ptr<ConformalField> own_field;       ///< the foundation, if the law has no field of its own
+    const ConformalField           *field = nullptr; ///< the field in use, or nullptr (point contact)
 
     /** ∂(w·q̇)/∂q q̇ of the held row: δ̇ along a small shift of q by q̇ (central difference). */
     double

@@ -27,6 +27,7 @@
 #include "base/json.h"
 #include "base/registry.h"
 #include "base/timings.h"
+#include "contact/conformal_contact.h"
 #include "contact/pressure_model.h"
 
 #include <algorithm>
@@ -63,6 +64,35 @@ namespace wearlink::contact
     /** ∫₀^δ F_elastic ds [J] (default: K δⁿ⁺¹/(n + 1)). */
     virtual double
     potential(const NormalContactInput &in) const;
+    /** The law's hysteresis: χ of F = F_el (1 + χ δ̇/v_ref) and the guard v_min (factor 0: none). */
+    struct Hysteresis
+    {
+      double factor              = 0; ///< χ [-]
+      double min_impact_velocity = 0; ///< v_min [m/s]
+    };
+    virtual Hysteresis
+    hysteresis() const
+    {
+      return {};
+    }
+    /**
+     * The law's elastic force for the joint's nominal round pair at the approach
+     * @p approach [m], with the joint's stiffness @p stiffness: the curve that the
+     * conformal foundation of worn profiles carries in the narrow-contact limit.
+     * Default: K δⁿ.
+     */
+    virtual double
+    round_elastic_force(double approach, double stiffness) const;
+    /**
+     * The law's own conformal field for the current worn geometry (the fe law: the FE
+     * resultant against the pin's displacement), or nullptr: the joint then uses the
+     * foundation that carries round_elastic_force() (contact/conformal_contact.h).
+     */
+    virtual const ConformalField *
+    conformal_field() const
+    {
+      return nullptr;
+    }
     /**
      * The joint's geometry changed (at construction and after every profile update):
      * laws built from the geometry rebuild here. Default: nothing to do.

@@ -29,6 +29,13 @@ namespace wearlink::contact
   }
 
   double
+  TabulatedNormalForceLaw::round_elastic_force(const double approach, double) const
+  {
+    AssertThrow(!table.empty(), dealii::ExcMessage("A tabulated normal force law was evaluated before its table."));
+    return approach > 0 ? table.evaluate(approach, 0, 0).force : 0.0;
+  }
+
+  double
   TabulatedNormalForceLaw::potential(const NormalContactInput &in) const
   {
     return table.empty() ? 0.0 : table.potential(in.penetration, in.bore_angle, in.pin_angle);

@@ -22,6 +22,15 @@ namespace wearlink::contact
     evaluate(const NormalContactInput &in, NormalContactOutput &out) const override;
     double
     potential(const NormalContactInput &in) const override;
+    /** The L-N hysteresis. */
+    Hysteresis
+    hysteresis() const override
+    {
+      return {damping_factor, min_impact_velocity};
+    }
+    /** The table's force in its first direction (a round pair's table has one). */
+    double
+    round_elastic_force(double approach, double stiffness) const override;
     /** No single exponent: potential() integrates the table. NaN. */
     double
     exponent() const override;

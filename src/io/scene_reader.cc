@@ -10,6 +10,7 @@
 #include "base/text.h"
 #include "contact/clearance_parameters.h"
 #include "contact/friction_law.h"
+#include "contact/gap.h"
 #include "contact/normal_force_law.h"
 #include "io/profile_file.h"
 #include "io/scene.h"
@@ -189,11 +190,22 @@ namespace wearlink::io
           contact::check_friction_coefficient(joint, friction->coefficient(), scene.warnings);
         }
 
-      // Assembly pins the pin centre at the initial eccentricity (bushing frame).
-      const mbs::Vec2 e0 = vec(r.get_point("Initial eccentricity"));
-      if (!(e0.norm() < clearance))
+      // Assembly pins the pin centre at the initial eccentricity (bushing frame), where
+      // the rigid profiles must not overlap (round ones: |e0| < c; a worn bore also
+      // admits its pocket), at the bodies' initial angles.
+      const mbs::Vec2 e0          = vec(r.get_point("Initial eccentricity"));
+      const auto      angle_guess = [&](const int body) {
+        return body == mbs::ground ? 0.0 : scene.mechanism->get_bodies()[body].initial_angle;
+      };
+      const double overlap = contact::Gap(d.geometry.bore, d.geometry.pin)
+                               .evaluate(e0, 0.0, angle_guess(d.pin_body) - angle_guess(d.bushing_body))
+                               .penetration;
+      if (!(overlap < 0))
         r.fail("Initial eccentricity",
-               "its length must be smaller than the radial clearance (" + format_number(clearance) + " m)");
+               "the pin would overlap the bore there by " + format_number(overlap) +
+                 " m; it must lie inside the clearance (round profiles: a length smaller than the radial "
+                 "clearance, " +
+                 format_number(clearance) + " m)");
       if (auto w = wear::read_joint_wear(r, joint))
         scene.wear.push_back(std::move(w));
       r.leave();
@@ -309,7 +321,7 @@ namespace wearlink::io
 
       scene.wear_loop = wear::read_wear_loop(r);
       for (auto *j : scene.clearance_joints)
-        j->set_clearance_form(scene.wear_loop.clearance_form);
+        j->set_clearance_form(scene.wear_loop.clearance_form, scene.wear_loop.conformal_cells);
 
       mech.finalize();
       unsigned int m = mech.n_constraint_equations();

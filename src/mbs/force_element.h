@@ -36,6 +36,13 @@ namespace wearlink::mbs
       g[3 * b + 1] += f.y();
       g[3 * b + 2] += cross(at - s.position(b), f);
     }
+    /** Apply the couple @p torque [N m] to body @p b (not ground). */
+    void
+    add_torque(int b, double torque)
+    {
+      if (b != ground)
+        g[3 * b + 2] += torque;
+    }
   };
 
   /**

@@ -67,6 +67,18 @@ namespace wearlink::mbs
       return {c * s.x() - si * s.y(), si * s.x() + c * s.y()};
     }
 
+    /** A(θ_b)ᵀ g: global vector @p g in body @p b's frame. */
+    Vec2
+    to_local(int b, const Vec2 &g) const
+    {
+      if (b == ground)
+        return g;
+      if (trig == nullptr)
+        return rotate(g, -q[3 * b + 2]);
+      const double c = trig[2 * b], si = trig[2 * b + 1];
+      return {c * g.x() + si * g.y(), -si * g.x() + c * g.y()};
+    }
+
     Vec2
     position(int b) const
     {

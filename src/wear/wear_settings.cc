@@ -140,13 +140,27 @@ namespace wearlink::wear
     {
       declare(prm,
               "Clearance model",
-              "exact",
-              P::Selection("exact|per-area"),
-              "How the clearance joints see the worn profiles: 'exact' the gap "
-              "g(φ) = R1*(φ − θ_b) − R2*(φ − θ_p) − e·u(φ) minimized over φ, nominal "
-              "stiffness; 'per-area' the seed's eqs 28–33 (the area facing the eccentricity "
-              "decides c*(n), δ*(n), K*(n)). Applies to every clearance joint with a worn "
-              "profile (from a profile file or from a wear iteration).",
+              "conformal",
+              P::Selection("conformal|deepest-point|per-area"),
+              "How the clearance joints carry the contact of worn (non-round) profiles "
+              "(doc/models.md §1.5, §1.7): 'conformal' the resultant of the pressure over the "
+              "whole arc where the rigid profiles overlap, as a function of the pin's "
+              "displacement (an elastic foundation over the overlap that carries the normal "
+              "force law of the round pair; with Normal force law = fe, the FE resultant); "
+              "'deepest-point' the normal force law at the deepest overlap of the gap "
+              "g(φ) = R1*(φ − θ_b) − R2*(φ − θ_p) − e·u(φ), along its radial direction, "
+              "nominal stiffness; 'per-area' the seed's eqs 28–33 (the area facing the "
+              "eccentricity decides c*(n), δ*(n), K*(n)). Round profiles use the point law "
+              "with any choice. Applies to every clearance joint with a worn profile (from a "
+              "profile file or from a wear iteration).",
+              "none");
+      declare(prm,
+              "Conformal cells per area",
+              "4",
+              P::Integer(1, 64),
+              "Cells per discrete bore area over which the conformal foundation integrates "
+              "the pressure of the overlap (linear across a cell, integrated exactly): more "
+              "resolve narrower contacts on worn profiles at proportional cost.",
               "none");
       declare(prm,
               "Pressure evaluation",
@@ -335,8 +349,11 @@ namespace wearlink::wear
         if (!(s.max_factor >= 1))
           r.fail("Maximum extrapolation factor", "it must be ≥ 1");
       }
-    s.clearance_form =
-      r.get("Clearance model") == "exact" ? contact::ClearanceForm::exact : contact::ClearanceForm::per_area;
+    const std::string form = r.get("Clearance model");
+    s.clearance_form       = form == "conformal"     ? contact::ClearanceForm::conformal :
+                             form == "deepest-point" ? contact::ClearanceForm::deepest_point :
+                                                       contact::ClearanceForm::per_area;
+    s.conformal_cells      = static_cast<unsigned int>(r.get_integer("Conformal cells per area"));
     s.evaluation =
       r.get("Pressure evaluation") == "every step" ? PressureEvaluation::every_step : PressureEvaluation::samples;
     s.update            = r.get("Wear update") == "sequential" ? WearUpdate::sequential : WearUpdate::simultaneous;

@@ -77,7 +77,8 @@ namespace wearlink::wear
     double                 max_depth_increment  = 0; ///< adaptive: cap per iteration [m]
     double                 max_factor           = 0; ///< adaptive: largest factor [-]
     double                 target_revolutions   = 0; ///< adaptive: stop there [-]
-    contact::ClearanceForm clearance_form       = contact::ClearanceForm::exact;
+    contact::ClearanceForm clearance_form       = contact::ClearanceForm::conformal;
+    unsigned int           conformal_cells      = 4; ///< cells per bore area of the conformal foundation
     PressureEvaluation     evaluation           = PressureEvaluation::every_step;
     WearUpdate             update               = WearUpdate::sequential;
     WearStep               step                 = WearStep::euler;

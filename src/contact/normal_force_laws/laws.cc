@@ -111,6 +111,11 @@ namespace wearlink::contact
         elastic(in, n, out);
         out.force = lankarani_nikravesh_force(out.elastic_force, in, factor, min_impact_velocity);
       }
+      Hysteresis
+      hysteresis() const override
+      {
+        return {factor, min_impact_velocity};
+      }
       double
       exponent() const override
       {
@@ -146,6 +151,12 @@ namespace wearlink::contact
       const CylindricalLaw law;
     };
   } // namespace
+
+  double
+  NormalForceLaw::round_elastic_force(const double approach, const double stiffness) const
+  {
+    return approach > 0 ? stiffness * power_of(approach, exponent()) : 0.0;
+  }
 
   double
   NormalForceLaw::potential(const NormalContactInput &in) const
