@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "contact/clearance_joint.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -44,9 +46,9 @@ namespace wearlink::contact
     description.geometry.bore = bore;
     description.geometry.pin  = pin;
     gap                       = Gap(bore, pin);
-    held                      = held && gap.round();
     normal_law->update_geometry(description.geometry);
     update_field();
+    held = held && (gap.round() || field != nullptr);
   }
 
   void
@@ -80,9 +82,13 @@ namespace wearlink::contact
                              1e-12,
                              std::max(1e-6, reference_clearance),
                              161);
-    own_field = std::make_unique<OverlapFoundation>(
-      g.bore, g.pin, g.axial_length, reference_radius, f, description.conformal_cells);
-    field = own_field.get();
+    own_field = std::make_unique<OverlapFoundation>(g.bore,
+                                                    g.pin,
+                                                    g.axial_length,
+                                                    reference_radius,
+                                                    f,
+                                                    description.conformal_cells);
+    field     = own_field.get();
   }
 
   void
@@ -91,8 +97,9 @@ namespace wearlink::contact
     const int       bb = description.bushing_body, pb = description.pin_body;
     const mbs::Vec2 e_local = s.to_local(bb, e);
     // The motion of the pin centre seen from the bushing: d/dt(Aᵀ e) = Aᵀ ė − θ̇_b perp(Aᵀ e).
-    const mbs::Vec2 e_rate = s.point_velocity(pb, description.pin_point) - s.point_velocity(bb, description.bushing_point);
-    const auto      h      = normal_law->hysteresis();
+    const mbs::Vec2 e_rate =
+      s.point_velocity(pb, description.pin_point) - s.point_velocity(bb, description.bushing_point);
+    const auto      h = normal_law->hysteresis();
     ConformalMotion m;
     m.velocity        = s.to_local(bb, e_rate) - s.angular_velocity(bb) * mbs::perp(e_local);
     m.relative_rate   = s.angular_velocity(pb) - s.angular_velocity(bb);
@@ -133,16 +140,16 @@ namespace wearlink::contact
     else
       c.gap = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
                          gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
-    c.stiffness         = per_area ? wearlink::contact::contact_stiffness(c.gap.bore_radius,
+    c.stiffness   = per_area ? wearlink::contact::contact_stiffness(c.gap.bore_radius,
                                                                   c.gap.pin_radius,
                                                                   description.geometry.bushing,
                                                                   description.geometry.pin_material,
                                                                   description.effective_radius) :
-                                     contact_stiffness;
-    const auto &n       = c.gap.normal;
-    c.t                 = mbs::perp(n);
-    c.q_bore            = p_bore + c.gap.bore_radius * n;
-    c.q_pin             = p_pin + c.gap.pin_radius * n;
+                               contact_stiffness;
+    const auto &n = c.gap.normal;
+    c.t           = mbs::perp(n);
+    c.q_bore      = p_bore + c.gap.bore_radius * n;
+    c.q_pin       = p_pin + c.gap.pin_radius * n;
     // Material-point velocities at the contact points.
     const mbs::Vec2 v_bore = s.velocity(bb) + s.angular_velocity(bb) * mbs::perp(c.q_bore - s.position(bb));
     const mbs::Vec2 v_pin  = s.velocity(pb) + s.angular_velocity(pb) * mbs::perp(c.q_pin - s.position(pb));
@@ -295,13 +302,51 @@ namespace wearlink::contact
     velocity_gradient(s, c, c.gap.normal, -1, out.g.data());
     if (phi != 0)
       velocity_gradient(s, c, c.t, phi, out.g.data());
-    out.penetration        = c.gap.penetration;
-    out.rate               = c.rate;
-    out.stiffness          = c.stiffness;
-    out.exponent           = normal_law->exponent();
+    out.penetration = c.gap.penetration;
+    out.rate        = c.rate;
+    out.stiffness   = c.stiffness;
+    out.exponent    = normal_law->exponent();
+    if (c.conformal)
+      local_power_law(s, c, out.stiffness, out.exponent);
     out.sliding_velocity   = c.slide;
     out.friction_per_force = phi;
     out.convective         = convective_rate(s, static_cast<unsigned int>(out.w.size()));
+  }
+
+  // A conformal contact's elastic force against its overlap δ along its normal n, as the
+  // power law K δᵉ through the current state with the local slope d ln F / d ln δ (a
+  // difference over a thousandth of δ along n): the held row's quasi-static overlap.
+  void
+  ClearanceJoint::local_power_law(const mbs::StateView &s, const Contact &c, double &stiffness, double &exponent) const
+  {
+    if (!(c.gap.penetration > 0 && c.elastic > 0)) // a trial stage past the separation: the law's own form
+      return;
+    const int       bb = description.bushing_body;
+    const mbs::Vec2 e =
+      s.to_local(bb, s.point(description.pin_body, description.pin_point) - s.point(bb, description.bushing_point));
+    const mbs::Vec2 n        = s.to_local(bb, c.gap.normal);
+    const double    relative = c.pin_angle - c.bushing_angle;
+    ConformalForce  pushed;
+    field->evaluate(e + 1e-3 * c.gap.penetration * n, relative, nullptr, false, pushed);
+    const double slope = std::log(pushed.force.norm() / c.elastic) / std::log(pushed.overlap / c.gap.penetration);
+    if (!(slope > 0 && std::isfinite(slope)))
+      return;
+    exponent  = slope;
+    stiffness = c.elastic / std::pow(c.gap.penetration, exponent);
+  }
+
+  // A held conformal contact stays quasi-static while the compliant law would carry about
+  // the held force at the same state: where the pin's contact patch moves across a worn
+  // profile (onto another pocket or flank) the resultant turns within tens of µs, the
+  // held row's overlap no longer follows its force, and the contact is given back.
+  bool
+  ClearanceJoint::quasi_static(const mbs::StateView &s) const
+  {
+    if (field == nullptr)
+      return true;
+    Contact c;
+    contact_kinematics(s, c);
+    return std::abs(c.elastic - held_normal_force) <= hold_force_tolerance * std::max(c.elastic, held_normal_force);
   }
 
   bool
@@ -309,15 +354,17 @@ namespace wearlink::contact
   {
     if (held)
       {
-        if (held_normal_force > 0)
+        if (held_normal_force > 0 && quasi_static(s))
           return false;
-        held = false; // no longer pressed: the compliant law takes over towards separation
+        held = false; // no longer pressed (or no longer quasi-static): the compliant law takes over
         return true;
       }
-    // Round profiles only: on worn ones the contact point moves along a profile sampled
-    // in discrete areas, and a held row on it does not keep δ (measured on
-    // params/nine_bar_worn.prm: peak forces ×10); the compliant law integrates those.
-    if (!in_contact || !gap.round())
+    // Round profiles, or worn ones as a conformal contact: its normal, the direction of
+    // the resultant, moves smoothly with the pin. (The deepest point of a worn profile
+    // jumps between discrete areas, and a held row on it did not keep δ — measured on
+    // params/nine_bar_worn.prm with Clearance model = deepest-point: peak forces ×10 —
+    // so the point forms are left to the compliant law on worn profiles.)
+    if (!in_contact || !(gap.round() || field != nullptr))
       return false;
     Contact c;
     contact_kinematics(s, c);
@@ -344,9 +391,9 @@ namespace wearlink::contact
   {
     if (field != nullptr)
       {
-        const int      bb = description.bushing_body, pb = description.pin_body;
+        const int       bb = description.bushing_body, pb = description.pin_body;
         const mbs::Vec2 e = s.point(pb, description.pin_point) - s.point(bb, description.bushing_point);
-        ConformalForce cf;
+        ConformalForce  cf;
         field->evaluate(s.to_local(bb, e), s.angle(pb) - s.angle(bb), nullptr, true, cf);
         return cf.potential;
       }
@@ -401,6 +448,82 @@ namespace wearlink::contact
         captured_impact_velocity = c.rate;
         ++impacts;
       }
+  }
+
+  mbs::Vec2
+  ClearanceJoint::elastic_force(const mbs::Vec2 &e, const double relative_angle) const
+  {
+    if (field != nullptr)
+      {
+        ConformalForce cf;
+        field->evaluate(e, relative_angle, nullptr, false, cf);
+        return cf.force;
+      }
+    Contact c;
+    c.bushing_angle = 0;
+    c.pin_angle     = relative_angle;
+    c.gap           = description.clearance_form == ClearanceForm::per_area && !gap.round() ?
+                        gap.evaluate_per_area(e, 0, relative_angle) :
+                        gap.evaluate(e, 0, relative_angle);
+    if (!(c.gap.penetration > 0))
+      return mbs::Vec2(0, 0);
+    c.stiffness = description.clearance_form == ClearanceForm::per_area && !gap.round() ?
+                    wearlink::contact::contact_stiffness(c.gap.bore_radius,
+                                                         c.gap.pin_radius,
+                                                         description.geometry.bushing,
+                                                         description.geometry.pin_material,
+                                                         description.effective_radius) :
+                    contact_stiffness;
+    NormalContactOutput out;
+    normal_law->evaluate(normal_input(c), out);
+    return -out.elastic_force * c.gap.normal;
+  }
+
+  mbs::Vec2
+  ClearanceJoint::eccentricity_carrying(const mbs::Vec2 &force,
+                                        const double     relative_angle,
+                                        const mbs::Vec2 &start,
+                                        bool            &converged) const
+  {
+    // Damped Newton on r(e) = F(e) − force, the Jacobian by central differences a
+    // thousandth of the overlap wide (the force is smooth there), halving the step until
+    // |r| falls.
+    const double target   = force.norm();
+    mbs::Vec2    e        = start;
+    mbs::Vec2    residual = elastic_force(e, relative_angle) - force;
+    converged             = residual.norm() <= 1e-9 * target;
+    for (int it = 0; it < 50 && !converged; ++it)
+      {
+        const double overlap =
+          field != nullptr ? field->overlap(e, relative_angle) : gap.evaluate(e, 0, relative_angle).penetration;
+        const double    h = std::max(1e-13, 1e-3 * std::abs(overlap));
+        Eigen::Matrix2d jacobian;
+        for (int k = 0; k < 2; ++k)
+          {
+            mbs::Vec2 step(0, 0);
+            step[k] = h;
+            jacobian.col(k) =
+              (elastic_force(e + step, relative_angle) - elastic_force(e - step, relative_angle)) / (2 * h);
+          }
+        const mbs::Vec2 delta = -jacobian.colPivHouseholderQr().solve(residual);
+        double          scale = 1;
+        bool            moved = false;
+        for (int k = 0; k < 40 && !moved; ++k, scale *= 0.5)
+          {
+            const mbs::Vec2 trial = e + scale * delta;
+            const mbs::Vec2 r     = elastic_force(trial, relative_angle) - force;
+            if (r.norm() < residual.norm())
+              {
+                e        = trial;
+                residual = r;
+                moved    = true;
+              }
+          }
+        if (!moved)
+          break;
+        converged = residual.norm() <= 1e-9 * target;
+      }
+    return e;
   }
 
   JointDiagnostics

@@ -193,6 +193,23 @@ namespace wearlink::contact
     void
     set_clearance_form(ClearanceForm form, unsigned int conformal_cells = 4);
 
+    /**
+     * The elastic force of the bushing on the pin [N] (bushing frame) with the pin centre
+     * at @p e (bushing frame) [m] and the relative angle θ_pin − θ_bushing [rad], for the
+     * current profiles and clearance form (the conformal field, or the point law).
+     */
+    mbs::Vec2
+    elastic_force(const mbs::Vec2 &e, double relative_angle) const;
+
+    /**
+     * The pin centre (bushing frame) at which the current profiles carry the elastic
+     * force @p force (bushing frame) at relative angle @p relative_angle, by Newton's
+     * method from @p start; @p converged tells whether the force was matched to 1e-9 of
+     * its size (otherwise the best point found is returned).
+     */
+    mbs::Vec2
+    eccentricity_carrying(const mbs::Vec2 &force, double relative_angle, const mbs::Vec2 &start, bool &converged) const;
+
     /** The conformal field in use (worn profiles, ClearanceForm::conformal), or nullptr. */
     const ConformalField *
     conformal_field() const
@@ -249,8 +266,8 @@ namespace wearlink::contact
        */
       bool   conformal = false;
       double elastic = 0, damped = 0, pin_torque = 0, bushing_torque = 0, damping_power = 0;
-      double    stiffness     = 0;                ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
-      double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
+      double stiffness     = 0;                ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
+      double bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
     };
     NormalContactInput
     normal_input(const Contact &c) const;
@@ -259,6 +276,14 @@ namespace wearlink::contact
     /** The conformal field's contact (direction, overlap, resultants, couples) into @p c. */
     void
     conformal_contact(const mbs::StateView &s, const mbs::Vec2 &e, Contact &c) const;
+    /** True while a held contact is quasi-static (see the .cc). */
+    bool
+    quasi_static(const mbs::StateView &s) const;
+    /** The largest relative difference of the held and the compliant elastic force of a held conformal contact. */
+    static constexpr double hold_force_tolerance = 0.25;
+    /** The held row's K and exponent of a conformal contact at @p s (see the .cc). */
+    void
+    local_power_law(const mbs::StateView &s, const Contact &c, double &stiffness, double &exponent) const;
     /** Build the conformal field for the current profiles (or none: round, other forms). */
     void
     update_field();

@@ -86,6 +86,64 @@ namespace wearlink::mbs
     };
   } // namespace
 
+  namespace
+  {
+    /**
+     * Newton's method on Φ(q, t) = 0 of @p all from @p q (minimum-norm steps, backtracking
+     * on ‖Φ‖); leaves Φ, Φq, Φt at the result in @p phi, @p jac, @p phi_t.
+     */
+    AssemblyResult
+    solve_positions(const AllConstraints  &all,
+                    const double           t,
+                    const AssemblyOptions &options,
+                    Eigen::VectorXd       &q,
+                    const Eigen::VectorXd &v,
+                    Eigen::VectorXd       &phi,
+                    Eigen::MatrixXd       &jac,
+                    Eigen::VectorXd       &phi_t)
+    {
+      AssemblyResult result;
+      all.evaluate(t, q, v, phi, jac, phi_t);
+      double residual = phi.size() > 0 ? phi.cwiseAbs().maxCoeff() : 0.0;
+      while (residual > options.tolerance && result.iterations < options.max_iterations)
+        {
+          ++result.iterations;
+          const Eigen::VectorXd dq = jac.completeOrthogonalDecomposition().solve(-phi);
+          // Backtracking: accept the largest step 2^-k that reduces the residual.
+          double          step = 1.0;
+          Eigen::VectorXd trial;
+          double          trial_residual = residual;
+          for (unsigned int k = 0; k < 30; ++k, step *= 0.5)
+            {
+              trial = q + step * dq;
+              Eigen::VectorXd p, pt;
+              Eigen::MatrixXd j;
+              all.evaluate(t, trial, v, p, j, pt);
+              trial_residual = p.cwiseAbs().maxCoeff();
+              if (trial_residual < residual)
+                break;
+            }
+          if (!(trial_residual < residual))
+            break; // no descent: stuck at a local minimum of ‖Φ‖
+          q = trial;
+          all.evaluate(t, q, v, phi, jac, phi_t);
+          residual = phi.cwiseAbs().maxCoeff();
+        }
+      result.residual = residual;
+      return result;
+    }
+
+    /** The least change of @p v with Φq v = −Φt; the largest remaining residual. */
+    double
+    project_velocities(const Eigen::MatrixXd &jac, const Eigen::VectorXd &phi_t, Eigen::VectorXd &v)
+    {
+      if (jac.rows() == 0)
+        return 0;
+      v += jac.completeOrthogonalDecomposition().solve(-(jac * v + phi_t));
+      return (jac * v + phi_t).cwiseAbs().maxCoeff();
+    }
+  } // namespace
+
   AssemblyResult
   assemble(const Mechanism                                &mechanism,
            double                                          t0,
@@ -109,43 +167,16 @@ namespace wearlink::mbs
         v[3 * b + 2] = bodies[b].initial_angular_velocity;
       }
 
-    Eigen::VectorXd phi, phi_t;
-    Eigen::MatrixXd jac;
-    AssemblyResult  result;
-    all.evaluate(t0, q, v, phi, jac, phi_t);
-    double residual = phi.cwiseAbs().maxCoeff();
-    while (residual > options.tolerance && result.iterations < options.max_iterations)
-      {
-        ++result.iterations;
-        const Eigen::VectorXd dq = jac.completeOrthogonalDecomposition().solve(-phi);
-        // Backtracking: accept the largest step 2^-k that reduces the residual.
-        double          step = 1.0;
-        Eigen::VectorXd trial;
-        double          trial_residual = residual;
-        for (unsigned int k = 0; k < 30; ++k, step *= 0.5)
-          {
-            trial = q + step * dq;
-            Eigen::VectorXd p, pt;
-            Eigen::MatrixXd j;
-            all.evaluate(t0, trial, v, p, j, pt);
-            trial_residual = p.cwiseAbs().maxCoeff();
-            if (trial_residual < residual)
-              break;
-          }
-        if (!(trial_residual < residual))
-          break; // no descent: stuck at a local minimum of ‖Φ‖
-        q = trial;
-        all.evaluate(t0, q, v, phi, jac, phi_t);
-        residual = phi.cwiseAbs().maxCoeff();
-      }
-    result.residual = residual;
-    if (!(residual <= options.tolerance))
+    Eigen::VectorXd      phi, phi_t;
+    Eigen::MatrixXd      jac;
+    const AssemblyResult result = solve_positions(all, t0, options, q, v, phi, jac, phi_t);
+    if (!(result.residual <= options.tolerance))
       {
         Eigen::Index worst = 0;
         phi.cwiseAbs().maxCoeff(&worst);
         std::ostringstream os;
         os << "The mechanism cannot be assembled at t = " << t0 << " s: after " << result.iterations
-           << " Newton iterations the largest constraint residual is " << residual << " (in joint '"
+           << " Newton iterations the largest constraint residual is " << result.residual << " (in joint '"
            << all.name_of_row(static_cast<unsigned int>(worst)) << "'); allowed is " << options.tolerance
            << ". Check the link lengths and attachment points (Joint */Point on body 1|2), "
               "or move the initial guesses (Body */Initial position, Initial angle) "
@@ -154,9 +185,7 @@ namespace wearlink::mbs
       }
 
     // Velocities: minimum change of the guess that satisfies Φq q̇ = −Φt.
-    const Eigen::VectorXd dv = jac.completeOrthogonalDecomposition().solve(-(jac * v + phi_t));
-    v += dv;
-    const double vres = (jac * v + phi_t).cwiseAbs().maxCoeff();
+    const double vres = project_velocities(jac, phi_t, v);
     if (!(vres <= 1e-8 * (1 + v.cwiseAbs().maxCoeff())))
       {
         std::ostringstream os;
@@ -165,6 +194,27 @@ namespace wearlink::mbs
               "initial pose.";
         throw InputError(os.str());
       }
+    return result;
+  }
+
+  AssemblyResult
+  carry(const Mechanism                                &mechanism,
+        const double                                    t,
+        const std::vector<std::unique_ptr<Constraint>> &extra,
+        const AssemblyOptions                          &options,
+        Eigen::VectorXd                                &q,
+        Eigen::VectorXd                                &v)
+  {
+    Eigen::VectorXd      phi, phi_t;
+    Eigen::MatrixXd      jac;
+    const AssemblyResult result = solve_positions(AllConstraints{mechanism, extra}, t, options, q, v, phi, jac, phi_t);
+    if (!(result.residual <= options.tolerance))
+      throw NumericalError("The state could not be carried onto the worn profiles at t = " + std::to_string(t) +
+                           " s: the constraints' residual stays at " + std::to_string(result.residual) + " after " +
+                           std::to_string(result.iterations) + " Newton iterations.");
+    const std::vector<std::unique_ptr<Constraint>> none;
+    AllConstraints{mechanism, none}.evaluate(t, q, v, phi, jac, phi_t);
+    project_velocities(jac, phi_t, v);
     return result;
   }
 } // namespace wearlink::mbs

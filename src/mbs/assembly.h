@@ -44,4 +44,20 @@ namespace wearlink::mbs
            const AssemblyOptions                          &options,
            Eigen::VectorXd                                &q,
            Eigen::VectorXd                                &v);
+
+  /**
+   * Move a state of the mechanism at time @p t so that it also satisfies @p extra (the
+   * least change of @p q that satisfies the mechanism's and the extra constraints, by the
+   * same Newton iteration as assemble(), from @p q), and project @p v onto the
+   * mechanism's own velocity constraints with the least change (the extra constraints
+   * fix positions only: the relative velocities they would pin stay as they were).
+   * NumericalError if no such configuration is found near @p q.
+   */
+  AssemblyResult
+  carry(const Mechanism                                &mechanism,
+        double                                          t,
+        const std::vector<std::unique_ptr<Constraint>> &extra,
+        const AssemblyOptions                          &options,
+        Eigen::VectorXd                                &q,
+        Eigen::VectorXd                                &v);
 } // namespace wearlink::mbs

@@ -112,6 +112,7 @@ namespace wearlink::wear
         st.joints.push_back(std::move(js));
       }
     update_clearance_model();
+    settle();
   }
 
   void
@@ -182,7 +183,7 @@ namespace wearlink::wear
     store_contact_modes();
     ++st.iterations_done;
     own_timings.wear_bookkeeping += bookkeeping.seconds();
-    update_clearance_model();
+    update_clearance_model(true);
   }
 
   std::unique_ptr<LoadRecorder>
@@ -411,9 +412,137 @@ namespace wearlink::wear
       }
   }
 
-  void
-  WearLoop::update_clearance_model()
+  /** What a wearing joint in contact carried before its profiles changed (bushing frame). */
+  struct CarriedContact
   {
+    bool      active = false;
+    mbs::Vec2 eccentricity{0, 0}, force{0, 0};
+    double    relative_angle = 0, direction = 0, bore_radius = 0, pin_radius = 0;
+  };
+
+  namespace
+  {
+    mbs::StateView
+    view_of(const Eigen::VectorXd &y)
+    {
+      const auto n = (y.size() - mbs::MechanismOde::n_quadratures) / 2;
+      return mbs::StateView(y.data(), y.data() + n);
+    }
+
+    /** Pin centre − bore centre of @p j at @p s, global [m]. */
+    mbs::Vec2
+    eccentricity_of(const contact::ClearanceJoint &j, const mbs::StateView &s)
+    {
+      const auto &d = j.get_description();
+      return s.point(d.pin_body, d.pin_point) - s.point(d.bushing_body, d.bushing_point);
+    }
+
+    CarriedContact
+    carried_contact(const contact::ClearanceJoint &j, const mbs::StateView &s)
+    {
+      CarriedContact c;
+      if (!j.mode())
+        return c;
+      const auto  &d   = j.get_description();
+      const double tb  = s.angle(d.bushing_body);
+      c.eccentricity   = s.to_local(d.bushing_body, eccentricity_of(j, s));
+      c.relative_angle = s.angle(d.pin_body) - tb;
+      c.force          = j.elastic_force(c.eccentricity, c.relative_angle);
+      if (!(c.force.norm() > 0))
+        return c;
+      c.active      = true;
+      c.direction   = std::atan2(-c.force.y(), -c.force.x());
+      c.bore_radius = d.geometry.bore.radius(c.direction);
+      c.pin_radius  = d.geometry.pin.radius(c.direction - c.relative_angle);
+      return c;
+    }
+
+    /** Per clearance joint, the time mean and the peak of F_n and the contact onsets over a run. */
+    class StartUpRecorder : public mbs::StepObserver
+    {
+    public:
+      explicit StartUpRecorder(std::vector<const contact::ClearanceJoint *> joints)
+        : joints(std::move(joints))
+        , mean(this->joints.size(), 0.0)
+        , peak(this->joints.size(), 0.0)
+        , last(this->joints.size(), 0.0)
+        , onsets(this->joints.size(), 0)
+      {
+        for (std::size_t k = 0; k < this->joints.size(); ++k)
+          onsets[k] = this->joints[k]->n_impacts();
+      }
+      void
+      on_start(const mbs::StepContext &c) override
+      {
+        t0 = t_last = c.t;
+        sample(c.y, 0);
+      }
+      void
+      on_step(const mbs::StepContext &c) override
+      {
+        sample(c.y, c.t - t_last);
+        t_last = c.t;
+      }
+      /** Fill the settling part of @p start_up of joint @p k. */
+      void
+      result(std::size_t k, StartUp &start_up) const
+      {
+        start_up.impacts           = static_cast<double>(joints[k]->n_impacts() - onsets[k]);
+        start_up.mean_normal_force = t_last > t0 ? mean[k] / (t_last - t0) : 0.0;
+        start_up.peak_normal_force = peak[k];
+      }
+
+    private:
+      void
+      sample(const Eigen::VectorXd &y, const double dt)
+      {
+        const auto s = view_of(y);
+        for (std::size_t k = 0; k < joints.size(); ++k)
+          {
+            const double f = joints[k]->diagnostics(s).normal_force;
+            mean[k] += 0.5 * (f + last[k]) * dt; // trapezoidal in time
+            peak[k] = std::max(peak[k], f);
+            last[k] = f;
+          }
+      }
+      std::vector<const contact::ClearanceJoint *> joints;
+      std::vector<double>                          mean, peak, last;
+      std::vector<long>                            onsets;
+      double                                       t0 = 0, t_last = 0;
+    };
+  } // namespace
+
+  void
+  WearLoop::settle()
+  {
+    st.settling_cycles = settings.settling_cycles;
+    if (!(settings.settling_cycles > 0))
+      return;
+    std::vector<const contact::ClearanceJoint *> joints;
+    for (const auto &w : wearing)
+      joints.push_back(w.joint);
+    StartUpRecorder recorder(joints);
+    restore_contact_modes();
+    Eigen::VectorXd y0 = st.state;
+    y0.tail(mbs::MechanismOde::n_quadratures).setZero();
+    const Stopwatch dynamics;
+    const double    t_end = st.time + settings.settling_cycles * period;
+    st.state              = advance(st.time, t_end, y0, {&recorder});
+    st.time               = t_end;
+    own_timings.dynamics += dynamics.seconds();
+    store_contact_modes();
+    for (std::size_t i = 0; i < wearing.size(); ++i)
+      recorder.result(i, st.joints[i].start_up);
+  }
+
+  void
+  WearLoop::update_clearance_model(const bool carry)
+  {
+    const bool                  carrying = carry && carry_state;
+    std::vector<CarriedContact> carried(wearing.size());
+    if (carrying)
+      for (unsigned int i = 0; i < wearing.size(); ++i)
+        carried[i] = carried_contact(*wearing[i].joint, view_of(st.state));
     for (unsigned int i = 0; i < wearing.size(); ++i)
       {
         auto &js = st.joints[i];
@@ -427,6 +556,41 @@ namespace wearlink::wear
         js.meshed_bore     = meshed ? meshed->bore : js.bore;
         js.meshed_pin      = meshed ? meshed->pin : js.pin;
       }
+    if (carrying)
+      carry_contacts(carried);
+  }
+
+  void
+  WearLoop::carry_contacts(const std::vector<CarriedContact> &carried)
+  {
+    const auto             s = view_of(st.state);
+    std::vector<mbs::Vec2> targets;
+    for (const auto *j : clearance_joints)
+      targets.push_back(eccentricity_of(*j, s));
+    bool moved = false;
+    for (unsigned int i = 0; i < wearing.size(); ++i)
+      {
+        const auto &c = carried[i];
+        if (!c.active)
+          continue;
+        // Start from the old position moved by the depth worn at the contact on both surfaces.
+        const auto  &g = wearing[i].joint->get_description().geometry;
+        const double worn =
+          (g.bore.radius(c.direction) - c.bore_radius) + (c.pin_radius - g.pin.radius(c.direction - c.relative_angle));
+        const mbs::Vec2 start     = c.eccentricity + worn * mbs::Vec2(std::cos(c.direction), std::sin(c.direction));
+        bool            converged = false;
+        const mbs::Vec2 e = wearing[i].joint->eccentricity_carrying(c.force, c.relative_angle, start, converged);
+        auto           &u = st.joints[i].start_up;
+        u.carries += 1;
+        u.carry_failures += converged ? 0 : 1;
+        u.largest_carry = std::max(u.largest_carry, (e - c.eccentricity).norm());
+        const auto k    = static_cast<std::size_t>(
+          std::find(clearance_joints.begin(), clearance_joints.end(), wearing[i].joint) - clearance_joints.begin());
+        targets[k] = s.to_global(wearing[i].joint->get_description().bushing_body, e);
+        moved      = true;
+      }
+    if (moved)
+      carry_state(st.time, st.state, targets);
   }
 
   void

@@ -67,6 +67,13 @@ namespace wearlink::wear
                                                         const std::vector<mbs::StepObserver *> &observers)>;
 
   /**
+   * Moves the mechanism's full state @p y ([q | v | z]) at time @p t so that the pin
+   * centre − bore centre of every clearance joint (in the order the loop was given them)
+   * is @p eccentricities (global) [m], with the least change of the state.
+   */
+  using CarryState = std::function<void(double t, Eigen::VectorXd &y, const std::vector<mbs::Vec2> &eccentricities)>;
+
+  /**
    * What step 3 knows when it chooses an iteration's factor, for a caller that limits
    * the factor (WearLoop::set_factor_limit; the life run's stop criteria): per wearing
    * joint the wear so far and this iteration's increments as step 4 applies them
@@ -120,6 +127,9 @@ namespace wearlink::wear
   void
   check_roughness(const WearState &state, ValidityWarnings &warnings);
 
+  /** What a wearing joint in contact carried before its profiles changed (wear_loop.cc). */
+  struct CarriedContact;
+
   class WearLoop
   {
   public:
@@ -163,6 +173,16 @@ namespace wearlink::wear
     earlier_wall_time() const
     {
       return earlier_total;
+    }
+
+    /**
+     * Carry the state onto the worn profiles after every iteration with @p carry (see
+     * update_clearance_model); without it the state stays where it was.
+     */
+    void
+    set_carry(CarryState carry)
+    {
+      carry_state = std::move(carry);
     }
 
     /** Checkpoint after every iteration into @p path ("" : none). */
@@ -300,9 +320,25 @@ namespace wearlink::wear
     void
     depth_measures(unsigned int i, IterationRecord &r) const;
 
-    /** Step 5. Gap and pressure-model geometry from the new profiles. */
+    /**
+     * Step 5. Gap and pressure-model geometry from the new profiles; with @p carry, the
+     * state is carried onto them: a wearing joint in contact gets the pin position at
+     * which the new profiles carry the elastic force the old ones carried (started from
+     * the old position moved by the depth worn at the contact), the other clearance
+     * joints keep theirs, and the mechanism follows with the least change
+     * (set_carry). So an iteration starts where the previous one ended, without the
+     * fall into a pocket deepened by the extrapolated wear.
+     */
     void
-    update_clearance_model();
+    update_clearance_model(bool carry = false);
+
+    /** The settling cycles before the first iteration (Wear/Settling cycles), and the start-up they show. */
+    void
+    settle();
+
+    /** The pin positions that carry @p carried on the new profiles, and the state moved there. */
+    void
+    carry_contacts(const std::vector<CarriedContact> &carried);
 
     /** Step 6. */
 
@@ -321,6 +357,7 @@ namespace wearlink::wear
     std::vector<contact::ClearanceJoint *> clearance_joints;
     const double                           period;
     AdvanceDynamics                        advance;
+    CarryState                             carry_state;
     WearState                              st;
     std::string                            checkpoint_path;
     FactorLimit                            factor_limit; ///< see set_factor_limit()

@@ -90,6 +90,16 @@ namespace wearlink::wear
               "memory, and extrapolation represents more cycles at no cost.",
               "cycles");
       declare(prm,
+              "Settling cycles",
+              "1",
+              P::Double(0, 1e4),
+              "Cycles simulated from the assembly before the first wear iteration and not "
+              "counted in the wear, so that the start-up (the pins falling from their initial "
+              "eccentricities onto the bores, the impacts that follow) is not extrapolated; "
+              "summary.json reports it (wear_start_up). Later iterations continue from the "
+              "state the previous one ended in, carried onto the worn profiles.",
+              "cycles");
+      declare(prm,
               "Number of iterations",
               "1",
               P::Integer(1, 100000),
@@ -330,6 +340,7 @@ namespace wearlink::wear
     s.cycles_per_iteration = r.get_double("Cycles per iteration");
     if (!(s.cycles_per_iteration > 0))
       r.fail("Cycles per iteration", "it must be > 0 cycles");
+    s.settling_cycles      = r.get_double("Settling cycles");
     s.n_iterations         = static_cast<unsigned int>(r.get_integer("Number of iterations"));
     s.extrapolation        = r.get("Extrapolation") == "fixed" ? Extrapolation::fixed : Extrapolation::adaptive;
     s.extrapolation_factor = r.get_double("Extrapolation factor");

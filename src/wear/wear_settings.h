@@ -71,6 +71,7 @@ namespace wearlink::wear
   {
     double                 cycle_period         = 0; ///< [s]; 0: 2π/|ω| of the first angle driver
     double                 cycles_per_iteration = 1; ///< simulated cycles per iteration [-]
+    double                 settling_cycles      = 1; ///< simulated before the first iteration, not counted [-]
     unsigned int           n_iterations         = 1; ///< iterations (fixed), cap (adaptive)
     Extrapolation          extrapolation        = Extrapolation::fixed;
     double                 extrapolation_factor = 1; ///< fixed factor [-]

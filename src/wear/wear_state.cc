@@ -17,7 +17,7 @@ namespace wearlink::wear
   namespace
   {
     constexpr const char *format_name    = "wearlink wear checkpoint";
-    constexpr int         format_version = 6;
+    constexpr int         format_version = 7;
     constexpr const char *payload_key    = "\"payload\": ";
     constexpr const char *refused =
       " Resume is refused; start the run afresh (`--overwrite`) or restore an intact copy of the checkpoint.";
@@ -78,6 +78,13 @@ namespace wearlink::wear
       j["meshed_pin"]    = to_json(js.meshed_pin.samples());
       j["contact_width"] = js.contact_width;
       j["last_rate"]     = to_json(js.last_rate);
+      const auto &u      = js.start_up;
+      j["start_up"]      = {{"impacts", u.impacts},
+                            {"mean_normal_force", u.mean_normal_force},
+                            {"peak_normal_force", u.peak_normal_force},
+                            {"carries", u.carries},
+                            {"largest_carry", u.largest_carry},
+                            {"carry_failures", u.carry_failures}};
       j["history"]       = Json::array();
       for (const auto &r : js.history)
         j["history"].push_back(to_json(r));
@@ -312,6 +319,14 @@ namespace wearlink::wear
       js.meshed_pin       = r.profile(j, "meshed_pin", where);
       js.contact_width    = r.number(j, "contact_width", where);
       js.last_rate        = read_rate(r, r.entry(j, "last_rate", where), where + "last_rate.");
+      const Json &u       = r.entry(j, "start_up", where);
+      const auto  w       = where + "start_up.";
+      js.start_up         = {r.number(u, "impacts", w),
+                             r.number(u, "mean_normal_force", w),
+                             r.number(u, "peak_normal_force", w),
+                             r.number(u, "carries", w),
+                             r.number(u, "largest_carry", w),
+                             r.number(u, "carry_failures", w)};
       const Json &history = r.list(j, "history", where);
       for (std::size_t k = 0; k < history.size(); ++k)
         js.history.push_back(read_record(r, history[k], where + "history[" + std::to_string(k) + "]."));
@@ -474,6 +489,7 @@ namespace wearlink::wear
     j["time_s"]                     = time;
     j["state"]                      = to_json(std::vector<double>(state.data(), state.data() + state.size()));
     j["factors"]                    = to_json(factors);
+    j["settling_cycles"]            = settling_cycles;
     j["modes"]                      = to_json(modes);
     j["response_before_peaks_m_s2"] = to_json(response_before_peaks);
     j["ledger"]                     = ledger_to_json(ledger);
@@ -511,6 +527,7 @@ namespace wearlink::wear
     const auto y            = r.numbers(j, "state");
     s.state                 = Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
     s.factors               = r.numbers(j, "factors");
+    s.settling_cycles       = r.number(j, "settling_cycles");
     s.modes                 = r.numbers(j, "modes");
     s.response_before_peaks = r.numbers(j, "response_before_peaks_m_s2");
     s.ledger                = read_ledger(r, j);

@@ -8,9 +8,10 @@
 // whole run, the effect ledger, the phase timings and the validity warnings up to the
 // checkpoint.
 //
-// The checkpoint (format version 6; 4 added the warnings, 5 the contact width and the
-// depth measures, 6 the last iteration's wear rate and the response before wear) is JSON in two parts: a header line
-//   {"format": "wearlink wear checkpoint", "version": 6, "payload_bytes": N,
+// The checkpoint (format version 7; 4 added the warnings, 5 the contact width and the
+// depth measures, 6 the last iteration's wear rate and the response before wear, 7 the
+// settling and the joints' start-up and carries) is JSON in two parts: a header line
+//   {"format": "wearlink wear checkpoint", "version": 7, "payload_bytes": N,
 //    "payload_crc32": "89abcdef",
 // and the payload, `"payload": {...}}`, whose N bytes carry zlib's CRC-32. Reading
 // checks, before anything is used: the header, the version, the length (a truncated
@@ -76,6 +77,21 @@ namespace wearlink::wear
     }
   };
 
+  /**
+   * A wearing joint's start-up, over the settling cycles before the first iteration
+   * (Wear/Settling cycles), and how the state was carried onto its worn profiles after
+   * each iteration (WearLoop).
+   */
+  struct StartUp
+  {
+    double impacts           = 0; ///< contact onsets during the settling [-]
+    double mean_normal_force = 0; ///< time mean of F_n over the settling [N]
+    double peak_normal_force = 0; ///< largest F_n of the settling [N]
+    double carries           = 0; ///< iterations that carried a contact onto new profiles [-]
+    double largest_carry     = 0; ///< the largest move of the pin centre against the bore [m]
+    double carry_failures    = 0; ///< carries whose force was not matched to 1e-9 (best point kept) [-]
+  };
+
   struct JointWearState
   {
     std::string name;
@@ -90,6 +106,8 @@ namespace wearlink::wear
     double contact_width = 0;
     /** The last iteration's own rate (not combined; empty before the first iteration). */
     WearRate last_rate;
+    /** The start-up and the carries of the state (see StartUp). */
+    StartUp start_up;
   };
 
   /** What the scene of a resuming run needs of a state (WearState::check_shape). */
@@ -115,6 +133,7 @@ namespace wearlink::wear
     double                             time            = 0; ///< simulated time at the end of the last iteration [s]
     Eigen::VectorXd                    state;               ///< [q | v | z] there
     std::vector<double>                factors;             ///< extrapolation factor of each iteration
+    double                             settling_cycles = 0; ///< simulated before the first iteration [-]
     /** Per clearance joint of the scene (worn or not): contact mode (0/1), δ̇⁻ [m/s]. */
     std::vector<double>         modes;
     std::vector<JointWearState> joints;

@@ -86,11 +86,17 @@ TEST(HeldContact, NineBarHoldsAndGivesUpWithTheEnergyBalanceClosed)
   EXPECT_LT(json_number(s.at("energy_balance_relative_error")), 1e3 * 1e-6);
 }
 
-TEST(HeldContact, WornProfilesAreLeftToTheCompliantLaw)
+// Worn profiles are held as conformal contacts (the normal is the resultant's direction,
+// given back where the compliant law would no longer carry the held force, 25 %): on the
+// nine-bar's worn joints the held run stays within the force the compliant run reaches.
+// Tolerance 1.5 ×: the peak force of joint A scatters by 4–8 % (sd) between equivalent
+// runs (tests/regression/nine_bar_worn.ref) and held contact moves it by up to 13 %
+// (measured over 2.5 s); a held row on the deepest point of a worn profile drove it ×10.
+TEST(HeldContact, WornProfilesAreHeldAsConformalContacts)
 {
   auto run = [](const std::string &mode) {
     auto scene = wearlink::testing::scene("params/nine_bar_worn.prm",
-                                          {"Simulation/End time=0.25",
+                                          {"Simulation/End time=0.5",
                                            "Output/Time series=false",
                                            "Joint A/Clearance/Persistent contact=" + mode,
                                            "Joint B/Clearance/Persistent contact=" + mode});
@@ -98,7 +104,12 @@ TEST(HeldContact, WornProfilesAreLeftToTheCompliantLaw)
   };
   const Json held = run("held"), compliant = run("compliant");
   for (const char *j : {"A", "B"})
-    EXPECT_EQ(json_number(held.at("clearance_joints").at(j).at("held_episodes")), 0) << j;
-  EXPECT_EQ(json_number(held.at("steps")), json_number(compliant.at("steps")));
-  EXPECT_EQ(json_number(held.at("rhs_evaluations")), json_number(compliant.at("rhs_evaluations")));
+    {
+      const auto &h = held.at("clearance_joints").at(j);
+      EXPECT_GE(json_number(h.at("held_episodes")), 1) << j;
+      EXPECT_LT(json_number(h.at("max_normal_force_N")),
+                1.5 * json_number(compliant.at("clearance_joints").at(j).at("max_normal_force_N")))
+        << j;
+    }
+  EXPECT_LT(json_number(held.at("energy_balance_relative_error")), 1e-4);
 }

@@ -10,6 +10,8 @@
 #include "io/profile_series.h"
 #include "io/scene_periods.h"
 #include "io/wear_outputs.h"
+#include "mbs/assembly.h"
+#include "mbs/constraint.h"
 #include "wear/wear_loop.h"
 #include "workflows/compare/dynamics_comparison.h"
 #include "workflows/run/analyses.h"
@@ -224,6 +226,34 @@ namespace wearlink::workflows
     }
 
     /**
+     * How the wear loop carries the mechanism's state onto worn profiles: every clearance
+     * joint pinned at its target eccentricity as a revolute with that offset (as the
+     * scene's assembly pins them at their initial ones), positions moved by the least
+     * change that satisfies them and the mechanism, velocities kept on the mechanism's
+     * constraints (mbs::carry).
+     */
+    wear::CarryState
+    carry_of(io::Scene &scene)
+    {
+      return [&scene](const double t, Eigen::VectorXd &y, const std::vector<mbs::Vec2> &eccentricities) {
+        std::vector<std::unique_ptr<mbs::Constraint>> pins;
+        for (std::size_t k = 0; k < scene.clearance_joints.size(); ++k)
+          {
+            const auto &d = scene.clearance_joints[k]->get_description();
+            const auto &e = eccentricities[k];
+            pins.push_back(d.pin_body == mbs::ground ?
+                             mbs::make_revolute(d.name, d.pin_body, d.pin_point, d.bushing_body, d.bushing_point, -e) :
+                             mbs::make_revolute(d.name, d.bushing_body, d.bushing_point, d.pin_body, d.pin_point, e));
+          }
+        const auto      n = scene.mechanism->n_coordinates();
+        Eigen::VectorXd q = y.head(n), v = y.segment(n, n);
+        mbs::carry(*scene.mechanism, t, pins, {}, q, v);
+        y.head(n)       = q;
+        y.segment(n, n) = v;
+      };
+    }
+
+    /**
      * The state of a checkpoint must be one the mechanism can be in: finite, with its
      * bodies on their joints (largest |Φ| at most a millimetre, far above what a run's
      * constraint-violation warning allows and far below a state of another place). A
@@ -359,6 +389,16 @@ namespace wearlink::workflows
           o["relative_revolutions"]          = r.relative_revolutions;
           o["sliding_distance_m"]            = r.sliding_distance;
           o["mean_normal_force_N"]           = r.mean_normal_force;
+          const auto &u                      = js.start_up;
+          o["wear_start_up"]                 = {{"settling_cycles", st.settling_cycles},
+                                                {"settling_impacts", u.impacts},
+                                                {"settling_mean_normal_force_N", u.mean_normal_force},
+                                                {"settling_peak_normal_force_N", u.peak_normal_force},
+                                                {"first_iteration_mean_normal_force_N",
+                                 js.history.empty() ? 0.0 : js.history.front().mean_normal_force},
+                                                {"carried_iterations", u.carries},
+                                                {"largest_carry_m", u.largest_carry},
+                                                {"carries_not_matched", u.carry_failures}};
         }
       summary["wear_iterations"]  = st.iterations_done;
       summary["wear_revolutions"] = st.revolutions;
@@ -611,6 +651,7 @@ namespace wearlink::workflows
       throw InputError("--resume needs the output directory of the run to continue.");
     m = std::make_unique<Members>(scene, options);
     m->loop.set_warnings(&m->result.warnings); // kept in the checkpoints: a resumed run reports them all
+    m->loop.set_carry(carry_of(scene));
     m->loop.set_checkpoint(m->write ? m->checkpoint : std::string());
     start_or_resume(m->loop, scene, options, m->checkpoint);
   }
