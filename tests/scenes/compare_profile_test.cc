@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `wearlink compare-profile` end to end on a run folder the tool writes itself: the
-// nine-bar wear scene shortened as in the wear tests (one iteration of half a cycle,
-// extrapolated by the scene's factor) wears joint A's bore by a few micrometres. The
+// nine-bar wear scene shortened as in the wear tests (one iteration of half a cycle from
+// the assembly, no settling, extrapolated by the scene's factor) wears joint A's bore by
+// a few micrometres. The
 // "measured" trace is that worn bore, sampled at 1000 unevenly spaced angles on the
 // run's own interpolant and turned by a known −40°: measured(a) = bore(a + θ) with
 // θ = −40°. The command must
@@ -36,6 +37,8 @@ using wearlink::numbers::two_pi;
 namespace
 {
   const std::vector<std::string> short_wear_arguments = {"--set",
+                                                         "Wear/Settling cycles=0",
+                                                         "--set",
                                                          "Wear/Cycles per iteration=0.5",
                                                          "--set",
                                                          "Wear/Response cycles=0.1",

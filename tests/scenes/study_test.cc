@@ -92,6 +92,8 @@ TEST(StudyAccuracy, IntegratorToleranceConvergesOnThePeakContactForce)
                                           "--set",
                                           "Wear/Cycles per iteration=0.25",
                                           "--set",
+                                          "Wear/Settling cycles=0",
+                                          "--set",
                                           "Wear/Number of iterations=1",
                                           "--output",
                                           dir + "/out",

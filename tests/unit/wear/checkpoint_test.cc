@@ -122,8 +122,8 @@ TEST(Checkpoint, DamagedEntriesAreRefusedNamingTheEntry)
   std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // Each edit of the valid text, and the words the message must contain.
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
-    {{"\"version\":6", "\"version\":7"}, "format version 7, this wearlink reads version 6"},
-    {{"\"version\":6", "\"version\":5"}, "format version 5, this wearlink reads version 6"},
+    {{"\"version\":7", "\"version\":8"}, "format version 8, this wearlink reads version 7"},
+    {{"\"version\":7", "\"version\":6"}, "format version 6, this wearlink reads version 7"},
     {{"\"quantity\": \"joint A", "\"quantity\": 4, \"x\": \"joint A"}, "'warnings[0].quantity' is not text"},
     {{"\"warnings\": [", "\"warnings\": 3, \"w\": ["}, "'warnings' is not a list"},
     {{"\"value\": \"inf\"", "\"value\": 0.001"}, "'warnings[1].value' does not exceed its limit"},
@@ -199,7 +199,7 @@ TEST(Checkpoint, ChangedByteTruncationAndOldVersionAreRefused)
       EXPECT_NE(m.find(path), std::string::npos) << m;
     }
   std::ofstream(path, std::ios::binary) << "{\n \"format\": \"wearlink wear checkpoint\",\n \"version\": 2\n}\n";
-  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 6"), std::string::npos) << refusal(path);
+  EXPECT_NE(refusal(path).find("format version 2, this wearlink reads version 7"), std::string::npos) << refusal(path);
 }
 
 // check_shape: each size that differs from the scene's is named with both values.
