@@ -2,13 +2,32 @@
 #   base < mbs < contact < fe < wear < analysis < io < workflows < app
 # A file in a layer may include headers of its own layer and of the layers before it;
 # files directly in src/ (register_all.*) count as app. deal.II headers other than
-# deal.II/base and the gmsh API belong to fe/ alone.
+# deal.II/base and the gmsh API belong to fe/ alone. Inside workflows/ the rooms are
+# ordered the same way: run, ensemble < compare < wear < study (run and ensemble are
+# peers: neither includes the other); a room includes its own headers and those of the
+# rooms before it.
 # Usage: cmake -DSRC=<folder holding the layer folders> -P check_layers.cmake
 cmake_minimum_required(VERSION 3.16)
 if(NOT SRC OR NOT IS_DIRECTORY "${SRC}")
   message(FATAL_ERROR "check_layers.cmake: set -DSRC=<source folder> (got '${SRC}')")
 endif()
 set(layers base mbs contact fe wear analysis io workflows app)
+set(rooms run ensemble compare wear study)
+set(room_levels 0 0 1 2 3)
+# The room of a path under workflows/ ("" if none) and its level into the variables.
+function(room_of path room_var level_var)
+  set(room "")
+  set(level -1)
+  if(path MATCHES "^workflows/([^/]+)/")
+    set(room "${CMAKE_MATCH_1}")
+    list(FIND rooms "${room}" index)
+    if(NOT index EQUAL -1)
+      list(GET room_levels ${index} level)
+    endif()
+  endif()
+  set(${room_var} "${room}" PARENT_SCOPE)
+  set(${level_var} "${level}" PARENT_SCOPE)
+endfunction()
 file(GLOB_RECURSE files RELATIVE "${SRC}" "${SRC}/*.h" "${SRC}/*.cc")
 set(violations "")
 set(n_includes 0)
@@ -36,6 +55,15 @@ foreach(rel IN LISTS files)
       list(FIND layers "${target}" target_level)
       if(target_level GREATER level)
         string(APPEND violations "  ${rel} (layer ${layer}) includes \"${header}\" (layer ${target})\n")
+      endif()
+      room_of("${rel}" from_room from_level)
+      room_of("${header}" to_room to_level)
+      if(from_room AND to_room AND NOT from_room STREQUAL to_room AND NOT to_level LESS from_level)
+        string(APPEND violations
+               "  ${rel} (room ${from_room}) includes \"${header}\" (room ${to_room}): rooms are run, ensemble < compare < wear < study\n")
+      endif()
+      if(from_room AND to_room AND (from_level EQUAL -1 OR to_level EQUAL -1))
+        string(APPEND violations "  ${rel}: room '${from_room}' or '${to_room}' is not one of ${rooms}\n")
       endif()
     elseif(line MATCHES "#[ \t]*include[ \t]*<(deal\\.II/[^>]+|gmsh[^>]*)>")
       set(header "${CMAKE_MATCH_1}")

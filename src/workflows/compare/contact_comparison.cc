@@ -16,7 +16,6 @@
 #include "wear/archard.h"
 #include "wear/load_recorder.h"
 #include "workflows/run/run.h"
-#include "workflows/wear/wear_run.h"
 
 #include <algorithm>
 #include <cmath>

@@ -14,7 +14,6 @@
 #include "io/recorded_run_files.h"
 #include "io/scene.h"
 #include "io/scene_periods.h"
-#include "workflows/compare/dynamics_comparison.h"
 #include "workflows/run/shadow_trajectory.h"
 
 #include <algorithm>

@@ -1,0 +1,1 @@
+// the room included by run/bad.h
