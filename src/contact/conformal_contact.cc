@@ -232,13 +232,12 @@ namespace wearlink::contact
         uy[i]            = std::sin(psi);
       }
     // A kink of R2* where its slope falls by s lifts it above the chord of an interval w
-    // wide by at most s w/4; a bore area holds at most ⌈w/spacing⌉ + 1 pin kinks.
+    // wide by at most s w/4 (w a bore area).
     const std::size_t np   = r2.size();
-    double            fall = 0; // the largest fall of the slope at a kink [m/rad]
+    const double      area = two_pi / bore.n_points();
+    pin_bulge.resize(np);
     for (std::size_t k = 0; k < np; ++k)
-      fall = std::max(fall, -(r2[(k + 1) % np] - 2 * r2[k] + r2[(k + np - 1) % np]) / pin_spacing);
-    const double area = two_pi / bore.n_points();
-    pin_bulge         = (std::ceil(area / pin_spacing) + 1) * fall * area / 4;
+      pin_bulge[k] = std::max(0.0, -(r2[(k + 1) % np] - 2 * r2[k] + r2[(k + np - 1) % np]) / pin_spacing) * area / 4;
   }
 
   template <class Visit>
@@ -284,11 +283,20 @@ namespace wearlink::contact
         }
     };
     // What bounds the overlap inside an area above the larger of its ends: the concavity of
-    // e·u over the area (ρ w²/8) and the pin's kinks.
-    const double bulge = rho * (s * cell) * (s * cell) / 8 + pin_bulge;
-    double       rise  = 0;
-    double       d     = overlap_at(i, j, frac, rise);
-    double       best  = d;
+    // e·u over the area (ρ w²/8) and the pin's kinks inside it (samples j + 1 … j_far).
+    const double concave = rho * (s * cell) * (s * cell) / 8;
+    const auto   bulge   = [&](long sample, const long far) {
+      double b = concave;
+      while (sample != far)
+        {
+          sample = sample + 1 == np ? 0 : sample + 1;
+          b += pin_bulge[sample];
+        }
+      return b;
+    };
+    double rise = 0;
+    double d    = overlap_at(i, j, frac, rise);
+    double best = d;
     visit(d, i, rise, false);
     for (long k = first; k < last; k += s)
       {
@@ -296,8 +304,9 @@ namespace wearlink::contact
         long   i_far = i, j_far = j;
         double f_far = frac, rise_far = 0;
         forward(i_far, j_far, f_far, s);
-        const double d_far = overlap_at(i_far, j_far, f_far, rise_far);
-        if (s > 1 && std::max(d, d_far) + bulge > 0)
+        const double d_far  = overlap_at(i_far, j_far, f_far, rise_far);
+        const bool   inside = std::max(d, d_far) + bulge(j, j_far) > 0;
+        if (s > 1 && inside)
           for (long m = 1; m < s; ++m) // the area's inner edges, in order
             {
               forward(i, j, frac, 1);
@@ -306,7 +315,7 @@ namespace wearlink::contact
               best            = std::max(best, di);
               visit(di, i, r, true);
             }
-        const bool adjacent = s == 1 || std::max(d, d_far) + bulge > 0;
+        const bool adjacent = s == 1 || inside;
         i = i_far, j = j_far, frac = f_far;
         d    = d_far;
         best = std::max(best, d);

@@ -210,10 +210,11 @@ namespace wearlink::contact
     double              cell        = 0; ///< cell width [rad]
     double              pin_spacing = 0, weight = 0, min_clearance = 0;
     /**
-     * How far R2* rises above its chord across a bore area at most: its concave kinks
-     * inside the area (the bore is linear there) [m].
+     * How far each pin sample's kink (a fall of R2*'s slope) lifts R2* above its chord
+     * across a bore area at most [m]: what the bore's linear areas add to the overlap's
+     * bound inside them.
      */
-    double     pin_bulge = 0;
-    Foundation foundation;
+    std::vector<double> pin_bulge;
+    Foundation          foundation;
   };
 } // namespace wearlink::contact
