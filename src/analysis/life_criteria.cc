@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "analysis/life_criteria.h"
 
-#include "analysis/ensemble_statistics.h"
 #include "base/numbers.h"
 #include "base/text.h"
 #include "wear/depth_measures.h"
@@ -66,17 +65,6 @@ namespace wearlink::analysis
             break;
         }
       return nan;
-    }
-
-    /** The roots r₋ ≤ r₊ of A r² − 2 B r + C = 0 for A > 0 (NaN if there are none). */
-    Interval
-    roots(const double a, const double b, const double c)
-    {
-      const double discriminant = b * b - a * c;
-      if (!(a > 0) || !(discriminant >= 0))
-        return {};
-      const double root = std::sqrt(discriminant);
-      return {(b - root) / a, (b + root) / a};
     }
   } // namespace
 
@@ -209,153 +197,81 @@ namespace wearlink::analysis
     return (remaining - 0.5 * step) / cycles;
   }
 
-  bool
-  Interval::bounded() const
+  namespace
   {
-    return std::isfinite(low) && std::isfinite(high);
-  }
+    /** Whole revolutions, without an exponent. */
+    std::string
+    revolutions_text(const double v)
+    {
+      return format_number(std::round(v), 15);
+    }
 
-  double
-  ResponseTrend::rise(const double revolutions) const
-  {
-    if (points < 2)
-      return 0;
-    return 100 * slope * revolutions / fresh;
-  }
-
-  // Fieller: the ρ with (b N − ρ a)² ≤ k (ρ²/n + (N + ρ x̄)²/Sxx), k = t² s², are those
-  // between the roots of A ρ² − 2 B ρ + C with A = a² − k (1/n + x̄²/Sxx),
-  // B = N (a b + k x̄/Sxx), C = N² (b² − k/Sxx) — bounded if A > 0 (a significant).
-  Interval
-  ResponseTrend::rise_interval(const double revolutions) const
-  {
-    if (points < 3 || !std::isfinite(residual_std) || !(sxx > 0))
-      return {};
-    const double k = t95 * t95 * residual_std * residual_std, n = static_cast<double>(points);
-    const double a = fresh * fresh - k * (1 / n + mean_revolutions * mean_revolutions / sxx);
-    const double b = revolutions * (fresh * slope + k * mean_revolutions / sxx);
-    const double c = revolutions * revolutions * (slope * slope - k / sxx);
-    const auto   r = roots(a, b, c);
-    return {100 * r.low, 100 * r.high};
-  }
-
-  Interval
-  ResponseTrend::excess_band(const double revolutions, const double limit) const
-  {
-    if (points < 3 || !std::isfinite(residual_std) || !(sxx > 0))
-      return {};
-    const double l = limit / 100, n = static_cast<double>(points);
-    const double g = slope * revolutions - l * fresh;
-    const double half =
-      t95 * residual_std * std::sqrt(l * l / n + std::pow(revolutions + l * mean_revolutions, 2) / sxx);
-    return {g - half, g + half};
-  }
-
-  // The N with (b N − ℓ a)² ≤ k (ℓ²/n + (N + ℓ x̄)²/Sxx) lie between the roots of
-  // A N² − 2 B N + C with A = b² − k/Sxx, B = ℓ (a b + k x̄/Sxx),
-  // C = ℓ² (a² − k (1/n + x̄²/Sxx)) — bounded if A > 0 (b significant).
-  double
-  ResponseTrend::limit_crossing(const double limit, Interval &interval) const
-  {
-    interval = Interval();
-    if (!(slope > 0))
-      return nan;
-    const double l = limit / 100, crossing = l * fresh / slope;
-    if (points < 3 || !std::isfinite(residual_std) || !(sxx > 0))
-      return crossing;
-    const double k = t95 * t95 * residual_std * residual_std, n = static_cast<double>(points);
-    const double a = slope * slope - k / sxx;
-    const double b = l * (fresh * slope + k * mean_revolutions / sxx);
-    const double c = l * l * (fresh * fresh - k * (1 / n + mean_revolutions * mean_revolutions / sxx));
-    const auto   r = roots(a, b, c);
-    if (r.bounded())
-      interval = {std::max(0.0, r.low), r.high};
-    return crossing;
-  }
-
-  ResponseTrend
-  response_trend(const std::vector<double> &revolutions, const std::vector<double> &measures, const std::size_t count)
-  {
-    std::vector<double> x, y;
-    for (std::size_t k = 0; k < count && k < measures.size() && k < revolutions.size(); ++k)
-      if (std::isfinite(measures[k]) && std::find(x.begin(), x.end(), revolutions[k]) == x.end())
-        {
-          x.push_back(revolutions[k]);
-          y.push_back(measures[k]);
-        }
-    ResponseTrend t;
-    t.points = x.size();
-    if (x.empty())
-      return t;
-    const double n      = static_cast<double>(x.size());
-    double       x_mean = 0, y_mean = 0, sxy = 0, sxx = 0;
-    for (std::size_t k = 0; k < x.size(); ++k)
-      {
-        x_mean += x[k] / n;
-        y_mean += y[k] / n;
-      }
-    for (std::size_t k = 0; k < x.size(); ++k)
-      {
-        sxx += (x[k] - x_mean) * (x[k] - x_mean);
-        sxy += (x[k] - x_mean) * (y[k] - y_mean);
-      }
-    t.mean_revolutions = x_mean;
-    t.sxx              = sxx;
-    t.slope            = t.points >= 2 && sxx > 0 ? sxy / sxx : 0.0;
-    t.fresh            = y_mean - t.slope * x_mean;
-    if (t.points < 3)
-      return t;
-    double squares = 0;
-    for (std::size_t k = 0; k < x.size(); ++k)
-      squares += std::pow(y[k] - t.fresh - t.slope * x[k], 2);
-    t.residual_std = std::sqrt(squares / (n - 2));
-    t.scatter      = t.residual_std / t.fresh;
-    t.t95          = student_t_quantile(0.975, n - 2);
-    return t;
-  }
+    /**
+     * Why a reached criterion is not decided ("" if it is): its crossing is not bounded or
+     * wider than @p tolerance × the crossing.
+     */
+    std::string
+    why_not_located(const TrendCrossing &x, const std::string &model, const double tolerance)
+    {
+      if (!std::isfinite(x.revolutions))
+        return "reached, but the " + model + "'s crossing is not located";
+      if (!x.interval.bounded())
+        return "reached, but the 95 % interval of the " + model + "'s crossing is unbounded";
+      if (x.interval.high - x.interval.low > tolerance * x.revolutions)
+        return "reached, but the 95 % interval of the " + model + "'s crossing, " + revolutions_text(x.interval.low) +
+               " … " + revolutions_text(x.interval.high) + " rev, is " +
+               format_number(100 * (x.interval.high - x.interval.low) / x.revolutions, 4) +
+               " % of it wide (Life/Response tolerance " + format_number(100 * tolerance, 4) + " %)";
+      return "";
+    }
+  } // namespace
 
   TrendCrossing
-  trend_crossing(const ResponseTrend &trend, const double limit, const double revolutions_run, const double tolerance)
+  trend_crossing(const ResponseModels &models,
+                 const TrendFamily     family,
+                 const double          limit,
+                 const double          revolutions_run,
+                 const double          tolerance)
   {
     TrendCrossing x;
-    x.revolutions     = trend.limit_crossing(limit, x.interval);
-    x.rise_at_end     = trend.rise_interval(revolutions_run);
-    const auto g      = trend.excess_band(revolutions_run, limit);
-    const auto number = [](const double v) {
-      return format_number(v, 4);
-    };
-    const auto revs = [](const double v) { // whole revolutions, without an exponent
-      return format_number(std::round(v), 15);
-    };
-    const auto rise_ci = number(x.rise_at_end.low) + " … " + number(x.rise_at_end.high) + " %";
-    const auto at_end  = " at " + revs(revolutions_run) + " rev";
-    if (trend.points < min_response_points)
-      x.reason =
-        std::to_string(trend.points) + " measurement(s): the trend counts from " + std::to_string(min_response_points);
-    else if (!g.bounded())
+    x.family = family;
+    if (models.points() < min_response_points || !models.has(family))
+      {
+        x.reason = std::to_string(models.points()) + " measurement(s): the trend counts from " +
+                   std::to_string(min_response_points);
+        return x;
+      }
+    const std::string model = family_name(family);
+    x.revolutions           = models.model(family).crossing(limit);
+    x.interval              = models.crossing_interval(family, limit);
+    x.rise_at_end           = models.rise_interval(family, revolutions_run);
+    const auto g            = models.excess_band(family, revolutions_run, limit);
+    const auto rise_ci = format_number(x.rise_at_end.low, 4) + " … " + format_number(x.rise_at_end.high, 4) + " %";
+    const auto at_end =
+      "the " + model + "'s 95 % interval of the rise at " + revolutions_text(revolutions_run) + " rev, " + rise_ci;
+    if (!g.bounded())
       x.reason = "the measurements have no spread in revolutions: no trend";
     else if (g.high < 0)
       {
         x.status = CriterionStatus::not_reached;
-        x.reason = "the 95 % interval of the rise" + at_end + ", " + rise_ci + ", is below the limit";
+        x.reason = at_end + ", is below the limit";
       }
     else if (g.low < 0)
-      x.reason =
-        "the 95 % interval of the rise" + at_end + ", " + rise_ci + ", contains the limit " + number(limit) + " %";
+      x.reason = at_end + ", contains the limit " + format_number(limit, 4) + " %";
     else
       {
         x.reached = true;
-        if (!x.interval.bounded())
-          x.reason = "reached, but the slope is not significant: the interval of the crossing is unbounded";
-        else if (x.interval.high - x.interval.low > tolerance * x.revolutions)
-          x.reason = "reached, but the 95 % interval of the crossing, " + revs(x.interval.low) + " … " +
-                     revs(x.interval.high) + " rev, is " +
-                     number(100 * (x.interval.high - x.interval.low) / x.revolutions) +
-                     " % of it wide (Life/Response tolerance " + number(100 * tolerance) + " %)";
-        else
+        x.reason  = why_not_located(x, model, tolerance);
+        if (x.reason.empty())
           x.status = CriterionStatus::decided;
       }
     return x;
+  }
+
+  TrendCrossing
+  trend_crossing(const ResponseModels &models, const double limit, const double revolutions_run, const double tolerance)
+  {
+    return trend_crossing(models, models.chosen(), limit, revolutions_run, tolerance);
   }
 
   std::optional<std::size_t>

@@ -42,30 +42,32 @@
 //
 // Deciding a noisy criterion on its trend. The response measure scatters by 10–30 % from
 // one measurement to the next (the impacts of a chaotic clearance mechanism): one sample
-// above the limit says nothing. The criterion follows the least-squares line
-// y = a + b N through every measurement (the fresh one included; a measurement at the
-// revolutions of an earlier one, an iteration that wore nothing, is the same run and is
-// counted once) and its rise r(N) = line(N)/line(0) − 1 = b N / a. With ℓ the limit as a
-// fraction, r(N) ≥ ℓ ⇔ g(N) = b N − ℓ a ≥ 0, a linear combination of the line's
-// coefficients, so its 95 % confidence band is exact for normal scatter (Fieller):
-//   g(N) ± t s √(ℓ²/n + (N + ℓ x̄)² / Sxx),  t = t(0.975, n − 2) (Student),
-// s the residuals' standard deviation (n − 2 degrees of freedom), x̄ the mean revolutions,
-// Sxx = Σ (N_i − x̄)². At the revolutions of the last measurement the criterion is
-//   reached      if the lower bound of the band is ≥ 0 (the lower 95 % bound of the rise
-//                is at or above the limit),
-//   not reached  if the upper bound is < 0 (the upper 95 % bound of the rise is below it),
+// above the limit says nothing. The criterion follows a trend fitted by least squares to
+// every measurement (the fresh one included; a measurement at the revolutions of an
+// earlier one, an iteration that wore nothing, is the same run and is counted once): a
+// line, a step (the level jumps between two measurements) or a ramp (the fresh level, a
+// straight rise, a plateau), the one with the smallest BIC (analysis/response_models.h:
+// the models, their fits, the choice and the 95 % statements). The rise is the trend's
+// over its own fresh level, r(N) = 100 β w(N)/a. At the revolutions of the last
+// measurement the criterion is, on the chosen model,
+//   reached      if the lower 95 % bound of the rise there is at or above the limit,
+//   not reached  if the upper 95 % bound is below it,
 //   undecided    otherwise (the band contains the limit),
-// and it counts from the 4th measurement (min_response_points). Where it crosses: the
-// line's crossing N̂ = ℓ a / b, with the 95 % interval of the revolutions where the band's
-// bounds cross the limit (inverse regression: the roots of g(N)² = t² s² (…) above; a
-// bounded interval only if the slope is significant, b² > t² s² / Sxx). The criterion is
-// decided when it is reached and that interval is at most Response tolerance × N̂ wide;
-// a reached criterion with a wider interval, like one whose band contains the limit, is
-// undecided and reported with what is known (N̂, the interval if bounded). An undecided
-// criterion is never a life: the headline is the decided criterion with the fewest
-// revolutions (headline_criterion).
+// and it counts from the 4th measurement (min_response_points). For a line the bounds are
+// Fieller's, exact for normal scatter: with ℓ the limit as a fraction, r ≥ ℓ ⇔
+// g(N) = b N − ℓ a ≥ 0, g ± t s √(ℓ²/n + (N + ℓ x̄)²/Sxx), t = t(0.975, n − 2); for a step
+// or a ramp they are the union of those of the change points the data admit (profile
+// likelihood). Where it crosses: the model's crossing N̂ (a line's ℓ a/b, a ramp's point
+// on its rise, a step's jump) with its 95 % interval (a line's inverse regression, bounded
+// only if the slope is significant; a step's gaps, a ramp's points where the limit may be
+// crossed). The criterion is decided when it is reached and that interval is at most
+// Response tolerance × N̂ wide; a reached criterion with a wider interval, like one whose
+// band contains the limit, is undecided and reported with what is known (N̂, the interval
+// if bounded, the model and the others' scores). An undecided criterion is never a life:
+// the headline is the decided criterion with the fewest revolutions (headline_criterion).
 #pragma once
 
+#include "analysis/response_models.h"
 #include "wear/wear_loop.h"
 
 #include <limits>
@@ -199,85 +201,35 @@ namespace wearlink::analysis
   /** How many response measurements the trend needs before the response criterion counts. */
   constexpr std::size_t min_response_points = 4;
 
-  /** A 95 % confidence interval; NaN bounds where it is not bounded. */
-  struct Interval
-  {
-    double low  = std::numeric_limits<double>::quiet_NaN();
-    double high = std::numeric_limits<double>::quiet_NaN();
-
-    bool
-    bounded() const;
-  };
-
-  /**
-   * The least-squares line of the response measures [m/s²] against revolutions, with
-   * what its Student-t confidence statements need (see the file comment).
-   */
-  struct ResponseTrend
-  {
-    double      fresh            = std::numeric_limits<double>::quiet_NaN(); ///< a, the line at 0 revolutions [m/s²]
-    double      slope            = std::numeric_limits<double>::quiet_NaN(); ///< b [m/s² per revolution]
-    double      scatter          = std::numeric_limits<double>::quiet_NaN(); ///< s / a [-]
-    std::size_t points           = 0;                                        ///< n
-    double      residual_std     = std::numeric_limits<double>::quiet_NaN(); ///< s (n − 2 dof) [m/s²]
-    double      mean_revolutions = std::numeric_limits<double>::quiet_NaN(); ///< x̄
-    double      sxx              = std::numeric_limits<double>::quiet_NaN(); ///< Σ (N_i − x̄)² [rev²]
-    double      t95              = std::numeric_limits<double>::quiet_NaN(); ///< t(0.975, n − 2)
-
-    /** The rise of the line at @p revolutions over its fresh value [%] (0 with one point). */
-    double
-    rise(double revolutions) const;
-
-    /**
-     * The 95 % confidence interval of the rise at @p revolutions [%] (Fieller's interval
-     * of the ratio b N / a); unbounded (NaN) without 3 points or a significant fresh value.
-     */
-    Interval
-    rise_interval(double revolutions) const;
-
-    /**
-     * The 95 % band of g(N) = b N − ℓ a at @p revolutions for the limit @p limit [%]
-     * (ℓ = limit / 100) [m/s²]: its lower bound ≥ 0 ⇔ the lower bound of the rise ≥ the
-     * limit; unbounded (NaN) without 3 points.
-     */
-    Interval
-    excess_band(double revolutions, double limit) const;
-
-    /**
-     * Where the line crosses the limit @p limit [%], N̂ = ℓ a / b (NaN unless the slope is
-     * > 0), and in @p interval the 95 % interval of that crossing (where the band's bounds
-     * cross it; bounded only if the slope is significant and positive; its low end ≥ 0).
-     */
-    double
-    limit_crossing(double limit, Interval &interval) const;
-  };
-
-  /**
-   * The trend of the finite @p measures at @p revolutions (the first @p count rows; a row
-   * at the revolutions of an earlier counted one is left out).
-   */
-  ResponseTrend
-  response_trend(const std::vector<double> &revolutions, const std::vector<double> &measures, std::size_t count);
-
   /** Where a trend criterion stands (see the file comment). */
   struct TrendCrossing
   {
     CriterionStatus status      = CriterionStatus::undecided;
+    TrendFamily     family      = TrendFamily::line; ///< the model it stands on
     bool            reached     = false; ///< the lower 95 % bound of the rise at the last measurement ≥ the limit
-    double          revolutions = std::numeric_limits<double>::quiet_NaN(); ///< N̂ (slope > 0)
+    double          revolutions = std::numeric_limits<double>::quiet_NaN(); ///< the model's crossing
     Interval        interval;                                               ///< of the crossing [revolutions]
     Interval        rise_at_end; ///< 95 % interval of the rise at the last measurement [%]
     std::string     reason;      ///< why it is not decided ("" if it is)
   };
 
   /**
-   * Where the trend criterion of limit @p limit [%] stands after measurements up to
-   * @p revolutions_run: decided if reached with an interval at most @p tolerance × N̂
-   * wide, not reached if the upper 95 % bound of the rise there is below the limit,
-   * else undecided (also with fewer than min_response_points measurements).
+   * Where the trend criterion of limit @p limit [%] stands on the model @p family of
+   * @p models after measurements up to @p revolutions_run: decided if reached with an
+   * interval of the crossing at most @p tolerance × the crossing wide, not reached if the
+   * upper 95 % bound of the rise there is below the limit, else undecided (also with fewer
+   * than min_response_points measurements, or without a fit of that family).
    */
   TrendCrossing
-  trend_crossing(const ResponseTrend &trend, double limit, double revolutions_run, double tolerance);
+  trend_crossing(const ResponseModels &models,
+                 TrendFamily           family,
+                 double                limit,
+                 double                revolutions_run,
+                 double                tolerance);
+
+  /** trend_crossing() on the model @p models chose (ResponseModels::chosen). */
+  TrendCrossing
+  trend_crossing(const ResponseModels &models, double limit, double revolutions_run, double tolerance);
 
   /** What the headline needs of a criterion's result. */
   struct CriterionOutcome

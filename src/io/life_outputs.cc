@@ -145,8 +145,9 @@ namespace wearlink::io
     }
 
     /**
-     * The response criterion's final trend (rise / limit) and its 95 % band over the
-     * run, and the 95 % interval of its crossing at 1 (series appended to @p spec).
+     * The response criterion's final trend on the model its measurements chose (rise /
+     * limit) and its 95 % band over the run, each measurement as a rise over that model's
+     * fresh level, and the 95 % interval of its crossing at 1 (series appended to @p spec).
      */
     void
     add_trend(PlotSpec                      &spec,
@@ -154,24 +155,39 @@ namespace wearlink::io
               const analysis::CriterionSpec &c,
               const std::string             &colour)
     {
-      const auto trend = analysis::response_trend(h.revolutions, h.response, h.rows());
-      if (trend.points < 3 || h.revolutions.empty())
+      const analysis::ResponseModels models(h.revolutions, h.response, h.rows());
+      if (models.points() < 3 || h.revolutions.empty())
         return;
-      const auto          x = grid(h.revolutions.back(), 100);
+      const auto          family = models.chosen();
+      const auto         &model  = models.model(family);
+      const auto          name   = analysis::family_name(family);
+      const auto          x      = grid(h.revolutions.back(), 200);
       std::vector<double> line, low, high;
       for (const double n : x)
         {
-          const auto band = trend.rise_interval(n);
-          line.push_back(trend.rise(n) / c.limit);
+          const auto band = models.rise_interval(family, n);
+          line.push_back(model.rise(n) / c.limit);
           low.push_back(band.low / c.limit);
           high.push_back(band.high / c.limit);
         }
-      spec.series.push_back(band_series("95 % band of the " + c.name + " trend", x, low, high, colour));
-      spec.series.push_back({c.name + " trend (least squares)", x, line, io::line(colour, 2).dotted()});
-      analysis::Interval interval;
-      const double       crossing = trend.limit_crossing(c.limit, interval);
+      spec.series.push_back(band_series("95 % band of the " + c.name + " trend (" + name + ")", x, low, high, colour));
+      spec.series.push_back(
+        {c.name + " trend: " + name + " (least squares, chosen by BIC)", x, line, io::line(colour, 2).dotted()});
+      PlotSeries measured{"response measure as a rise over the " + name + "'s fresh level",
+                          {},
+                          {},
+                          points("#555555", 1)};
+      for (std::size_t r = 0; r < h.rows(); ++r)
+        if (std::isfinite(h.response[r]))
+          {
+            measured.x.push_back(h.revolutions[r]);
+            measured.y.push_back(100 * (h.response[r] / model.fit.a - 1) / c.limit);
+          }
+      spec.series.push_back(measured);
+      const auto   interval = models.crossing_interval(family, c.limit);
+      const double crossing = model.crossing(c.limit);
       if (interval.bounded())
-        spec.series.push_back({"95 % interval of the " + c.name + " crossing (line at " +
+        spec.series.push_back({"95 % interval of the " + c.name + " crossing (" + name + " at " +
                                  std::to_string(static_cast<long>(std::lround(crossing))) + " rev)",
                                {interval.low, interval.high},
                                {1.0, 1.0},

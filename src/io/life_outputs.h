@@ -7,8 +7,11 @@
 //                     17 digits, so that a resumed run reads its history back exactly;
 //   life.png          every criterion's value as a fraction of its limit against
 //                     revolutions (1: reached), the wear crossings marked; the response
-//                     criterion with its final trend line and the line's 95 % confidence
-//                     band (Fieller) and the 95 % interval of its crossing;
+//                     criterion with the trend of the model its measurements chose
+//                     (analysis/response_models.h), its 95 % band, the measurements as a
+//                     rise over that model's fresh level, and the 95 % interval of its
+//                     crossing; the criterion's own value in each row is the chosen
+//                     trend's rise on the measurements up to that row;
 //   the ensemble's life.png: per criterion the band (smallest to largest) of the members'
 //                     value / limit against revolutions, their median, and the spread
 //                     P10 … P90 of the members' decided crossings.

@@ -76,6 +76,8 @@ namespace wearlink::workflows
       reached(std::size_t c) const;
       analysis::Crossing
       crossing(std::size_t c) const;
+      analysis::ResponseModels
+      models() const;
       analysis::TrendCrossing
       trend_state(std::size_t c) const;
       double
@@ -172,7 +174,7 @@ namespace wearlink::workflows
      * The largest factor of the coming iteration: each wear criterion not yet reached
      * lands on its crossing within the tolerance (analysis::approach_factor), and the run
      * stays within Life/Maximum revolutions. A trend criterion does not limit it: its
-     * crossing is the fitted line's, located by the statistics of all measurements, not by
+     * crossing is its fitted model's, located by the statistics of all measurements, not by
      * an iteration's end.
      */
     double
@@ -206,8 +208,8 @@ namespace wearlink::workflows
       for (const auto &c : history.criteria)
         if (c.kind == analysis::Criterion::response_rise)
           {
-            const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
-            values.push_back(trend.rise(st.revolutions));
+            const auto trend = models();
+            values.push_back(trend.model(trend.chosen()).rise(st.revolutions));
             joints.push_back("");
           }
         else
@@ -233,12 +235,18 @@ namespace wearlink::workflows
       return analysis::first_crossing(history.revolutions, history.column(c), history.criteria[c].limit);
     }
 
-    /** Where the trend criterion @p c stands on every measurement so far. */
+    /** The models of the response measures so far. */
+    analysis::ResponseModels
+    LifeRun::models() const
+    {
+      return {history.revolutions, history.response, history.rows()};
+    }
+
+    /** Where the trend criterion @p c stands on every measurement so far (on the chosen model). */
     analysis::TrendCrossing
     LifeRun::trend_state(const std::size_t c) const
     {
-      const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
-      return analysis::trend_crossing(trend,
+      return analysis::trend_crossing(models(),
                                       history.criteria[c].limit,
                                       history.revolutions.back(),
                                       scene.life.response_tolerance);
@@ -280,16 +288,16 @@ namespace wearlink::workflows
       const double life = earliest_wear_life();
       if (!std::isfinite(life))
         return false;
-      const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
-      return trend.points >= analysis::min_response_points &&
-             trend.excess_band(life, history.criteria[c].limit).high < 0;
+      const auto trend = models();
+      return trend.points() >= analysis::min_response_points &&
+             trend.excess_band(trend.chosen(), life, history.criteria[c].limit).high < 0;
     }
 
     /**
      * A wear criterion is settled when reached. A trend criterion is settled when decided,
      * when it cannot come first, or when every wear criterion is reached: measurements past
-     * the earliest wear life only narrow the line's interval under its straight-line model
-     * and cost whole iterations, so a trend still undecided there is reported as undecided
+     * the earliest wear life only narrow the interval of its model's crossing and cost
+     * whole iterations, so a trend still undecided there is reported as undecided
      * (with a warning if its interval begins before the wear life).
      */
     bool
@@ -395,6 +403,58 @@ namespace wearlink::workflows
       return std::isfinite(low) && std::isfinite(high) ? Json::array({low, high}) : Json();
     }
 
+    /** A model's change points as JSON: none for a line, a step's gap, a ramp's start and end [rev]. */
+    Json
+    change_points(const analysis::TrendModel &m)
+    {
+      if (m.family == analysis::TrendFamily::line)
+        return Json();
+      return Json::array({m.tau1, m.tau2});
+    }
+
+    /**
+     * Each fitted model of the response measures: its parameters, BIC and weight, and where
+     * the criterion of limit @p limit [%] stands on it after @p revolutions_run (the chosen
+     * one decides; the others are reported for comparison).
+     */
+    Json
+    models_block(const analysis::ResponseModels &models,
+                 const double                    limit,
+                 const double                    revolutions_run,
+                 const double                    tolerance)
+    {
+      Json       out  = Json::object();
+      const auto best = models.model(models.chosen()).bic;
+      for (const auto family : {analysis::TrendFamily::line, analysis::TrendFamily::step, analysis::TrendFamily::ramp})
+        {
+          if (!models.has(family))
+            continue;
+          const auto &m = models.model(family);
+          const auto  x = analysis::trend_crossing(models, family, limit, revolutions_run, tolerance);
+          Json        o = {{"parameters", m.parameters},
+                           {"bic", m.bic},
+                           {"delta_bic", m.bic - best},
+                           {"weight", models.weight(family)},
+                           {"fresh_m_s2", m.fit.a},
+                           {"change_points_revolutions", change_points(m)},
+                           {"residual_std_m_s2", models.residual_std(family)},
+                           {"rise_at_end_percent", m.rise(revolutions_run)},
+                           {"rise_at_end_ci95_percent", pair_or_null(x.rise_at_end.low, x.rise_at_end.high)},
+                           {"crossing_revolutions", std::isfinite(x.revolutions) ? Json(x.revolutions) : Json()},
+                           {"interval_revolutions", pair_or_null(x.interval.low, x.interval.high)},
+                           {"reached", x.reached},
+                           {"status", analysis::status_name(x.status)}};
+          if (family == analysis::TrendFamily::step)
+            o["jump_m_s2"] = m.fit.beta;
+          else
+            o["slope_m_s2_per_1000_rev"] = 1000 * m.fit.beta;
+          if (family == analysis::TrendFamily::ramp)
+            o["plateau_m_s2"] = m.value(m.tau2);
+          out[analysis::family_name(family)] = o;
+        }
+      return out;
+    }
+
     /** The block of the wear criterion @p c: decided when reached, with its bracket. */
     Json
     LifeRun::wear_block(const std::size_t c, analysis::CriterionOutcome &outcome) const
@@ -426,8 +486,9 @@ namespace wearlink::workflows
     }
 
     /**
-     * The block of the trend criterion @p c: its status on all measurements, the line's
-     * crossing (the life if decided, else an estimate) and its 95 % interval.
+     * The block of the trend criterion @p c: its status on all measurements on the chosen
+     * model, that model's crossing (the life if decided, else an estimate) and its 95 %
+     * interval.
      */
     Json
     LifeRun::trend_block(const std::size_t c, analysis::CriterionOutcome &outcome) const
@@ -444,17 +505,18 @@ namespace wearlink::workflows
       else if (!decided && std::isfinite(life))
         reason += "; the run stopped when every wear criterion was reached (the wear life " +
                   format_number(std::round(life), 15) + " rev), which it may precede";
-      outcome                        = {x.status, decided ? x.revolutions : nan};
-      o["located_by"]                = "trend";
-      o["reached"]                   = x.reached;
-      o["decided"]                   = decided;
-      o["status"]                    = analysis::status_name(x.status);
-      o["revolutions"]               = decided ? Json(x.revolutions) : Json();
-      o["hours"]                     = decided ? Json(x.revolutions * period / 3600) : Json();
-      o["joint"]                     = "";
-      o["line_crossing_revolutions"] = std::isfinite(x.revolutions) ? Json(x.revolutions) : Json();
-      o["interval_revolutions"]      = pair_or_null(x.interval.low, x.interval.high);
-      o["interval_hours"]            = pair_or_null(x.interval.low * period / 3600, x.interval.high * period / 3600);
+      outcome                         = {x.status, decided ? x.revolutions : nan};
+      o["located_by"]                 = "trend";
+      o["reached"]                    = x.reached;
+      o["decided"]                    = decided;
+      o["status"]                     = analysis::status_name(x.status);
+      o["revolutions"]                = decided ? Json(x.revolutions) : Json();
+      o["hours"]                      = decided ? Json(x.revolutions * period / 3600) : Json();
+      o["joint"]                      = "";
+      o["trend_model"]                = analysis::family_name(x.family);
+      o["trend_crossing_revolutions"] = std::isfinite(x.revolutions) ? Json(x.revolutions) : Json();
+      o["interval_revolutions"]       = pair_or_null(x.interval.low, x.interval.high);
+      o["interval_hours"]             = pair_or_null(x.interval.low * period / 3600, x.interval.high * period / 3600);
       o["interval_relative"] =
         x.interval.bounded() && x.revolutions > 0 ? Json((x.interval.high - x.interval.low) / x.revolutions) : Json();
       o["response_tolerance"]           = scene.life.response_tolerance;
@@ -530,17 +592,16 @@ namespace wearlink::workflows
       life["life_hours"]       = any ? head.at("hours") : Json();
       if (scene.life.response_rise > 0)
         {
-          const auto trend = analysis::response_trend(history.revolutions, history.response, history.rows());
-          life["response"] = {{"body", scene.mechanism->get_bodies()[body].name},
-                              {"cycles", scene.life.response_cycles},
-                              {"measured_fresh_m_s2", history.response.front()},
-                              {"measured_last_m_s2", history.response.back()},
-                              {"trend_fresh_m_s2", trend.fresh},
-                              {"trend_slope_percent_per_1000_rev", 1e5 * trend.slope / trend.fresh},
-                              {"residual_std_m_s2", trend.residual_std},
-                              {"scatter_percent", 100 * trend.scatter},
-                              {"student_t_975", trend.t95},
-                              {"measurements", trend.points}};
+          const auto trend = models();
+          life["response"] = {
+            {"body", scene.mechanism->get_bodies()[body].name},
+            {"cycles", scene.life.response_cycles},
+            {"measured_fresh_m_s2", history.response.front()},
+            {"measured_last_m_s2", history.response.back()},
+            {"measurements", trend.points()},
+            {"trend_model", analysis::family_name(trend.chosen())},
+            {"model_choice", "the smallest BIC = n ln(RSS/n) + p ln n"},
+            {"models", models_block(trend, scene.life.response_rise, revolutions_run, scene.life.response_tolerance)}};
         }
       return life;
     }
@@ -615,8 +676,9 @@ namespace wearlink::workflows
                                                                   range_text(o.at("interval_revolutions")) + " (95 %)";
       if (status != "decided")
         {
-          if (!o.at("line_crossing_revolutions").is_null())
-            text = "line crosses at " + format_number(json_number(o.at("line_crossing_revolutions")), 6) + ", " + text;
+          if (!o.at("trend_crossing_revolutions").is_null())
+            text = o.at("trend_model").get<std::string>() + " crosses at " +
+                   format_number(json_number(o.at("trend_crossing_revolutions")), 6) + ", " + text;
           text += "; " + o.at("reason").get<std::string>();
         }
       return text;

@@ -104,14 +104,16 @@ TEST(LifeCriteria, TheResponseTrendIsTheLeastSquaresLine)
   // 100, 110, 100, 110 m/s² at 0, 1000, 2000, 3000 rev: the line 102 + 0.002 N
   // (slope Σ(x − x̄)(y − ȳ)/Σ(x − x̄)² = 10000/5e6), so 6 % above its fresh value at
   // 3000 rev, while the last measurement over the first says +10 %.
-  const auto t = response_trend({0, 1000, 2000, 3000}, {100, 110, 100, 110}, 4);
-  EXPECT_EQ(t.points, 4u);
-  EXPECT_NEAR(t.slope, 0.002, 1e-15);
-  EXPECT_NEAR(t.fresh, 102, 1e-12);
+  const ResponseModels m({0, 1000, 2000, 3000}, {100, 110, 100, 110}, 4);
+  const auto          &t = m.model(TrendFamily::line);
+  EXPECT_EQ(m.points(), 4u);
+  EXPECT_NEAR(t.fit.beta, 0.002, 1e-15);
+  EXPECT_NEAR(t.fit.a, 102, 1e-12);
   EXPECT_NEAR(t.rise(3000), 100 * 6 / 102.0, 1e-12);
-  // Residuals ±(−2, 6, −6, 2): s = √(80 / 2) relative to 102.
-  EXPECT_NEAR(t.scatter, std::sqrt(40.0) / 102, 1e-12);
-  EXPECT_EQ(response_trend({0, 1000}, {100, 120}, 1).rise(1000), 0) << "one point has no trend";
+  // Residuals ±(−2, 6, −6, 2): s = √(80 / 2).
+  EXPECT_NEAR(m.residual_std(TrendFamily::line), std::sqrt(40.0), 1e-12);
+  EXPECT_EQ(ResponseModels({0, 1000}, {100, 120}, 1).model(TrendFamily::line).rise(1000), 0)
+    << "one point has no trend";
 }
 
 namespace

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The response criterion of a life run decided on its trend (analysis/life_criteria.h),
-// on synthetic measurements with a known answer — no simulation:
+// on synthetic measurements with a known answer — no simulation. The series here are
+// lines; the line is the model BIC chooses for them (analysis/response_models.h) and the
+// line's statements are those the criterion had before it chose among models:
 //  - a linear trend y = a + b N (a = 100 m/s², b = 0.0025 m/s² per revolution: the rise
 //    reaches 25 % at N* = 0.25 a / b = 10,000 revolutions) plus normal scatter of known
 //    σ = 5 m/s², measured at 0, 500, …, 20,000 revolutions (41 points; seeded normals of
@@ -29,7 +31,7 @@ namespace
   constexpr double tolerance     = 0.5;                                // Life/Response tolerance's default
 
   /** Case @p k: the 41 measurements at 0 … 20,000 rev of the line of slope @p b plus @p s z. */
-  ResponseTrend
+  ResponseModels
   noisy_trend(const unsigned int k, const double b = slope, const double s = sigma)
   {
     const auto          z = member_normals(2024, k, 41);
@@ -39,7 +41,7 @@ namespace
         revolutions.push_back(500.0 * i);
         measures.push_back(fresh + b * revolutions.back() + s * z[i]);
       }
-    return response_trend(revolutions, measures, revolutions.size());
+    return {revolutions, measures, revolutions.size()};
   }
 
   /**
@@ -58,11 +60,15 @@ namespace
 
 TEST(TrendCriterion, TheCrossingIntervalCoversTheTrueCrossing)
 {
-  int    decided = 0, covered = 0;
+  int    decided = 0, covered = 0, line = 0;
   double width = 0;
   for (unsigned int k = 0; k < 40; ++k)
     {
-      const auto x = trend_crossing(noisy_trend(k), limit, 20000, tolerance);
+      const auto models = noisy_trend(k);
+      line += models.chosen() == TrendFamily::line;
+      const auto x = trend_crossing(models, TrendFamily::line, limit, 20000, tolerance);
+      EXPECT_EQ(trend_crossing(models, limit, 20000, tolerance).status, CriterionStatus::decided)
+        << "on the chosen model (" << family_name(models.chosen()) << ") too";
       if (x.status != CriterionStatus::decided)
         continue;
       ++decided;
@@ -75,6 +81,7 @@ TEST(TrendCriterion, TheCrossingIntervalCoversTheTrueCrossing)
   // At 20,000 rev the true rise is 50 %, 9 standard errors above the limit: each case is
   // reached, and the expected width (~0.28 N*) is well within the tolerance 0.5.
   ASSERT_EQ(decided, 40) << "the criterion is not decided on a clear trend";
+  EXPECT_GE(line, 36) << "BIC chooses the line for a line (measured 394 of 400 replicates in response_models_test)";
   EXPECT_GE(covered, 0.9 * decided) << covered << " of " << decided << " intervals cover " << true_crossing;
   const double expected = 2 * student_t_quantile(0.975, 39) * delta_standard_error();
   std::cout << "[trend] " << decided << " of 40 decided, " << covered << " cover the true crossing; mean width "
@@ -84,19 +91,20 @@ TEST(TrendCriterion, TheCrossingIntervalCoversTheTrueCrossing)
 
 TEST(TrendCriterion, TheIntervalEndsAreWhereTheBandCrossesTheLimit)
 {
-  const auto   trend = noisy_trend(3);
-  Interval     interval;
-  const double crossing = trend.limit_crossing(limit, interval);
+  const auto   trend    = noisy_trend(3);
+  const auto   line     = TrendFamily::line;
+  const auto   interval = trend.crossing_interval(line, limit);
+  const double crossing = trend.model(line).crossing(limit);
   ASSERT_TRUE(interval.bounded());
-  EXPECT_NEAR(trend.rise(crossing), limit, 1e-9) << "the line crosses the limit at N̂";
+  EXPECT_NEAR(trend.model(line).rise(crossing), limit, 1e-9) << "the line crosses the limit at N̂";
   // At the high end the lower bound of the rise is the limit; at the low end the upper.
-  EXPECT_NEAR(trend.rise_interval(interval.high).low, limit, 1e-6);
-  EXPECT_NEAR(trend.rise_interval(interval.low).high, limit, 1e-6);
-  EXPECT_NEAR(trend.excess_band(interval.high, limit).low, 0, 1e-9 * fresh);
+  EXPECT_NEAR(trend.rise_interval(line, interval.high).low, limit, 1e-6);
+  EXPECT_NEAR(trend.rise_interval(line, interval.low).high, limit, 1e-6);
+  EXPECT_NEAR(trend.excess_band(line, interval.high, limit).low, 0, 1e-9 * fresh);
   // Between them the band contains the limit: undecided there.
   const double middle = 0.5 * (interval.low + interval.high);
-  EXPECT_EQ(trend_crossing(trend, limit, middle, tolerance).status, CriterionStatus::undecided);
-  EXPECT_FALSE(trend_crossing(trend, limit, middle, tolerance).reason.empty());
+  EXPECT_EQ(trend_crossing(trend, line, limit, middle, tolerance).status, CriterionStatus::undecided);
+  EXPECT_FALSE(trend_crossing(trend, line, limit, middle, tolerance).reason.empty());
 }
 
 TEST(TrendCriterion, PureNoiseOrTooFewPointsIsNeverTheLife)
@@ -122,10 +130,10 @@ TEST(TrendCriterion, PureNoiseOrTooFewPointsIsNeverTheLife)
       revolutions.push_back(2000.0 * i);
       flat.push_back(i % 2 ? 102 : 98);
     }
-  const auto none = trend_crossing(response_trend(revolutions, flat, 11), limit, 20000, tolerance);
+  const auto none = trend_crossing(ResponseModels(revolutions, flat, 11), limit, 20000, tolerance);
   EXPECT_EQ(none.status, CriterionStatus::not_reached) << none.reason;
   // Three measurements rising by 60 % and 120 %: a steep trend, but not yet a trend.
-  const auto few = trend_crossing(response_trend({0, 1000, 2000}, {100, 160, 220}, 3), limit, 2000, tolerance);
+  const auto few = trend_crossing(ResponseModels({0, 1000, 2000}, {100, 160, 220}, 3), limit, 2000, tolerance);
   EXPECT_EQ(few.status, CriterionStatus::undecided);
   EXPECT_NE(few.reason.find("counts from 4"), std::string::npos) << few.reason;
 
@@ -143,11 +151,10 @@ TEST(TrendCriterion, PureNoiseOrTooFewPointsIsNeverTheLife)
 TEST(TrendCriterion, AMeasurementRepeatedAtTheSameRevolutionsCountsOnce)
 {
   // An iteration that wore nothing measures the same profiles again: the same number.
-  const auto once  = response_trend({0, 1000, 2000, 3000}, {100, 120, 105, 125}, 4);
-  const auto twice = response_trend({0, 1000, 2000, 2000, 3000}, {100, 120, 105, 105, 125}, 5);
-  EXPECT_EQ(twice.points, 4u);
-  EXPECT_DOUBLE_EQ(twice.slope, once.slope);
-  EXPECT_DOUBLE_EQ(twice.residual_std, once.residual_std);
-  // Student's t for 4 − 2 = 2 degrees of freedom: 4.303 (the table, to 3 decimals).
-  EXPECT_NEAR(once.t95, 4.303, 5e-4);
+  const ResponseModels once({0, 1000, 2000, 3000}, {100, 120, 105, 125}, 4);
+  const ResponseModels twice({0, 1000, 2000, 2000, 3000}, {100, 120, 105, 105, 125}, 5);
+  EXPECT_EQ(twice.points(), 4u);
+  EXPECT_DOUBLE_EQ(twice.model(TrendFamily::line).fit.beta, once.model(TrendFamily::line).fit.beta);
+  EXPECT_DOUBLE_EQ(twice.residual_std(TrendFamily::line), once.residual_std(TrendFamily::line));
+  EXPECT_FALSE(twice.has(TrendFamily::step)) << "a step needs 5 measurements";
 }
