@@ -85,6 +85,8 @@ namespace wearlink::workflows
       bool
       cannot_come_first(std::size_t c) const;
       bool
+      first_for_certain(std::size_t c) const;
+      bool
       settled(std::size_t c) const;
       double
       measure_response();
@@ -294,6 +296,26 @@ namespace wearlink::workflows
     }
 
     /**
+     * True if the trend criterion @p c, reached but located less precisely than
+     * Life/Response tolerance, is still certainly the first criterion reached: the upper
+     * end of its crossing's 95 % interval comes before every wear criterion reached in
+     * the run (those not reached come after its end). Then it is the life, with that
+     * interval: the headline and the criteria's plot tell the same story.
+     */
+    bool
+    LifeRun::first_for_certain(const std::size_t c) const
+    {
+      const auto x = trend_state(c);
+      if (x.status == analysis::CriterionStatus::decided || !x.reached || !x.interval.bounded())
+        return false;
+      double wear_life = std::numeric_limits<double>::infinity();
+      for (std::size_t w = 0; w < history.criteria.size(); ++w)
+        if (!analysis::is_trend(history.criteria[w]) && crossing(w).reached)
+          wear_life = std::min(wear_life, crossing(w).revolutions);
+      return x.interval.high < wear_life;
+    }
+
+    /**
      * A wear criterion is settled when reached. A trend criterion is settled when decided,
      * when it cannot come first, or when every wear criterion is reached: measurements past
      * the earliest wear life only narrow the interval of its model's crossing and cost
@@ -349,6 +371,21 @@ namespace wearlink::workflows
           const auto x = trend_state(c);
           if (x.status == analysis::CriterionStatus::decided)
             continue;
+          if (first_for_certain(c))
+            {
+              response_warnings.check({"life: the width of " + history.criteria[c].name + "'s 95 % crossing interval",
+                                       100 * (x.interval.high - x.interval.low) / x.revolutions,
+                                       100 * scene.life.response_tolerance,
+                                       "% of the crossing",
+                                       "Life/Response tolerance",
+                                       history.criteria[c].name +
+                                         " is reached and comes first for certain (its interval ends before the "
+                                         "wear life), so it is the life, but it is located only within " +
+                                         format_number(std::max(x.interval.low, 0.0), 6) + " … " +
+                                         format_number(x.interval.high, 6) +
+                                         " revolutions; narrow it with more Life/Response cycles"});
+              continue;
+            }
           const double low = std::isfinite(x.interval.low) ? std::max(x.interval.low, 0.0) : 0.0;
           response_warnings.check(
             {"life: " + history.criteria[c].name + " (undecided) against the wear life",
@@ -495,21 +532,28 @@ namespace wearlink::workflows
     {
       const auto  &spec    = history.criteria[c];
       const auto   x       = trend_state(c);
-      const bool   decided = x.status == analysis::CriterionStatus::decided;
+      const bool   precise = x.status == analysis::CriterionStatus::decided;
+      const bool   first   = first_for_certain(c);
+      const bool   decided = precise || first;
       Json         o       = common_block(spec, history.values.back()[c]);
       std::string  reason  = x.reason;
       const double life    = earliest_wear_life();
-      if (!decided && cannot_come_first(c))
+      if (first)
+        reason += "; its interval ends before every wear criterion reached: it is the first criterion reached, "
+                  "located less precisely than Life/Response tolerance";
+      else if (!decided && cannot_come_first(c))
         reason += "; it cannot come before the wear life at " + format_number(std::round(life), 15) +
                   " rev (the upper 95 % bound of its rise there is below the limit), so the run did not go on";
       else if (!decided && std::isfinite(life))
         reason += "; the run stopped when every wear criterion was reached (the wear life " +
                   format_number(std::round(life), 15) + " rev), which it may precede";
-      outcome                         = {x.status, decided ? x.revolutions : nan};
+      const auto status               = decided ? analysis::CriterionStatus::decided : x.status;
+      outcome                         = {status, decided ? x.revolutions : nan};
       o["located_by"]                 = "trend";
       o["reached"]                    = x.reached;
       o["decided"]                    = decided;
-      o["status"]                     = analysis::status_name(x.status);
+      o["status"]                     = analysis::status_name(status);
+      o["within_tolerance"]           = precise;
       o["revolutions"]                = decided ? Json(x.revolutions) : Json();
       o["hours"]                      = decided ? Json(x.revolutions * period / 3600) : Json();
       o["joint"]                      = "";
@@ -522,7 +566,7 @@ namespace wearlink::workflows
       o["response_tolerance"]           = scene.life.response_tolerance;
       o["rise_at_end_ci95_percent"]     = pair_or_null(x.rise_at_end.low, x.rise_at_end.high);
       o["last_measurement_revolutions"] = revolutions_run;
-      if (!decided)
+      if (!precise)
         o["reason"] = reason;
       if (x.status == analysis::CriterionStatus::not_reached)
         o["not_reached_within_revolutions"] = revolutions_run;
