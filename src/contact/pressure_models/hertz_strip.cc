@@ -126,32 +126,10 @@ namespace wearlink::contact
       }
 
       void
-      update_geometry(const JointGeometry &g) override
-      {
-        geometry    = g;
-        radius_bore = g.bore.mean_radius();
-        radius_pin  = g.pin.mean_radius();
-        // The most conforming gap admitted: R* at most 1e4 × the nominal one.
-        curvature_floor = 1e-4 * std::max(radius_bore - radius_pin, 1e-9 * radius_bore);
-        min_window      = two_pi / std::min(g.bore.n_points(), g.pin.n_points());
-      }
-
-      void
-      remove_material(const SurfaceWear &w) override
-      {
-        auto &bore = geometry.bore.samples();
-        auto &pin  = geometry.pin.samples();
-        for (std::size_t i = 0; i < w.bore_areas.size(); ++i)
-          bore[w.bore_areas[i]] += w.bore_depth[i];
-        for (std::size_t i = 0; i < w.pin_areas.size(); ++i)
-          pin[w.pin_areas[i]] -= w.pin_depth[i];
-      }
-
-      void
       evaluate(const ContactLoad &load, SurfacePressure &out) override
       {
-        out.bore.assign(geometry.bore.n_points(), 0.0);
-        out.pin.assign(geometry.pin.n_points(), 0.0);
+        out.bore.assign(geometry().bore.n_points(), 0.0);
+        out.pin.assign(geometry().pin.n_points(), 0.0);
         last_half_width = 0;
         if (!(load.normal_force > 0))
           return;
@@ -159,8 +137,8 @@ namespace wearlink::contact
         last_half_width = s.half_width;
         if (s.half_width / s.pin_radius > worst.half_angle)
           worst = {s.half_width / s.pin_radius, load.normal_force};
-        spread(geometry.bore, load.bushing_angle, s.bore_radius, s.centre, s.half_width, s.peak, out.bore);
-        spread(geometry.pin, load.pin_angle, s.pin_radius, s.centre, s.half_width, s.peak, out.pin);
+        spread(geometry().bore, load.bushing_angle, s.bore_radius, s.centre, s.half_width, s.peak, out.bore);
+        spread(geometry().pin, load.pin_angle, s.pin_radius, s.centre, s.half_width, s.peak, out.pin);
       }
 
       double
@@ -187,6 +165,18 @@ namespace wearlink::contact
                  "the elastic moduli and the loads, or use Pressure model = winkler or fe"});
       }
 
+    protected:
+      void
+      geometry_changed() override
+      {
+        const auto &g = geometry();
+        radius_bore   = g.bore.mean_radius();
+        radius_pin    = g.pin.mean_radius();
+        // The most conforming gap admitted: R* at most 1e4 × the nominal one.
+        curvature_floor = 1e-4 * std::max(radius_bore - radius_pin, 1e-9 * radius_bore);
+        min_window      = two_pi / std::min(g.bore.n_points(), g.pin.n_points());
+      }
+
     private:
       /** The seed's strip: R* from the radii at φ0, centred at φ0. */
       Strip
@@ -194,11 +184,11 @@ namespace wearlink::contact
       {
         Strip s;
         s.centre        = load.contact_angle;
-        s.bore_radius   = geometry.bore.radius(s.centre - load.bushing_angle);
-        s.pin_radius    = geometry.pin.radius(s.centre - load.pin_angle);
+        s.bore_radius   = geometry().bore.radius(s.centre - load.bushing_angle);
+        s.pin_radius    = geometry().pin.radius(s.centre - load.pin_angle);
         const double r1 = s.bore_radius, r2 = s.pin_radius;
         const double r_star = r1 * r2 / std::max(r1 - r2, 1e-12 * r1);
-        const auto   h      = hertz_line_contact(load.normal_force / geometry.axial_length, r_star, modulus());
+        const auto   h      = hertz_line_contact(load.normal_force / geometry().axial_length, r_star, modulus());
         s.half_width        = h.half_width;
         s.peak              = h.peak_pressure;
         return s;
@@ -217,14 +207,14 @@ namespace wearlink::contact
       Strip
       conforming_strip(const ContactLoad &load) const
       {
-        const double line   = load.normal_force / geometry.axial_length;
+        const double line   = load.normal_force / geometry().axial_length;
         const double target = 4 * line * radius_bore * radius_pin / (pi * modulus() * radius_pin * radius_pin);
         Fit          fit;
         half_angle(load, load.contact_angle, target, fit);
         Strip s;
         s.centre      = load.contact_angle;
-        s.bore_radius = geometry.bore.radius(s.centre - load.bushing_angle);
-        s.pin_radius  = geometry.pin.radius(s.centre - load.pin_angle);
+        s.bore_radius = geometry().bore.radius(s.centre - load.bushing_angle);
+        s.pin_radius  = geometry().pin.radius(s.centre - load.pin_angle);
         const auto h  = hertz_line_contact(line, s.bore_radius * s.pin_radius / fit.curvature, modulus());
         s.half_width  = h.half_width;
         s.peak        = h.peak_pressure;
@@ -242,9 +232,9 @@ namespace wearlink::contact
       fit_gap(const ContactLoad &load, const double centre, const double w) const
       {
         Fit f;
-        f.window        = std::clamp(w, min_window, pi);
-        const auto   mb = legendre_moments(geometry.bore.samples(), centre - load.bushing_angle, f.window, radius_bore);
-        const auto   mp = legendre_moments(geometry.pin.samples(), centre - load.pin_angle, f.window, radius_pin);
+        f.window      = std::clamp(w, min_window, pi);
+        const auto mb = legendre_moments(geometry().bore.samples(), centre - load.bushing_angle, f.window, radius_bore);
+        const auto mp = legendre_moments(geometry().pin.samples(), centre - load.pin_angle, f.window, radius_pin);
         const double h0 =
           (radius_bore - radius_pin) + (mb[0] - 0.5 * mb[2]) - (mp[0] - 0.5 * mp[2]); // h at the centre [m]
         f.curvature = std::max(h0 + 3 * (mb[2] - mp[2]) / (f.window * f.window), curvature_floor);
@@ -328,7 +318,7 @@ namespace wearlink::contact
       double
       modulus() const
       {
-        return effective_modulus(geometry.bushing, geometry.pin_material);
+        return effective_modulus(geometry().bushing, geometry().pin_material);
       }
 
       /** Area averages of the strip on the areas of @p profile (body angle @p theta). */
@@ -372,12 +362,11 @@ namespace wearlink::contact
         return p0 * b * (strip_primitive(s1, b) - strip_primitive(s0, b)) / (radius * width);
       }
 
-      const bool    conforming;
-      JointGeometry geometry;
-      double        radius_bore = 0, radius_pin = 0; ///< mean radii of the geometry [m]
-      double        curvature_floor = 0;             ///< smallest gap curvature admitted [m/rad²]
-      double        min_window      = 0;             ///< one discrete area [rad]
-      double        last_half_width = 0;             ///< b of the last evaluation [m]
+      const bool conforming;
+      double     radius_bore = 0, radius_pin = 0; ///< mean radii of the geometry [m]
+      double     curvature_floor = 0;             ///< smallest gap curvature admitted [m/rad²]
+      double     min_window      = 0;             ///< one discrete area [rad]
+      double     last_half_width = 0;             ///< b of the last evaluation [m]
       /** The widest strip evaluated so far: half-angle b / R2 [rad], and its F_n [N]. */
       struct WidestStrip
       {

@@ -545,8 +545,8 @@ namespace wearlink::workflows
       copied.resize(wearing.size());
       for (std::size_t i = 0; i < wearing.size(); ++i)
         {
-          auto             &model = *wearing[i].wear->model;
-          const std::string mesh  = model.mesh_file();
+          auto *const       hooks = wearing[i].wear->model->fe_hooks();
+          const std::string mesh  = hooks ? hooks->mesh_file() : std::string();
           if (mesh.empty())
             continue;
           const std::string name = wearing[i].joint->name();
@@ -556,7 +556,7 @@ namespace wearlink::workflows
               copy_file_atomically(mesh, dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh");
               copied[i] = mesh;
             }
-          model.write_fields(loop.peak_loads()[i], dir + "/fe/fields_" + name + "_iteration" + std::to_string(k));
+          hooks->write_fields(loop.peak_loads()[i], dir + "/fe/fields_" + name + "_iteration" + std::to_string(k));
           std::vector<double>      times;
           std::vector<std::string> files;
           double                   revolutions = 0;
