@@ -205,7 +205,13 @@ namespace wearlink::contact
 
     /**
      * Pressure for one load state. @p out's vectors are resized to the profiles'
-     * sample counts. The resultant of the pressure balances load.force (equilibrium).
+     * sample counts. The pressure carries the load it is given: on each surface
+     * Σ_k p_k A_k u(ψ_k + θ) (A_k = L R_k Δψ, u the outward radial direction in global
+     * axes, θ the surface's body angle) is F_n u(φ*), the force with which the pin
+     * presses on the bore (−load.force), to the direction quantization of the areas —
+     * the contract every registered model passes
+     * (tests/unit/contact/pressure_contract_test.cc). Σ_k p_k A_k itself exceeds F_n
+     * on a wide arc (wear/archard.h).
      */
     virtual void
     evaluate(const ContactLoad &load, SurfacePressure &out) = 0;

@@ -3,8 +3,11 @@
 //  - Bookkeeping: after a wear iteration the volume removed from each surface,
 //    Σ_k h_k A_k, equals the integrated Archard volume k_D ∫ F_n |v_t| dt, where the
 //    integral is taken here by an independent observer (trapezoidal rule over the
-//    accepted steps, from the joint diagnostics). hertz-strip conserves the force
-//    exactly (Σ p A = F_n), so only rounding separates them: 1e-9 relative.
+//    accepted steps, from the joint diagnostics). hertz-strip carries F_n as the
+//    resultant of its strip (contact/pressure_model.h), so Σ p A = F_n ε/(2 J1(ε)) on
+//    each surface, ε = b/R the Hertz strip's half-angle there (b from the round pair's
+//    R* and E*, J1 from std::cyl_bessel_j): the observer integrates that too, and only
+//    rounding separates them: 1e-9 relative (plus the sequential update's h/R below).
 //    The worn profiles carry the same volume: L (A_enclosed(before) − A_enclosed(after))
 //    differs from Σ h A only by the second-order term h²/2 per area and the linear
 //    interpolation between samples, O(h/R) ≈ 1e-4 relative here; we ask 1e-3.
@@ -30,14 +33,20 @@ using namespace wearlink;
 
 namespace
 {
-  /** k_D-free ∫ F_n |v_t| dt per joint by the trapezoidal rule over accepted steps. */
+  /**
+   * k_D-free ∫ F_n |v_t| dt per joint by the trapezoidal rule over accepted steps, and
+   * ∫ F_n ε/(2 J1(ε)) |v_t| dt with the Hertz strip's half-angle ε on the bore and on
+   * the pin of the joint's round pair (the file comment).
+   */
   class FrictionWorkObserver : public mbs::StepObserver
   {
   public:
     explicit FrictionWorkObserver(std::vector<contact::ClearanceJoint *> j)
       : joints(std::move(j))
       , integral(joints.size(), 0.0)
-      , last(joints.size(), 0.0)
+      , bore_integral(joints.size(), 0.0)
+      , pin_integral(joints.size(), 0.0)
+      , last(3 * joints.size(), 0.0)
     {
     }
     void
@@ -49,15 +58,19 @@ namespace
     void
     on_step(const mbs::StepContext &c) override
     {
-      std::vector<double> now(joints.size());
+      std::vector<double> now(last.size());
       eval(c, now);
       for (unsigned i = 0; i < joints.size(); ++i)
-        integral[i] += 0.5 * (c.t - t_last) * (now[i] + last[i]);
+        {
+          integral[i] += 0.5 * (c.t - t_last) * (now[3 * i] + last[3 * i]);
+          bore_integral[i] += 0.5 * (c.t - t_last) * (now[3 * i + 1] + last[3 * i + 1]);
+          pin_integral[i] += 0.5 * (c.t - t_last) * (now[3 * i + 2] + last[3 * i + 2]);
+        }
       last   = now;
       t_last = c.t;
     }
     std::vector<contact::ClearanceJoint *> joints;
-    std::vector<double>                    integral, last;
+    std::vector<double>                    integral, bore_integral, pin_integral, last;
     double                                 t_last = 0;
 
   private:
@@ -67,8 +80,18 @@ namespace
       const auto n = c.simulation.get_mechanism().n_coordinates();
       for (unsigned i = 0; i < joints.size(); ++i)
         {
-          const auto d = joints[i]->diagnostics(mbs::StateView(c.y.data(), c.y.data() + n));
-          out[i]       = d.normal_force * std::abs(d.sliding_velocity);
+          const auto   d     = joints[i]->diagnostics(mbs::StateView(c.y.data(), c.y.data() + n));
+          const double power = d.normal_force * std::abs(d.sliding_velocity);
+          const auto  &g     = joints[i]->get_description().geometry;
+          const double r1 = g.bore[0], r2 = g.pin[0];
+          const double e_star = 1 / (g.bushing.compliance() + g.pin_material.compliance());
+          const double b      = std::sqrt(4 * d.normal_force / g.axial_length * r1 * r2 / (r1 - r2) / (M_PI * e_star));
+          const auto   scale  = [](const double epsilon) {
+            return epsilon > 0 ? epsilon / (2 * std::cyl_bessel_j(1.0, epsilon)) : 1.0;
+          };
+          out[3 * i]     = power;
+          out[3 * i + 1] = power * scale(b / r1);
+          out[3 * i + 2] = power * scale(b / r2);
         }
     }
   };
@@ -96,12 +119,12 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
       const auto  &js            = r.state.joints[i];
       const auto  &w             = *scene2.wear[i];
       const auto  &h             = js.history.back();
-      const double expected_pin  = w.archard.pin_coefficient * work.integral[i];
-      const double expected_bore = w.archard.bushing_coefficient * work.integral[i];
+      const double expected_pin  = w.archard.pin_coefficient * work.pin_integral[i];
+      const double expected_bore = w.archard.bushing_coefficient * work.bore_integral[i];
       ASSERT_GT(expected_pin, 0) << js.name;
       // The sequential update wears the surfaces state by state, so a strip spread on
       // surfaces already worn by h carries F_n over areas whose radii differ from the
-      // start's by up to h: the local volume is the global one to h/R (and to 1e-9).
+      // start's by up to h: the local volume is the expected one to h/R (and to 1e-9).
       const double worn = std::max(h.max_depth_pin / js.pin.min_radius(), h.max_depth_bore / js.bore.min_radius());
       EXPECT_NEAR(h.volume_pin, expected_pin, (1e-9 + worn) * expected_pin) << js.name;
       EXPECT_NEAR(h.volume_bore, expected_bore, (1e-9 + worn) * expected_bore) << js.name;
