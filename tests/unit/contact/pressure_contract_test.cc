@@ -39,6 +39,7 @@
 #include "base/numbers.h"
 #include "base/parameters.h"
 #include "contact/pressure_model.h"
+#include "plugin_support.h"
 
 #include <gtest/gtest.h>
 
@@ -73,24 +74,11 @@ namespace
   std::unique_ptr<PressureModel>
   contract_model(const std::string &name)
   {
-    dealii::ParameterHandler prm;
-    pressure_models().declare_all(prm);
-    prm.enter_subsection(name);
-    for (const auto &[entry, value] :
-         std::vector<std::pair<std::string, std::string>>{{"Layer thickness", "1e-3"},
-                                                          {"Surface element size",
-                                                           std::to_string(surface_element_size)},
-                                                          {"Refined layer thickness", "0"}})
-      try
-        {
-          prm.set(entry, value);
-        }
-      catch (const dealii::ExceptionBase &) // an entry of another model
-        {
-        }
-    prm.leave_subsection();
-    ParameterReader reader(prm, "test");
-    return pressure_models().create(name, reader, "Pressure model");
+    return contact::testing::make_plugin(pressure_models(),
+                                         name,
+                                         {{"Layer thickness", "1e-3"},
+                                          {"Surface element size", std::to_string(surface_element_size)},
+                                          {"Refined layer thickness", "0"}});
   }
 
   JointGeometry
@@ -224,6 +212,20 @@ namespace
     return top > 0 ? difference / top : difference;
   }
 
+  /** @p check(g, load, pair name) for every load of contract_loads() on the round and the worn pair, on @p model. */
+  template <class Check>
+  void
+  for_each_contract_load(PressureModel &model, Check check)
+  {
+    for (const bool worn : {false, true})
+      {
+        const auto g = worn ? worn_contract_pair() : round_contract_pair();
+        model.update_geometry(g);
+        for (const auto &c : contract_loads(worn))
+          check(g, c, worn ? "worn" : "round");
+      }
+  }
+
   class PressureModelContract : public ::testing::TestWithParam<std::string>
   {
   };
@@ -232,28 +234,22 @@ namespace
 TEST_P(PressureModelContract, CarriesTheGivenForceOnBothSurfaces)
 {
   const auto model = contract_model(GetParam());
-  for (const bool worn : {false, true})
-    {
-      const auto g = worn ? worn_contract_pair() : round_contract_pair();
-      model->update_geometry(g);
-      for (const auto &c : contract_loads(worn))
-        {
-          SurfacePressure p;
-          model->evaluate(c.on(g), p);
-          ASSERT_EQ(p.bore.size(), g.bore.n_points());
-          ASSERT_EQ(p.pin.size(), g.pin.n_points());
-          const double fx = c.normal_force * std::cos(c.direction), fy = c.normal_force * std::sin(c.direction);
-          const double quantization = c.normal_force * ContractPair::area_angle / 2; // see the file comment
-          const auto   bore         = area_resultant(g.bore, p.bore, c.bushing_angle);
-          const auto   pin          = area_resultant(g.pin, p.pin, c.pin_angle);
-          EXPECT_LE(std::hypot(bore.x - fx, bore.y - fy), quantization + bore.slope_term)
-            << "bore resultant (" << bore.x << ", " << bore.y << ") N; " << c.name(worn ? "worn" : "round");
-          EXPECT_LE(std::hypot(pin.x - fx, pin.y - fy), quantization + pin.slope_term)
-            << "pin resultant (" << pin.x << ", " << pin.y << ") N; " << c.name(worn ? "worn" : "round");
-          EXPECT_GE(bore.smallest, 0.0) << c.name(worn ? "worn" : "round");
-          EXPECT_GE(pin.smallest, 0.0) << c.name(worn ? "worn" : "round");
-        }
-    }
+  for_each_contract_load(*model, [&](const JointGeometry &g, const ContractLoad &c, const std::string &pair) {
+    SurfacePressure p;
+    model->evaluate(c.on(g), p);
+    ASSERT_EQ(p.bore.size(), g.bore.n_points());
+    ASSERT_EQ(p.pin.size(), g.pin.n_points());
+    const double fx = c.normal_force * std::cos(c.direction), fy = c.normal_force * std::sin(c.direction);
+    const double quantization = c.normal_force * ContractPair::area_angle / 2; // see the file comment
+    const auto   bore         = area_resultant(g.bore, p.bore, c.bushing_angle);
+    const auto   pin          = area_resultant(g.pin, p.pin, c.pin_angle);
+    EXPECT_LE(std::hypot(bore.x - fx, bore.y - fy), quantization + bore.slope_term)
+      << "bore resultant (" << bore.x << ", " << bore.y << ") N; " << c.name(pair);
+    EXPECT_LE(std::hypot(pin.x - fx, pin.y - fy), quantization + pin.slope_term)
+      << "pin resultant (" << pin.x << ", " << pin.y << ") N; " << c.name(pair);
+    EXPECT_GE(bore.smallest, 0.0) << c.name(pair);
+    EXPECT_GE(pin.smallest, 0.0) << c.name(pair);
+  });
 }
 
 // The pocket's axis and the pin's worn spot are area centres (100° and 40° on 1° areas),
@@ -310,19 +306,13 @@ TEST_P(PressureModelContract, SymmetricLoadGivesSymmetricPressure)
 TEST_P(PressureModelContract, WearingWithoutWearIsEvaluate)
 {
   const auto model = contract_model(GetParam());
-  for (const bool worn : {false, true})
-    {
-      const auto g = worn ? worn_contract_pair() : round_contract_pair();
-      model->update_geometry(g);
-      for (const auto &c : contract_loads(worn))
-        {
-          SurfacePressure evaluated, wearing;
-          model->evaluate(c.on(g), evaluated);
-          model->evaluate_wearing(c.on(g), WearCompliance{}, wearing);
-          // The same computation: equal to rounding.
-          EXPECT_LE(relative_difference(wearing, evaluated), 1e-12) << c.name(worn ? "worn" : "round");
-        }
-    }
+  for_each_contract_load(*model, [&](const JointGeometry &g, const ContractLoad &c, const std::string &pair) {
+    SurfacePressure evaluated, wearing;
+    model->evaluate(c.on(g), evaluated);
+    model->evaluate_wearing(c.on(g), WearCompliance{}, wearing);
+    // The same computation: equal to rounding.
+    EXPECT_LE(relative_difference(wearing, evaluated), 1e-12) << c.name(pair);
+  });
 }
 
 TEST_P(PressureModelContract, WornByRemoveMaterialAsFreshOnTheWornProfiles)
@@ -368,8 +358,4 @@ TEST_P(PressureModelContract, WornByRemoveMaterialAsFreshOnTheWornProfiles)
 INSTANTIATE_TEST_SUITE_P(AllRegistered,
                          PressureModelContract,
                          ::testing::ValuesIn(pressure_models().names()),
-                         [](const auto &info) {
-                           std::string n = info.param;
-                           std::replace(n.begin(), n.end(), '-', '_');
-                           return n;
-                         });
+                         contact::testing::plugin_test_name);
