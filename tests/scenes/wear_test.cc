@@ -273,53 +273,90 @@ TEST(Wear, PressureModelComparisonSameLoadsSimilarVolumes)
     }
 }
 
-// FE files of a wear run with the fe pressure model (Wear/FE output, default on): the
-// mesh in use after every iteration in which it changed (Remesh depth 0: a new mesh
-// after every iteration; a depth of 20 elements = 4 mm, far beyond three iterations'
-// wear: one mesh), and the fields at the peak load of the first and the last
-// iteration; nothing for the hertz-strip joint B. Off: no fe/ folder.
-TEST(Wear, FeWearRunWritesMeshesAndFields)
+namespace
 {
-  const auto                base = with(short_run,
-                         {"Wear/Number of iterations=3",
-                                         "Wear/Pressure evaluation=samples per cycle",
-                                         "Wear/Load samples per cycle=25",
-                                         "Joint A/Clearance/Pressure model=fe",
-                                         "Joint A/Clearance/fe/Surface element size=2e-4"});
-  workflows::WearRunOptions o;
-  o.progress         = false;
-  o.final_outputs    = false;
-  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files");
-  auto       scene   = wearlink::testing::scene("params/nine_bar_wear.prm", base);
-  const auto r       = workflows::run_wear(scene, o);
-  ASSERT_EQ(r.state.iterations_done, 3u);
-  const std::string fe = o.output_directory + "/fe/";
+  /** Three iterations of nine_bar_wear.prm with joint A on a coarse fe model (0.2 mm), its loads sampled. */
+  const std::vector<std::string> fe_files_run = with(short_run,
+                                                     {"Wear/Number of iterations=3",
+                                                      "Wear/Pressure evaluation=samples per cycle",
+                                                      "Wear/Load samples per cycle=25",
+                                                      "Joint A/Clearance/Pressure model=fe",
+                                                      "Joint A/Clearance/fe/Surface element size=2e-4"});
+
+  /** Run @p overrides of nine_bar_wear.prm into a fresh folder named @p name; returns the folder. */
+  std::string
+  wear_files_of(const std::vector<std::string> &overrides, const std::string &name)
+  {
+    workflows::WearRunOptions o;
+    o.progress         = false;
+    o.final_outputs    = false;
+    o.output_directory = wearlink::testing::fresh_directory(name);
+    auto scene         = wearlink::testing::scene("params/nine_bar_wear.prm", overrides);
+    EXPECT_EQ(workflows::run_wear(scene, o).state.iterations_done, 3u);
+    return o.output_directory;
+  }
+} // namespace
+
+// FE files of a wear run with the fe pressure model (Wear/FE output, default on), with
+// Wear/Output every iteration: the mesh in use after every iteration in which it changed
+// (Remesh depth 0: a new mesh after every iteration), the fields at the peak load of
+// every iteration, and every profile frame; nothing for the hertz-strip joint B.
+TEST(Wear, FeWearRunWritesEveryIterationsFilesOnRequest)
+{
+  const std::string dir = wear_files_of(with(fe_files_run, {"Wear/Output every iteration=true"}), "wear_fe_files");
+  const std::string fe  = dir + "/fe/";
   for (const char *f : {"mesh_A_1.msh",
                         "mesh_A_2.msh",
                         "mesh_A_3.msh",
                         "fields_A_iteration1.vtu",
                         "fields_A_iteration1_pressure.csv",
+                        "fields_A_iteration2.vtu",
                         "fields_A_iteration3.vtu",
                         "fields_A_iteration3_pressure.csv"})
-    EXPECT_TRUE(std::filesystem::exists(fe + f)) << f;
-  EXPECT_TRUE(std::filesystem::exists(fe + "fields_A_iteration2.vtu")) << "the fields of every iteration";
+    EXPECT_TRUE(std::filesystem::exists(fe + f)) << f << ": every iteration's";
   EXPECT_TRUE(std::filesystem::exists(fe + "fields_A.pvd")) << "their ParaView series";
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/profiles_A.pvd"));
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/profiles/profile_B_3.vtu")) << "every joint's profiles";
+  EXPECT_TRUE(std::filesystem::exists(dir + "/profiles_A.pvd"));
+  for (const char *f : {"profile_B_0.vtu", "profile_B_1.vtu", "profile_B_2.vtu", "profile_B_3.vtu"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/profiles/" + f)) << f << ": every joint's profiles";
   EXPECT_FALSE(std::filesystem::exists(fe + "mesh_B_1.msh")) << "joint B is on hertz-strip";
+}
 
-  auto kept =
-    wearlink::testing::scene("params/nine_bar_wear.prm", with(base, {"Joint A/Clearance/fe/Remesh depth=20"}));
-  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files_kept");
-  workflows::run_wear(kept, o);
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/fe/mesh_A_1.msh"));
-  EXPECT_FALSE(std::filesystem::exists(o.output_directory + "/fe/mesh_A_2.msh")) << "the mesh is kept";
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/fe/fields_A_iteration3.vtu"));
+// By default a wear run keeps the last iteration's files only: its mesh, its fields, the
+// unworn and the last profile frames, each listed in its .pvd; a mesh kept across the
+// iterations (Remesh depth 20 elements = 4 mm, far beyond three iterations' wear) is the
+// one copied after the first. FE output off: no fe/ folder.
+TEST(Wear, FeWearRunKeepsTheLastIterationsFilesByDefault)
+{
+  const std::string dir = wear_files_of(fe_files_run, "wear_fe_files_last");
+  const std::string fe  = dir + "/fe/";
+  for (const char *f : {"mesh_A_3.msh", "fields_A_iteration3.vtu", "fields_A_iteration3_pressure.csv"})
+    EXPECT_TRUE(std::filesystem::exists(fe + f)) << f << ": the last iteration's";
+  for (const char *f : {"mesh_A_1.msh",
+                        "mesh_A_2.msh",
+                        "fields_A_iteration1.vtu",
+                        "fields_A_iteration2.vtu",
+                        "fields_A_iteration2_pressure.csv"})
+    EXPECT_FALSE(std::filesystem::exists(fe + f)) << f << ": replaced by the last iteration's";
+  for (const char *f : {"profile_A_0.vtu", "profile_A_3.vtu", "profile_B_0.vtu", "profile_B_3.vtu"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/profiles/" + f)) << f << ": unworn and last";
+  for (const char *f : {"profile_A_1.vtu", "profile_A_2.vtu", "profile_B_2.vtu"})
+    EXPECT_FALSE(std::filesystem::exists(dir + "/profiles/" + f)) << f;
+  const std::string fields   = wearlink::testing::file_content(fe + "fields_A.pvd"),
+                    profiles = wearlink::testing::file_content(dir + "/profiles_A.pvd");
+  EXPECT_NE(fields.find("fields_A_iteration3.vtu"), std::string::npos) << fields;
+  EXPECT_EQ(fields.find("fields_A_iteration2.vtu"), std::string::npos) << "the .pvd lists what is kept";
+  EXPECT_NE(profiles.find("profile_A_0.vtu"), std::string::npos) << profiles;
+  EXPECT_NE(profiles.find("profile_A_3.vtu"), std::string::npos) << profiles;
+  EXPECT_EQ(profiles.find("profile_A_2.vtu"), std::string::npos) << "the .pvd lists what is kept";
 
-  auto off           = wearlink::testing::scene("params/nine_bar_wear.prm", with(base, {"Wear/FE output=false"}));
-  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files_off");
-  workflows::run_wear(off, o);
-  EXPECT_FALSE(std::filesystem::exists(o.output_directory + "/fe"));
+  const std::string kept =
+    wear_files_of(with(fe_files_run, {"Joint A/Clearance/fe/Remesh depth=20"}), "wear_fe_files_kept");
+  EXPECT_TRUE(std::filesystem::exists(kept + "/fe/mesh_A_1.msh")) << "the mesh in use";
+  EXPECT_FALSE(std::filesystem::exists(kept + "/fe/mesh_A_2.msh")) << "the mesh is kept";
+  EXPECT_TRUE(std::filesystem::exists(kept + "/fe/fields_A_iteration3.vtu"));
+
+  const std::string off = wear_files_of(with(fe_files_run, {"Wear/FE output=false"}), "wear_fe_files_off");
+  EXPECT_FALSE(std::filesystem::exists(off + "/fe"));
 }
 
 // The FE scene's wear loop (fe pressure model and fe contact law on both joints, a kept
