@@ -433,15 +433,25 @@ namespace wearlink
   }
 
 
+  std::vector<std::string>
+  unset_required_entries(const dealii::ParameterHandler &prm)
+  {
+    std::vector<std::string> paths;
+    for (const auto &m : prm.get_entries_wrongly_not_set())
+      paths.push_back(demangle_path(m));
+    return paths;
+  }
+
+
   void
   check_required_entries(const dealii::ParameterHandler &prm, const std::string &filename)
   {
-    const auto missing = prm.get_entries_wrongly_not_set();
+    const auto missing = unset_required_entries(prm);
     if (missing.empty())
       return;
     std::string list;
     for (const auto &m : missing)
-      list += "\n  " + demangle_path(m);
+      list += "\n  " + m;
     throw InputError("In " + filename +
                      ", these required entries are not set (physical data has no default; "
                      "set them in the scene or with --set):" +

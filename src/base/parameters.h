@@ -119,6 +119,10 @@ namespace wearlink
   void
   check_required_entries(const dealii::ParameterHandler &prm, const std::string &filename);
 
+  /** The required entries @p prm does not set, as paths ("Joint A/Clearance/winkler/Layer thickness"). */
+  std::vector<std::string>
+  unset_required_entries(const dealii::ParameterHandler &prm);
+
   /**
    * Settings "Section/Sub/Entry=value" applied over a scene file, in order (a later one
    * wins): the user's --set arguments as given, and the settings the program makes (a

@@ -130,22 +130,88 @@ namespace wearlink::contact
     }
   };
 
+  /**
+   * What only a model that meshes and solves the actual bodies (gmsh + deal.II: the `fe`
+   * model) has beyond the pressure: its mesh and fields as files, the geometry of the mesh
+   * it keeps across small wear (a checkpoint stores it so that a resumed run meshes the
+   * same), and the wall time of its heavy phases. PressureModel::fe_hooks() returns it,
+   * nullptr for a model that does not mesh; callers ask there, the other models carry
+   * none of it.
+   */
+  class FeGeometryHooks
+  {
+  public:
+    virtual ~FeGeometryHooks() = default;
+
+    /** Wall time spent so far in the heavy phases (meshing, FE set-up, compliance) [s]. */
+    virtual PhaseTimings
+    timings() const = 0;
+
+    /**
+     * Write the fields for @p load next to @p stem: stem.vtu (displacement, stresses,
+     * von Mises) and stem_pressure.csv (contact pressure per node, both body frames);
+     * false if there is nothing to write (no mesh yet, or no load).
+     */
+    virtual bool
+    write_fields(const ContactLoad &load, const std::string &stem) = 0;
+
+    /** The gmsh file of the current mesh ("" before the first). */
+    virtual std::string
+    mesh_file() const = 0;
+
+    /** The geometry of the mesh in use ('Remesh depth' keeps it across small updates); nullptr before the first. */
+    virtual const JointGeometry *
+    meshed_geometry() const = 0;
+
+    /** Resume: as if the model had seen @p meshed and then @p current. */
+    virtual void
+    restore_geometry(const JointGeometry &meshed, const JointGeometry &current) = 0;
+  };
+
+  /**
+   * A pressure model. The base class holds the joint's current geometry and writes the
+   * wear update once (remove_material()); a model derives from it what it needs in
+   * geometry_changed() and, for the cheap local update of the sequential wear, in
+   * material_removed().
+   */
   class PressureModel
   {
   public:
     virtual ~PressureModel() = default;
 
     /**
-     * (Re)build whatever the model needs for this geometry (for `fe`: mesh,
-     * factorization, compliance). Called before the first evaluate() and after every
-     * wear update of the profiles.
+     * Take @p geometry as the current one and (re)build whatever the model needs for it
+     * (for `fe`: mesh, factorization, compliance). Called before the first evaluate()
+     * and after every wear update of the profiles.
      */
-    virtual void
-    update_geometry(const JointGeometry &geometry) = 0;
+    void
+    update_geometry(const JointGeometry &geometry);
+
+    /**
+     * Remove @p wear from the current profiles (the sequential wear update, after each
+     * load state): bore area k deepens, its radius grows; pin area k's radius shrinks.
+     * A cheap local update (material_removed()); update_geometry() with the iteration's
+     * end profiles follows at the end of the iteration.
+     */
+    void
+    remove_material(const SurfaceWear &wear);
+
+    /** The current geometry: the last one given to update_geometry(), less the material removed since. */
+    const JointGeometry &
+    geometry() const
+    {
+      return current;
+    }
 
     /**
      * Pressure for one load state. @p out's vectors are resized to the profiles'
-     * sample counts. The resultant of the pressure balances load.force (equilibrium).
+     * sample counts. The pressure carries the load it is given: on each surface
+     * Σ_k p_k A_k u(ψ_k + θ) (A_k = L R_k Δψ, u the outward radial direction in global
+     * axes, θ the surface's body angle) is F_n u(φ*), the force with which the pin
+     * presses on the bore (−load.force), to the direction quantization of the areas —
+     * the contract every registered model passes
+     * (tests/unit/contact/pressure_contract_test.cc). Σ_k p_k A_k itself exceeds F_n
+     * on a wide arc (wear/archard.h).
      */
     virtual void
     evaluate(const ContactLoad &load, SurfacePressure &out) = 0;
@@ -179,56 +245,6 @@ namespace wearlink::contact
     }
 
     /**
-     * Remove @p wear from the model's current profiles (the sequential wear update, after
-     * each load state), as a cheap local update; update_geometry() with the iteration's
-     * end profiles follows at the end of the iteration.
-     */
-    virtual void
-    remove_material(const SurfaceWear &wear) = 0;
-
-    /**
-     * Wall time spent so far in the model's heavy phases (the fe model: meshing, FE
-     * set-up, compliance) [s]. Light models report nothing.
-     */
-    virtual PhaseTimings
-    timings() const
-    {
-      return {};
-    }
-
-    /**
-     * Write the model's fields for @p load next to @p stem: stem.vtu (displacement,
-     * stresses, von Mises) and stem_pressure.csv (contact pressure per node, both body
-     * frames). Only models that solve the bodies have fields; default: none (false).
-     */
-    virtual bool
-    write_fields(const ContactLoad &, const std::string &)
-    {
-      return false;
-    }
-    /** The gmsh file of the current mesh ("" for models without one). */
-    virtual std::string
-    mesh_file() const
-    {
-      return "";
-    }
-    /**
-     * The geometry of the mesh in use, for models that keep a mesh across small profile
-     * updates (the fe model, 'Remesh depth'); nullptr for the others. A checkpoint
-     * stores it so that a resumed run meshes the same geometry.
-     */
-    virtual const JointGeometry *
-    meshed_geometry() const
-    {
-      return nullptr;
-    }
-    /** Resume: as if the model had seen @p meshed and then @p current. Default: update_geometry(current). */
-    virtual void
-    restore_geometry(const JointGeometry & /*meshed*/, const JointGeometry &current)
-    {
-      update_geometry(current);
-    }
-    /**
      * Warnings, under joint @p joint's name, about the evaluations so far that left the
      * model's validity, into @p w (which keeps the worst value of each: one warning per
      * joint and kind). hertz-strip: a Hertz half-angle past 90°. Default: none.
@@ -238,12 +254,30 @@ namespace wearlink::contact
     {
     }
 
-    /** True for models that mesh and solve the actual geometry (gmsh + deal.II). */
-    virtual bool
-    requires_fe_geometry() const
+    /** The hooks of a model that meshes and solves the actual bodies (FeGeometryHooks); nullptr for the others. */
+    virtual FeGeometryHooks *
+    fe_hooks()
     {
-      return false;
+      return nullptr;
     }
+
+  protected:
+    /** Rebuild what the model derives from geometry(): called by update_geometry(). */
+    virtual void
+    geometry_changed() = 0;
+
+    /**
+     * Refresh what the model derives from the areas @p wear touched, after
+     * remove_material() changed geometry() there. Default: nothing (the model reads
+     * geometry() at each evaluation).
+     */
+    virtual void
+    material_removed(const SurfaceWear & /*wear*/)
+    {
+    }
+
+  private:
+    JointGeometry current;
   };
 
   /** The registry of pressure models (filled by register_contact_effects / register_fe_effects). */

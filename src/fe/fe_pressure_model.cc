@@ -24,16 +24,16 @@ namespace wearlink::fe
   // depth'); the pool decides, and may hand out the model the joint's fe force law
   // made for the same geometry.
   void
-  FePressureModel::update_geometry(const contact::JointGeometry &g)
+  FePressureModel::geometry_changed()
   {
-    geometry = g;
-    if (model && within_reach(*model, geometry, settings))
+    const auto &g = geometry();
+    if (model && within_reach(*model, g, settings))
       {
-        use_profiles(*model, geometry);
+        use_profiles(*model, g);
         return;
       }
     bool reused = false;
-    auto next   = shared_model(geometry, settings, &reused);
+    auto next   = shared_model(g, settings, &reused);
     if (next == model)
       return;
     if (model && created_model)
@@ -121,7 +121,7 @@ namespace wearlink::fe
   {
     if (model == nullptr || (load.force[0] == 0 && load.force[1] == 0))
       return false;
-    use_profiles(*model, geometry);
+    use_profiles(*model, geometry());
     const ContactResult r = model->solve(load_case(load), SolverKind::condensed, stem + ".vtu");
     std::ostringstream  csv;
     csv << std::setprecision(12) << "pin_angle_rad,bore_angle_rad,pressure_Pa,force_N\n";
@@ -141,11 +141,11 @@ namespace wearlink::fe
   FePressureModel::evaluate(const contact::ContactLoad &load, contact::SurfacePressure &out)
   {
     AssertThrow(model != nullptr, dealii::ExcMessage("The fe pressure model was evaluated before update_geometry()."));
-    out.pin.assign(geometry.pin.n_points(), 0.0);
-    out.bore.assign(geometry.bore.n_points(), 0.0);
+    out.pin.assign(geometry().pin.n_points(), 0.0);
+    out.bore.assign(geometry().bore.n_points(), 0.0);
     if (load.force[0] == 0 && load.force[1] == 0)
       return;
-    use_profiles(*model, geometry);
+    use_profiles(*model, geometry());
     out = model->surface_pressure(solve_or_explain(load));
   }
 
@@ -155,22 +155,11 @@ namespace wearlink::fe
                                     contact::SurfacePressure      &out)
   {
     AssertThrow(model != nullptr, dealii::ExcMessage("The fe pressure model was evaluated before update_geometry()."));
-    out.pin.assign(geometry.pin.n_points(), 0.0);
-    out.bore.assign(geometry.bore.n_points(), 0.0);
+    out.pin.assign(geometry().pin.n_points(), 0.0);
+    out.bore.assign(geometry().bore.n_points(), 0.0);
     if (load.force[0] == 0 && load.force[1] == 0)
       return;
-    use_profiles(*model, geometry);
+    use_profiles(*model, geometry());
     out = model->surface_pressure(solve_or_explain(load, c.total()));
-  }
-
-  void
-  FePressureModel::remove_material(const contact::SurfaceWear &w)
-  {
-    auto &bore = geometry.bore.samples();
-    auto &pin  = geometry.pin.samples();
-    for (std::size_t i = 0; i < w.bore_areas.size(); ++i)
-      bore[w.bore_areas[i]] += w.bore_depth[i];
-    for (std::size_t i = 0; i < w.pin_areas.size(); ++i)
-      pin[w.pin_areas[i]] -= w.pin_depth[i];
   }
 } // namespace wearlink::fe

@@ -23,14 +23,13 @@ namespace wearlink::fe
   class PinBushingModel;
   struct ContactResult;
 
-  class FePressureModel : public contact::PressureModel
+  class FePressureModel
+    : public contact::PressureModel
+    , public contact::FeGeometryHooks
   {
   public:
     explicit FePressureModel(const FeSettings &settings);
     ~FePressureModel() override;
-
-    void
-    update_geometry(const contact::JointGeometry &geometry) override;
 
     void
     evaluate(const contact::ContactLoad &load, contact::SurfacePressure &out) override;
@@ -45,14 +44,10 @@ namespace wearlink::fe
                      const contact::WearCompliance &c,
                      contact::SurfacePressure      &out) override;
 
-    /** The worn areas enter the current profiles (and the kept mesh's gaps at the next solve). */
-    void
-    remove_material(const contact::SurfaceWear &wear) override;
-
-    bool
-    requires_fe_geometry() const override
+    contact::FeGeometryHooks *
+    fe_hooks() override
     {
-      return true;
+      return this;
     }
 
     PhaseTimings
@@ -78,6 +73,15 @@ namespace wearlink::fe
     void
     restore_geometry(const contact::JointGeometry &meshed, const contact::JointGeometry &current) override;
 
+  protected:
+    /**
+     * A new mesh only when the profiles left the reach of the current one ('Remesh
+     * depth'); otherwise the current profiles enter the kept mesh's gaps. The worn areas
+     * of remove_material() enter them at the next solve.
+     */
+    void
+    geometry_changed() override;
+
   private:
     /** The condensed solve of @p load; NumericalError naming the load state if it fails. */
     ContactResult
@@ -85,7 +89,6 @@ namespace wearlink::fe
 
     const FeSettings                 settings;
     unsigned int                     mesh_counter = 0;
-    contact::JointGeometry           geometry;
     std::shared_ptr<PinBushingModel> model; ///< shared (fe/model_pool.h)
     /** Set-up times of the models this one created and already let go [s]. */
     double past_mesh_time = 0, past_setup_time = 0, past_compliance_time = 0;

@@ -182,7 +182,12 @@ namespace wearlink::fe
     /**
      * Pressure per discrete area of both profiles [Pa]: the nodal forces are spread
      * over their tributary arcs and collected on the areas [ψ_k ± π/N] of each
-     * profile (pin: pin frame; bore: bushing frame). Conserves the force magnitude.
+     * profile (pin: pin frame; bore: bushing frame). Σ_k p_k A_k is the sum of the
+     * nodal force magnitudes, each placed at its contact point, so the areas' radial
+     * resultant Σ_k p_k A_k u_k is the nodal forces' resultant (the load) to the
+     * areas' direction quantization and to the lean of the nodal forces, which act
+     * along the pin's normals, from the radii: (e/R) sin α on a round pair, the
+     * profile's slope on a worn one (tests/unit/contact/pressure_contract_test.cc).
      */
     contact::SurfacePressure
     surface_pressure(const ContactResult &result) const;

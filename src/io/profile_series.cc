@@ -4,6 +4,8 @@
 #include "base/atomic_file.h"
 #include "base/numbers.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -121,11 +123,38 @@ namespace wearlink::io
   }
 
   void
+  remove_series_files(const std::string               &dir,
+                      const std::string               &prefix,
+                      const std::string               &suffix,
+                      const std::vector<unsigned int> &keep)
+  {
+    if (!std::filesystem::is_directory(dir))
+      return;
+    std::vector<std::filesystem::path> old;
+    for (const auto &entry : std::filesystem::directory_iterator(dir))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.size() <= prefix.size() + suffix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+            name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+          continue;
+        const std::string number = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+        if (number.size() > 9 ||
+            !std::all_of(number.begin(), number.end(), [](unsigned char c) { return std::isdigit(c); }))
+          continue;
+        if (std::find(keep.begin(), keep.end(), static_cast<unsigned int>(std::stoul(number))) == keep.end())
+          old.push_back(entry.path());
+      }
+    for (const auto &path : old)
+      std::filesystem::remove(path);
+  }
+
+  void
   write_profile_frame(const std::string              &dir,
                       const wear::WearState          &state,
                       const unsigned int              joint,
                       const contact::SurfacePressure &pressure,
-                      const double                    cycles_per_iteration)
+                      const double                    cycles_per_iteration,
+                      const bool                      every_iteration)
   {
     const auto &js = state.joints.at(joint);
     std::filesystem::create_directories(dir + "/profiles");
@@ -139,14 +168,19 @@ namespace wearlink::io
     write_file_atomically(dir + "/" + frame_name(js.name, k),
                           profile_vtu({{&js.bore, &r.depth_bore, &pressure.bore, 1},
                                        {&js.pin, &r.depth_pin, &pressure.pin, -1}}));
+    if (!every_iteration)
+      remove_series_files(dir + "/profiles", "profile_" + js.name + "_", ".vtu", {0, k});
     std::vector<double>      times{0};
     std::vector<std::string> files{frame_name(js.name, 0)};
     double                   revolutions = 0;
     for (unsigned int i = 0; i < k && i < state.factors.size(); ++i)
       {
         revolutions += state.factors[i] * cycles_per_iteration;
-        times.push_back(revolutions);
-        files.push_back(frame_name(js.name, i + 1));
+        if (std::filesystem::exists(dir + "/" + frame_name(js.name, i + 1)))
+          {
+            times.push_back(revolutions);
+            files.push_back(frame_name(js.name, i + 1));
+          }
       }
     write_pvd(dir + "/profiles_" + js.name + ".pvd", times, files);
   }

@@ -12,11 +12,14 @@
 // are kept per surface:
 //   - the local volume  Σ_k h_k A_k (A_k = L R_k Δψ, the area's surface), which the
 //     profile update removes;
-//   - the global Archard volume k_D ∫ F_n |v_t| dt. The two agree when the pressure
-//     model conserves the force magnitude (Σ_k p_k A_k = F_n: exact for hertz-strip, to
-//     the equilibrium tolerance for fe; for wide conformal arcs the load is the vector
-//     sum of the pressures and Σ p A > F_n, which is why the local form is the one that
-//     is removed from the profiles).
+//   - the global Archard volume k_D ∫ F_n |v_t| dt. Every pressure model carries the
+//     load as the resultant of its pressure, Σ_k p_k A_k u_k = F_n u(φ*)
+//     (contact/pressure_model.h), so Σ_k p_k A_k = F_n / ⟨cos⟩ ≥ F_n, ⟨cos⟩ the
+//     pressure-weighted mean cosine of the contact arc: the two volumes agree for a
+//     narrow contact (a Hertz strip of half-angle ε: 1 + ε²/8) and the local one exceeds
+//     the global one on a wide conformal arc (3.5 % for a ±30° strip). That is local
+//     Archard on a curved conformal contact, not an error, and the local form is the
+//     one that is removed from the profiles.
 //
 // Two ways to apply an iteration's wear (Wear/Wear update):
 //   - simultaneous: every state of the history is evaluated on the iteration's start

@@ -142,8 +142,11 @@ namespace wearlink::wear
       {
         const auto &js = st.joints[i];
         wearing[i].joint->set_profiles(js.bore, js.pin);
-        wearing[i].wear->model->restore_geometry(geometry(i, js.meshed_bore, js.meshed_pin),
-                                                 geometry(i, js.bore, js.pin));
+        auto &model = *wearing[i].wear->model;
+        if (auto *hooks = model.fe_hooks())
+          hooks->restore_geometry(geometry(i, js.meshed_bore, js.meshed_pin), geometry(i, js.bore, js.pin));
+        else
+          model.update_geometry(geometry(i, js.bore, js.pin));
       }
   }
 
@@ -550,9 +553,10 @@ namespace wearlink::wear
         auto     &model = *wearing[i].wear->model;
         Stopwatch update;
         model.update_geometry(geometry(i, js.bore, js.pin));
-        if (!model.requires_fe_geometry()) // the fe model times its own phases
+        const auto *hooks = model.fe_hooks();
+        if (!hooks) // the fe model times its own phases
           own_timings.pressure_evaluation += update.seconds();
-        const auto *meshed = model.meshed_geometry();
+        const auto *meshed = hooks ? hooks->meshed_geometry() : nullptr;
         js.meshed_bore     = meshed ? meshed->bore : js.bore;
         js.meshed_pin      = meshed ? meshed->pin : js.pin;
       }
@@ -640,7 +644,8 @@ namespace wearlink::wear
   {
     PhaseTimings t = own_timings;
     for (const auto &w : wearing)
-      t += w.wear->model->timings();
+      if (const auto *hooks = w.wear->model->fe_hooks())
+        t += hooks->timings();
     for (const auto *j : clearance_joints)
       t += j->normal_force_law().timings();
     return t;

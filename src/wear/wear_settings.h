@@ -89,6 +89,7 @@ namespace wearlink::wear
     std::string            response_body;            ///< body whose response is plotted
     double                 magnification = 0;        ///< profile plots; 0: automatic
     bool                   fe_output     = true;     ///< meshes and fields of fe joints into DIR/fe
+    bool every_iteration_output          = false; ///< keep every iteration's profile frame and FE files (else the last)
   };
 
   /** Declare the per-joint wear entries (inside "Joint <name>/Clearance"). */

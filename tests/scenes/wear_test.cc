@@ -3,8 +3,11 @@
 //  - Bookkeeping: after a wear iteration the volume removed from each surface,
 //    Σ_k h_k A_k, equals the integrated Archard volume k_D ∫ F_n |v_t| dt, where the
 //    integral is taken here by an independent observer (trapezoidal rule over the
-//    accepted steps, from the joint diagnostics). hertz-strip conserves the force
-//    exactly (Σ p A = F_n), so only rounding separates them: 1e-9 relative.
+//    accepted steps, from the joint diagnostics). hertz-strip carries F_n as the
+//    resultant of its strip (contact/pressure_model.h), so Σ p A = F_n ε/(2 J1(ε)) on
+//    each surface, ε = b/R the Hertz strip's half-angle there (b from the round pair's
+//    R* and E*, J1 from std::cyl_bessel_j): the observer integrates that too, and only
+//    rounding separates them: 1e-9 relative (plus the sequential update's h/R below).
 //    The worn profiles carry the same volume: L (A_enclosed(before) − A_enclosed(after))
 //    differs from Σ h A only by the second-order term h²/2 per area and the linear
 //    interpolation between samples, O(h/R) ≈ 1e-4 relative here; we ask 1e-3.
@@ -30,14 +33,20 @@ using namespace wearlink;
 
 namespace
 {
-  /** k_D-free ∫ F_n |v_t| dt per joint by the trapezoidal rule over accepted steps. */
+  /**
+   * k_D-free ∫ F_n |v_t| dt per joint by the trapezoidal rule over accepted steps, and
+   * ∫ F_n ε/(2 J1(ε)) |v_t| dt with the Hertz strip's half-angle ε on the bore and on
+   * the pin of the joint's round pair (the file comment).
+   */
   class FrictionWorkObserver : public mbs::StepObserver
   {
   public:
     explicit FrictionWorkObserver(std::vector<contact::ClearanceJoint *> j)
       : joints(std::move(j))
       , integral(joints.size(), 0.0)
-      , last(joints.size(), 0.0)
+      , bore_integral(joints.size(), 0.0)
+      , pin_integral(joints.size(), 0.0)
+      , last(3 * joints.size(), 0.0)
     {
     }
     void
@@ -49,15 +58,19 @@ namespace
     void
     on_step(const mbs::StepContext &c) override
     {
-      std::vector<double> now(joints.size());
+      std::vector<double> now(last.size());
       eval(c, now);
       for (unsigned i = 0; i < joints.size(); ++i)
-        integral[i] += 0.5 * (c.t - t_last) * (now[i] + last[i]);
+        {
+          integral[i] += 0.5 * (c.t - t_last) * (now[3 * i] + last[3 * i]);
+          bore_integral[i] += 0.5 * (c.t - t_last) * (now[3 * i + 1] + last[3 * i + 1]);
+          pin_integral[i] += 0.5 * (c.t - t_last) * (now[3 * i + 2] + last[3 * i + 2]);
+        }
       last   = now;
       t_last = c.t;
     }
     std::vector<contact::ClearanceJoint *> joints;
-    std::vector<double>                    integral, last;
+    std::vector<double>                    integral, bore_integral, pin_integral, last;
     double                                 t_last = 0;
 
   private:
@@ -67,8 +80,18 @@ namespace
       const auto n = c.simulation.get_mechanism().n_coordinates();
       for (unsigned i = 0; i < joints.size(); ++i)
         {
-          const auto d = joints[i]->diagnostics(mbs::StateView(c.y.data(), c.y.data() + n));
-          out[i]       = d.normal_force * std::abs(d.sliding_velocity);
+          const auto   d     = joints[i]->diagnostics(mbs::StateView(c.y.data(), c.y.data() + n));
+          const double power = d.normal_force * std::abs(d.sliding_velocity);
+          const auto  &g     = joints[i]->get_description().geometry;
+          const double r1 = g.bore[0], r2 = g.pin[0];
+          const double e_star = 1 / (g.bushing.compliance() + g.pin_material.compliance());
+          const double b      = std::sqrt(4 * d.normal_force / g.axial_length * r1 * r2 / (r1 - r2) / (M_PI * e_star));
+          const auto   scale  = [](const double epsilon) {
+            return epsilon > 0 ? epsilon / (2 * std::cyl_bessel_j(1.0, epsilon)) : 1.0;
+          };
+          out[3 * i]     = power;
+          out[3 * i + 1] = power * scale(b / r1);
+          out[3 * i + 2] = power * scale(b / r2);
         }
     }
   };
@@ -96,12 +119,12 @@ TEST(Wear, VolumeBookkeepingMatchesIntegratedArchard)
       const auto  &js            = r.state.joints[i];
       const auto  &w             = *scene2.wear[i];
       const auto  &h             = js.history.back();
-      const double expected_pin  = w.archard.pin_coefficient * work.integral[i];
-      const double expected_bore = w.archard.bushing_coefficient * work.integral[i];
+      const double expected_pin  = w.archard.pin_coefficient * work.pin_integral[i];
+      const double expected_bore = w.archard.bushing_coefficient * work.bore_integral[i];
       ASSERT_GT(expected_pin, 0) << js.name;
       // The sequential update wears the surfaces state by state, so a strip spread on
       // surfaces already worn by h carries F_n over areas whose radii differ from the
-      // start's by up to h: the local volume is the global one to h/R (and to 1e-9).
+      // start's by up to h: the local volume is the expected one to h/R (and to 1e-9).
       const double worn = std::max(h.max_depth_pin / js.pin.min_radius(), h.max_depth_bore / js.bore.min_radius());
       EXPECT_NEAR(h.volume_pin, expected_pin, (1e-9 + worn) * expected_pin) << js.name;
       EXPECT_NEAR(h.volume_bore, expected_bore, (1e-9 + worn) * expected_bore) << js.name;
@@ -250,53 +273,90 @@ TEST(Wear, PressureModelComparisonSameLoadsSimilarVolumes)
     }
 }
 
-// FE files of a wear run with the fe pressure model (Wear/FE output, default on): the
-// mesh in use after every iteration in which it changed (Remesh depth 0: a new mesh
-// after every iteration; a depth of 20 elements = 4 mm, far beyond three iterations'
-// wear: one mesh), and the fields at the peak load of the first and the last
-// iteration; nothing for the hertz-strip joint B. Off: no fe/ folder.
-TEST(Wear, FeWearRunWritesMeshesAndFields)
+namespace
 {
-  const auto                base = with(short_run,
-                         {"Wear/Number of iterations=3",
-                                         "Wear/Pressure evaluation=samples per cycle",
-                                         "Wear/Load samples per cycle=25",
-                                         "Joint A/Clearance/Pressure model=fe",
-                                         "Joint A/Clearance/fe/Surface element size=2e-4"});
-  workflows::WearRunOptions o;
-  o.progress         = false;
-  o.final_outputs    = false;
-  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files");
-  auto       scene   = wearlink::testing::scene("params/nine_bar_wear.prm", base);
-  const auto r       = workflows::run_wear(scene, o);
-  ASSERT_EQ(r.state.iterations_done, 3u);
-  const std::string fe = o.output_directory + "/fe/";
+  /** Three iterations of nine_bar_wear.prm with joint A on a coarse fe model (0.2 mm), its loads sampled. */
+  const std::vector<std::string> fe_files_run = with(short_run,
+                                                     {"Wear/Number of iterations=3",
+                                                      "Wear/Pressure evaluation=samples per cycle",
+                                                      "Wear/Load samples per cycle=25",
+                                                      "Joint A/Clearance/Pressure model=fe",
+                                                      "Joint A/Clearance/fe/Surface element size=2e-4"});
+
+  /** Run @p overrides of nine_bar_wear.prm into a fresh folder named @p name; returns the folder. */
+  std::string
+  wear_files_of(const std::vector<std::string> &overrides, const std::string &name)
+  {
+    workflows::WearRunOptions o;
+    o.progress         = false;
+    o.final_outputs    = false;
+    o.output_directory = wearlink::testing::fresh_directory(name);
+    auto scene         = wearlink::testing::scene("params/nine_bar_wear.prm", overrides);
+    EXPECT_EQ(workflows::run_wear(scene, o).state.iterations_done, 3u);
+    return o.output_directory;
+  }
+} // namespace
+
+// FE files of a wear run with the fe pressure model (Wear/FE output, default on), with
+// Wear/Output every iteration: the mesh in use after every iteration in which it changed
+// (Remesh depth 0: a new mesh after every iteration), the fields at the peak load of
+// every iteration, and every profile frame; nothing for the hertz-strip joint B.
+TEST(Wear, FeWearRunWritesEveryIterationsFilesOnRequest)
+{
+  const std::string dir = wear_files_of(with(fe_files_run, {"Wear/Output every iteration=true"}), "wear_fe_files");
+  const std::string fe  = dir + "/fe/";
   for (const char *f : {"mesh_A_1.msh",
                         "mesh_A_2.msh",
                         "mesh_A_3.msh",
                         "fields_A_iteration1.vtu",
                         "fields_A_iteration1_pressure.csv",
+                        "fields_A_iteration2.vtu",
                         "fields_A_iteration3.vtu",
                         "fields_A_iteration3_pressure.csv"})
-    EXPECT_TRUE(std::filesystem::exists(fe + f)) << f;
-  EXPECT_TRUE(std::filesystem::exists(fe + "fields_A_iteration2.vtu")) << "the fields of every iteration";
+    EXPECT_TRUE(std::filesystem::exists(fe + f)) << f << ": every iteration's";
   EXPECT_TRUE(std::filesystem::exists(fe + "fields_A.pvd")) << "their ParaView series";
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/profiles_A.pvd"));
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/profiles/profile_B_3.vtu")) << "every joint's profiles";
+  EXPECT_TRUE(std::filesystem::exists(dir + "/profiles_A.pvd"));
+  for (const char *f : {"profile_B_0.vtu", "profile_B_1.vtu", "profile_B_2.vtu", "profile_B_3.vtu"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/profiles/" + f)) << f << ": every joint's profiles";
   EXPECT_FALSE(std::filesystem::exists(fe + "mesh_B_1.msh")) << "joint B is on hertz-strip";
+}
 
-  auto kept =
-    wearlink::testing::scene("params/nine_bar_wear.prm", with(base, {"Joint A/Clearance/fe/Remesh depth=20"}));
-  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files_kept");
-  workflows::run_wear(kept, o);
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/fe/mesh_A_1.msh"));
-  EXPECT_FALSE(std::filesystem::exists(o.output_directory + "/fe/mesh_A_2.msh")) << "the mesh is kept";
-  EXPECT_TRUE(std::filesystem::exists(o.output_directory + "/fe/fields_A_iteration3.vtu"));
+// By default a wear run keeps the last iteration's files only: its mesh, its fields, the
+// unworn and the last profile frames, each listed in its .pvd; a mesh kept across the
+// iterations (Remesh depth 20 elements = 4 mm, far beyond three iterations' wear) is the
+// one copied after the first. FE output off: no fe/ folder.
+TEST(Wear, FeWearRunKeepsTheLastIterationsFilesByDefault)
+{
+  const std::string dir = wear_files_of(fe_files_run, "wear_fe_files_last");
+  const std::string fe  = dir + "/fe/";
+  for (const char *f : {"mesh_A_3.msh", "fields_A_iteration3.vtu", "fields_A_iteration3_pressure.csv"})
+    EXPECT_TRUE(std::filesystem::exists(fe + f)) << f << ": the last iteration's";
+  for (const char *f : {"mesh_A_1.msh",
+                        "mesh_A_2.msh",
+                        "fields_A_iteration1.vtu",
+                        "fields_A_iteration2.vtu",
+                        "fields_A_iteration2_pressure.csv"})
+    EXPECT_FALSE(std::filesystem::exists(fe + f)) << f << ": replaced by the last iteration's";
+  for (const char *f : {"profile_A_0.vtu", "profile_A_3.vtu", "profile_B_0.vtu", "profile_B_3.vtu"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/profiles/" + f)) << f << ": unworn and last";
+  for (const char *f : {"profile_A_1.vtu", "profile_A_2.vtu", "profile_B_2.vtu"})
+    EXPECT_FALSE(std::filesystem::exists(dir + "/profiles/" + f)) << f;
+  const std::string fields   = wearlink::testing::file_content(fe + "fields_A.pvd"),
+                    profiles = wearlink::testing::file_content(dir + "/profiles_A.pvd");
+  EXPECT_NE(fields.find("fields_A_iteration3.vtu"), std::string::npos) << fields;
+  EXPECT_EQ(fields.find("fields_A_iteration2.vtu"), std::string::npos) << "the .pvd lists what is kept";
+  EXPECT_NE(profiles.find("profile_A_0.vtu"), std::string::npos) << profiles;
+  EXPECT_NE(profiles.find("profile_A_3.vtu"), std::string::npos) << profiles;
+  EXPECT_EQ(profiles.find("profile_A_2.vtu"), std::string::npos) << "the .pvd lists what is kept";
 
-  auto off           = wearlink::testing::scene("params/nine_bar_wear.prm", with(base, {"Wear/FE output=false"}));
-  o.output_directory = wearlink::testing::fresh_directory("wear_fe_files_off");
-  workflows::run_wear(off, o);
-  EXPECT_FALSE(std::filesystem::exists(o.output_directory + "/fe"));
+  const std::string kept =
+    wear_files_of(with(fe_files_run, {"Joint A/Clearance/fe/Remesh depth=20"}), "wear_fe_files_kept");
+  EXPECT_TRUE(std::filesystem::exists(kept + "/fe/mesh_A_1.msh")) << "the mesh in use";
+  EXPECT_FALSE(std::filesystem::exists(kept + "/fe/mesh_A_2.msh")) << "the mesh is kept";
+  EXPECT_TRUE(std::filesystem::exists(kept + "/fe/fields_A_iteration3.vtu"));
+
+  const std::string off = wear_files_of(with(fe_files_run, {"Wear/FE output=false"}), "wear_fe_files_off");
+  EXPECT_FALSE(std::filesystem::exists(off + "/fe"));
 }
 
 // The FE scene's wear loop (fe pressure model and fe contact law on both joints, a kept

@@ -24,9 +24,10 @@ namespace wearlink::app
 
 Simulates N cycles (default: Wear/Cycles per iteration) of a wear scene once, records
 the load history of every joint with a Wear law, and feeds that same history through
-each pressure model (default: hertz-strip,winkler,fe — the last one is the reference
-of the L2 column), each with the joint's own parameters from the scene, into Archard's
-law on both surfaces. Prints per joint and model: worn volume of pin and bushing, the
+each pressure model (default: every registered one whose parameters the scene gives for
+those joints, in the order `wearlink --print-parameters` lists them under Pressure model,
+fe last; the last one listed is the reference of the L2 column), each with the joint's
+own parameters from the scene, into Archard's law on both surfaces. Prints per joint and model: worn volume of pin and bushing, the
 global Archard volume k_D ∫F|v|dt, largest depth and its body-frame angle, the
 relative L2 difference of the depth profiles against the reference, the number of
 pressure evaluations and the wall time. The load sampling follows Wear/Pressure
@@ -51,7 +52,7 @@ internal error (see `wearlink --help`).
         throw InputError("`wearlink compare-pressure` needs exactly one scene file. See --help.");
       const std::string              file   = a.positional[0];
       io::Scene                      scene  = io::read_scene(file, a.all("--set"));
-      const std::vector<std::string> models = a.list("--models", "hertz-strip,winkler,fe");
+      const std::vector<std::string> models = a.list("--models"); // empty: the workflow's default
       const double                   cycles = a.number("--cycles", scene.wear_loop.cycles_per_iteration);
       if (!(cycles > 0 && cycles <= 1e4))
         throw InputError("--cycles is " + format_number(cycles) +

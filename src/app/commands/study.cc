@@ -70,7 +70,8 @@ the knob's reference run (its finest value; for choices without a "finer" one, t
 scene's own): relative error of the worn volume and largest wear depth of pin and
 bushing, relative L2 difference of the worn-depth profiles, peak contact force per
 clearance joint and peak acceleration of the response body.
-The pressure-model knob evaluates all three models on sampled load states (50 per
+The pressure-model knob evaluates every registered model the scene gives the
+parameters of (fe, registered last, the reference) on sampled load states (50 per
 cycle; fe with 0.2 mm surface elements, re-meshing beyond 2 of them) when the scene
 itself evaluates every step without fe: fe at every step of a 100-cycle run takes
 hours; what sampling costs in accuracy is the load-sampling knob's row.

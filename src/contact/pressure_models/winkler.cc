@@ -108,33 +108,6 @@ namespace wearlink::contact
       {
       }
 
-      /** The layers' stiffness and the sub-grid in the bushing frame, once per geometry. */
-      void
-      update_geometry(const JointGeometry &g) override
-      {
-        geometry = g;
-        // Layer moduli in series: d = p h/E_f,bore + p h/E_f,pin.
-        modulus       = series_foundation_modulus(g.bushing, g.pin_material);
-        largest_pin   = g.pin.max_radius();
-        smallest_bore = g.bore.min_radius();
-        stiffness     = modulus / thickness;
-        const auto m  = g.bore.n_points();
-        grid.n        = m * sub;
-        grid.dp       = 2 * pi / grid.n;
-        grid.offset   = 0.5 * grid.dp - 0.5 * 2 * pi / m;
-        grid.ux.resize(grid.n);
-        grid.uy.resize(grid.n);
-        grid.r1.resize(grid.n);
-        grid.gap.resize(grid.n);
-        for (unsigned int j = 0; j < grid.n; ++j)
-          {
-            const double alpha = grid.offset + j * grid.dp;
-            grid.ux[j]         = std::cos(alpha);
-            grid.uy[j]         = std::sin(alpha);
-            grid.r1[j]         = g.bore.radius(alpha);
-          }
-      }
-
       void
       evaluate_wearing(const ContactLoad &load, const WearCompliance &c, SurfacePressure &out) override
       {
@@ -157,27 +130,6 @@ namespace wearlink::contact
         return nonlinear ? 1 / slope(deepest_overlap) : std::numeric_limits<double>::infinity();
       }
 
-      /** New radii for the worn areas, and the sub-grid's bore radii around them. */
-      void
-      remove_material(const SurfaceWear &w) override
-      {
-        auto &bore = geometry.bore.samples();
-        auto &pin  = geometry.pin.samples();
-        for (std::size_t i = 0; i < w.pin_areas.size(); ++i)
-          pin[w.pin_areas[i]] -= w.pin_depth[i];
-        for (std::size_t i = 0; i < w.bore_areas.size(); ++i)
-          bore[w.bore_areas[i]] += w.bore_depth[i];
-        // Sub-sample j of area k sits at ψ_k + (j mod sub + 1/2 − sub/2) dφ, so the
-        // radius of sample k reaches the sub-samples of areas k − 1 … k + 1.
-        const long n = static_cast<long>(grid.n);
-        for (const unsigned int k : w.bore_areas)
-          for (long j = (static_cast<long>(k) - 1) * sub; j < (static_cast<long>(k) + 2) * sub; ++j)
-            {
-              const long jj = ((j % n) + n) % n;
-              grid.r1[jj]   = geometry.bore.radius(grid.offset + jj * grid.dp);
-            }
-      }
-
       /**
        * The pressure that carries @p load: the eccentricity at which the foundation's
        * resultant equals the load (force control), found in three steps — the load on
@@ -187,8 +139,8 @@ namespace wearlink::contact
       void
       evaluate(const ContactLoad &load, SurfacePressure &out) override
       {
-        out.bore.assign(geometry.bore.n_points(), 0.0);
-        out.pin.assign(geometry.pin.n_points(), 0.0);
+        out.bore.assign(geometry().bore.n_points(), 0.0);
+        out.pin.assign(geometry().pin.n_points(), 0.0);
         // Loads below 10 µN meet the floating-point floor of the force balance (see
         // equilibrium()) and are left without pressure: in a joint carrying newtons
         // their wear is below 1e-6 of the total (documented approximation, not a
@@ -209,6 +161,49 @@ namespace wearlink::contact
         area_averages(e, load, out);
       }
 
+    protected:
+      /** The layers' stiffness and the sub-grid in the bushing frame, once per geometry. */
+      void
+      geometry_changed() override
+      {
+        const auto &g = geometry();
+        // Layer moduli in series: d = p h/E_f,bore + p h/E_f,pin.
+        modulus       = series_foundation_modulus(g.bushing, g.pin_material);
+        largest_pin   = g.pin.max_radius();
+        smallest_bore = g.bore.min_radius();
+        stiffness     = modulus / thickness;
+        const auto m  = g.bore.n_points();
+        grid.n        = m * sub;
+        grid.dp       = 2 * pi / grid.n;
+        grid.offset   = 0.5 * grid.dp - 0.5 * 2 * pi / m;
+        grid.ux.resize(grid.n);
+        grid.uy.resize(grid.n);
+        grid.r1.resize(grid.n);
+        grid.gap.resize(grid.n);
+        for (unsigned int j = 0; j < grid.n; ++j)
+          {
+            const double alpha = grid.offset + j * grid.dp;
+            grid.ux[j]         = std::cos(alpha);
+            grid.uy[j]         = std::sin(alpha);
+            grid.r1[j]         = g.bore.radius(alpha);
+          }
+      }
+
+      /** The sub-grid's bore radii around the worn bore areas. */
+      void
+      material_removed(const SurfaceWear &w) override
+      {
+        // Sub-sample j of area k sits at ψ_k + (j mod sub + 1/2 − sub/2) dφ, so the
+        // radius of sample k reaches the sub-samples of areas k − 1 … k + 1.
+        const long n = static_cast<long>(grid.n);
+        for (const unsigned int k : w.bore_areas)
+          for (long j = (static_cast<long>(k) - 1) * sub; j < (static_cast<long>(k) + 2) * sub; ++j)
+            {
+              const long jj = ((j % n) + n) % n;
+              grid.r1[jj]   = geometry().bore.radius(grid.offset + jj * grid.dp);
+            }
+      }
+
     private:
       /**
        * The load in the bushing's frame: the load vector, the rigid-body eccentricity and
@@ -226,7 +221,7 @@ namespace wearlink::contact
         const double turn = load.bushing_angle - load.pin_angle;
         select_candidates(std::atan2(target[1], target[0]), half_window);
         for (const unsigned int j : grid.candidates)
-          grid.gap[j] = geometry.pin.radius(grid.offset + j * grid.dp + turn) - grid.r1[j];
+          grid.gap[j] = geometry().pin.radius(grid.offset + j * grid.dp + turn) - grid.r1[j];
         grid.use_all();
       }
 
@@ -268,7 +263,7 @@ namespace wearlink::contact
       Eigen::Vector2d
       residual(const Eigen::Vector2d &x, Eigen::Matrix2d *jac) const
       {
-        const double    length = geometry.axial_length;
+        const double    length = geometry().axial_length;
         Eigen::Vector2d f      = -target;
         if (jac)
           jac->setZero();
@@ -314,7 +309,7 @@ namespace wearlink::contact
           return residual(travel * dir, nullptr).dot(dir) + load.normal_force;
         };
         double s_lo = 0, f_lo = along(s_lo) - load.normal_force;
-        double s_hi = std::max(eccentricity.norm(), geometry.bore.max_radius() - geometry.pin.min_radius());
+        double s_hi = std::max(eccentricity.norm(), geometry().bore.max_radius() - geometry().pin.min_radius());
         double f_hi = along(s_hi) - load.normal_force;
         for (unsigned int k = 0; k < 60 && f_hi <= 0; ++k)
           {
@@ -362,7 +357,7 @@ namespace wearlink::contact
       double
       energy_change(const Eigen::Vector2d &x, const Eigen::Vector2d &step, const double lambda) const
       {
-        const double length = geometry.axial_length;
+        const double length = geometry().axial_length;
         double       change = -lambda * target.dot(step);
         for (const unsigned int j : grid.window)
           {
@@ -442,7 +437,7 @@ namespace wearlink::contact
       double
       resolution_force() const
       {
-        return stiffness * geometry.axial_length * smallest_bore * grid.dp * 1e-9;
+        return stiffness * geometry().axial_length * smallest_bore * grid.dp * 1e-9;
       }
 
       /** How many samples of the window overlap at @p e. */
@@ -468,7 +463,7 @@ namespace wearlink::contact
         const double psi = std::atan2(target[1], target[0]) - grid.offset;
         const double x   = psi / grid.dp - std::floor(psi / (2 * pi)) * grid.n;
         single_sample    = static_cast<int>(std::lround(x)) % static_cast<int>(grid.n);
-        single_pressure  = load.normal_force / (geometry.axial_length * grid.r1[single_sample] * grid.dp);
+        single_pressure  = load.normal_force / (geometry().axial_length * grid.r1[single_sample] * grid.dp);
         EffectLedger::instance().add_calls("winkler light loads on one sample", 1);
       }
 
@@ -517,7 +512,7 @@ namespace wearlink::contact
             out.bore[j / sub] += single_pressure / sub;
             const double r1 = grid.r1[j], r2 = grid.gap[j] + r1;
             out.pin[pin_area(grid.offset + j * grid.dp + load.bushing_angle - load.pin_angle)] +=
-              single_pressure * r1 / r2 * grid.dp / (2 * pi / geometry.pin.n_points());
+              single_pressure * r1 / r2 * grid.dp / (2 * pi / geometry().pin.n_points());
             return;
           }
         for (const unsigned int j : grid.window)
@@ -532,7 +527,7 @@ namespace wearlink::contact
             // bore's; distribute the force (p r1 dφ) over the pin area it falls in.
             const double       r1 = grid.r1[j], r2 = grid.gap[j] + r1;
             const unsigned int k = pin_area(grid.offset + j * grid.dp + turn);
-            out.pin[k] += p * r1 / r2 * grid.dp / (2 * pi / geometry.pin.n_points());
+            out.pin[k] += p * r1 / r2 * grid.dp / (2 * pi / geometry().pin.n_points());
           }
       }
 
@@ -572,18 +567,17 @@ namespace wearlink::contact
       unsigned int
       pin_area(double psi) const
       {
-        const unsigned int m = geometry.pin.n_points();
+        const unsigned int m = geometry().pin.n_points();
         double             s = psi / (2 * pi);
         s -= std::floor(s);
         return std::min(m - 1, static_cast<unsigned int>(std::floor(s * m + 0.5)) % m);
       }
 
-      const double  thickness;
-      const bool    nonlinear;
-      JointGeometry geometry;
-      double        stiffness = 0, modulus = 0;
-      double        wear_compliance = 0;                ///< c of the state being worn (linear layer) [m/Pa]
-      double        largest_pin = 0, smallest_bore = 0; ///< of the geometry set [m] (candidates_hold())
+      const double thickness;
+      const bool   nonlinear;
+      double       stiffness = 0, modulus = 0;
+      double       wear_compliance = 0;                ///< c of the state being worn (linear layer) [m/Pa]
+      double       largest_pin = 0, smallest_bore = 0; ///< of the geometry set [m] (candidates_hold())
       /** The first half-width of the candidates around the load direction [rad] (evaluate()). */
       static constexpr double initial_half_window = pi / 6;
       double                  deepest_overlap     = 0;  ///< of the last evaluation [m]

@@ -445,7 +445,6 @@ namespace wearlink::workflows
           p.fresh         = d.geometry;
           p.worn          = d.worn;
           p.has_worn      = d.has_worn;
-          p.winkler       = d.winkler_thickness > 0;
           p.direction     = d.has_worn ? d.worn_bore_psi : 1.5 * numbers::pi;
           p.pin_direction = d.has_worn ? d.worn_pin_psi : 0.0;
           p.loads         = spanning_loads(range.mean_contact_force[k], range.peak_force[k]);

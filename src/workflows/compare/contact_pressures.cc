@@ -7,6 +7,7 @@
 #include "base/parameters.h"
 #include "base/text.h"
 #include "base/timings.h"
+#include "io/configured_pressure_models.h"
 #include "io/output_names.h"
 #include "io/plot.h"
 
@@ -105,16 +106,6 @@ namespace wearlink::workflows
       return out;
     }
 
-    std::vector<std::string>
-    models_of(const PressureJoint &j)
-    {
-      std::vector<std::string> m{"hertz-strip"};
-      if (j.winkler)
-        m.push_back("winkler");
-      m.push_back("fe");
-      return m;
-    }
-
     /** Pressure model @p name with joint @p joint's parameters (its Clearance section). */
     std::unique_ptr<contact::PressureModel>
     make_model(io::Scene &scene, const std::string &joint, const std::string &name)
@@ -196,7 +187,7 @@ namespace wearlink::workflows
     // (fe/model_pool.h) and the fresh models of all joints are made before the worn ones.
     std::vector<std::vector<std::pair<std::string, std::unique_ptr<contact::PressureModel>>>> models(joints.size());
     for (std::size_t i = 0; i < joints.size(); ++i)
-      for (const auto &name : models_of(joints[i]))
+      for (const auto &name : io::configured_pressure_models(scene, {joints[i].name}))
         models[i].emplace_back(name, make_model(scene, joints[i].name, name));
     for (const bool worn : {false, true})
       for (std::size_t i = 0; i < joints.size(); ++i)
@@ -297,7 +288,8 @@ namespace wearlink::workflows
             span   = std::max(span, 1.5 * c.half_angle + 2 * c.area_width);
             centre = c.direction;
           }
-      std::vector<double> loads;
+      std::vector<double>      loads;
+      std::vector<std::string> others; // the models other than fe, in the order of their curves
       for (const auto &c : d.curves)
         {
           if (c.joint != joint || c.state != state)
@@ -309,10 +301,16 @@ namespace wearlink::workflows
           s.title     = c.model + ", " + load_label(c.load) + " N";
           s.look      = io::palette_line(static_cast<unsigned>(colour - loads.begin() + 1), c.model == "fe" ? 3 : 2);
           s.look.mark = io::Mark::steps;
-          if (c.model == "winkler")
-            s.look.dotted();
-          else if (c.model != "fe")
-            s.look.dashed();
+          if (c.model != "fe") // the reference solid, the others dashed and dotted in turn
+            {
+              auto other = std::find(others.begin(), others.end(), c.model);
+              if (other == others.end())
+                other = others.insert(others.end(), c.model);
+              if ((other - others.begin()) % 2 == 0)
+                s.look.dashed();
+              else
+                s.look.dotted();
+            }
           for (std::size_t k = 0; k < d.bore_angle.size(); ++k)
             {
               const double x = angle_from(d.bore_angle[k], centre);
@@ -334,10 +332,12 @@ namespace wearlink::workflows
   // discrete areas, bushing frame, of the joint with the most areas; the curves of a
   // joint with fewer areas are interpolated linearly onto them), then one column
   // pressure_Pa_<model>_<state>_<joint>_<load>N per curve: the contact pressure [Pa] on
-  // area k for the model (hertz-strip, winkler, fe), the state (fresh, worn), the joint
+  // area k for the model (every registered one the scene configures, in the registry's
+  // order: hertz-strip, winkler, fe as shipped), the state (fresh, worn), the joint
   // and the load (whole newtons from 100 N on), in the order state, joint, model, load.
   // pressure.png: one panel per joint and state (columns: joints), the pressures within
-  // 1.5 α_c + 2 areas of the contact direction, one colour per load, one dash per model.
+  // 1.5 α_c + 2 areas of the contact direction, one colour per load, fe solid and the
+  // other models dashed and dotted in turn.
   void
   write_contact_pressures(const std::string &dir, const PressureDistributions &d)
   {
@@ -372,8 +372,8 @@ namespace wearlink::workflows
     const int columns = static_cast<int>(joints.size()), rows = static_cast<int>(panels.size()) / columns;
     io::plot_panels_png(panels,
                         static_cast<unsigned int>(columns),
-                        "Contact pressure on the bore per discrete area at four loads: fe solid, hertz-strip "
-                        "dashed, winkler dotted; one colour per load",
+                        "Contact pressure on the bore per discrete area at four loads: fe solid, the other "
+                        "models dashed and dotted in turn (see the key); one colour per load",
                         dir + "/" + io::outputs::pressure_plot,
                         1000 * columns,
                         600 * rows);

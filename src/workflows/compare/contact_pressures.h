@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The pressure distributions of `wearlink compare-contact` (workflows/compare/contact_comparison.h):
 // per clearance joint, four loads spanning the force range of the scene's dynamics, each
-// pushing the pin into the bore in one direction, through every pressure model that gives
-// a distribution (contact/pressure_model.h): hertz-strip, winkler (if the scene gives
-// winkler/Layer thickness) and fe (the joint's `fe` subsection), on the fresh profiles
-// and, if given, on a wear run's worn ones. The pressure is the one the wear loop sees:
-// one value per discrete area of the bore (bushing frame).
+// pushing the pin into the bore in one direction, through every registered pressure
+// model (contact/pressure_model.h) whose parameters the scene gives for the joint
+// (io/configured_pressure_models.h: hertz-strip, winkler if the scene gives its Layer
+// thickness, fe from the joint's `fe` subsection, as shipped), on the fresh profiles and,
+// if given, on a wear run's worn ones; fe is the reference of the ratios. The pressure is
+// the one the wear loop sees: one value per discrete area of the bore (bushing frame).
 //
 // Per curve two numbers:
 //   p_max  the largest area pressure [Pa] (an area average: below the continuous peak
@@ -32,10 +33,9 @@ namespace wearlink::workflows
     std::string            name;
     contact::JointGeometry fresh, worn;
     bool                   has_worn      = false;
-    bool                   winkler       = false; ///< the scene gives winkler/Layer thickness
-    double                 direction     = 0;     ///< bushing-frame ψ0 of the contact [rad]
-    double                 pin_direction = 0;     ///< pin-frame angle facing the contact [rad]
-    std::vector<double>    loads;                 ///< [N]
+    double                 direction     = 0; ///< bushing-frame ψ0 of the contact [rad]
+    double                 pin_direction = 0; ///< pin-frame angle facing the contact [rad]
+    std::vector<double>    loads;             ///< [N]
   };
 
   /** One column of pressure.csv. */

@@ -3,6 +3,7 @@
 
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
+#include "io/configured_pressure_models.h"
 #include "io/output_names.h"
 #include "io/plot.h"
 #include "io/scene_periods.h"
@@ -42,11 +43,15 @@ namespace wearlink::workflows
   } // namespace
 
   PressureComparison
-  compare_pressure_models(io::Scene &scene, const std::vector<std::string> &models, double cycles)
+  compare_pressure_models(io::Scene &scene, const std::vector<std::string> &requested, double cycles)
   {
     if (scene.wear.empty())
       throw InputError("compare-pressure: no clearance joint of " + scene.file +
                        " has a Wear law; set 'Wear law = archard' (and its k_D) on the joints to compare.");
+    std::vector<std::string> wearing;
+    for (const auto &w : scene.wear)
+      wearing.push_back(w->joint);
+    const auto models = requested.empty() ? io::configured_pressure_models(scene, wearing) : requested;
     for (const auto &m : models)
       if (!contact::pressure_models().has(m))
         throw InputError("compare-pressure: unknown pressure model '" + m + "'; the valid names are " +

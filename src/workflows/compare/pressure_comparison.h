@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // "Validating simplified contact" (doc/architecture.md §1, use 2): one load history of every
 // wearing clearance joint, recorded once from the multibody dynamics of the scene, is
-// fed through several pressure models (default: hertz-strip, winkler, fe), each with
-// the joint's own parameters from the scene, into Archard's law on both surfaces.
+// fed through several pressure models (default: every registered one whose parameters
+// the scene gives for those joints, io/configured_pressure_models.h), each with the
+// joint's own parameters from the scene, into Archard's law on both surfaces.
 // Same loads, same k_D: the differences are the pressure models' alone. Reported per
 // joint and model: worn volume of each surface, largest depth and where it is, the
 // relative L2 difference of the depth profiles against the reference model (the last
-// one listed, fe by default), and the wall time. Mukras et al. (2010) found similar
+// one listed: fe by default, which the FE layer registers last), and the wall time. Mukras et al. (2010) found similar
 // volumes but different profiles for foundation and FE pressure.
 #pragma once
 
@@ -41,7 +42,8 @@ namespace wearlink::workflows
 
   /**
    * Record @p cycles cycles of the scene's dynamics from its assembly and evaluate
-   * @p models on that history. The scene needs at least one joint with a wear law.
+   * @p models (empty: the default of the file comment) on that history. The scene needs
+   * at least one joint with a wear law.
    */
   PressureComparison
   compare_pressure_models(io::Scene &scene, const std::vector<std::string> &models, double cycles);

@@ -4,6 +4,7 @@
 #include "base/exceptions.h"
 #include "base/parameters.h"
 #include "base/text.h"
+#include "io/configured_pressure_models.h"
 #include "io/scene.h"
 #include "workflows/study/accuracy_detail.h"
 #include "workflows/study/accuracy_study.h"
@@ -366,8 +367,11 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
     pressure_model_knob(const KnobContext &c)
     {
       const auto &wearing = c.wearing;
+      // Every registered model the scene gives the parameters of; the last, fe (the FE
+      // layer registers last), is the reference.
+      const auto models = io::configured_pressure_models(c.scene, wearing);
       if (!c.fe.empty() || c.scene.wear_loop.evaluation != wear::PressureEvaluation::every_step)
-        return make_knob("pressure-model", paths(wearing, "Pressure model"), {"hertz-strip", "winkler", "fe"}, "fe");
+        return make_knob("pressure-model", paths(wearing, "Pressure model"), models, models.back());
       Knob k;
       k.name        = "pressure-model";
       k.description = description_of(k.name);
@@ -376,9 +380,10 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
                        {"Wear/Load samples per cycle"},
                        paths(wearing, "fe/Remesh depth"),
                        paths(wearing, "fe/Surface element size")};
-      for (const char *model : {"hertz-strip", "winkler", "fe"})
+      for (const auto &model : models)
         k.values.push_back({model, "samples per cycle", "50", "2", "2e-4"});
-      k.reference = "fe at 0.2 mm elements re-meshing beyond 2 elements; all three on 50 load samples per cycle";
+      k.reference = models.back() + " at 0.2 mm elements re-meshing beyond 2 elements; every model on 50 load samples "
+                                    "per cycle";
       return k;
     }
 

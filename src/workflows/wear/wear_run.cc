@@ -556,7 +556,7 @@ namespace wearlink::workflows
     write_profile_frames(const std::vector<wear::WearingJoint> &wearing,
                          const wear::WearLoop                  &loop,
                          const std::string                     &dir,
-                         const double                           cycles_per_iteration)
+                         const wear::WearLoopSettings          &ws)
     {
       for (std::size_t i = 0; i < wearing.size(); ++i)
         {
@@ -564,7 +564,12 @@ namespace wearlink::workflows
           const auto              &peak = loop.peak_loads()[i];
           if (peak.normal_force > 0)
             wearing[i].wear->model->evaluate(peak, p);
-          io::write_profile_frame(dir, loop.state(), static_cast<unsigned int>(i), p, cycles_per_iteration);
+          io::write_profile_frame(dir,
+                                  loop.state(),
+                                  static_cast<unsigned int>(i),
+                                  p,
+                                  ws.cycles_per_iteration,
+                                  ws.every_iteration_output);
         }
     }
 
@@ -572,21 +577,23 @@ namespace wearlink::workflows
      * The FE files of an iteration (Wear/FE output): the mesh of every joint on the fe
      * pressure model when it changed since @p copied (its last copied mesh, per joint),
      * the fields at the iteration's peak load, and their collection fe/fields_<J>.pvd
-     * (time: revolutions).
+     * (time: revolutions). Unless Wear/Output every iteration, the older meshes and
+     * fields of the joint are removed, also those of a resumed run's earlier processes.
      */
     void
     write_fe_files(const std::vector<wear::WearingJoint> &wearing,
                    const wear::WearLoop                  &loop,
                    const std::string                     &dir,
-                   const double                           cycles_per_iteration,
+                   const wear::WearLoopSettings          &ws,
                    std::vector<std::string>              &copied)
     {
-      const unsigned int k = loop.state().iterations_done;
+      const double       cycles_per_iteration = ws.cycles_per_iteration;
+      const unsigned int k                    = loop.state().iterations_done;
       copied.resize(wearing.size());
       for (std::size_t i = 0; i < wearing.size(); ++i)
         {
-          auto             &model = *wearing[i].wear->model;
-          const std::string mesh  = model.mesh_file();
+          auto *const       hooks = wearing[i].wear->model->fe_hooks();
+          const std::string mesh  = hooks ? hooks->mesh_file() : std::string();
           if (mesh.empty())
             continue;
           const std::string name = wearing[i].joint->name();
@@ -595,8 +602,13 @@ namespace wearlink::workflows
             {
               copy_file_atomically(mesh, dir + "/fe/mesh_" + name + "_" + std::to_string(k) + ".msh");
               copied[i] = mesh;
+              if (!ws.every_iteration_output)
+                io::remove_series_files(dir + "/fe", "mesh_" + name + "_", ".msh", {k});
             }
-          model.write_fields(loop.peak_loads()[i], dir + "/fe/fields_" + name + "_iteration" + std::to_string(k));
+          const std::string fields = dir + "/fe/fields_" + name + "_iteration";
+          if (hooks->write_fields(loop.peak_loads()[i], fields + std::to_string(k)) && !ws.every_iteration_output)
+            for (const char *suffix : {".vtu", "_pressure.csv"})
+              io::remove_series_files(dir + "/fe", "fields_" + name + "_iteration", suffix, {k});
           std::vector<double>      times;
           std::vector<std::string> files;
           double                   revolutions = 0;
@@ -691,9 +703,9 @@ namespace wearlink::workflows
         if (first && m->options.final_outputs)
           io::write_response_csv(m->dir + "/" + io::outputs::response_before, m->before);
         io::write_wear_history(m->dir + "/" + io::outputs::wear_history, m->scene, loop.state());
-        write_profile_frames(m->setup.wearing, loop, m->dir, ws.cycles_per_iteration);
+        write_profile_frames(m->setup.wearing, loop, m->dir, ws);
         if (ws.fe_output)
-          write_fe_files(m->setup.wearing, loop, m->dir, ws.cycles_per_iteration, m->fe_meshes_copied);
+          write_fe_files(m->setup.wearing, loop, m->dir, ws, m->fe_meshes_copied);
       }
     if (m->options.progress)
       print_progress(loop, ws.n_iterations, iteration.seconds(), m->options.progress_prefix);

@@ -13,6 +13,7 @@
 #include "base/parameters.h"
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
+#include "plugin_support.h"
 #include "steel_pair.h"
 
 #include <gtest/gtest.h>
@@ -29,25 +30,13 @@ namespace
   std::unique_ptr<Interface>
   make(const Registry<Interface> &registry, const std::string &name, double restitution = 0.9)
   {
-    dealii::ParameterHandler prm;
-    registry.declare_all(prm);
-    prm.enter_subsection(name);
-    for (const auto &[entry, value] :
-         std::vector<std::pair<std::string, std::string>>{{"Restitution coefficient", std::to_string(restitution)},
-                                                          {"Friction coefficient", "0.2"},
-                                                          // laws built from an FE model: a coarse one, no disk cache
-                                                          {"Surface element size", "2e-4"},
-                                                          {"Table cache", "false"}})
-      try
-        {
-          prm.set(entry, value);
-        }
-      catch (const dealii::ExceptionBase &)
-        {
-        }
-    prm.leave_subsection();
-    ParameterReader reader(prm, "test");
-    return registry.create(name, reader, "law");
+    return contact::testing::make_plugin(registry,
+                                         name,
+                                         {{"Restitution coefficient", std::to_string(restitution)},
+                                          {"Friction coefficient", "0.2"},
+                                          // laws built from an FE model: a coarse one, no disk cache
+                                          {"Surface element size", "2e-4"},
+                                          {"Table cache", "false"}});
   }
 
   class NormalLawContract : public ::testing::TestWithParam<std::string>
@@ -113,19 +102,11 @@ TEST_P(FrictionLawContract, OpposesSlidingWithinCoulombBound)
 INSTANTIATE_TEST_SUITE_P(AllRegistered,
                          NormalLawContract,
                          ::testing::ValuesIn(normal_force_laws().names()),
-                         [](const auto &info) {
-                           std::string n = info.param;
-                           std::replace(n.begin(), n.end(), '-', '_');
-                           return n;
-                         });
+                         contact::testing::plugin_test_name);
 INSTANTIATE_TEST_SUITE_P(AllRegistered,
                          FrictionLawContract,
                          ::testing::ValuesIn(friction_laws().names()),
-                         [](const auto &info) {
-                           std::string n = info.param;
-                           std::replace(n.begin(), n.end(), '-', '_');
-                           return n;
-                         });
+                         contact::testing::plugin_test_name);
 
 namespace
 {

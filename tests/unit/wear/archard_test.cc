@@ -7,13 +7,16 @@
 // half-width b ≈ 0.09 mm, narrower than one 1° area). The relative sliding speed is
 // v = ω R2, so the sliding distance is s = ω R2 T.
 // Expected:
-//  - both volumes Σ_k h_k A_k equal k_D F s: the strip's area averages are integrated
-//    in closed form, so Σ_k p_k A_k = F at every sample (tolerance 1e-6 relative as
-//    required; the actual error is rounding, ~1e-13);
+//  - both volumes Σ_k h_k A_k equal k_D F s ε/(2 J1(ε)): the strip's area forces are
+//    integrated in closed form and the strip carries F as its resultant along the
+//    contact direction, so Σ_k p_k A_k = F ε/(2 J1(ε)) at every sample, ε = b/R the
+//    strip's half-angle on that surface (1 + 7e-6 here; J1 from std::cyl_bessel_j, an
+//    independent reference; tolerance 1e-6 relative as required, the actual error is
+//    the Gauss rule's and rounding, ~1e-13);
 //  - the pin wears uniformly around its circumference: every pin area passes through
-//    the fixed contact the same way, h = k_D F s/(2π R2 L) on every area (the samples
-//    are periodic with 8 per area, so each area sees the same strip positions; 1e-9
-//    relative leaves room for rounding only);
+//    the fixed contact the same way, h = k_D F s ε/(2 J1(ε))/(2π R2 L) on every area
+//    (the samples are periodic with 8 per area, so each area sees the same strip
+//    positions; 1e-9 relative leaves room for rounding only);
 //  - the bushing wear is localized: non-zero only within b/R1 + one area of φ*, with
 //    its maximum on the area facing the load.
 #include "base/numbers.h"
@@ -60,12 +63,22 @@ TEST(Archard, ConstantLoadOnRotatingPin)
       s.weight             = dt; // periodic trapezoid = uniform weights
       acc.add(s);
     }
-  const double distance = omega * r2 * n_steps * dt;
+  const double distance  = omega * r2 * n_steps * dt;
+  const double line_load = force / g.axial_length;
+  const double e_star    = 1 / (2 * (1 - 0.09) / 207e9);
+  const double r_star    = 0.012 * 0.0115 / 0.0005;
+  const double b         = std::sqrt(4 * line_load * r_star / (pi * e_star));
+  // Σ p A over F of a Hertz strip of half-angle ε carrying F as its resultant.
+  const auto sum_over_resultant = [](const double epsilon) {
+    return epsilon / (2 * std::cyl_bessel_j(1.0, epsilon));
+  };
+  const double pin_volume  = k_pin * force * distance * sum_over_resultant(b / r2);
+  const double bore_volume = k_bore * force * distance * sum_over_resultant(b / 0.012);
   EXPECT_NEAR(acc.sliding_distance, distance, 1e-12 * distance);
-  EXPECT_NEAR(acc.pin_volume, k_pin * force * distance, 1e-6 * k_pin * force * distance);
-  EXPECT_NEAR(acc.bore_volume, k_bore * force * distance, 1e-6 * k_bore * force * distance);
+  EXPECT_NEAR(acc.pin_volume, pin_volume, 1e-6 * pin_volume);
+  EXPECT_NEAR(acc.bore_volume, bore_volume, 1e-6 * bore_volume);
 
-  const double uniform = k_pin * force * distance / (2 * pi * r2 * g.axial_length);
+  const double uniform = pin_volume / (2 * pi * r2 * g.axial_length);
   for (unsigned int k = 0; k < n_areas; ++k)
     ASSERT_NEAR(acc.pin_depth()[k], uniform, 1e-9 * uniform) << "pin area " << k;
 
@@ -73,11 +86,7 @@ TEST(Archard, ConstantLoadOnRotatingPin)
   const auto &h    = acc.bore_depth();
   const auto  peak = std::max_element(h.begin(), h.end()) - h.begin();
   EXPECT_EQ(peak, 270);
-  const double line_load = force / g.axial_length;
-  const double e_star    = 1 / (2 * (1 - 0.09) / 207e9);
-  const double r_star    = 0.012 * 0.0115 / 0.0005;
-  const double b         = std::sqrt(4 * line_load * r_star / (pi * e_star));
-  unsigned int loaded    = 0;
+  unsigned int loaded = 0;
   for (unsigned int k = 0; k < n_areas; ++k)
     {
       const double distance_deg = std::abs(static_cast<double>(k) - 270.0);
@@ -148,10 +157,12 @@ TEST(Archard, NoLoadOrNoSlidingNoWear)
 // "N load samples per cycle": the model is called once per window and the window's
 // steps reuse that shape, scaled to their load and turned to their contact direction.
 // The turn (linear interpolation on the periodic grid) and the scaling conserve Σ p A,
-// so for a force-conserving model the volumes equal the every-step ones (rounding:
-// 1e-9), while the number of model calls drops to one per window. The load here varies
-// in magnitude (F = 100 (1.5 + sin ωt) N) and the pin turns, so both the scaling and
-// the shift are exercised.
+// while the number of model calls drops to one per window. The load here varies in
+// magnitude (F = 100 (1.5 + sin ωt) N) and the pin turns, so both the scaling and the
+// shift are exercised. The volumes equal the every-step ones up to the strip's
+// Σ p A / F = ε/(2 J1(ε)) = 1 + ε²/8 + …, which a reused shape takes from its window's
+// key rather than its own load (ε ∝ √F): at most ε_max²/8 = 7.3e-5 at the peak 250 N
+// (b = 0.28 mm, ε = b/R2 = 0.024); asserted to 1e-4.
 TEST(Archard, SampledShapesKeepTheVolume)
 {
   const auto g     = steel_joint(360);
@@ -174,8 +185,8 @@ TEST(Archard, SampledShapesKeepTheVolume)
   every.add_history(history, true, 0, 0);
   sampled.add_history(history, false, period / 20, 0);
   EXPECT_EQ(sampled.pressure_evaluations, 20);
-  EXPECT_NEAR(sampled.pin_volume, every.pin_volume, 1e-9 * every.pin_volume);
-  EXPECT_NEAR(sampled.bore_volume, every.bore_volume, 1e-9 * every.bore_volume);
+  EXPECT_NEAR(sampled.pin_volume, every.pin_volume, 1e-4 * every.pin_volume);
+  EXPECT_NEAR(sampled.bore_volume, every.bore_volume, 1e-4 * every.bore_volume);
   // The shapes differ only by the strip width (∝ √F) within a window: the bore's peak
   // depth, where the strip dwells, agrees within 10 %.
   const double peak_every   = *std::max_element(every.bore_depth().begin(), every.bore_depth().end());
