@@ -249,8 +249,8 @@ namespace wearlink::contact
        */
       bool   conformal = false;
       double elastic = 0, damped = 0, pin_torque = 0, bushing_torque = 0, damping_power = 0;
-      double    stiffness     = 0;                ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
-      double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
+      double stiffness     = 0;                ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
+      double bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
     };
     NormalContactInput
     normal_input(const Contact &c) const;

@@ -122,8 +122,7 @@ namespace wearlink::contact
                           const double length)
   {
     const double m = exponent - 0.5;
-    return Foundation::power_law(stiffness /
-                                   (length * radius * std::sqrt(2 / clearance) * narrow_contact_integral(m)),
+    return Foundation::power_law(stiffness / (length * radius * std::sqrt(2 / clearance) * narrow_contact_integral(m)),
                                  m);
   }
 
@@ -155,9 +154,9 @@ namespace wearlink::contact
     for (unsigned int j = 0; j < n_nodes; ++j)
       {
         const unsigned int lo = j == 0 ? 0 : j - 1, hi = j + 1 == n_nodes ? j : j + 1;
-        const double       n  = (ln_f[hi] - ln_f[lo]) / (f.ln_d[hi] - f.ln_d[lo]); // local exponent
-        const double       m  = std::max(n - 0.5, 0.01);
-        f.ln_p[j] = ln_f[j] - std::log(scale * narrow_contact_integral(m)) - 0.5 * f.ln_d[j];
+        const double       n = (ln_f[hi] - ln_f[lo]) / (f.ln_d[hi] - f.ln_d[lo]); // local exponent
+        const double       m = std::max(n - 0.5, 0.01);
+        f.ln_p[j]            = ln_f[j] - std::log(scale * narrow_contact_integral(m)) - 0.5 * f.ln_d[j];
       }
     f.slope.resize(n_nodes);
     for (unsigned int j = 0; j + 1 < n_nodes; ++j)
@@ -261,12 +260,12 @@ namespace wearlink::contact
     if (last - first >= n)
       last = first + n;
     // The pin sample below edge `first`, and the fraction to the next; advanced per edge.
-    const double step = cell / pin_spacing;
-    const double x    = (first * cell - relative_angle) / pin_spacing;
-    double       fl   = std::floor(x);
-    double       frac = x - fl;
-    long         j    = static_cast<long>(fl - np * std::floor(fl / np));
-    long         i    = ((first % n) + n) % n;
+    const double step       = cell / pin_spacing;
+    const double x          = (first * cell - relative_angle) / pin_spacing;
+    double       fl         = std::floor(x);
+    double       frac       = x - fl;
+    long         j          = static_cast<long>(fl - np * std::floor(fl / np));
+    long         i          = ((first % n) + n) % n;
     const auto   overlap_at = [&](const long edge, const long sample, const double fraction, double &rise) {
       const long next = sample + 1 == np ? 0 : sample + 1;
       rise            = r2[next] - r2[sample];
@@ -294,8 +293,8 @@ namespace wearlink::contact
     for (long k = first; k < last; k += s)
       {
         // The area's far edge first, to bound the area.
-        long         i_far = i, j_far = j;
-        double       f_far = frac, rise_far = 0;
+        long   i_far = i, j_far = j;
+        double f_far = frac, rise_far = 0;
         forward(i_far, j_far, f_far, s);
         const double d_far = overlap_at(i_far, j_far, f_far, rise_far);
         if (s > 1 && std::max(d, d_far) + bulge > 0)
@@ -382,25 +381,27 @@ namespace wearlink::contact
     double   energy = 0;
     EdgeSums sums;
     // (inlined into the scan: it runs for every edge near the contact)
-    out.overlap = scan(e, relative_angle, [&](const double d, const long i, const double rise, const bool adjacent)
-                                            __attribute__((always_inline)) {
-      double g = 0; // this edge's weight from the cell before it
-      if (adjacent && (d > 0 || d_prev > 0))
-        {
-          const Cell c = cell_integrals(foundation, d_prev, d);
-          g_prev += weight * c.left;
-          g = weight * c.right;
-          energy += weight * c.energy;
-        }
-      if (g_prev > 0) // the previous edge is complete
-        sums.add(g_prev, ux[i_prev], uy[i_prev], rise_prev * inv_spacing, e, motion);
-      if (d > d_best)
-        d_best = d, i_best = i;
-      d_prev    = d;
-      i_prev    = i;
-      rise_prev = rise;
-      g_prev    = g;
-    });
+    out.overlap = scan(
+      e,
+      relative_angle,
+      [&](const double d, const long i, const double rise, const bool adjacent) __attribute__((always_inline)) {
+        double g = 0; // this edge's weight from the cell before it
+        if (adjacent && (d > 0 || d_prev > 0))
+          {
+            const Cell c = cell_integrals(foundation, d_prev, d);
+            g_prev += weight * c.left;
+            g = weight * c.right;
+            energy += weight * c.energy;
+          }
+        if (g_prev > 0) // the previous edge is complete
+          sums.add(g_prev, ux[i_prev], uy[i_prev], rise_prev * inv_spacing, e, motion);
+        if (d > d_best)
+          d_best = d, i_best = i;
+        d_prev    = d;
+        i_prev    = i;
+        rise_prev = rise;
+        g_prev    = g;
+      });
     if (g_prev > 0)
       sums.add(g_prev, ux[i_prev], uy[i_prev], rise_prev * inv_spacing, e, motion);
     out.deepest        = i_best >= 0 ? i_best * cell : std::atan2(e.y(), e.x());

@@ -55,18 +55,18 @@ namespace wearlink::contact
    */
   struct ConformalMotion
   {
-    mbs::Vec2 velocity{0, 0};        ///< d/dt of the pin centre seen from the bushing, bushing frame [m/s]
-    double    relative_rate   = 0;   ///< θ̇_pin − θ̇_bushing [rad/s]
-    double    factor          = 0;   ///< χ of the hysteresis [-]; 0: none
-    double    impact_velocity = 0;   ///< δ̇⁻ of the contact [m/s]
-    double    min_velocity    = 0;   ///< v_min of the guard [m/s]
+    mbs::Vec2 velocity{0, 0};      ///< d/dt of the pin centre seen from the bushing, bushing frame [m/s]
+    double    relative_rate   = 0; ///< θ̇_pin − θ̇_bushing [rad/s]
+    double    factor          = 0; ///< χ of the hysteresis [-]; 0: none
+    double    impact_velocity = 0; ///< δ̇⁻ of the contact [m/s]
+    double    min_velocity    = 0; ///< v_min of the guard [m/s]
   };
 
   /** The contact of a worn pair at one pose. */
   struct ConformalForce
   {
-    mbs::Vec2 force{0, 0};  ///< elastic force of the bushing on the pin, bushing frame [N]
-    mbs::Vec2 damped{0, 0}; ///< with the hysteresis (= force without a motion), bushing frame [N]
+    mbs::Vec2 force{0, 0};        ///< elastic force of the bushing on the pin, bushing frame [N]
+    mbs::Vec2 damped{0, 0};       ///< with the hysteresis (= force without a motion), bushing frame [N]
     double    pin_torque     = 0; ///< generalized force on θ_pin of the damped pressure, centres held [N m]
     double    bushing_torque = 0; ///< on θ_bushing [N m]
     double    damping_power  = 0; ///< power the hysteresis dissipates [W]
@@ -204,10 +204,10 @@ namespace wearlink::contact
     double
     scan(const mbs::Vec2 &e, double relative_angle, Visit &&visit) const;
 
-    std::vector<double> r1, ux, uy; ///< per edge: bore radius, direction (bushing frame)
-    std::vector<double> r2;         ///< pin samples [m]
-    unsigned int        cells = 1;  ///< cells per bore area (S)
-    double              cell  = 0;  ///< cell width [rad]
+    std::vector<double> r1, ux, uy;      ///< per edge: bore radius, direction (bushing frame)
+    std::vector<double> r2;              ///< pin samples [m]
+    unsigned int        cells       = 1; ///< cells per bore area (S)
+    double              cell        = 0; ///< cell width [rad]
     double              pin_spacing = 0, weight = 0, min_clearance = 0;
     /**
      * How far R2* rises above its chord across a bore area at most: its concave kinks

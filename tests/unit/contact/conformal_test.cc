@@ -52,7 +52,7 @@ namespace
     for (unsigned int k = 0; k < n; ++k)
       {
         const double psi = two_pi * k / n;
-        r[k] = R1 - c - 6e-6 * std::exp(-std::pow((psi - 1.0) / 0.4, 2)) + 0.3e-6 * std::cos(7 * psi);
+        r[k]             = R1 - c - 6e-6 * std::exp(-std::pow((psi - 1.0) / 0.4, 2)) + 0.3e-6 * std::cos(7 * psi);
       }
     return Profile::from_samples(r);
   }
@@ -71,12 +71,12 @@ namespace
                   const unsigned    n = 200000)
   {
     ConformalForce out;
-    const double   h = two_pi / n;
+    const double   h  = two_pi / n;
     double         fx = 0, fy = 0, v = 0;
     for (unsigned k = 0; k < n; ++k)
       {
         const double psi = (k + 0.5) * h;
-        const double d   = pin.radius(psi - relative) + e.x() * std::cos(psi) + e.y() * std::sin(psi) - bore.radius(psi);
+        const double d = pin.radius(psi - relative) + e.x() * std::cos(psi) + e.y() * std::sin(psi) - bore.radius(psi);
         if (d <= 0)
           continue;
         fx -= L * R1 * h * f.pressure(d) * std::cos(psi);
@@ -117,7 +117,8 @@ TEST(Conformal, RoundPairCarriesThePointLawInTheNarrowLimit)
             EXPECT_NEAR(cf.force.norm() / (K * std::pow(delta, n)), 1.0, 5e-3 + delta / c)
               << "n = " << n << ", δ = " << delta << ", φ = " << phi;
             EXPECT_NEAR(cf.overlap, delta, 1e-3 * delta + 2e-9); // the largest edge overlap: ρ (1 − cos(cell/2)) below
-            EXPECT_NEAR(std::atan2(-cf.force.y(), -cf.force.x()), phi, 1e-5) << "the force is along e (to the cells' µrad)";
+            EXPECT_NEAR(std::atan2(-cf.force.y(), -cf.force.x()), phi, 1e-5)
+              << "the force is along e (to the cells' µrad)";
           }
     }
 }
@@ -140,8 +141,8 @@ TEST(Conformal, FoundationOfACurveMatchesThePowerLaw)
 // against overlaps of 0.3–2 µm over arcs of tens of cells.
 TEST(Conformal, WornPairMatchesTheContinuousOverlap)
 {
-  const Profile     bore = imprinted_bore(30e-6), pin = worn_pin();
-  const Foundation  f    = foundation_of_power_law(K, 1.5, c, R1, L);
+  const Profile           bore = imprinted_bore(30e-6), pin = worn_pin();
+  const Foundation        f = foundation_of_power_law(K, 1.5, c, R1, L);
   const OverlapFoundation field(bore, pin, L, R1, f, 4);
   for (const double lateral : {0.0, 4e-6, -9e-6})
     for (const double approach : {0.3e-6, 2e-6})
@@ -169,7 +170,7 @@ TEST(Conformal, FieldIsTheGradientOfItsEnergy)
   const OverlapFoundation field(bore, pin, L, R1, foundation_of_power_law(K, 1.5, c, R1, L), 4);
   const mbs::Vec2         e_global(3e-6, -(c + 25e-6 + 1.5e-6));
   const double            theta_b = 0.02, theta_p = 1.3;
-  const auto energy = [&](const mbs::Vec2 &eg, const double tb, const double tp) {
+  const auto              energy = [&](const mbs::Vec2 &eg, const double tb, const double tp) {
     ConformalForce cf;
     const double   co = std::cos(tb), si = std::sin(tb);
     field.evaluate(mbs::Vec2(co * eg.x() + si * eg.y(), -si * eg.x() + co * eg.y()), tp - tb, nullptr, true, cf);
@@ -184,10 +185,14 @@ TEST(Conformal, FieldIsTheGradientOfItsEnergy)
                  cf);
   const mbs::Vec2 force(co * cf.force.x() - si * cf.force.y(), si * cf.force.x() + co * cf.force.y());
   const double    h = 1e-9, ha = 1e-7, scale = cf.force.norm();
-  const double    dvx = (energy(e_global + mbs::Vec2(h, 0), theta_b, theta_p) - energy(e_global - mbs::Vec2(h, 0), theta_b, theta_p)) / (2 * h);
-  const double    dvy = (energy(e_global + mbs::Vec2(0, h), theta_b, theta_p) - energy(e_global - mbs::Vec2(0, h), theta_b, theta_p)) / (2 * h);
-  const double    dvp = (energy(e_global, theta_b, theta_p + ha) - energy(e_global, theta_b, theta_p - ha)) / (2 * ha);
-  const double    dvb = (energy(e_global, theta_b + ha, theta_p) - energy(e_global, theta_b - ha, theta_p)) / (2 * ha);
+  const double    dvx =
+    (energy(e_global + mbs::Vec2(h, 0), theta_b, theta_p) - energy(e_global - mbs::Vec2(h, 0), theta_b, theta_p)) /
+    (2 * h);
+  const double dvy =
+    (energy(e_global + mbs::Vec2(0, h), theta_b, theta_p) - energy(e_global - mbs::Vec2(0, h), theta_b, theta_p)) /
+    (2 * h);
+  const double dvp = (energy(e_global, theta_b, theta_p + ha) - energy(e_global, theta_b, theta_p - ha)) / (2 * ha);
+  const double dvb = (energy(e_global, theta_b + ha, theta_p) - energy(e_global, theta_b - ha, theta_p)) / (2 * ha);
   EXPECT_NEAR(force.x(), -dvx, 1e-6 * scale);
   EXPECT_NEAR(force.y(), -dvy, 1e-6 * scale);
   EXPECT_NEAR(cf.pin_torque, -dvp, 1e-6 * scale * R1);
@@ -210,9 +215,10 @@ TEST(Conformal, OverlapIsPositiveExactlyWhereTheForceIs)
         EXPECT_EQ(cf.overlap, field.overlap(e, 0.8));
         EXPECT_EQ(cf.overlap > 0, cf.force.norm() > 0) << "ρ = " << rho << ", angle " << angle;
         if (cf.overlap > 0) // F ≤ the force of the whole overlap arc at its largest overlap: continuous onset
-        {
-          EXPECT_LT(cf.force.norm(), 2 * L * R1 * pi * foundation_of_power_law(K, 1.5, c, R1, L).pressure(cf.overlap));
-        }
+          {
+            EXPECT_LT(cf.force.norm(),
+                      2 * L * R1 * pi * foundation_of_power_law(K, 1.5, c, R1, L).pressure(cf.overlap));
+          }
       }
 }
 
@@ -256,4 +262,3 @@ TEST(Conformal, HysteresisDampsEveryMotionIntoThePocket)
   for (const auto &r : {in, out, side})
     EXPECT_GT(r.damping_power, 0);
 }
-
