@@ -19,9 +19,8 @@
 // 'Table bore directions' × 'Table pin directions' (the contact direction in the
 // bushing frame, and in the pin frame, which the joint's relative rotation decouples).
 // It is rebuilt in update_geometry() (construction and every profile update) and
-// cached on disk by geometry (the profiles' samples, materials, axial length, FE and
-// table settings): $WEARLINK_CACHE_DIR, else $XDG_CACHE_HOME/wearlink, else
-// ~/.cache/wearlink; a cached table that does not read back cleanly is rebuilt.
+// cached on disk by geometry (fe/table_cache.h); a cached table that does not read back
+// cleanly is rebuilt.
 #pragma once
 
 #include "contact/force_approach_table.h"
@@ -29,6 +28,7 @@
 #include "fe/fe_settings.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -86,6 +86,23 @@ namespace wearlink::fe
                 const std::vector<std::array<double, 2>> &directions,
                 double                                    tolerance,
                 TableBuild                               &build);
+
+  /**
+   * Fill the values of failed FE solves (NaN) in @p values: runs of levels.size() values
+   * (one run per table direction, levels fastest) of a quantity y against x = @p levels
+   * (increasing). A failed value is interpolated linearly in x between its nearest solved
+   * (finite) neighbours in its run, or continued by the line through the two nearest
+   * solved on one side; infinite values are neither filled nor used (the caller's
+   * markers). More than a quarter of a run failing, or fewer than two solved, is a
+   * NumericalError that names the run (@p run_name of its index), the levels (@p what)
+   * and the table's first failure.
+   */
+  void
+  fill_failed_levels(std::vector<double>                           &values,
+                     const std::vector<double>                     &levels,
+                     const std::function<std::string(std::size_t)> &run_name,
+                     const std::string                             &what,
+                     const std::string                             &first_failure);
 
   /** The table's load levels: n_levels forces spaced logarithmically from min_force to max_force [N]. */
   std::vector<double>
