@@ -34,6 +34,8 @@ namespace wearlink::contact
     , reference_radius(description.geometry.bore.mean_radius())
     , reference_clearance(description.geometry.bore.mean_radius() - description.geometry.pin.mean_radius())
   {
+    // The law builds what the form needs (NormalForceLaw::use_conformal()).
+    normal_law->use_conformal(description.clearance_form == ClearanceForm::conformal);
     normal_law->update_geometry(description.geometry);
     update_field();
   }
@@ -54,6 +56,7 @@ namespace wearlink::contact
   {
     description.clearance_form  = form;
     description.conformal_cells = conformal_cells;
+    normal_law->use_conformal(form == ClearanceForm::conformal); // rebuilds only if that changes what it needs
     update_field();
   }
 
@@ -80,9 +83,13 @@ namespace wearlink::contact
                              1e-12,
                              std::max(1e-6, reference_clearance),
                              161);
-    own_field = std::make_unique<OverlapFoundation>(
-      g.bore, g.pin, g.axial_length, reference_radius, f, description.conformal_cells);
-    field = own_field.get();
+    own_field = std::make_unique<OverlapFoundation>(g.bore,
+                                                    g.pin,
+                                                    g.axial_length,
+                                                    reference_radius,
+                                                    f,
+                                                    description.conformal_cells);
+    field     = own_field.get();
   }
 
   void
@@ -91,8 +98,9 @@ namespace wearlink::contact
     const int       bb = description.bushing_body, pb = description.pin_body;
     const mbs::Vec2 e_local = s.to_local(bb, e);
     // The motion of the pin centre seen from the bushing: d/dt(Aᵀ e) = Aᵀ ė − θ̇_b perp(Aᵀ e).
-    const mbs::Vec2 e_rate = s.point_velocity(pb, description.pin_point) - s.point_velocity(bb, description.bushing_point);
-    const auto      h      = normal_law->hysteresis();
+    const mbs::Vec2 e_rate =
+      s.point_velocity(pb, description.pin_point) - s.point_velocity(bb, description.bushing_point);
+    const auto      h = normal_law->hysteresis();
     ConformalMotion m;
     m.velocity        = s.to_local(bb, e_rate) - s.angular_velocity(bb) * mbs::perp(e_local);
     m.relative_rate   = s.angular_velocity(pb) - s.angular_velocity(bb);
@@ -133,16 +141,16 @@ namespace wearlink::contact
     else
       c.gap = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
                          gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
-    c.stiffness         = per_area ? wearlink::contact::contact_stiffness(c.gap.bore_radius,
+    c.stiffness   = per_area ? wearlink::contact::contact_stiffness(c.gap.bore_radius,
                                                                   c.gap.pin_radius,
                                                                   description.geometry.bushing,
                                                                   description.geometry.pin_material,
                                                                   description.effective_radius) :
-                                     contact_stiffness;
-    const auto &n       = c.gap.normal;
-    c.t                 = mbs::perp(n);
-    c.q_bore            = p_bore + c.gap.bore_radius * n;
-    c.q_pin             = p_pin + c.gap.pin_radius * n;
+                               contact_stiffness;
+    const auto &n = c.gap.normal;
+    c.t           = mbs::perp(n);
+    c.q_bore      = p_bore + c.gap.bore_radius * n;
+    c.q_pin       = p_pin + c.gap.pin_radius * n;
     // Material-point velocities at the contact points.
     const mbs::Vec2 v_bore = s.velocity(bb) + s.angular_velocity(bb) * mbs::perp(c.q_bore - s.position(bb));
     const mbs::Vec2 v_pin  = s.velocity(pb) + s.angular_velocity(pb) * mbs::perp(c.q_pin - s.position(pb));
@@ -344,9 +352,9 @@ namespace wearlink::contact
   {
     if (field != nullptr)
       {
-        const int      bb = description.bushing_body, pb = description.pin_body;
+        const int       bb = description.bushing_body, pb = description.pin_body;
         const mbs::Vec2 e = s.point(pb, description.pin_point) - s.point(bb, description.bushing_point);
-        ConformalForce cf;
+        ConformalForce  cf;
         field->evaluate(s.to_local(bb, e), s.angle(pb) - s.angle(bb), nullptr, true, cf);
         return cf.potential;
       }

@@ -21,6 +21,15 @@
 // It is rebuilt in update_geometry() (construction and every profile update) and
 // cached on disk by geometry (fe/table_cache.h); a cached table that does not read back
 // cleanly is rebuilt.
+//
+// Worn profiles in a joint of the conformal form (ClearanceForm::conformal, the default)
+// get the law's own conformal field instead: the FE resultant as a function of the pin's
+// displacement vector in the pocket, tabulated under displacement control
+// (fe/fe_conformal_table.h; the same three table knobs set its grid). The joint says
+// which form it uses (use_conformal()) before the law builds, so the law builds only
+// what the form needs: the conformal table, or this force–approach table for the
+// deepest-point and per-area forms (and for round pairs, which the joint never asks for
+// a field).
 #pragma once
 
 #include "contact/force_approach_table.h"
@@ -44,8 +53,8 @@ namespace wearlink::fe
     double       min_force           = 10;   ///< F_0 [N]
     double       max_force           = 1e5;  ///< F_{K−1} [N]
     unsigned int n_levels            = 16;
-    unsigned int n_bore_directions   = 8; ///< worn profiles only
-    unsigned int n_pin_directions    = 8; ///< worn profiles only
+    unsigned int n_bore_directions   = 72; ///< worn profiles only
+    unsigned int n_pin_directions    = 4;  ///< worn profiles only
     bool         cache               = true;
   };
 
@@ -138,12 +147,34 @@ namespace wearlink::fe
                     double                        pin_angle,
                     TableBuild                   &build);
 
+  class FeConformalTable;
+
   class FeNormalForceLaw : public contact::TabulatedNormalForceLaw
   {
   public:
     explicit FeNormalForceLaw(FeForceLawSettings settings);
+    ~FeNormalForceLaw() override;
 
-    /** The table's (TabulatedNormalForceLaw::report) and its builds: times, cache use, validity. */
+    /**
+     * Build what the joint's form needs for @p geometry (see the file comment): the
+     * conformal table for worn profiles under use_conformal(true), else the
+     * force–approach table.
+     */
+    void
+    update_geometry(const contact::JointGeometry &geometry) override;
+
+    /** The joint's form; rebuilds for the current geometry if that changes what is needed. */
+    void
+    use_conformal(bool conformal) override;
+
+    /** The conformal table in use (worn profiles, conformal form), or nullptr. */
+    const contact::ConformalField *
+    conformal_field() const override;
+
+    /**
+     * The table's (TabulatedNormalForceLaw::report, or the conformal table's) and its
+     * builds: times, cache use, validity.
+     */
     Json
     report() const override;
 
@@ -156,9 +187,21 @@ namespace wearlink::fe
     build_table(const contact::JointGeometry &geometry) override;
 
   private:
+    /** Count the build just made (last_build) in the totals. */
+    void
+    count_build();
+    /** The report of the conformal table. */
+    Json
+    conformal_report() const;
+
     const FeForceLawSettings settings;
     std::shared_ptr<PinBushingModel>
-                 model; ///< the joint's shared FE model, kept across profile updates ('Remesh depth')
+         model;             ///< the joint's shared FE model, kept across profile updates ('Remesh depth')
+    bool conformal = false; ///< the joint asks worn profiles for a conformal field
+    std::unique_ptr<contact::JointGeometry> geometry;        ///< the current one (after the first update_geometry())
+    std::unique_ptr<FeConformalTable>       conformal_table; ///< worn profiles under the conformal form
+    /** Evaluations, and those above and below the levels, of the conformal tables replaced so far. */
+    long         conformal_counts[3] = {0, 0, 0};
     TableBuild   last_build;
     double       total_build_seconds = 0;
     unsigned int n_builds = 0, n_cached = 0;
