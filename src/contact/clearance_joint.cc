@@ -36,6 +36,8 @@ namespace wearlink::contact
     , reference_radius(description.geometry.bore.mean_radius())
     , reference_clearance(description.geometry.bore.mean_radius() - description.geometry.pin.mean_radius())
   {
+    // The law builds what the form needs (NormalForceLaw::use_conformal()).
+    normal_law->use_conformal(description.clearance_form == ClearanceForm::conformal);
     normal_law->update_geometry(description.geometry);
     update_field();
   }
@@ -56,6 +58,7 @@ namespace wearlink::contact
   {
     description.clearance_form  = form;
     description.conformal_cells = conformal_cells;
+    normal_law->use_conformal(form == ClearanceForm::conformal); // rebuilds only if that changes what it needs
     update_field();
   }
 

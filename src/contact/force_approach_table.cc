@@ -2,7 +2,7 @@
 #include "contact/force_approach_table.h"
 
 #include "base/exceptions.h"
-#include "base/numbers.h"
+#include "contact/table_interpolation.h"
 
 #include <algorithm>
 #include <array>
@@ -13,73 +13,6 @@ namespace wearlink::contact
 {
   namespace
   {
-    using numbers::two_pi;
-
-    /** Grid neighbours i0, i1 and weight f of angle @p a on a periodic grid of @p n points. */
-    void
-    locate(const double a, const unsigned int n, unsigned int &i0, unsigned int &i1, double &f)
-    {
-      if (n == 1)
-        {
-          i0 = i1 = 0;
-          f       = 0;
-          return;
-        }
-      double s = a / two_pi;
-      s -= std::floor(s);
-      const double x = s * n;
-      i0             = std::min(static_cast<unsigned int>(x), n - 1);
-      f              = x - i0;
-      i1             = i0 + 1 == n ? 0 : i0 + 1;
-    }
-
-    /**
-     * Three-point end slope, kept within [d0/2, 3 d0] of the end secant d0 > 0: the
-     * interpolant stays monotone, and the power law that continues it beyond the end has
-     * a positive exponent (F → 0 as δ → 0).
-     */
-    double
-    end_slope(const double h0, const double h1, const double d0, const double d1)
-    {
-      const double m = ((2 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
-      return std::clamp(m, 0.5 * d0, 3 * d0);
-    }
-
-    /** Hermite slopes of one curve (x, y: K nodes, y increasing in x). */
-    void
-    hermite_slopes(const double *x, const double *y, const std::size_t K, double *m)
-    {
-      std::vector<double> h(K - 1), d(K - 1);
-      for (std::size_t k = 0; k + 1 < K; ++k)
-        {
-          h[k] = x[k + 1] - x[k];
-          d[k] = (y[k + 1] - y[k]) / h[k];
-        }
-      if (K == 2)
-        {
-          m[0] = m[1] = d[0];
-          return;
-        }
-      for (std::size_t k = 1; k + 1 < K; ++k)
-        {
-          const double w1 = 2 * h[k] + h[k - 1], w2 = h[k] + 2 * h[k - 1];
-          m[k] = (w1 + w2) / (w1 / d[k - 1] + w2 / d[k]);
-        }
-      m[0]     = end_slope(h[0], h[1], d[0], d[1]);
-      m[K - 1] = end_slope(h[K - 2], h[K - 3], d[K - 2], d[K - 3]);
-    }
-
-    /** y and dy/dx of the Hermite cubic between nodes 0 and 1 of (x, y, m) at @p t ∈ [0, 1]. */
-    void
-    hermite(const double *x, const double *y, const double *m, const double t, double &yt, double &dy)
-    {
-      const double h  = x[1] - x[0];
-      const double t2 = t * t, t3 = t2 * t;
-      yt =
-        (2 * t3 - 3 * t2 + 1) * y[0] + (t3 - 2 * t2 + t) * h * m[0] + (-2 * t3 + 3 * t2) * y[1] + (t3 - t2) * h * m[1];
-      dy = ((6 * t2 - 6 * t) * (y[0] - y[1])) / h + (3 * t2 - 4 * t + 1) * m[0] + (3 * t2 - 2 * t) * m[1];
-    }
-
     /** ∫ F ds over [x_a, x_b] within the interval starting at @p x (s = e^x), 8-point Gauss–Legendre. */
     double
     interval_integral(const double *x, const double *y, const double *m, const double xa, const double xb)
@@ -139,7 +72,7 @@ namespace wearlink::contact
             xd[k] = std::log(delta[d * K + k]);
             yd[k] = std::log(levels[k]);
           }
-        hermite_slopes(xd, yd, K, md);
+        hermite_slopes(xd, yd, K, HermiteEnds::increasing, md);
         // V(δ_0) of the power law F_0 (δ/δ_0)^m below, then interval by interval.
         vd[0] = levels[0] * delta[d * K] / (md[0] + 1);
         for (std::size_t k = 1; k < K; ++k)
@@ -155,18 +88,7 @@ namespace wearlink::contact
     const double      xq = std::log(approach);
     DirectionValue    out;
     double            yq, dy;
-    if (xq < xd[0] || xq > xd[K - 1])
-      {
-        const std::size_t e = xq < xd[0] ? 0 : K - 1;
-        dy                  = md[e];
-        yq                  = yd[e] + dy * (xq - xd[e]);
-        out.region          = e == 0 ? -1 : 1;
-      }
-    else
-      {
-        const std::size_t k = std::min<std::size_t>(K - 2, std::upper_bound(xd, xd + K, xq) - xd - 1);
-        hermite(xd + k, yd + k, md + k, (xq - xd[k]) / (xd[k + 1] - xd[k]), yq, dy);
-      }
+    out.region    = hermite_interpolate(xd, yd, md, K, xq, yq, dy);
     out.force     = std::exp(yq);
     out.stiffness = out.force / approach * dy;
     return out;
@@ -195,8 +117,8 @@ namespace wearlink::contact
   {
     unsigned int i0, i1, j0, j1;
     double       fi, fj;
-    locate(bore_angle, n_b, i0, i1, fi);
-    locate(pin_angle, n_p, j0, j1, fj);
+    periodic_grid_position(bore_angle, n_b, i0, i1, fi);
+    periodic_grid_position(pin_angle, n_p, j0, j1, fj);
     const unsigned int ii[4] = {i0, i1, i0, i1}, jj[4] = {j0, j0, j1, j1};
     const double       ww[4] = {(1 - fi) * (1 - fj), fi * (1 - fj), (1 - fi) * fj, fi * fj};
     unsigned int       n     = 0;

@@ -94,6 +94,17 @@ namespace wearlink::contact
       return nullptr;
     }
     /**
+     * Whether the joint asks worn profiles for a conformal field (ClearanceForm::conformal)
+     * or for the point law along the deepest point (the other forms): called by the joint
+     * before update_geometry() at construction and whenever its form changes, so that a
+     * law built from the geometry builds only what the form needs (and rebuilds here if
+     * the form changed). Default: nothing to do.
+     */
+    virtual void
+    use_conformal(bool)
+    {
+    }
+    /**
      * The joint's geometry changed (at construction and after every profile update):
      * laws built from the geometry rebuild here. Default: nothing to do.
      */

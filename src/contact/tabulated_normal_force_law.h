@@ -49,6 +49,16 @@ namespace wearlink::contact
     virtual ForceApproachTable
     build_table(const JointGeometry &geometry) = 0;
 
+    /**
+     * Drop the table (a derived law that carries the geometry another way, e.g. the fe
+     * law's conformal field): evaluate() is then an error until the next update_geometry().
+     */
+    void
+    clear_table()
+    {
+      table = ForceApproachTable();
+    }
+
   private:
     const double       damping_factor, min_impact_velocity;
     ForceApproachTable table;

@@ -19,9 +19,17 @@
 // 'Table bore directions' × 'Table pin directions' (the contact direction in the
 // bushing frame, and in the pin frame, which the joint's relative rotation decouples).
 // It is rebuilt in update_geometry() (construction and every profile update) and
-// cached on disk by geometry (the profiles' samples, materials, axial length, FE and
-// table settings): $WEARLINK_CACHE_DIR, else $XDG_CACHE_HOME/wearlink, else
-// ~/.cache/wearlink; a cached table that does not read back cleanly is rebuilt.
+// cached on disk by geometry (fe/table_cache.h); a cached table that does not read back
+// cleanly is rebuilt.
+//
+// Worn profiles in a joint of the conformal form (ClearanceForm::conformal, the default)
+// get the law's own conformal field instead: the FE resultant as a function of the pin's
+// displacement vector in the pocket, tabulated under displacement control
+// (fe/fe_conformal_table.h; the same three table knobs set its grid). The joint says
+// which form it uses (use_conformal()) before the law builds, so the law builds only
+// what the form needs: the conformal table, or this force–approach table for the
+// deepest-point and per-area forms (and for round pairs, which the joint never asks for
+// a field).
 #pragma once
 
 #include "contact/force_approach_table.h"
@@ -29,6 +37,7 @@
 #include "fe/fe_settings.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -44,8 +53,8 @@ namespace wearlink::fe
     double       min_force           = 10;   ///< F_0 [N]
     double       max_force           = 1e5;  ///< F_{K−1} [N]
     unsigned int n_levels            = 16;
-    unsigned int n_bore_directions   = 8; ///< worn profiles only
-    unsigned int n_pin_directions    = 8; ///< worn profiles only
+    unsigned int n_bore_directions   = 72; ///< worn profiles only
+    unsigned int n_pin_directions    = 4;  ///< worn profiles only
     bool         cache               = true;
   };
 
@@ -87,6 +96,23 @@ namespace wearlink::fe
                 double                                    tolerance,
                 TableBuild                               &build);
 
+  /**
+   * Fill the values of failed FE solves (NaN) in @p values: runs of levels.size() values
+   * (one run per table direction, levels fastest) of a quantity y against x = @p levels
+   * (increasing). A failed value is interpolated linearly in x between its nearest solved
+   * (finite) neighbours in its run, or continued by the line through the two nearest
+   * solved on one side; infinite values are neither filled nor used (the caller's
+   * markers). More than a quarter of a run failing, or fewer than two solved, is a
+   * NumericalError that names the run (@p run_name of its index), the levels (@p what)
+   * and the table's first failure.
+   */
+  void
+  fill_failed_levels(std::vector<double>                           &values,
+                     const std::vector<double>                     &levels,
+                     const std::function<std::string(std::size_t)> &run_name,
+                     const std::string                             &what,
+                     const std::string                             &first_failure);
+
   /** The table's load levels: n_levels forces spaced logarithmically from min_force to max_force [N]. */
   std::vector<double>
   table_load_levels(const FeForceLawSettings &settings);
@@ -121,12 +147,34 @@ namespace wearlink::fe
                     double                        pin_angle,
                     TableBuild                   &build);
 
+  class FeConformalTable;
+
   class FeNormalForceLaw : public contact::TabulatedNormalForceLaw
   {
   public:
     explicit FeNormalForceLaw(FeForceLawSettings settings);
+    ~FeNormalForceLaw() override;
 
-    /** The table's (TabulatedNormalForceLaw::report) and its builds: times, cache use, validity. */
+    /**
+     * Build what the joint's form needs for @p geometry (see the file comment): the
+     * conformal table for worn profiles under use_conformal(true), else the
+     * force–approach table.
+     */
+    void
+    update_geometry(const contact::JointGeometry &geometry) override;
+
+    /** The joint's form; rebuilds for the current geometry if that changes what is needed. */
+    void
+    use_conformal(bool conformal) override;
+
+    /** The conformal table in use (worn profiles, conformal form), or nullptr. */
+    const contact::ConformalField *
+    conformal_field() const override;
+
+    /**
+     * The table's (TabulatedNormalForceLaw::report, or the conformal table's) and its
+     * builds: times, cache use, validity.
+     */
     Json
     report() const override;
 
@@ -139,9 +187,21 @@ namespace wearlink::fe
     build_table(const contact::JointGeometry &geometry) override;
 
   private:
+    /** Count the build just made (last_build) in the totals. */
+    void
+    count_build();
+    /** The report of the conformal table. */
+    Json
+    conformal_report() const;
+
     const FeForceLawSettings settings;
     std::shared_ptr<PinBushingModel>
-                 model; ///< the joint's shared FE model, kept across profile updates ('Remesh depth')
+         model;             ///< the joint's shared FE model, kept across profile updates ('Remesh depth')
+    bool conformal = false; ///< the joint asks worn profiles for a conformal field
+    std::unique_ptr<contact::JointGeometry> geometry;        ///< the current one (after the first update_geometry())
+    std::unique_ptr<FeConformalTable>       conformal_table; ///< worn profiles under the conformal form
+    /** Evaluations, and those above and below the levels, of the conformal tables replaced so far. */
+    long         conformal_counts[3] = {0, 0, 0};
     TableBuild   last_build;
     double       total_build_seconds = 0;
     unsigned int n_builds = 0, n_cached = 0;

@@ -168,6 +168,8 @@ namespace wearlink::io
       r.enter("Clearance");
       contact::ClearanceJointDescription d;
       d.name               = joint;
+      d.clearance_form     = scene.wear_loop.clearance_form;
+      d.conformal_cells    = scene.wear_loop.conformal_cells;
       const bool bush_on_1 = r.get("Bushing on") == "body 1";
       d.bushing_body       = bush_on_1 ? body_1 : body_2;
       d.bushing_point      = bush_on_1 ? point_1 : point_2;
@@ -295,6 +297,9 @@ namespace wearlink::io
           r.leave();
         }
 
+      // The wear loop's clearance form first: a clearance joint's normal force law builds
+      // what that form needs when the joint is made (NormalForceLaw::use_conformal()).
+      scene.wear_loop = wear::read_wear_loop(r);
       for (const auto &name : joints)
         {
           r.enter("Joint " + name);
@@ -318,10 +323,6 @@ namespace wearlink::io
         }
 
       read_numerics(r, scene, mech);
-
-      scene.wear_loop = wear::read_wear_loop(r);
-      for (auto *j : scene.clearance_joints)
-        j->set_clearance_form(scene.wear_loop.clearance_form, scene.wear_loop.conformal_cells);
 
       mech.finalize();
       unsigned int m = mech.n_constraint_equations();
