@@ -91,7 +91,11 @@ namespace wearlink::workflows
         {"fe-element-size", "fe Surface element size"},
         {"fe-degree", "fe Element degree"},
         {"remesh-depth", "fe Remesh depth: profile drift kept on one mesh, in surface element sizes"},
-        {"fe-law-table", "fe law table: bore × pin directions tabulated for worn profiles (Table bore/pin directions)"},
+        {"fe-law-table",
+         "fe law's conformal table of worn profiles: directions of the pin's displacement tabulated (Table bore "
+         "directions)"},
+        {"conformal-cells", "Wear/Conformal cells per area of the conformal foundation of worn profiles"},
+        {"clearance-model", "Wear/Clearance model: the point contact at the deepest overlap against the conformal one"},
       };
       return c;
     }
@@ -488,11 +492,15 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
       knobs.push_back(
         make_knob("smoothing", {"Wear/Smoothing wavelength"}, {label(2 * w), label(w), "0"}, "no filter"));
       knobs.push_back(pressure_model_knob(c));
+      knobs.push_back(
+        make_knob("conformal-cells", {"Wear/Conformal cells per area"}, {"1", "2", "4", "8"}, "most cells"));
+      knobs.push_back(
+        make_knob("clearance-model", {"Wear/Clearance model"}, {"deepest-point", "conformal"}, "conformal"));
     }
 
     /**
      * FE element size and degree, re-mesh depth (joints with the fe pressure model); the
-     * direction grid of the fe law's worn tables.
+     * directions of the fe law's conformal tables of worn profiles.
      */
     void
     fe_knobs(const KnobContext &c, std::vector<Knob> &knobs)
@@ -515,9 +523,9 @@ A value has one part per setting of the knob, separated by ';' (see accuracy.md'
           Knob k;
           k.name        = "fe-law-table";
           k.description = description_of(k.name);
-          k.targets     = {paths(c.fe_law, "fe/Table bore directions"), paths(c.fe_law, "fe/Table pin directions")};
-          for (const char *n : {"4", "8", "16"})
-            k.values.push_back({n, n});
+          k.targets     = {paths(c.fe_law, "fe/Table bore directions")};
+          for (const char *n : {"24", "48", "96"})
+            k.values.push_back({n});
           k.reference = "most directions";
           knobs.push_back(k);
         }
