@@ -97,7 +97,8 @@ namespace wearlink::wear
               "counted in the wear, so that the start-up (the pins falling from their initial "
               "eccentricities onto the bores, the impacts that follow) is not extrapolated; "
               "summary.json reports it (wear_start_up). Later iterations continue from the "
-              "state the previous one ended in, carried onto the worn profiles.",
+              "state the previous one ended in, carried onto the worn profiles; the response "
+              "after wear settles as many cycles before it is measured.",
               "cycles");
       declare(prm,
               "Number of iterations",
@@ -246,9 +247,10 @@ namespace wearlink::wear
               P::Double(0, 1e4),
               "Cycles of the dynamic response recorded before wear (start of the first "
               "iteration) and after wear (a run with the final profiles from the same "
-              "initial state), for the before/after plot and the response ratios of "
-              "summary.json, > 0 … 1e4 (the ratios compare whole cycles' peaks: below one "
-              "cycle they compare the part simulated).",
+              "initial state), both after the Settling cycles, for the before/after plot and "
+              "the response ratios of summary.json, > 0 … 1e4 (the ratios compare whole "
+              "cycles' peaks: below one cycle they compare the part simulated; with no "
+              "settling cycles the mean per-cycle peak leaves out the first, the start-up).",
               "cycles");
       declare(prm,
               "Response body",

@@ -121,7 +121,7 @@ namespace wearlink::workflows
             take(it.value(), key, it.key() + "_" + key);
     if (summary.contains("response"))
       for (auto it = summary.at("response").begin(); it != summary.at("response").end(); ++it)
-        if (it.key() != "cycles" && it.key() != "settling_cycles")
+        if (it.key() != "cycles" && it.key() != "settling_cycles" && it.key() != "first_cycles_left_out")
           take(summary.at("response"), it.key(), "response_" + it.key());
     if (summary.contains("life"))
       {

@@ -406,21 +406,23 @@ namespace wearlink::workflows
 
     /**
      * The peak acceleration magnitude of the response body over every accepted step, in
-     * the Wear/Response cycles from the initial assembly before wear (the first
-     * iteration's start, kept in the checkpoint; @p before its per-cycle peaks) and
-     * after wear: the largest over
-     * them, and the mean of the per-cycle peaks after the first cycle (the journal
-     * settles from its assembly position in it; with one response cycle, that one), and
-     * the ratios after/before.
+     * the Wear/Response cycles after the settling cycles from the initial assembly,
+     * before wear (the first iteration's start, kept in the checkpoint; @p before its
+     * per-cycle peaks) and after wear: the largest over them, the mean of the per-cycle
+     * peaks (without settling cycles, after the first: the start-up; with one response
+     * cycle, that one), and the ratios after/before.
      */
     Json
     response_block(const WearSetup                   &setup,
-                   const double                       cycles,
+                   const wear::WearLoopSettings      &ws,
                    const std::vector<double>         &before,
                    const analysis::CyclePeakRecorder &after)
     {
-      const auto whole   = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
-      const auto settle  = std::size_t(whole >= 2 ? 1 : 0);
+      const double cycles = ws.response_cycles;
+      const auto   whole  = static_cast<std::size_t>(std::max(1.0, std::floor(cycles + 1e-9)));
+      // Settled before (Wear/Settling cycles), every response cycle is measured; from
+      // the assembly, the first is the start-up.
+      const auto settle  = std::size_t(ws.settling_cycles > 0 || whole < 2 ? 0 : 1);
       const auto measure = [&](const std::vector<double> &peaks, double &largest, double &mean) {
         const auto n = std::min(whole, peaks.size());
         largest = mean = 0;
@@ -430,10 +432,11 @@ namespace wearlink::workflows
           mean += peaks[k] / (n - settle);
         return n > settle;
       };
-      Json r               = Json::object();
-      r["body"]            = setup.response_name;
-      r["cycles"]          = cycles;
-      r["settling_cycles"] = settle;
+      Json r                     = Json::object();
+      r["body"]                  = setup.response_name;
+      r["cycles"]                = cycles;
+      r["settling_cycles"]       = ws.settling_cycles; // before the response cycles
+      r["first_cycles_left_out"] = settle;             // of the mean per-cycle peaks
       double a_largest = 0, a_mean = 0, b_largest = 0, b_mean = 0;
       if (measure(after.peaks(), a_largest, a_mean))
         {
@@ -472,7 +475,7 @@ namespace wearlink::workflows
 
     /**
      * After the loop: the response after wear from the initial assembly with the final
-     * profiles, the summary, the worn profiles and plots, and the before/after-wear
+     * profiles (its settling cycles first, as before wear), the summary, the worn profiles and plots, and the before/after-wear
      * comparison if the scene lists analyses.
      */
     void
@@ -492,12 +495,32 @@ namespace wearlink::workflows
         j->set_mode(false, 0);
       analysis::ResponseRecorder  after(*scene.mechanism, setup.response, period / 400, ws.response_cycles * period);
       analysis::CyclePeakRecorder after_peaks(scene.mechanism->n_coordinates(), setup.response, period);
-      RunOptions                  ro;
-      ro.end_time  = scene.start_time + std::max(ws.response_cycles, 1e-9) * period;
-      ro.observers = {&after, &after_peaks};
-      ro.analyses  = false;
-      ro.warnings  = &result.warnings;
-      Stopwatch dynamics;
+      Stopwatch                   dynamics;
+      // Measured as before wear: from the assembly, the Wear/Settling cycles first (the
+      // start-up, not measured), then the response cycles.
+      Eigen::VectorXd settled;
+      double          start = scene.start_time;
+      if (ws.settling_cycles > 0)
+        {
+          RunOptions so;
+          so.end_time    = start + ws.settling_cycles * period;
+          so.analyses    = false;
+          so.final_state = &settled;
+          ValidityWarnings ignored; // the settling is not part of the response run
+          so.warnings = &ignored;
+          integrate_scene(scene, so);
+          start = so.end_time;
+        }
+      RunOptions ro;
+      if (ws.settling_cycles > 0)
+        {
+          ro.initial_state = &settled;
+          ro.start_time    = start;
+        }
+      ro.end_time    = start + std::max(ws.response_cycles, 1e-9) * period;
+      ro.observers   = {&after, &after_peaks};
+      ro.analyses    = false;
+      ro.warnings    = &result.warnings;
       result.summary = integrate_scene(scene, ro).summary;
       if (more_warnings != nullptr)
         result.warnings.merge(*more_warnings);
@@ -506,7 +529,7 @@ namespace wearlink::workflows
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
-      result.summary["response"] = response_block(setup, ws.response_cycles, st.response_before_peaks, after_peaks);
+      result.summary["response"] = response_block(setup, ws, st.response_before_peaks, after_peaks);
       if (write)
         {
           io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
