@@ -56,10 +56,12 @@ namespace wearlink::analysis
               "integrator step, in a run from the initial assembly with the current profiles after "
               "one settling cycle, measured after every wear iteration — over its value with the "
               "fresh profiles, 0 … 1e4 %; 0: off (and no response runs). The measure scatters, so "
-              "the criterion is decided on the least-squares line through all measurements: reached "
-              "when the lower 95 % confidence bound of the line's rise is at the limit (Student t), "
-              "located where the line crosses it, with the 95 % interval of that crossing (see "
-              "Response tolerance); an undecided criterion is never the life.",
+              "the criterion is decided on a trend fitted through all measurements — a line, a step "
+              "or a ramp, chosen by BIC: reached when the lower 95 % confidence bound of the "
+              "trend's rise is at the limit, located where the trend crosses it, with the 95 % "
+              "interval of that crossing (profile likelihood; see Response tolerance); an "
+              "undecided criterion is never the life, unless it is reached and its whole interval "
+              "lies before every reached wear criterion.",
               "%");
     }
 

@@ -1,4 +1,4 @@
-# The layers of src/ include one way only (doc/architecture.md §3, src/README.md):
+# The layers of src/ include one way only (doc/architecture.md §3):
 #   base < mbs < contact < fe < wear < analysis < io < workflows < app
 # A file in a layer may include headers of its own layer and of the layers before it;
 # files directly in src/ (register_all.*) count as app. deal.II headers other than

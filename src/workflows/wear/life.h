@@ -22,7 +22,8 @@
 //    Life/Maximum revolutions replaces Wear/Target revolutions).
 // The life (`headline`, `first_criterion`, `life_revolutions`) is the decided criterion
 // with the fewest revolutions; an undecided one is reported with what is known (its
-// line's crossing and 95 % interval, and why it is not decided) and is never the life.
+// trend's crossing and 95 % interval, and why it is not decided) and is not the life,
+// unless it is reached and its whole interval ends before every reached wear criterion.
 #pragma once
 
 #include "base/json.h"
