@@ -212,7 +212,7 @@ namespace wearlink::io
     spec.title    = title;
     spec.x_label  = "revolutions";
     spec.y_label  = "criterion value / its limit (1: reached)";
-    spec.key      = KeyPlace::inside_bottom_right;
+    spec.key      = KeyPlace::below;
     spec.y_limits = y_limits;
     int point     = 4;
     for (std::size_t c = 0; c < h.criteria.size(); ++c)
