@@ -254,6 +254,7 @@ namespace wearlink::io
   plot_life_ensemble(const std::string                        &path,
                      const std::vector<analysis::LifeHistory> &members,
                      const std::vector<CrossingSpread>        &spreads,
+                     const std::vector<MeanTrendCrossing>     &trends,
                      const std::string                        &title)
   {
     PlotSpec spec;
@@ -291,6 +292,13 @@ namespace wearlink::io
                                    {s.p10, s.p50, s.p90},
                                    {1.0, 1.0, 1.0},
                                    line_points(colour, 5, Marker::filled_triangle, 1.8)});
+        for (const auto &t : trends)
+          if (t.criterion == cr.name)
+            spec.series.push_back({"95 % interval of the " + cr.name + " crossing of the members' mean (at " +
+                                     std::to_string(static_cast<long>(std::lround(t.at))) + " rev)",
+                                   {t.low, t.high},
+                                   {1.0, 1.0},
+                                   line_points(colour, 5, Marker::filled_diamond, 1.5)});
       }
     spec.series.push_back({"limit", {0.0, end}, {1.0, 1.0}, line("black", 1.5).dashed()});
     return plot_png(spec, path);

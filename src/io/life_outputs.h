@@ -44,15 +44,23 @@ namespace wearlink::io
     double      p10 = 0, p50 = 0, p90 = 0;
   };
 
+  /** A trend criterion's crossing on the members' mean response, with its 95 % interval [rev]. */
+  struct MeanTrendCrossing
+  {
+    std::string criterion; ///< CriterionSpec::name
+    double      at = 0, low = 0, high = 0;
+  };
+
   /**
    * The ensemble's life.png from the members' histories (the same criteria, in the same
    * order): per criterion the band of value / limit over the members that ran that far,
-   * its median (percentile type 7), and @p spreads at the limit. False (and a note on
-   * stderr) without gnuplot.
+   * its median (percentile type 7), @p spreads at the limit, and the interval of each
+   * of @p trends. False (and a note on stderr) without gnuplot.
    */
   bool
   plot_life_ensemble(const std::string                        &path,
                      const std::vector<analysis::LifeHistory> &members,
                      const std::vector<CrossingSpread>        &spreads,
+                     const std::vector<MeanTrendCrossing>     &trends,
                      const std::string                        &title);
 } // namespace wearlink::io

@@ -202,6 +202,77 @@ TEST(Ensemble, AnUndecidedCriterionIsNotTheLifeOfTheEnsemble)
     << e.at("reason");
 }
 
+namespace
+{
+  /**
+   * Four members' life records whose response measure steps from 600 to 900 m/s² (+50 %,
+   * the limit 25 %) between 20,000 and 25,000 rev, each with its own scatter of ±150 m/s²
+   * (members leave the criterion undecided one by one), measured every 5,000 rev up to
+   * 75,000 and once more at a revolutions of its own; the wear depth decided at @p wear.
+   */
+  std::vector<Json>
+  stepping_members(const double wear)
+  {
+    std::vector<Json> members;
+    for (int k = 0; k < 4; ++k)
+      {
+        Json rev = Json::array(), measure = Json::array();
+        for (int i = 0; i <= 16; ++i)
+          {
+            const double at = i < 16 ? 5000.0 * i : 76000 + 100 * k;
+            rev.push_back(at);
+            measure.push_back((at < 22500 ? 600 : 900) + 150 * std::sin(12.9898 * (i + 1) * (k + 1)));
+          }
+        Json life = {{"criteria",
+                      {{"wear_depth",
+                        {{"status", "decided"}, {"revolutions", wear + 1000 * k}, {"hours", wear / 7200}}},
+                       {"response_rise",
+                        {{"status", "undecided"},
+                         {"revolutions", Json()},
+                         {"hours", Json()},
+                         {"located_by", "trend"},
+                         {"limit", 25.0},
+                         {"response_tolerance", 0.5}}}}},
+                     {"headline", "wear_depth"},
+                     {"response", {{"revolutions", rev}, {"measures_m_s2", measure}}}};
+        members.push_back({{"status", "ok"}, {"life", life}});
+      }
+    return members;
+  }
+} // namespace
+
+// A trend criterion no member decides alone is decided on the trend of the members' mean
+// response (the scatter falls by √4): here the step between 20,000 and 25,000 rev, whose
+// interval ends long before the wear depth's P10 (100,300 rev), so it is the ensemble's
+// life; the members' own counts stay as they were.
+TEST(Ensemble, TheMembersMeanResponseDecidesWhatNoMemberCanAlone)
+{
+  const Json e = workflows::ensemble_life(stepping_members(100000));
+  ASSERT_EQ(e.at("criterion").get<std::string>(), "response_rise") << e.at("reason");
+  EXPECT_EQ(e.at("located_by").get<std::string>(), "trend of the members' mean response");
+  const double at = json_number(e.at("revolutions"));
+  EXPECT_GE(at, 20000);
+  EXPECT_LE(at, 25000);
+  const Json &i = e.at("interval_revolutions");
+  ASSERT_TRUE(i.is_array());
+  EXPECT_LE(json_number(i[0]), at);
+  EXPECT_GE(json_number(i[1]), at);
+  EXPECT_LT(json_number(i[1]), 100000);
+  EXPECT_EQ(json_number(e.at("members_decided")), 0);
+  EXPECT_EQ(json_number(e.at("criteria").at("response_rise").at("trend_of_the_mean").at("measurements")), 16)
+    << "the revolutions every member measured";
+}
+
+// The same members worn out at 10,000 rev: the mean's rise comes after the wear depth's
+// P10, so the wear depth stays the ensemble's life; the mean's trend is reported.
+TEST(Ensemble, TheMembersMeanResponseAfterTheWearLifeIsNotTheLife)
+{
+  const Json e = workflows::ensemble_life(stepping_members(10000));
+  ASSERT_EQ(e.at("criterion").get<std::string>(), "wear_depth") << e.at("reason");
+  EXPECT_DOUBLE_EQ(json_number(e.at("p10_revolutions")), 10300);
+  EXPECT_FALSE(e.at("criteria").at("response_rise").at("trend_of_the_mean").is_null());
+}
+
 // An ensemble on 2 ranks into a folder locked by another process: rank 0 is refused,
 // rank 1 receives the refusal, both stop with exit status 2 (none waits for the other)
 // and no member runs.

@@ -2,6 +2,8 @@
 #include "workflows/ensemble/ensemble.h"
 
 #include "analysis/ensemble_statistics.h"
+#include "analysis/life_criteria.h"
+#include "analysis/response_models.h"
 #include "base/atomic_file.h"
 #include "base/exceptions.h"
 #include "base/interrupt.h"
@@ -159,8 +161,16 @@ namespace wearlink::workflows
             o.contains("status") ? o.at("status").get<std::string>() :
                                    (o.at("reached").get<bool>() ? std::string("decided") : std::string("not reached"));
           criteria[it.key()] = {{"status", status}, {"revolutions", o.at("revolutions")}, {"hours", o.at("hours")}};
+          if (o.value("located_by", "") == "trend") // what the trend of the members' mean needs
+            for (const char *key : {"located_by", "limit", "response_tolerance"})
+              if (o.contains(key))
+                criteria[it.key()][key] = o.at(key);
         }
-      return {{"criteria", criteria}, {"headline", life.value("first_criterion", Json())}};
+      Json out = {{"criteria", criteria}, {"headline", life.value("first_criterion", Json())}};
+      if (life.contains("response") && life.at("response").contains("revolutions"))
+        out["response"] = {{"revolutions", life.at("response").at("revolutions")},
+                           {"measures_m_s2", life.at("response").at("measures_m_s2")}};
+      return out;
     }
 
     /** Mean, std, 95 % interval of the mean and P05 / P10 / P50 / P90 / P95 of @p values. */
@@ -203,6 +213,126 @@ namespace wearlink::workflows
               {"revolutions", spread_of(revolutions)},
               {"hours", spread_of(hours)}};
     }
+
+    /**
+     * The response measures of @p lives averaged over the members at the revolutions they
+     * all measured (a life run measures after each iteration; the last iterations differ
+     * as each member approaches its own wear life): @p x the revolutions, @p y the means.
+     * Empty if a member has no series or a non-finite measure there.
+     */
+    void
+    mean_response(const std::vector<Json> &lives, std::vector<double> &x, std::vector<double> &y)
+    {
+      x.clear();
+      y.clear();
+      for (const auto &l : lives)
+        if (!l.contains("response") || !l.at("response").contains("revolutions"))
+          return;
+      const auto &first = lives.front().at("response");
+      for (std::size_t i = 0; i < first.at("revolutions").size(); ++i)
+        {
+          const double at  = json_number(first.at("revolutions")[i]);
+          double       sum = 0;
+          std::size_t  n   = 0;
+          for (const auto &l : lives)
+            {
+              const auto &r = l.at("response");
+              for (std::size_t k = 0; k < r.at("revolutions").size(); ++k)
+                if (std::abs(json_number(r.at("revolutions")[k]) - at) <= 1e-9 * std::max(1.0, std::abs(at)) &&
+                    r.at("measures_m_s2")[k].is_number())
+                  {
+                    sum += json_number(r.at("measures_m_s2")[k]);
+                    ++n;
+                    break;
+                  }
+            }
+          if (n == lives.size())
+            {
+              x.push_back(at);
+              y.push_back(sum / static_cast<double>(n));
+            }
+        }
+    }
+
+    /**
+     * The trend criterion @p name decided on the members' mean response (mean_response):
+     * the scatter of one member's measures falls by √members, so the ensemble can decide
+     * a criterion its members cannot one by one. Decided as in a life run (the chosen
+     * trend model, Life/Response tolerance), or first for certain: reached, its crossing's
+     * whole 95 % interval before @p wear_p10, the smallest P10 of the wear criteria every
+     * member decided. Null without a series.
+     */
+    Json
+    trend_of_the_mean(const std::string &name, const std::vector<Json> &lives, const double wear_p10)
+    {
+      std::vector<double> x, y;
+      mean_response(lives, x, y);
+      const Json &spec = lives.front().at("criteria").at(name);
+      if (x.size() < analysis::min_response_points || !spec.contains("response_tolerance"))
+        return Json();
+      const analysis::ResponseModels models(x, y, x.size());
+      const double                   limit = json_number(spec.at("limit"));
+      const auto t = analysis::trend_crossing(models, limit, x.back(), json_number(spec.at("response_tolerance")));
+      const bool precise = t.status == analysis::CriterionStatus::decided;
+      const bool first   = !precise && t.reached && t.interval.bounded() && t.interval.high < wear_p10;
+      const bool decided = precise || first;
+      Json       o       = {{"measurements", x.size()},
+                            {"trend_model", analysis::family_name(t.family)},
+                            {"reached", t.reached},
+                            {"decided", decided},
+                            {"within_tolerance", precise},
+                            {"revolutions", std::isfinite(t.revolutions) ? Json(t.revolutions) : Json()},
+                            {"interval_revolutions",
+                 t.interval.bounded() ? Json::array({t.interval.low, t.interval.high}) : Json()},
+                            {"rise_at_end_ci95_percent",
+                 std::isfinite(t.rise_at_end.low) && std::isfinite(t.rise_at_end.high) ?
+                               Json::array({t.rise_at_end.low, t.rise_at_end.high}) :
+                               Json()}};
+      o["reason"]        = precise ? std::string("decided on the trend of the members' mean response") :
+                           first ? "reached on the trend of the members' mean response; its interval ends before the wear "
+                                   "criteria's P10: it comes first, located less precisely than Life/Response tolerance" :
+                                   t.reason;
+      return o;
+    }
+
+    /**
+     * A trend criterion that not every member decided, decided on the trend of the
+     * members' mean response (trend_of_the_mean, added to its block in @p criteria). If
+     * that trend puts it before @p best's P10 (the wear life of the ensemble; none: any),
+     * it is the ensemble's life: @p out gets it and true is returned.
+     */
+    bool
+    trend_life_of_the_mean(const std::vector<Json> &lives, const std::string &best, Json &criteria, Json &out)
+    {
+      const double wear_p10 = best.empty() ? std::numeric_limits<double>::infinity() :
+                                             json_number(criteria.at(best).at("revolutions").at("p10"));
+      std::string  life;
+      for (auto it = criteria.begin(); it != criteria.end(); ++it)
+        if (it.value().at("members_decided").get<std::size_t>() < lives.size() &&
+            lives.front().at("criteria").at(it.key()).value("located_by", "") == "trend")
+          {
+            it.value()["trend_of_the_mean"] = trend_of_the_mean(it.key(), lives, wear_p10);
+            const Json &t                   = it.value().at("trend_of_the_mean");
+            if (!t.is_null() && t.at("decided").get<bool>() && json_number(t.at("revolutions")) < wear_p10)
+              life = it.key();
+          }
+      out["criteria"] = criteria;
+      if (life.empty())
+        return false;
+      const Json &c               = criteria.at(life);
+      const Json &t               = c.at("trend_of_the_mean");
+      out["criterion"]            = life;
+      out["located_by"]           = "trend of the members' mean response";
+      out["revolutions"]          = t.at("revolutions");
+      out["interval_revolutions"] = t.at("interval_revolutions");
+      out["within_tolerance"]     = t.at("within_tolerance");
+      out["members_decided"]      = c.at("members_decided");
+      out["reason"]               = life + ", decided on the trend of the members' mean response (" +
+                      format_number(json_number(c.at("members_decided")), 6) + " of " + std::to_string(lives.size()) +
+                      " members decided it one by one), comes before " +
+                      (best.empty() ? std::string("any wear criterion") : best + "'s P10");
+      return true;
+    }
   } // namespace
 
   Json
@@ -219,7 +349,6 @@ namespace wearlink::workflows
     if (!lives.empty())
       for (auto it = lives.front().at("criteria").begin(); it != lives.front().at("criteria").end(); ++it)
         criteria[it.key()] = criterion_over_members(it.key(), lives);
-    out["criteria"] = criteria;
     // The life: of the criteria every member decided, the one with the smallest P10.
     std::string        best;
     std::ostringstream excluded;
@@ -233,6 +362,9 @@ namespace wearlink::workflows
                                    json_number(criteria.at(best).at("revolutions").at("p10")))
           best = it.key();
       }
+    if (trend_life_of_the_mean(lives, best, criteria, out))
+      return out;
+    out["criteria"]  = criteria;
     out["criterion"] = best.empty() ? Json() : Json(best);
     if (best.empty())
       {
@@ -448,7 +580,8 @@ namespace wearlink::workflows
 
     /**
      * The ensemble's life.png: the band of the members' criteria against revolutions
-     * (their life_history.csv) and the P10 … P90 of their decided crossings.
+     * (their life_history.csv), the P10 … P90 of their decided crossings and the interval
+     * of a trend criterion's crossing on the members' mean.
      */
     void
     plot_life_band(const Json &summary, const std::vector<analysis::CriterionSpec> &criteria, const std::string &path)
@@ -458,17 +591,25 @@ namespace wearlink::workflows
         if (m.at("status").get<std::string>() == "ok")
           histories.push_back(
             io::read_life_history(m.at("directory").get<std::string>() + "/" + io::outputs::life_history, criteria));
-      std::vector<io::CrossingSpread> spreads;
-      const Json                     &life = summary.at("ensemble_life").at("criteria");
+      std::vector<io::CrossingSpread>    spreads;
+      std::vector<io::MeanTrendCrossing> trends;
+      const Json                        &life = summary.at("ensemble_life").at("criteria");
       for (auto it = life.begin(); it != life.end(); ++it)
         {
           const Json &r = it.value().at("revolutions");
           if (r.at("p10").is_number())
             spreads.push_back({it.key(), json_number(r.at("p10")), json_number(r.at("p50")), json_number(r.at("p90"))});
+          const Json t = it.value().value("trend_of_the_mean", Json());
+          if (!t.is_null() && t.at("revolutions").is_number() && t.at("interval_revolutions").is_array())
+            trends.push_back({it.key(),
+                              json_number(t.at("revolutions")),
+                              json_number(t.at("interval_revolutions")[0]),
+                              json_number(t.at("interval_revolutions")[1])});
         }
       io::plot_life_ensemble(path,
                              histories,
                              spreads,
+                             trends,
                              "Life criteria of " + std::to_string(histories.size()) +
                                " members: smallest … largest (band) and median against revolutions");
     }
@@ -607,8 +748,27 @@ namespace wearlink::workflows
            << std::setw(13) << number(r.at("p50")) << std::setw(13) << number(r.at("p90"))
            << number(it.value().at("hours").at("p10")) << "\n";
       }
+    for (auto it = life.at("criteria").begin(); it != life.at("criteria").end(); ++it)
+      if (it.value().contains("trend_of_the_mean") && !it.value().at("trend_of_the_mean").is_null())
+        {
+          const Json &t = it.value().at("trend_of_the_mean");
+          const Json &i = t.at("interval_revolutions");
+          os << it.key() << " on the members' mean response (" << t.at("trend_model").get<std::string>() << ", "
+             << number(t.at("measurements"))
+             << " measurements): " << (t.at("decided").get<bool>() ? "decided" : "undecided") << ", crossing "
+             << number(t.at("revolutions")) << " rev"
+             << (i.is_null() ? std::string() : " (95 % " + number(i[0]) + " ... " + number(i[1]) + ")")
+             << (t.at("decided").get<bool>() ? std::string() : " - " + t.at("reason").get<std::string>()) << "\n";
+        }
     if (life.at("criterion").is_null())
       os << "ensemble life: none - " << life.at("reason").get<std::string>() << "\n";
+    else if (life.contains("located_by"))
+      {
+        const Json &i = life.at("interval_revolutions");
+        os << "ensemble life: " << life.at("criterion").get<std::string>() << ", " << number(life.at("revolutions"))
+           << " rev" << (i.is_null() ? std::string() : " (95 % " + number(i[0]) + " ... " + number(i[1]) + ")") << " - "
+           << life.at("reason").get<std::string>() << "\n";
+      }
     else
       os << "ensemble life: " << life.at("criterion").get<std::string>() << ", P10 "
          << number(life.at("p10_revolutions")) << " rev (" << number(life.at("p10_hours")) << " h); P50 "

@@ -119,8 +119,13 @@ namespace wearlink::workflows
    * P90 (analysis::percentile, type 7; `percentile_definition` says so); and the
    * ensemble's life: of the criteria every member decided, the one with the smallest P10
    * (`criterion`, `p10_revolutions`, `p10_hours`, `p50_*`, `p90_*`, `mean_revolutions`,
-   * `ci95_mean_revolutions`, `members_decided`, `reason`). A criterion some member left
-   * undecided is not the ensemble's life.
+   * `ci95_mean_revolutions`, `members_decided`, `reason`). A trend criterion some member
+   * left undecided is decided on the trend of the members' mean response (the measures at
+   * the revolutions every member measured, averaged: the scatter falls by √members) as a
+   * life run decides it, `trend_of_the_mean` in its block; if that puts it before the
+   * wear criteria's smallest P10 it is the ensemble's life (`criterion`, `located_by`,
+   * `revolutions`, `interval_revolutions`, `within_tolerance`, `members_decided`,
+   * `reason`). Any other criterion some member left undecided is not the ensemble's life.
    */
   Json
   ensemble_life(const std::vector<Json> &members);

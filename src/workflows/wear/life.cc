@@ -449,6 +449,16 @@ namespace wearlink::workflows
       return Json::array({m.tau1, m.tau2});
     }
 
+    /** @p v with each non-finite value as null (JSON has no NaN). */
+    Json
+    finite_or_null(const std::vector<double> &v)
+    {
+      Json a = Json::array();
+      for (const double x : v)
+        a.push_back(std::isfinite(x) ? Json(x) : Json());
+      return a;
+    }
+
     /**
      * Each fitted model of the response measures: its parameters, BIC and weight, and where
      * the criterion of limit @p limit [%] stands on it after @p revolutions_run (the chosen
@@ -643,6 +653,8 @@ namespace wearlink::workflows
             {"measured_fresh_m_s2", history.response.front()},
             {"measured_last_m_s2", history.response.back()},
             {"measurements", trend.points()},
+            {"revolutions", history.revolutions},
+            {"measures_m_s2", finite_or_null(history.response)},
             {"trend_model", analysis::family_name(trend.chosen())},
             {"model_choice", "the smallest BIC = n ln(RSS/n) + p ln n"},
             {"models", models_block(trend, scene.life.response_rise, revolutions_run, scene.life.response_tolerance)}};
