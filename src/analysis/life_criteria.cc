@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace wearlink::analysis
 {
@@ -47,47 +48,113 @@ namespace wearlink::analysis
       return volume * rho * 1e6;
     }
 
-    /** The value of criterion @p kind of one joint with these envelope depths and masses. */
-    double
-    joint_value(const Criterion kind, const double h_pin, const double h_bore, const double m_pin, const double m_bush)
-    {
-      switch (kind)
-        {
-          case Criterion::wear_depth:
-            return std::max(h_pin, h_bore);
-          case Criterion::clearance_growth:
-            return h_pin + h_bore;
-          case Criterion::pin_mass_loss:
-            return m_pin;
-          case Criterion::bushing_mass_loss:
-            return m_bush;
-          case Criterion::response_rise:
-            break;
-        }
-      return nan;
-    }
   } // namespace
+
+  const std::vector<CriterionRow> &
+  criteria_table()
+  {
+    static const std::vector<CriterionRow> table = {
+      {Criterion::wear_depth,
+       "wear_depth",
+       "Maximum wear depth",
+       "m",
+       0.1,
+       "Stop criterion of `wearlink life`: the largest envelope depth of any surface (pin or bore) of any wearing "
+       "joint — the largest running median of the depth over the joint's contact width (2b of the Hertz strip at "
+       "the first iteration's peak force), so a one-area spike does not reach it and a pocket as wide as the "
+       "contact does — 0 … 0.1 m (a wear depth beyond 10 cm is no joint's); 0: off.",
+       false,
+       true,
+       [](double h_pin, double h_bore, double, double) {
+         return std::max(h_pin, h_bore);
+       }},
+      {Criterion::clearance_growth,
+       "clearance_growth",
+       "Radial clearance growth",
+       "m",
+       0.1,
+       "Stop criterion: the growth of a joint's radial clearance, the envelope depth of its bore plus that of its "
+       "pin (see Maximum wear depth; they face each other once per relative revolution), 0 … 0.1 m; 0: off.",
+       false,
+       true,
+       [](double h_pin, double h_bore, double, double) {
+         return h_pin + h_bore;
+       }},
+      {Criterion::pin_mass_loss,
+       "pin_mass_loss",
+       "Pin mass loss",
+       "mg",
+       1e9,
+       "Stop criterion: the mass worn off a joint's pin (worn volume × Pin density), 0 … 1e9 mg (1 t); 0: off.",
+       false,
+       false,
+       [](double, double, double m_pin, double) {
+         return m_pin;
+       }},
+      {Criterion::bushing_mass_loss,
+       "bushing_mass_loss",
+       "Bushing mass loss",
+       "mg",
+       1e9,
+       "Stop criterion: the mass worn off a joint's bushing, 0 … 1e9 mg; 0: off.",
+       false,
+       false,
+       [](double, double, double, double m_bush) {
+         return m_bush;
+       }},
+      {Criterion::response_rise,
+       "response_rise",
+       "Response rise",
+       "%",
+       1e4,
+       "Stop criterion: the rise of the response measure — the mean over Response cycles of the per-cycle peak "
+       "acceleration magnitude of Response body, over every accepted integrator step, in a run from the initial "
+       "assembly with the current profiles after one settling cycle, measured after every wear iteration — over "
+       "its value with the fresh profiles, 0 … 1e4 %; 0: off (and no response runs). The measure scatters, so the "
+       "criterion is decided on a trend fitted through all measurements — a line, a step or a ramp, chosen by "
+       "BIC: reached when the lower 95 % confidence bound of the trend's rise is at the limit, located where the "
+       "trend crosses it, with the 95 % interval of that crossing (profile likelihood; see Response tolerance); "
+       "an undecided criterion is never the life, unless it is reached and its whole interval lies before every "
+       "reached wear criterion.",
+       true,
+       false,
+       nullptr}};
+    return table;
+  }
+
+  const CriterionRow &
+  row_of(const Criterion kind)
+  {
+    for (const auto &r : criteria_table())
+      if (r.kind == kind)
+        return r;
+    throw std::logic_error("a criterion without a row in criteria_table()");
+  }
+
+  double
+  LifeSettings::limit(const Criterion kind) const
+  {
+    const auto &t = criteria_table();
+    for (std::size_t k = 0; k < t.size() && k < limits.size(); ++k)
+      if (t[k].kind == kind)
+        return limits[k];
+    return 0;
+  }
 
   std::vector<CriterionSpec>
   active_criteria(const LifeSettings &s)
   {
-    const std::vector<CriterionSpec> all = {
-      {Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", s.max_wear_depth},
-      {Criterion::clearance_growth, "clearance_growth", "Radial clearance growth", "m", s.clearance_growth},
-      {Criterion::pin_mass_loss, "pin_mass_loss", "Pin mass loss", "mg", s.pin_mass_loss},
-      {Criterion::bushing_mass_loss, "bushing_mass_loss", "Bushing mass loss", "mg", s.bushing_mass_loss},
-      {Criterion::response_rise, "response_rise", "Response rise", "%", s.response_rise}};
     std::vector<CriterionSpec> on;
-    for (const auto &c : all)
-      if (c.limit > 0)
-        on.push_back(c);
+    for (const auto &r : criteria_table())
+      if (s.limit(r.kind) > 0)
+        on.push_back({r.kind, r.name, r.entry, r.unit, s.limit(r.kind)});
     return on;
   }
 
   bool
   is_trend(const CriterionSpec &criterion)
   {
-    return criterion.kind == Criterion::response_rise;
+    return row_of(criterion.kind).trend;
   }
 
   std::string
@@ -111,11 +178,13 @@ namespace wearlink::analysis
                        const std::vector<JointDensities> &densities,
                        const double                       f)
   {
+    if (!row_of(c.kind).joint_value)
+      return {nan, ""};
     CriterionValue out{-1, ""};
     for (std::size_t i = 0; i < p.joints.size(); ++i)
       {
         const auto &j      = p.joints[i];
-        const bool  depths = c.kind == Criterion::wear_depth || c.kind == Criterion::clearance_growth;
+        const bool  depths = row_of(c.kind).depths;
         double      h_pin = 0, h_bore = 0;
         if (depths) // (the mass criteria need no depths)
           {
@@ -126,8 +195,8 @@ namespace wearlink::analysis
             h_bore =
               extrapolated_envelope(j.depth_bore, j.bore_increment, f, window_of(j.state, r_bore, j.depth_bore.size()));
           }
-        const double v = joint_value(c.kind,
-                                     h_pin,
+        const double v =
+          row_of(c.kind).joint_value(h_pin,
                                      h_bore,
                                      milligrams(j.volume_pin + f * j.pin_volume_increment, densities[i].pin),
                                      milligrams(j.volume_bore + f * j.bore_volume_increment, densities[i].bushing));
@@ -142,16 +211,17 @@ namespace wearlink::analysis
                        const wear::WearState             &state,
                        const std::vector<JointDensities> &densities)
   {
+    if (!row_of(c.kind).joint_value)
+      return {nan, ""};
     CriterionValue out{-1, ""};
     for (std::size_t i = 0; i < state.joints.size(); ++i)
       {
         const auto                 &js = state.joints[i];
         const wear::IterationRecord r  = js.history.empty() ? wear::IterationRecord() : js.history.back();
-        const double                v  = joint_value(c.kind,
-                                     r.envelope_depth_pin,
-                                     r.envelope_depth_bore,
-                                     milligrams(r.volume_pin, densities[i].pin),
-                                     milligrams(r.volume_bore, densities[i].bushing));
+        const double                v  = row_of(c.kind).joint_value(r.envelope_depth_pin,
+                                                    r.envelope_depth_bore,
+                                                    milligrams(r.volume_pin, densities[i].pin),
+                                                    milligrams(r.volume_bore, densities[i].bushing));
         if (v > out.value)
           out = {v, js.name};
       }

@@ -86,20 +86,47 @@ namespace wearlink::analysis
     response_rise
   };
 
+  /**
+   * One row of the criteria table: everything that defines a criterion. A new criterion
+   * is a member of Criterion and a row (life_criteria.cc); the scene entry is declared,
+   * read and switched on from its row.
+   */
+  struct CriterionRow
+  {
+    Criterion   kind;
+    const char *name;    ///< the key in summary.json and life_history.csv
+    const char *entry;   ///< its limit's entry in the scene's Life section
+    const char *unit;    ///< of the limit: "m", "mg", "%"
+    double      upper;   ///< the largest limit accepted (0 … upper; 0: off)
+    const char *meaning; ///< the entry's documentation (--print-parameters, doc/parameters.md)
+    bool        trend;   ///< decided on a trend of noisy measurements, not when reached
+    bool        depths;  ///< its joint value needs the envelope depths (extrapolated per factor)
+    /** A wearing joint's value from its envelope depths [m] and mass losses [mg] (wear criteria). */
+    double (*joint_value)(double h_pin, double h_bore, double m_pin, double m_bush);
+  };
+
+  /** Every criterion, in the order they are reported. */
+  const std::vector<CriterionRow> &
+  criteria_table();
+
+  /** The row of @p kind. */
+  const CriterionRow &
+  row_of(Criterion kind);
+
   /** The scene's "Life" section (declared and read by analysis/life_parameters.h). */
   struct LifeSettings
   {
-    double       max_wear_depth    = 0;     ///< [m]; 0: off
-    double       clearance_growth  = 0;     ///< [m]; 0: off
-    double       pin_mass_loss     = 0;     ///< [mg]; 0: off
-    double       bushing_mass_loss = 0;     ///< [mg]; 0: off
-    double       response_rise     = 0;     ///< [%]; 0: off
-    std::string  response_body;             ///< "" : Wear/Response body
-    unsigned int response_cycles    = 3;    ///< cycles averaged (after one settling cycle)
-    double       response_tolerance = 0.5;  ///< largest width of the trend's 95 % interval / its crossing [-]
-    double       tolerance          = 0.02; ///< τ [-]
-    double       max_revolutions    = 1e8;  ///< the run ends there at the latest [-]
-    unsigned int max_iterations     = 1000; ///< and after this many iterations
+    std::vector<double> limits;                    ///< per row of criteria_table(), in its unit; 0: off
+    std::string         response_body;             ///< "" : Wear/Response body
+    unsigned int        response_cycles    = 3;    ///< cycles averaged (after one settling cycle)
+    double              response_tolerance = 0.5;  ///< largest width of the trend's 95 % interval / its crossing [-]
+    double              tolerance          = 0.02; ///< τ [-]
+    double              max_revolutions    = 1e8;  ///< the run ends there at the latest [-]
+    unsigned int        max_iterations     = 1000; ///< and after this many iterations
+
+    /** The limit of @p kind (0: off). */
+    double
+    limit(Criterion kind) const;
   };
 
   /** One active criterion. */

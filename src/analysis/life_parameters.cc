@@ -12,57 +12,12 @@ namespace wearlink::analysis
   {
     namespace P = dealii::Patterns;
 
-    /** The criteria's limits: entry, bounds and meaning. */
+    /** The criteria's limits, one entry per row of the criteria table. */
     void
     declare_criteria(dealii::ParameterHandler &prm)
     {
-      declare(prm,
-              "Maximum wear depth",
-              "0",
-              P::Double(0, 0.1),
-              "Stop criterion of `wearlink life`: the largest envelope depth of any surface (pin or "
-              "bore) of any wearing joint — the largest running median of the depth over the "
-              "joint's contact width (2b of the Hertz strip at the first iteration's peak force), so "
-              "a one-area spike does not reach it and a pocket as wide as the contact does — 0 … "
-              "0.1 m (a wear depth beyond 10 cm is no joint's); 0: off.",
-              "m");
-      declare(prm,
-              "Radial clearance growth",
-              "0",
-              P::Double(0, 0.1),
-              "Stop criterion: the growth of a joint's radial clearance, the envelope depth of its "
-              "bore plus that of its pin (see Maximum wear depth; they face each other once per "
-              "relative revolution), 0 … 0.1 m; 0: off.",
-              "m");
-      declare(prm,
-              "Pin mass loss",
-              "0",
-              P::Double(0, 1e9),
-              "Stop criterion: the mass worn off a joint's pin (worn volume × Pin density), 0 … 1e9 "
-              "mg (1 t); 0: off.",
-              "mg");
-      declare(prm,
-              "Bushing mass loss",
-              "0",
-              P::Double(0, 1e9),
-              "Stop criterion: the mass worn off a joint's bushing, 0 … 1e9 mg; 0: off.",
-              "mg");
-      declare(prm,
-              "Response rise",
-              "0",
-              P::Double(0, 1e4),
-              "Stop criterion: the rise of the response measure — the mean over Response cycles of "
-              "the per-cycle peak acceleration magnitude of Response body, over every accepted "
-              "integrator step, in a run from the initial assembly with the current profiles after "
-              "one settling cycle, measured after every wear iteration — over its value with the "
-              "fresh profiles, 0 … 1e4 %; 0: off (and no response runs). The measure scatters, so "
-              "the criterion is decided on a trend fitted through all measurements — a line, a step "
-              "or a ramp, chosen by BIC: reached when the lower 95 % confidence bound of the "
-              "trend's rise is at the limit, located where the trend crosses it, with the 95 % "
-              "interval of that crossing (profile likelihood; see Response tolerance); an "
-              "undecided criterion is never the life, unless it is reached and its whole interval "
-              "lies before every reached wear criterion.",
-              "%");
+      for (const auto &row : criteria_table())
+        declare(prm, row.entry, "0", P::Double(0, row.upper), row.meaning, row.unit);
     }
 
     /** The response measure, the tolerance and the run's bounds. */
@@ -135,11 +90,8 @@ namespace wearlink::analysis
     LifeSettings    s;
     ParameterReader r(prm, file);
     r.enter("Life");
-    s.max_wear_depth     = r.get_double("Maximum wear depth");
-    s.clearance_growth   = r.get_double("Radial clearance growth");
-    s.pin_mass_loss      = r.get_double("Pin mass loss");
-    s.bushing_mass_loss  = r.get_double("Bushing mass loss");
-    s.response_rise      = r.get_double("Response rise");
+    for (const auto &row : criteria_table())
+      s.limits.push_back(r.get_double(row.entry));
     s.response_body      = r.get("Response body");
     s.response_cycles    = static_cast<unsigned int>(r.get_integer("Response cycles"));
     s.response_tolerance = r.get_double("Response tolerance");

@@ -133,7 +133,7 @@ namespace wearlink::workflows
       history.factors.push_back(0);
       history.values.push_back(std::vector<double>(n, 0.0));
       history.joints.push_back(std::vector<std::string>(n, ""));
-      const bool response = scene.life.response_rise > 0;
+      const bool response = scene.life.limit(analysis::Criterion::response_rise) > 0;
       history.response.push_back(response ? measure_response() : nan);
       if (response && !(history.response[0] > 0))
         throw NumericalError("The response measure of " + scene.file + " with the fresh profiles is " +
@@ -200,7 +200,7 @@ namespace wearlink::workflows
     {
       const auto &st = loop.state();
       history.truncate(st.iterations_done - 1); // rows a killed run wrote past its checkpoint
-      const bool response = scene.life.response_rise > 0;
+      const bool response = scene.life.limit(analysis::Criterion::response_rise) > 0;
       history.iterations.push_back(st.iterations_done);
       history.revolutions.push_back(st.revolutions);
       history.factors.push_back(st.factors.back());
@@ -510,7 +510,7 @@ namespace wearlink::workflows
       const auto  x    = crossing(c);
       Json        o    = common_block(spec, history.values.back()[c]);
       o["located_by"]  = "bracket";
-      if (spec.kind == analysis::Criterion::wear_depth || spec.kind == analysis::Criterion::clearance_growth)
+      if (analysis::row_of(spec.kind).depths)
         o["depth"] = "envelope over the contact width";
       outcome = {x.reached ? analysis::CriterionStatus::decided : analysis::CriterionStatus::not_reached,
                  x.reached ? x.revolutions : nan};
@@ -644,20 +644,23 @@ namespace wearlink::workflows
       life["first_criterion"]  = head.at("criterion");
       life["life_revolutions"] = any ? head.at("revolutions") : Json();
       life["life_hours"]       = any ? head.at("hours") : Json();
-      if (scene.life.response_rise > 0)
+      if (scene.life.limit(analysis::Criterion::response_rise) > 0)
         {
           const auto trend = models();
-          life["response"] = {
-            {"body", scene.mechanism->get_bodies()[body].name},
-            {"cycles", scene.life.response_cycles},
-            {"measured_fresh_m_s2", history.response.front()},
-            {"measured_last_m_s2", history.response.back()},
-            {"measurements", trend.points()},
-            {"revolutions", history.revolutions},
-            {"measures_m_s2", finite_or_null(history.response)},
-            {"trend_model", analysis::family_name(trend.chosen())},
-            {"model_choice", "the smallest BIC = n ln(RSS/n) + p ln n"},
-            {"models", models_block(trend, scene.life.response_rise, revolutions_run, scene.life.response_tolerance)}};
+          life["response"] = {{"body", scene.mechanism->get_bodies()[body].name},
+                              {"cycles", scene.life.response_cycles},
+                              {"measured_fresh_m_s2", history.response.front()},
+                              {"measured_last_m_s2", history.response.back()},
+                              {"measurements", trend.points()},
+                              {"revolutions", history.revolutions},
+                              {"measures_m_s2", finite_or_null(history.response)},
+                              {"trend_model", analysis::family_name(trend.chosen())},
+                              {"model_choice", "the smallest BIC = n ln(RSS/n) + p ln n"},
+                              {"models",
+                               models_block(trend,
+                                            scene.life.limit(analysis::Criterion::response_rise),
+                                            revolutions_run,
+                                            scene.life.response_tolerance)}};
         }
       return life;
     }
@@ -672,12 +675,19 @@ namespace wearlink::workflows
       throw InputError("`wearlink life` runs the wear loop, but no clearance joint of " + scene.file +
                        " has a Wear law: set 'Joint <J>/Clearance/Wear law = archard' with its Pressure "
                        "model and archard data (see params/nine_bar_wear.prm).");
+    std::string entries;
+    for (const auto &row : analysis::criteria_table())
+      {
+        const int   power = static_cast<int>(std::lround(std::log10(row.upper)));
+        const bool  round = power >= 4 && std::abs(row.upper - std::pow(10.0, power)) < 1e-9 * row.upper;
+        std::string upper = round ? "1e" + std::to_string(power) : format_number(row.upper, 6); // 1e9, 0.1
+        entries +=
+          std::string(entries.empty() ? "" : ", ") + "'Life/" + row.entry + "' (" + row.unit + ", > 0 … " + upper + ")";
+      }
     throw InputError("In " + scene.file +
                      ", subsection 'Life' sets no stop criterion, so `wearlink life` would not know when "
-                     "the joint is worn out. Set at least one of 'Life/Maximum wear depth' (m, > 0 … 0.1), "
-                     "'Life/Radial clearance growth' (m, > 0 … 0.1), 'Life/Pin mass loss' (mg, > 0 … 1e9), "
-                     "'Life/Bushing mass loss' (mg, > 0 … 1e9), 'Life/Response rise' (%, > 0 … 1e4) to a "
-                     "positive limit, e.g. --set \"Life/Maximum wear depth=5e-5\".");
+                     "the joint is worn out. Set at least one of " +
+                     entries + " to a positive limit, e.g. --set \"Life/Maximum wear depth=5e-5\".");
   }
 
   LifeRunResult
