@@ -121,7 +121,7 @@ namespace wearlink::analysis
     unsigned int        response_cycles    = 3;    ///< cycles averaged (after one settling cycle)
     double              response_tolerance = 0.5;  ///< largest width of the trend's 95 % interval / its crossing [-]
     double              tolerance          = 0.02; ///< τ [-]
-    double              max_revolutions    = 1e8;  ///< the run ends there at the latest [-]
+    double              max_revolutions    = 1e9;  ///< the run ends there at the latest [-]
     unsigned int        max_iterations     = 1000; ///< and after this many iterations
 
     /** The limit of @p kind (0: off). */

@@ -26,11 +26,7 @@ namespace wearlink::workflows
 {
   namespace
   {
-    namespace P = dealii::Patterns;
-
     using numbers::two_pi;
-
-    const char *const analysis_names = "phase-portrait|poincare|lyapunov";
 
     /** Relative difference below which two driver speeds are the same [-]. */
     constexpr double same_speed = 1e-12;

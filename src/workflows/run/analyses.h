@@ -26,17 +26,11 @@
 #include "base/json.h"
 #include "io/scene.h"
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace wearlink
-{
-  class ParameterReader;
-}
 
 namespace wearlink::workflows
 {
