@@ -157,6 +157,12 @@ namespace wearlink::analysis
     return row_of(criterion.kind).trend;
   }
 
+  bool
+  first_for_certain(const TrendCrossing &t, const double wear_life)
+  {
+    return t.status != CriterionStatus::decided && t.reached && t.interval.bounded() && t.interval.high < wear_life;
+  }
+
   std::string
   status_name(const CriterionStatus status)
   {
@@ -178,13 +184,14 @@ namespace wearlink::analysis
                        const std::vector<JointDensities> &densities,
                        const double                       f)
   {
-    if (!row_of(c.kind).joint_value)
+    const auto &row = row_of(c.kind);
+    if (!row.joint_value)
       return {nan, ""};
     CriterionValue out{-1, ""};
     for (std::size_t i = 0; i < p.joints.size(); ++i)
       {
         const auto &j      = p.joints[i];
-        const bool  depths = row_of(c.kind).depths;
+        const bool  depths = row.depths;
         double      h_pin = 0, h_bore = 0;
         if (depths) // (the mass criteria need no depths)
           {
@@ -195,11 +202,10 @@ namespace wearlink::analysis
             h_bore =
               extrapolated_envelope(j.depth_bore, j.bore_increment, f, window_of(j.state, r_bore, j.depth_bore.size()));
           }
-        const double v =
-          row_of(c.kind).joint_value(h_pin,
-                                     h_bore,
-                                     milligrams(j.volume_pin + f * j.pin_volume_increment, densities[i].pin),
-                                     milligrams(j.volume_bore + f * j.bore_volume_increment, densities[i].bushing));
+        const double v = row.joint_value(h_pin,
+                                         h_bore,
+                                         milligrams(j.volume_pin + f * j.pin_volume_increment, densities[i].pin),
+                                         milligrams(j.volume_bore + f * j.bore_volume_increment, densities[i].bushing));
         if (v > out.value)
           out = {v, j.state ? j.state->name : ""};
       }
@@ -211,17 +217,18 @@ namespace wearlink::analysis
                        const wear::WearState             &state,
                        const std::vector<JointDensities> &densities)
   {
-    if (!row_of(c.kind).joint_value)
+    const auto &row = row_of(c.kind);
+    if (!row.joint_value)
       return {nan, ""};
     CriterionValue out{-1, ""};
     for (std::size_t i = 0; i < state.joints.size(); ++i)
       {
         const auto                 &js = state.joints[i];
         const wear::IterationRecord r  = js.history.empty() ? wear::IterationRecord() : js.history.back();
-        const double                v  = row_of(c.kind).joint_value(r.envelope_depth_pin,
-                                                    r.envelope_depth_bore,
-                                                    milligrams(r.volume_pin, densities[i].pin),
-                                                    milligrams(r.volume_bore, densities[i].bushing));
+        const double                v  = row.joint_value(r.envelope_depth_pin,
+                                         r.envelope_depth_bore,
+                                         milligrams(r.volume_pin, densities[i].pin),
+                                         milligrams(r.volume_bore, densities[i].bushing));
         if (v > out.value)
           out = {v, js.name};
       }

@@ -258,6 +258,15 @@ namespace wearlink::analysis
   TrendCrossing
   trend_crossing(const ResponseModels &models, double limit, double revolutions_run, double tolerance);
 
+  /**
+   * True if the trend criterion @p t, reached but located less precisely than its
+   * tolerance, still certainly comes first: the whole 95 % interval of its crossing ends
+   * before @p wear_life (the earliest wear life it competes with; +∞ if none). Then it is
+   * the life, with that interval.
+   */
+  bool
+  first_for_certain(const TrendCrossing &t, double wear_life);
+
   /** What the headline needs of a criterion's result. */
   struct CriterionOutcome
   {

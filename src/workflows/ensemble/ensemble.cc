@@ -274,14 +274,14 @@ namespace wearlink::workflows
       const double                   limit = json_number(spec.at("limit"));
       const auto t = analysis::trend_crossing(models, limit, x.back(), json_number(spec.at("response_tolerance")));
       const bool precise = t.status == analysis::CriterionStatus::decided;
-      const bool first   = !precise && t.reached && t.interval.bounded() && t.interval.high < wear_p10;
+      const bool first   = analysis::first_for_certain(t, wear_p10);
       const bool decided = precise || first;
       Json       o       = {{"measurements", x.size()},
                             {"trend_model", analysis::family_name(t.family)},
                             {"reached", t.reached},
                             {"decided", decided},
                             {"within_tolerance", precise},
-                            {"revolutions", std::isfinite(t.revolutions) ? Json(t.revolutions) : Json()},
+                            {"revolutions", number_or_null(t.revolutions)},
                             {"interval_revolutions",
                  t.interval.bounded() ? Json::array({t.interval.low, t.interval.high}) : Json()},
                             {"rise_at_end_ci95_percent",

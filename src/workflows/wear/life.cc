@@ -305,14 +305,11 @@ namespace wearlink::workflows
     bool
     LifeRun::first_for_certain(const std::size_t c) const
     {
-      const auto x = trend_state(c);
-      if (x.status == analysis::CriterionStatus::decided || !x.reached || !x.interval.bounded())
-        return false;
       double wear_life = std::numeric_limits<double>::infinity();
       for (std::size_t w = 0; w < history.criteria.size(); ++w)
         if (!analysis::is_trend(history.criteria[w]) && crossing(w).reached)
           wear_life = std::min(wear_life, crossing(w).revolutions);
-      return x.interval.high < wear_life;
+      return analysis::first_for_certain(trend_state(c), wear_life);
     }
 
     /**
