@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace wearlink::contact
@@ -28,14 +29,24 @@ namespace wearlink::contact
     , normal_law(std::move(normal))
     , friction_law(std::move(friction))
     , gap(description.geometry.bore, description.geometry.pin)
-    , contact_stiffness(wearlink::contact::contact_stiffness(description.geometry.bore.mean_radius(),
-                                                             description.geometry.pin.mean_radius(),
+    , reference_radius(description.slice.count > 1 ? description.slice.nominal_bore_radius :
+                                                     description.geometry.bore.mean_radius())
+    , reference_clearance(description.slice.count > 1 ?
+                            description.slice.nominal_bore_radius - description.slice.nominal_pin_radius :
+                            description.geometry.bore.mean_radius() - description.geometry.pin.mean_radius())
+  {
+    // A slice: the share of the joint's stiffness, from its radii before its crown and
+    // relief (they change its gap, not its K).
+    const bool sliced = description.slice.count > 1;
+    contact_stiffness = wearlink::contact::contact_stiffness(sliced ? description.slice.nominal_bore_radius :
+                                                                      description.geometry.bore.mean_radius(),
+                                                             sliced ? description.slice.nominal_pin_radius :
+                                                                      description.geometry.pin.mean_radius(),
                                                              description.geometry.bushing,
                                                              description.geometry.pin_material,
-                                                             description.effective_radius))
-    , reference_radius(description.geometry.bore.mean_radius())
-    , reference_clearance(description.geometry.bore.mean_radius() - description.geometry.pin.mean_radius())
-  {
+                                                             description.effective_radius);
+    if (sliced)
+      contact_stiffness *= description.slice.share;
     // The law builds what the form needs (NormalForceLaw::use_conformal()).
     normal_law->use_conformal(description.clearance_form == ClearanceForm::conformal);
     normal_law->update_geometry(description.geometry);
@@ -488,25 +499,64 @@ namespace wearlink::contact
                                         const mbs::Vec2 &start,
                                         bool            &converged) const
   {
+    return contact::eccentricity_carrying({this}, force, relative_angle, start, converged);
+  }
+
+  mbs::Vec2
+  slices_elastic_force(const std::vector<const ClearanceJoint *> &slices,
+                       const mbs::Vec2                           &e,
+                       const double                               relative_angle)
+  {
+    mbs::Vec2 sum(0, 0);
+    for (const auto *j : slices)
+      sum += j->elastic_force(e + slices.front()->get_description().slice.bore_offset -
+                                j->get_description().slice.bore_offset,
+                              relative_angle);
+    return sum;
+  }
+
+  namespace
+  {
+    /** The largest overlap of @p slices with the pin at @p e (the first slice's frame) [m]. */
+    double
+    largest_overlap(const std::vector<const ClearanceJoint *> &slices, const mbs::Vec2 &e, const double relative_angle)
+    {
+      double largest = -std::numeric_limits<double>::infinity();
+      for (const auto *j : slices)
+        largest = std::max(largest,
+                           j->overlap(e + slices.front()->get_description().slice.bore_offset -
+                                        j->get_description().slice.bore_offset,
+                                      relative_angle));
+      return largest;
+    }
+  } // namespace
+
+  mbs::Vec2
+  eccentricity_carrying(const std::vector<const ClearanceJoint *> &slices,
+                        const mbs::Vec2                           &force,
+                        const double                               relative_angle,
+                        const mbs::Vec2                           &start,
+                        bool                                      &converged)
+  {
     // Damped Newton on r(e) = F(e) − force, the Jacobian by central differences a
     // thousandth of the overlap wide (the force is smooth there), halving the step until
     // |r| falls.
+    const auto carried = [&](const mbs::Vec2 &e) {
+      return slices_elastic_force(slices, e, relative_angle);
+    };
     const double target   = force.norm();
     mbs::Vec2    e        = start;
-    mbs::Vec2    residual = elastic_force(e, relative_angle) - force;
+    mbs::Vec2    residual = carried(e) - force;
     converged             = residual.norm() <= 1e-9 * target;
     for (int it = 0; it < 50 && !converged; ++it)
       {
-        const double overlap =
-          field != nullptr ? field->overlap(e, relative_angle) : gap.evaluate(e, 0, relative_angle).penetration;
-        const double    h = std::max(1e-13, 1e-3 * std::abs(overlap));
+        const double    h = std::max(1e-13, 1e-3 * std::abs(largest_overlap(slices, e, relative_angle)));
         Eigen::Matrix2d jacobian;
         for (int k = 0; k < 2; ++k)
           {
             mbs::Vec2 step(0, 0);
-            step[k] = h;
-            jacobian.col(k) =
-              (elastic_force(e + step, relative_angle) - elastic_force(e - step, relative_angle)) / (2 * h);
+            step[k]         = h;
+            jacobian.col(k) = (carried(e + step) - carried(e - step)) / (2 * h);
           }
         const mbs::Vec2 delta = -jacobian.colPivHouseholderQr().solve(residual);
         double          scale = 1;
@@ -514,7 +564,7 @@ namespace wearlink::contact
         for (int k = 0; k < 40 && !moved; ++k, scale *= 0.5)
           {
             const mbs::Vec2 trial = e + scale * delta;
-            const mbs::Vec2 r     = elastic_force(trial, relative_angle) - force;
+            const mbs::Vec2 r     = carried(trial) - force;
             if (r.norm() < residual.norm())
               {
                 e        = trial;
@@ -527,6 +577,12 @@ namespace wearlink::contact
         converged = residual.norm() <= 1e-9 * target;
       }
     return e;
+  }
+
+  double
+  ClearanceJoint::overlap(const mbs::Vec2 &e, const double relative_angle) const
+  {
+    return field != nullptr ? field->overlap(e, relative_angle) : gap.evaluate(e, 0, relative_angle).penetration;
   }
 
   JointDiagnostics

@@ -14,6 +14,7 @@
 // that penetrate before an onset has been located use the current δ̇ as provisional δ̇⁻.
 #pragma once
 
+#include "contact/axial_slices.h"
 #include "contact/friction_law.h"
 #include "contact/gap.h"
 #include "contact/normal_force_law.h"
@@ -74,6 +75,12 @@ namespace wearlink::contact
     bool   hold_persistent_contact = false;
     double hold_velocity           = 1e-3; ///< [m/s]
     double hold_acceleration       = 50;   ///< [m/s²]
+    /**
+     * The joint's slice, when it is one of a sliced joint (contact/axial_slices.h): its
+     * stiffness is slice.share of the joint's, computed from the nominal radii; its
+     * bushing_point already holds the bore's offset. count = 1: the whole joint.
+     */
+    AxialSlice slice;
   };
 
   /** Everything about the joint at one state, for recording and pressure models. */
@@ -210,6 +217,14 @@ namespace wearlink::contact
     mbs::Vec2
     eccentricity_carrying(const mbs::Vec2 &force, double relative_angle, const mbs::Vec2 &start, bool &converged) const;
 
+    /**
+     * The rigid profiles' overlap with the pin centre at @p e (bushing frame) [m] and the
+     * relative angle @p relative_angle [rad]: the conformal field's, or the gap's
+     * (negative: apart).
+     */
+    double
+    overlap(const mbs::Vec2 &e, double relative_angle) const;
+
     /** The conformal field in use (worn profiles, ClearanceForm::conformal), or nullptr. */
     const ConformalField *
     conformal_field() const
@@ -317,6 +332,38 @@ namespace wearlink::contact
     mutable std::vector<double> shifted;  ///< (q, q̇) shifted along q̇ (convective_rate)
     std::vector<double>         hold_row; ///< w of update_hold()
   };
+
+  /**
+   * Slice @p i of the joint @p joint cut as @p layout says (contact/axial_slices.h): its
+   * name, its share of the length, its bore centre moved by the misalignment's offset
+   * (bushing_point), its pin radius less the crown and its bore radius plus the relief.
+   * @p joint's profiles are the slice's before crown and relief (its K is computed from
+   * them, as the joint's). For layout.count = 1, @p joint itself.
+   */
+  ClearanceJointDescription
+  slice_of(const ClearanceJointDescription &joint, const SliceLayout &layout, unsigned int i);
+
+  /**
+   * The elastic force of the bushing on the pin [N] (bushing frame), summed over
+   * @p slices of one joint (or one whole joint), with the pin centre at @p e from the
+   * first slice's bore centre (bushing frame) [m]: slice j sees e + o₀ − o_j, o the
+   * slices' bore offsets.
+   */
+  mbs::Vec2
+  slices_elastic_force(const std::vector<const ClearanceJoint *> &slices, const mbs::Vec2 &e, double relative_angle);
+
+  /**
+   * The pin centre (from the first slice's bore centre, bushing frame) at which
+   * @p slices carry @p force together (see slices_elastic_force()), by a damped Newton
+   * method from @p start; @p converged tells whether the force was matched to 1e-9 of
+   * its size (otherwise the best point found is returned).
+   */
+  mbs::Vec2
+  eccentricity_carrying(const std::vector<const ClearanceJoint *> &slices,
+                        const mbs::Vec2                           &force,
+                        double                                     relative_angle,
+                        const mbs::Vec2                           &start,
+                        bool                                      &converged);
 
   /** K = 4/(3(σ1 + σ2)) √R* (seed eq. 10), R* per @p form from the nominal radii. */
   double

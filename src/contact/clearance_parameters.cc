@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "contact/clearance_parameters.h"
 
+#include "base/numbers.h"
 #include "base/text.h"
 #include "contact/friction_law.h"
 #include "contact/normal_force_law.h"
@@ -47,6 +48,76 @@ namespace wearlink::contact
               "|δ̈| below which a persisting contact may be held: far below the deceleration of "
               "an impact at its deepest point ('Persistent contact = held').",
               "m/s²");
+    }
+
+    /** "Slices": the joint cut along its pin (doc/models.md §1.8; contact/axial_slices.h). */
+    void
+    declare_slices(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Slices");
+      declare(prm,
+              "Axial slices",
+              "1",
+              P::Integer(1, max_axial_slices),
+              "n: the joint is cut into n slices of Axial length / n along the pin, each with its "
+              "own gap, pressure and wear, and the joint's planar force is their sum (doc/models.md "
+              "§1.8). 1: the two-dimensional joint (pressure and wear uniform along the pin). "
+              "Misalignment, a crown and an edge relief need n ≥ 2; 10 resolve the edge load of a "
+              "misaligned pin to a few per cent of the largest slice force. At most 200.",
+              "none");
+      declare(prm,
+              "Misalignment",
+              "0",
+              P::Double(0, 0.05),
+              "γ, the tilt of the bore's axis against the pin's, 0 … 0.05 rad: the bore centre at "
+              "height z along the pin lies z tan γ off the nominal one. Tolerances of bored joints "
+              "are 1e-4 … 1e-3 rad; the offset over the half-length must stay inside the radial "
+              "clearance, or the pin does not fit.",
+              "rad");
+      declare(prm,
+              "Misalignment direction",
+              "0",
+              P::Double(-360, 360),
+              "ψ, the direction of the tilt's axis in the bushing body's frame (0: its x axis): the "
+              "bore centres move along (sin ψ, −cos ψ), opposite at the two ends of the bushing.",
+              "deg");
+      declare(prm,
+              "Pin crown",
+              "none",
+              P::Selection("none|circular|logarithmic"),
+              "The pin's profile along its axis. 'none': straight. 'circular': the radius falls by "
+              "Crown drop × (2z/L)² towards the ends. 'logarithmic': Lundberg's profile "
+              "2Q/(π E' L) ln(1/(1 − (2z/L)²)) for the design load Q = Crown design load, "
+              "1/E' = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂.",
+              "none");
+      declare(prm,
+              "Crown drop",
+              "0",
+              P::Double(0, 1e-3),
+              "The circular crown's radius loss at the pin's ends (Pin crown = circular), 0 … 1 mm.",
+              "m");
+      declare(prm,
+              "Crown design load",
+              "0",
+              P::Double(0, 1e8),
+              "Q of the logarithmic crown (Pin crown = logarithmic): the load under which it makes "
+              "the axial pressure of an aligned stiff pin uniform in an elastic half-space.",
+              "N");
+      declare(prm,
+              "Edge relief depth",
+              "0",
+              P::Double(0, 1e-3),
+              "The bore's radius gain at the bushing's ends, growing as the square of the distance "
+              "into the relief, 0 … 1 mm.",
+              "m");
+      declare(prm,
+              "Edge relief length",
+              "0",
+              P::Double(0, 1),
+              "How far the edge relief reaches in from each end of the bushing; at most half the "
+              "Axial length.",
+              "m");
+      prm.leave_subsection();
     }
   } // namespace
 
@@ -135,6 +206,7 @@ namespace wearlink::contact
             "any FE mesh of it; more would only exhaust memory.",
             "none");
     declare_persistent_contact(prm);
+    declare_slices(prm);
     normal_force_laws().declare_all(prm);
     friction_laws().declare_all(prm);
   }
@@ -181,6 +253,56 @@ namespace wearlink::contact
     d.hold_persistent_contact = r.get("Persistent contact") == "held";
     d.hold_velocity           = r.get_double("Hold velocity");
     d.hold_acceleration       = r.get_double("Hold acceleration");
+  }
+
+  SliceLayout
+  read_slice_layout(ParameterReader &r, const ClearanceJointDescription &d)
+  {
+    SliceLayout l;
+    r.enter("Slices");
+    l.count                   = static_cast<unsigned int>(r.get_integer("Axial slices"));
+    l.misalignment            = r.get_double("Misalignment");
+    l.tilt_direction          = r.get_double("Misalignment direction") * numbers::pi / 180;
+    const std::string crown   = r.get("Pin crown");
+    l.crown                   = crown == "circular"    ? PinCrown::circular :
+                                crown == "logarithmic" ? PinCrown::logarithmic :
+                                                         PinCrown::none;
+    l.crown_drop              = r.get_double("Crown drop");
+    l.crown_load              = r.get_double("Crown design load");
+    l.relief_depth            = r.get_double("Edge relief depth");
+    l.relief_length           = r.get_double("Edge relief length");
+    const double length       = d.geometry.axial_length;
+    const auto   needs_slices = [&](const std::string &entry) {
+      if (l.count < 2)
+        r.fail(entry,
+               "it acts along the pin, and the joint has one slice (Axial slices = 1)",
+               "Set Axial slices ≥ 2 (10 resolve an edge load), or leave " + entry + " at its default.");
+    };
+    if (l.misalignment > 0)
+      needs_slices("Misalignment");
+    if (l.crown != PinCrown::none)
+      needs_slices("Pin crown");
+    if (l.relief_depth > 0)
+      needs_slices("Edge relief depth");
+    if (l.crown == PinCrown::circular && !(l.crown_drop > 0))
+      r.fail("Crown drop", "it must be > 0 m with Pin crown = circular");
+    if (l.crown == PinCrown::logarithmic && !(l.crown_load > 0))
+      r.fail("Crown design load", "it must be > 0 N with Pin crown = logarithmic");
+    if (l.relief_depth > 0 && !(l.relief_length > 0 && l.relief_length <= 0.5 * length))
+      r.fail("Edge relief length",
+             "it must be > 0 and at most half the Axial length (" + format_number(0.5 * length) +
+               " m) with an Edge relief depth");
+    if (l.count > 1 && d.hold_persistent_contact)
+      r.fail("Axial slices",
+             "a sliced joint is integrated with the compliant law (Persistent contact = held holds one contact)",
+             "Set Persistent contact = compliant, or Axial slices = 1.");
+    if (l.count > 1 && d.normal_force_law == "fe")
+      r.fail("Axial slices",
+             "the fe normal force law tabulates the whole joint's FE model; a slice has no table of its own",
+             "Use a closed-form normal force law with slices (the fe pressure model acts per slice), or Axial "
+             "slices = 1.");
+    r.leave();
+    return l;
   }
 
   void

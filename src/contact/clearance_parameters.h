@@ -15,6 +15,9 @@
 
 namespace wearlink::contact
 {
+  /** Upper bound of 'Slices/Axial slices'. */
+  inline constexpr int max_axial_slices = 200;
+
   /** Upper bound of 'Number of discrete areas' (see its documentation). */
   inline constexpr int max_discrete_areas = 100000;
 
@@ -37,6 +40,13 @@ namespace wearlink::contact
   /** Axial length, materials and the effective-radius convention into @p d. */
   void
   read_clearance_materials(ParameterReader &r, ClearanceJointDescription &d);
+
+  /**
+   * The "Slices" subsection (@p r inside "Clearance"), checked against the joint @p d
+   * (its axial length, normal force law and persistent-contact mode, read before).
+   */
+  SliceLayout
+  read_slice_layout(ParameterReader &r, const ClearanceJointDescription &d);
 
   /**
    * Warn (into @p warnings) when joint @p joint's friction coefficient @p mu is above 1:

@@ -485,4 +485,37 @@ namespace wearlink::io
       return s.str();
     });
   }
+
+  bool
+  plot_heat_map_png(const HeatMap &map, const std::string &png_path)
+  {
+    return render(png_path, map.width, map.height, [&](const std::filesystem::path &dir) {
+      // gnuplot's nonuniform matrix: a first row of the x values after the count, then
+      // one row per y, its y value first.
+      const auto    data = dir / "map.dat";
+      std::ofstream out(data);
+      out << std::setprecision(9) << map.x.size();
+      for (const double x : map.x)
+        out << ' ' << x;
+      out << '\n';
+      for (std::size_t j = 0; j < map.y.size(); ++j)
+        {
+          out << map.y[j];
+          for (const double z : map.z[j])
+            out << ' ' << z;
+          out << '\n';
+        }
+      check_scratch_written(out, data);
+      std::ostringstream script;
+      script << "reset\n"
+             << "set title " << quote(map.title) << " noenhanced\n"
+             << "set xlabel " << quote(map.x_label) << " noenhanced\n"
+             << "set ylabel " << quote(map.y_label) << " noenhanced\n"
+             << "set cblabel " << quote(map.z_label) << " noenhanced\n"
+             << "set palette defined (0 '#ffffff', 1 '#fee391', 2 '#fe9929', 3 '#cc4c02', 4 '#662506')\n"
+             << "set autoscale xfix\nset autoscale yfix\nset tics out\n"
+             << "plot " << quote(data.string()) << " nonuniform matrix using 1:2:3 with image notitle\n";
+      return script.str();
+    });
+  }
 } // namespace wearlink::io

@@ -184,6 +184,22 @@ namespace wearlink::io
                   int                          width  = 1600,
                   int                          height = 700);
 
+  /**
+   * A field over a rectangle drawn as colours: z[j][i] at (x[i], y[j]) (nonuniform
+   * spacing allowed), the colour bar labelled @p z_label.
+   */
+  struct HeatMap
+  {
+    std::string                      title, x_label, y_label, z_label;
+    std::vector<double>              x, y;
+    std::vector<std::vector<double>> z; ///< one row per y
+    int                              width = 1100, height = 600;
+  };
+
+  /** Render @p map to @p png_path. Returns false (and warns) if gnuplot is missing. */
+  bool
+  plot_heat_map_png(const HeatMap &map, const std::string &png_path);
+
   /** True if a gnuplot executable is on PATH. */
   bool
   gnuplot_available();

@@ -123,18 +123,23 @@ namespace wearlink::io
 
     /**
      * The two profiles of the clearance joint in @p r's current section (round, or from
-     * its profile files) into @p d, for the nominal @p size.
+     * its profile files) into @p d, for the nominal @p size. In a sliced joint, a file
+     * name's "{slice}" stands for the slice's number @p slice ("01", "02", …: one worn
+     * profile per slice, as a wear run writes them).
      */
     void
     read_clearance_profiles(ParameterReader                    &r,
                             const contact::ClearanceSize       &size,
+                            const std::string                  &slice,
                             contact::ClearanceJointDescription &d)
     {
       const double pin_radius = size.bore_radius - size.radial_clearance;
       auto         profile    = [&](const std::string &entry, double radius) {
-        const std::string f = r.get(entry);
+        std::string f = r.get(entry);
         if (f.empty())
           return Profile::round(radius, size.n_areas);
+        if (const auto at = f.find("{slice}"); at != std::string::npos && !slice.empty())
+          f.replace(at, 7, slice);
         const std::string path = resolve_relative(r.file(), f);
         std::error_code   ec; // a name too long for the system is a name of no file, not an exception
         if (!std::filesystem::exists(path, ec))
@@ -154,6 +159,64 @@ namespace wearlink::io
                        " m) is not smaller than the bore profile (mean radius " +
                        format_number(d.geometry.bore.mean_radius()) + " m): the pin does not fit in the bore.");
       io::check_pin_inside_bore(r, d.geometry.bore, d.geometry.pin);
+    }
+
+    /**
+     * The laws of the clearance joint in @p r's current section, made for the joint (or
+     * for one of its slices) named @p name.
+     */
+    std::unique_ptr<contact::ClearanceJoint>
+    make_clearance_joint(Scene &scene, ParameterReader &r, contact::ClearanceJointDescription d)
+    {
+      auto normal = contact::normal_force_laws().create(d.normal_force_law, r, "Normal force law");
+      std::unique_ptr<contact::FrictionLaw> friction;
+      if (r.get("Friction law") != "none")
+        {
+          friction = contact::friction_laws().create(r.get("Friction law"), r, "Friction law");
+          if (d.slice.index == 0)
+            contact::check_friction_coefficient(d.slice.count > 1 ? d.slice.joint : d.name,
+                                                friction->coefficient(),
+                                                scene.warnings);
+        }
+      return std::make_unique<contact::ClearanceJoint>(std::move(d), std::move(normal), std::move(friction));
+    }
+
+    /**
+     * Assembly pins the pin centre at the initial eccentricity @p e0 (bushing frame),
+     * where the rigid profiles of @p d (a joint or a slice: its bore centre moved by the
+     * misalignment) must not overlap (round ones: |e0| < c; a worn bore also admits its
+     * pocket), at the bodies' initial angles.
+     */
+    void
+    check_initial_eccentricity(const Scene                              &scene,
+                               ParameterReader                          &r,
+                               const contact::ClearanceJointDescription &d,
+                               const mbs::Vec2                          &e0,
+                               const double                              clearance)
+    {
+      const auto angle_guess = [&](const int body) {
+        return body == mbs::ground ? 0.0 : scene.mechanism->get_bodies()[body].initial_angle;
+      };
+      const double overlap =
+        contact::Gap(d.geometry.bore, d.geometry.pin)
+          .evaluate(e0 - d.slice.bore_offset, 0.0, angle_guess(d.pin_body) - angle_guess(d.bushing_body))
+          .penetration;
+      if (overlap < 0)
+        return;
+      if (d.slice.count > 1)
+        r.fail("Initial eccentricity",
+               "at slice " + std::to_string(d.slice.index + 1) + " of " + std::to_string(d.slice.count) +
+                 " (z = " + format_number(d.slice.position, 4) + " m, bore centre moved by the misalignment by " +
+                 format_number(d.slice.bore_offset.norm(), 3) + " m) the pin would overlap the bore by " +
+                 format_number(overlap, 3) + " m",
+               "The misaligned (crowned, relieved) pin must fit in its bore at assembly: lower Slices/Misalignment "
+               "(its offset over the half length, L/2 tan γ, must stay within the radial clearance " +
+                 format_number(clearance) + " m), or move the initial eccentricity against the tilt.");
+      r.fail("Initial eccentricity",
+             "the pin would overlap the bore there by " + format_number(overlap) +
+               " m; it must lie inside the clearance (round profiles: a length smaller than the radial "
+               "clearance, " +
+               format_number(clearance) + " m)");
     }
 
     void
@@ -178,56 +241,38 @@ namespace wearlink::io
       if (d.pin_body == mbs::ground && d.bushing_body == mbs::ground)
         r.fail_section("a clearance joint needs at least one moving body.");
 
-      const auto   size      = contact::read_clearance_size(r);
-      const double clearance = size.radial_clearance;
-      read_clearance_profiles(r, size, d);
+      const auto size = contact::read_clearance_size(r);
       contact::read_clearance_materials(r, d);
-
-      d.normal_force_law = r.get("Normal force law");
-      auto normal        = contact::normal_force_laws().create(d.normal_force_law, r, "Normal force law");
-      std::unique_ptr<contact::FrictionLaw> friction;
-      if (r.get("Friction law") != "none")
+      d.normal_force_law     = r.get("Normal force law");
+      const auto      layout = contact::read_slice_layout(r, d);
+      const mbs::Vec2 e0     = vec(r.get_point("Initial eccentricity"));
+      for (unsigned int i = 0; i < layout.count; ++i)
         {
-          friction = contact::friction_laws().create(r.get("Friction law"), r, "Friction law");
-          contact::check_friction_coefficient(joint, friction->coefficient(), scene.warnings);
+          const std::string number =
+            layout.count > 1 ? contact::slice_name("", i, layout.count).substr(2) : std::string();
+          read_clearance_profiles(r, size, number, d);
+          auto slice = contact::slice_of(d, layout, i);
+          check_initial_eccentricity(scene, r, slice, e0, size.radial_clearance);
+          if (auto w = wear::read_joint_wear(r, slice.name))
+            scene.wear.push_back(std::move(w));
+          auto element = make_clearance_joint(scene, r, std::move(slice));
+          scene.clearance_joints.push_back(element.get());
+          scene.mechanism->add_force_element(std::move(element));
         }
-
-      // Assembly pins the pin centre at the initial eccentricity (bushing frame), where
-      // the rigid profiles must not overlap (round ones: |e0| < c; a worn bore also
-      // admits its pocket), at the bodies' initial angles.
-      const mbs::Vec2 e0          = vec(r.get_point("Initial eccentricity"));
-      const auto      angle_guess = [&](const int body) {
-        return body == mbs::ground ? 0.0 : scene.mechanism->get_bodies()[body].initial_angle;
-      };
-      const double overlap = contact::Gap(d.geometry.bore, d.geometry.pin)
-                               .evaluate(e0, 0.0, angle_guess(d.pin_body) - angle_guess(d.bushing_body))
-                               .penetration;
-      if (!(overlap < 0))
-        r.fail("Initial eccentricity",
-               "the pin would overlap the bore there by " + format_number(overlap) +
-                 " m; it must lie inside the clearance (round profiles: a length smaller than the radial "
-                 "clearance, " +
-                 format_number(clearance) + " m)");
-      if (auto w = wear::read_joint_wear(r, joint))
-        scene.wear.push_back(std::move(w));
       r.leave();
 
-      auto joint_element =
-        std::make_unique<contact::ClearanceJoint>(std::move(d), std::move(normal), std::move(friction));
-      const auto &desc = joint_element->get_description();
       // Rotate e0 with the bushing's initial angle guess (exact after assembly for a
-      // ground bushing; a good guess otherwise).
+      // ground bushing; a good guess otherwise). One pin per joint: a sliced joint's
+      // slices share the pin, and the nominal bore centre is its assembly's.
       const double bushing_angle =
-        desc.bushing_body == mbs::ground ? 0.0 : scene.mechanism->get_bodies()[desc.bushing_body].initial_angle;
+        d.bushing_body == mbs::ground ? 0.0 : scene.mechanism->get_bodies()[d.bushing_body].initial_angle;
       // A revolute constraint's second body moves: with the pin on the ground, the pair is
       // written the other way round (p_bushing − p_pin = −e).
       const mbs::Vec2 e = mbs::rotate(e0, bushing_angle);
       scene.assembly_constraints.push_back(
-        desc.pin_body == mbs::ground ?
-          mbs::make_revolute(joint, desc.pin_body, desc.pin_point, desc.bushing_body, desc.bushing_point, -e) :
-          mbs::make_revolute(joint, desc.bushing_body, desc.bushing_point, desc.pin_body, desc.pin_point, e));
-      scene.clearance_joints.push_back(joint_element.get());
-      scene.mechanism->add_force_element(std::move(joint_element));
+        d.pin_body == mbs::ground ?
+          mbs::make_revolute(joint, d.pin_body, d.pin_point, d.bushing_body, d.bushing_point, -e) :
+          mbs::make_revolute(joint, d.bushing_body, d.bushing_point, d.pin_body, d.pin_point, e));
     }
 
     /** Output/Plots and Output/Plot bodies (the sliders are already in plot_bodies). */

@@ -420,6 +420,7 @@ namespace wearlink::wear
   {
     bool      active = false;
     mbs::Vec2 eccentricity{0, 0}, force{0, 0};
+    mbs::Vec2 offset{0, 0}; ///< the joint's bore offset (a slice's; contact/axial_slices.h)
     double    relative_angle = 0, direction = 0, bore_radius = 0, pin_radius = 0;
   };
 
@@ -454,6 +455,7 @@ namespace wearlink::wear
       if (!(c.force.norm() > 0))
         return c;
       c.active      = true;
+      c.offset      = d.slice.bore_offset;
       c.direction   = std::atan2(-c.force.y(), -c.force.x());
       c.bore_radius = d.geometry.bore.radius(c.direction);
       c.pin_radius  = d.geometry.pin.radius(c.direction - c.relative_angle);
@@ -564,6 +566,27 @@ namespace wearlink::wear
       carry_contacts(carried);
   }
 
+  namespace
+  {
+    /** The wearing joints by the joint they cut: a sliced joint's slices together, in order. */
+    std::vector<std::vector<unsigned int>>
+    joint_groups(const std::vector<WearingJoint> &wearing)
+    {
+      std::vector<std::vector<unsigned int>> groups;
+      std::map<std::string, std::size_t>     where;
+      for (unsigned int i = 0; i < wearing.size(); ++i)
+        {
+          const auto &d   = wearing[i].joint->get_description();
+          const auto  key = d.slice.count > 1 ? d.slice.joint : d.name;
+          const auto  it  = where.emplace(key, groups.size()).first;
+          if (it->second == groups.size())
+            groups.emplace_back();
+          groups[it->second].push_back(i);
+        }
+      return groups;
+    }
+  } // namespace
+
   void
   WearLoop::carry_contacts(const std::vector<CarriedContact> &carried)
   {
@@ -572,26 +595,47 @@ namespace wearlink::wear
     for (const auto *j : clearance_joints)
       targets.push_back(eccentricity_of(*j, s));
     bool moved = false;
-    for (unsigned int i = 0; i < wearing.size(); ++i)
+    for (const auto &group : joint_groups(wearing))
       {
-        const auto &c = carried[i];
-        if (!c.active)
+        // The joint's carried force (a sliced joint's: the sum over its slices), and the
+        // slice that carried most of it.
+        mbs::Vec2                                    force(0, 0);
+        const CarriedContact                        *most = nullptr;
+        std::vector<const contact::ClearanceJoint *> slices;
+        for (const auto i : group)
+          {
+            slices.push_back(wearing[i].joint);
+            const auto &c = carried[i];
+            if (!c.active)
+              continue;
+            force += c.force;
+            if (most == nullptr || c.force.norm() > most->force.norm())
+              most = &c;
+          }
+        if (most == nullptr)
           continue;
-        // Start from the old position moved by the depth worn at the contact on both surfaces.
-        const auto  &g = wearing[i].joint->get_description().geometry;
-        const double worn =
-          (g.bore.radius(c.direction) - c.bore_radius) + (c.pin_radius - g.pin.radius(c.direction - c.relative_angle));
-        const mbs::Vec2 start     = c.eccentricity + worn * mbs::Vec2(std::cos(c.direction), std::sin(c.direction));
+        // Start from the old position moved by the depth worn at the contact on both
+        // surfaces (of the slice that carried most).
+        const auto  &first = wearing[group.front()].joint->get_description();
+        const auto  &g     = wearing[static_cast<std::size_t>(most - carried.data())].joint->get_description().geometry;
+        const double worn  = (g.bore.radius(most->direction) - most->bore_radius) +
+                            (most->pin_radius - g.pin.radius(most->direction - most->relative_angle));
+        const mbs::Vec2 old_first = most->eccentricity + most->offset - first.slice.bore_offset;
+        const mbs::Vec2 start     = old_first + worn * mbs::Vec2(std::cos(most->direction), std::sin(most->direction));
         bool            converged = false;
-        const mbs::Vec2 e = wearing[i].joint->eccentricity_carrying(c.force, c.relative_angle, start, converged);
-        auto           &u = st.joints[i].start_up;
+        const mbs::Vec2 e = contact::eccentricity_carrying(slices, force, most->relative_angle, start, converged);
+        auto           &u = st.joints[group.front()].start_up;
         u.carries += 1;
         u.carry_failures += converged ? 0 : 1;
-        u.largest_carry = std::max(u.largest_carry, (e - c.eccentricity).norm());
-        const auto k    = static_cast<std::size_t>(
-          std::find(clearance_joints.begin(), clearance_joints.end(), wearing[i].joint) - clearance_joints.begin());
-        targets[k] = s.to_global(wearing[i].joint->get_description().bushing_body, e);
-        moved      = true;
+        u.largest_carry = std::max(u.largest_carry, (e - old_first).norm());
+        for (const auto i : group)
+          {
+            const auto &d = wearing[i].joint->get_description();
+            const auto  k = static_cast<std::size_t>(
+              std::find(clearance_joints.begin(), clearance_joints.end(), wearing[i].joint) - clearance_joints.begin());
+            targets[k] = s.to_global(d.bushing_body, e + first.slice.bore_offset - d.slice.bore_offset);
+          }
+        moved = true;
       }
     if (moved)
       carry_state(st.time, st.state, targets);

@@ -6,6 +6,7 @@
 #include "base/exceptions.h"
 #include "base/interrupt.h"
 #include "base/text.h"
+#include "contact/axial_loads.h"
 #include "io/output_names.h"
 #include "io/scene_periods.h"
 #include "mbs/assembly.h"
@@ -73,6 +74,8 @@ namespace wearlink::workflows
         , progress(progress)
         , bodies(mech.n_bodies())
         , joints(scene.clearance_joints.size())
+        , axial(scene.clearance_joints)
+        , diagnostics(scene.clearance_joints.size())
       {
         rhs_at_start = static_cast<long>(mech.n_evaluations());
         for (unsigned int i = 0; i < joints.size(); ++i)
@@ -238,6 +241,8 @@ namespace wearlink::workflows
             j[cj->name()] = o;
           }
         s["clearance_joints"] = j;
+        if (axial.any())
+          s["sliced_joints"] = axial.json();
         return s;
       }
 
@@ -264,16 +269,18 @@ namespace wearlink::workflows
         const mbs::StateView s(y.data(), y.data() + n, trig.data());
         for (unsigned int k = 0; k < joints.size(); ++k)
           {
-            const auto d          = scene.clearance_joints[k]->diagnostics(s);
-            auto      &js         = joints[k];
-            js.max_normal_force   = std::max(js.max_normal_force, d.normal_force);
-            js.max_elastic_force  = std::max(js.max_elastic_force, d.elastic_force);
-            js.max_friction_force = std::max(js.max_friction_force, std::abs(d.friction_force));
-            js.max_penetration    = std::max(js.max_penetration, d.penetration);
-            const bool in         = d.penetration > 0;
+            const auto &d = diagnostics[k] = scene.clearance_joints[k]->diagnostics(s);
+            auto       &js                 = joints[k];
+            js.max_normal_force            = std::max(js.max_normal_force, d.normal_force);
+            js.max_elastic_force           = std::max(js.max_elastic_force, d.elastic_force);
+            js.max_friction_force          = std::max(js.max_friction_force, std::abs(d.friction_force));
+            js.max_penetration             = std::max(js.max_penetration, d.penetration);
+            const bool in                  = d.penetration > 0;
             js.contact_time += 0.5 * h * ((in ? 1 : 0) + (js.was_in_contact ? 1 : 0));
             js.was_in_contact = in;
           }
+        if (axial.any())
+          axial.record(diagnostics, h);
         using Q        = mbs::MechanismOde;
         const auto   z = 2 * n;
         const double energy =
@@ -346,21 +353,23 @@ namespace wearlink::workflows
         csv->throw_if_failed(); // a full disk stops the run here, not at its end
       }
 
-      io::Scene                            &scene;
-      mbs::Mechanism                       &mech;
-      AtomicFile                           *csv;
-      std::vector<double>                   trig; ///< per step: the bodies' (cos θ, sin θ)
-      double                                interval;
-      bool                                  progress;
-      std::vector<BodyExtremes>             bodies;
-      std::vector<JointStatistics>          joints;
-      double                                energy_start = 0, t_start = 0, next_sample = 0;
-      long                                  n_samples = 0, steps = 0, rhs_at_start = 0;
-      double                                max_violation = 0, max_energy_residual = 0;
-      double                                next_progress = 0.1;
-      std::chrono::steady_clock::time_point wall_start;
-      Eigen::VectorXd                       y_sample, f_sample;
-      std::string                           line; ///< one time-series row, written at once
+      io::Scene                             &scene;
+      mbs::Mechanism                        &mech;
+      AtomicFile                            *csv;
+      std::vector<double>                    trig; ///< per step: the bodies' (cos θ, sin θ)
+      double                                 interval;
+      bool                                   progress;
+      std::vector<BodyExtremes>              bodies;
+      std::vector<JointStatistics>           joints;
+      contact::AxialLoads                    axial;       ///< the sliced joints' axial load
+      std::vector<contact::JointDiagnostics> diagnostics; ///< of the last recorded step, per clearance joint
+      double                                 energy_start = 0, t_start = 0, next_sample = 0;
+      long                                   n_samples = 0, steps = 0, rhs_at_start = 0;
+      double                                 max_violation = 0, max_energy_residual = 0;
+      double                                 next_progress = 0.1;
+      std::chrono::steady_clock::time_point  wall_start;
+      Eigen::VectorXd                        y_sample, f_sample;
+      std::string                            line; ///< one time-series row, written at once
     };
   } // namespace
 

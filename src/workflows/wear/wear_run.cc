@@ -9,6 +9,7 @@
 #include "io/output_names.h"
 #include "io/profile_series.h"
 #include "io/scene_periods.h"
+#include "io/slice_outputs.h"
 #include "io/wear_outputs.h"
 #include "mbs/assembly.h"
 #include "mbs/constraint.h"
@@ -227,7 +228,7 @@ namespace wearlink::workflows
 
     /**
      * How the wear loop carries the mechanism's state onto worn profiles: every clearance
-     * joint pinned at its target eccentricity as a revolute with that offset (as the
+     * joint (a sliced joint by its first slice) pinned at its target eccentricity as a revolute with that offset (as the
      * scene's assembly pins them at their initial ones), positions moved by the least
      * change that satisfies them and the mechanism, velocities kept on the mechanism's
      * constraints (mbs::carry).
@@ -241,6 +242,8 @@ namespace wearlink::workflows
           {
             const auto &d = scene.clearance_joints[k]->get_description();
             const auto &e = eccentricities[k];
+            if (d.slice.index > 0) // a sliced joint's pin: its first slice pins it
+              continue;
             pins.push_back(d.pin_body == mbs::ground ?
                              mbs::make_revolute(d.name, d.pin_body, d.pin_point, d.bushing_body, d.bushing_point, -e) :
                              mbs::make_revolute(d.name, d.bushing_body, d.bushing_point, d.pin_body, d.pin_point, e));
@@ -529,11 +532,14 @@ namespace wearlink::workflows
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
       add_wear_summary(result.summary, scene, st);
+      if (io::has_sliced_joints(scene))
+        result.summary["sliced_joints_wear"] = io::sliced_wear_summary(scene, st);
       result.summary["response"] = response_block(setup, ws, st.response_before_peaks, after_peaks);
       if (write)
         {
           io::write_wear_outputs(dir, scene, st, after); // the worn profile files first:
-          result.timings.outputs += outputs.seconds();   // the two-trajectory runs read them
+          io::write_sliced_wear_outputs(dir, scene, st);
+          result.timings.outputs += outputs.seconds(); // the two-trajectory runs read them
         }
       if (scene.analyses.any())
         {
