@@ -86,13 +86,16 @@ namespace wearlink::contact
   }
 
   std::string
+  slice_number(const unsigned int i, const unsigned int n)
+  {
+    char number[16];
+    std::snprintf(number, sizeof number, "%0*u", n >= 100 ? 3 : 2, i + 1);
+    return number;
+  }
+
+  std::string
   slice_name(const std::string &joint, const unsigned int i, const unsigned int n)
   {
-    if (n <= 1)
-      return joint;
-    const int digits = n >= 100 ? 3 : 2;
-    char      number[16];
-    std::snprintf(number, sizeof number, "%0*u", digits, i + 1);
-    return joint + ".s" + number;
+    return n <= 1 ? joint : joint + ".s" + slice_number(i, n);
   }
 } // namespace wearlink::contact

@@ -82,6 +82,10 @@ namespace wearlink::contact
     double nominal_bore_radius = 0, nominal_pin_radius = 0;
   };
 
+  /** The number of slice @p i of @p n as names and files carry it ("03": two digits, three from 100 slices). */
+  std::string
+  slice_number(unsigned int i, unsigned int n);
+
   /** The name of slice @p i of @p n of joint @p joint ("B.s03"; the joint's own for n = 1). */
   std::string
   slice_name(const std::string &joint, unsigned int i, unsigned int n);

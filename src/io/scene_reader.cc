@@ -248,8 +248,7 @@ namespace wearlink::io
       const mbs::Vec2 e0     = vec(r.get_point("Initial eccentricity"));
       for (unsigned int i = 0; i < layout.count; ++i)
         {
-          const std::string number =
-            layout.count > 1 ? contact::slice_name("", i, layout.count).substr(2) : std::string();
+          const std::string number = layout.count > 1 ? contact::slice_number(i, layout.count) : std::string();
           read_clearance_profiles(r, size, number, d);
           auto slice = contact::slice_of(d, layout, i);
           check_initial_eccentricity(scene, r, slice, e0, size.radial_clearance);
