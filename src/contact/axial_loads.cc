@@ -17,7 +17,7 @@ namespace wearlink::contact
           continue;
         const auto it = where.emplace(s.joint, groups.size()).first;
         if (it->second == groups.size())
-          groups.push_back(Group{s.joint, {}, {}, {}});
+          groups.push_back(Group{s.joint, {}, {}, {}, 0, 0, 0, s.elastic_pin.get()});
         auto &g = groups[it->second];
         g.members.push_back(k);
         g.positions.push_back(s.position);
@@ -37,6 +37,7 @@ namespace wearlink::contact
             g.force_time[i] += h * x.normal_force;
             g.moment_time += h * g.positions[i] * x.normal_force;
             moment += g.positions[i] * x.force_on_pin;
+            g.deflection = std::max(g.deflection, x.pin_deflection.norm());
           }
         g.duration += h;
         g.max_moment = std::max(g.max_moment, moment.norm());
@@ -70,7 +71,12 @@ namespace wearlink::contact
         j["resultant_position_m"] = sum > 0 ? g.moment_time / (sum * duration) : 0.0;
         j["mean_edge_moment_N_m"] = std::abs(moment);
         j["max_edge_moment_N_m"]  = g.max_moment;
-        out[g.joint]              = j;
+        if (g.pin != nullptr)
+          {
+            j["largest_pin_deflection_m"] = g.deflection;
+            j["pin_solve_failures"]       = g.pin->n_failures();
+          }
+        out[g.joint] = j;
       }
     return out;
   }

@@ -37,7 +37,9 @@ namespace wearlink::contact
     /**
      * Per sliced joint: slices, positions_m, mean_normal_force_N, force_share (of the sum),
      * edge_to_mean_force (the largest slice's mean force over the slices' mean),
-     * resultant_position_m, mean_edge_moment_N_m (of the mean forces), max_edge_moment_N_m.
+     * resultant_position_m, mean_edge_moment_N_m (of the mean forces), max_edge_moment_N_m;
+     * with a bending pin also largest_pin_deflection_m (at the recorded steps) and
+     * pin_solve_failures (states where the deflection was not found to its tolerance).
      */
     Json
     json() const;
@@ -49,6 +51,8 @@ namespace wearlink::contact
       std::vector<unsigned int> members; ///< indices into the joints given
       std::vector<double>       positions, force_time;
       double                    moment_time = 0, duration = 0, max_moment = 0;
+      const ElasticPin         *pin        = nullptr; ///< the bending pin, or nullptr
+      double                    deflection = 0;       ///< its largest [m]
     };
     std::vector<Group> groups;
   };

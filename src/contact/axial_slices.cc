@@ -85,6 +85,21 @@ namespace wearlink::contact
     return d;
   }
 
+  std::shared_ptr<ElasticPin>
+  make_elastic_pin(const ClearanceJointDescription &joint, const SliceLayout &layout)
+  {
+    if (layout.count < 2 || layout.bending.support == PinSupport::rigid)
+      return nullptr;
+    PinBending   b = layout.bending;
+    const double r = joint.geometry.pin.mean_radius();
+    if (!(b.bending_stiffness > 0))
+      b.bending_stiffness = joint.geometry.pin_material.youngs_modulus * numbers::pi * std::pow(r, 4) / 4;
+    std::vector<double> z;
+    for (unsigned int i = 0; i < layout.count; ++i)
+      z.push_back(slice_position(i, layout.count, joint.geometry.axial_length));
+    return std::make_shared<ElasticPin>(b, joint.geometry.axial_length, z);
+  }
+
   std::string
   slice_number(const unsigned int i, const unsigned int n)
   {

@@ -22,9 +22,11 @@
 // axial position of the resultant are what the planar model cannot carry and reports.
 #pragma once
 
+#include "contact/elastic_pin.h"
 #include "contact/pressure_model.h"
 #include "mbs/types.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,7 @@ namespace wearlink::contact
     double       crown_load     = 0; ///< logarithmic: Q [N]
     double       relief_depth   = 0; ///< r_d [m]
     double       relief_length  = 0; ///< ℓ [m]
+    PinBending   bending;            ///< rigid, or how the pin bends (contact/elastic_pin.h)
   };
 
   /** z_i of slice @p i of @p n over the length @p length [m]. */
@@ -80,7 +83,19 @@ namespace wearlink::contact
      * and its conformal foundation are the joint's, computed from them.
      */
     double nominal_bore_radius = 0, nominal_pin_radius = 0;
+    /** The joint's bending pin, shared by its slices (nullptr: rigid). */
+    std::shared_ptr<const ElasticPin> elastic_pin;
   };
+
+  struct ClearanceJointDescription;
+
+  /**
+   * The bending pin of @p joint sliced as @p layout says (its EI, when not given, of a
+   * solid pin of the joint's pin radius and modulus: E π r⁴/4), or nullptr for a rigid
+   * pin. Its slices get it in their AxialSlice and attach to it once built.
+   */
+  std::shared_ptr<ElasticPin>
+  make_elastic_pin(const ClearanceJointDescription &joint, const SliceLayout &layout);
 
   /** The number of slice @p i of @p n as names and files carry it ("03": two digits, three from 100 slices). */
   std::string

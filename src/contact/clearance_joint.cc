@@ -139,13 +139,21 @@ namespace wearlink::contact
     c.damping_power         = cf.damping_power;
   }
 
+  mbs::Vec2
+  ClearanceJoint::pin_centre(const mbs::StateView &s) const
+  {
+    const mbs::Vec2 p   = s.point(description.pin_body, description.pin_point);
+    const auto     &pin = description.slice.elastic_pin;
+    return pin ? mbs::Vec2(p + pin->deflection(description.slice.index, s)) : p;
+  }
+
   void
   ClearanceJoint::contact_kinematics(const mbs::StateView &s, Contact &c) const
   {
     const int  bb       = description.bushing_body;
     const int  pb       = description.pin_body;
     const auto p_bore   = s.point(bb, description.bushing_point);
-    const auto p_pin    = s.point(pb, description.pin_point);
+    const auto p_pin    = pin_centre(s);
     const bool per_area = description.clearance_form == ClearanceForm::per_area && !gap.round();
     c.bushing_angle     = s.angle(bb);
     c.pin_angle         = s.angle(pb);
@@ -403,19 +411,22 @@ namespace wearlink::contact
   double
   ClearanceJoint::potential_energy(const mbs::StateView &s) const
   {
+    // A bent pin's strain energy counts once, with its first slice.
+    const auto  &pin     = description.slice.elastic_pin;
+    const double bending = pin && description.slice.index == 0 ? pin->bending_energy(s) : 0.0;
     if (field != nullptr)
       {
         const int       bb = description.bushing_body, pb = description.pin_body;
-        const mbs::Vec2 e = s.point(pb, description.pin_point) - s.point(bb, description.bushing_point);
+        const mbs::Vec2 e = pin_centre(s) - s.point(bb, description.bushing_point);
         ConformalForce  cf;
         field->evaluate(s.to_local(bb, e), s.angle(pb) - s.angle(bb), nullptr, true, cf);
-        return cf.potential;
+        return cf.potential + bending;
       }
     Contact c;
     contact_kinematics(s, c);
     if (!(c.gap.penetration > 0))
-      return 0;
-    return normal_law->potential(normal_input(c));
+      return bending;
+    return normal_law->potential(normal_input(c)) + bending;
   }
 
   NormalContactInput
@@ -439,8 +450,7 @@ namespace wearlink::contact
   ClearanceJoint::event_value(const mbs::StateView &s) const
   {
     const auto   p_bore = s.point(description.bushing_body, description.bushing_point);
-    const auto   p_pin  = s.point(description.pin_body, description.pin_point);
-    const auto   e      = p_pin - p_bore;
+    const auto   e      = pin_centre(s) - p_bore;
     const double tb     = s.angle(description.bushing_body);
     const double tp     = s.angle(description.pin_body);
     if (field != nullptr)
@@ -507,7 +517,14 @@ namespace wearlink::contact
                        const mbs::Vec2                           &e,
                        const double                               relative_angle)
   {
-    mbs::Vec2 sum(0, 0);
+    mbs::Vec2   sum(0, 0);
+    const auto &first = slices.front()->get_description().slice;
+    if (first.elastic_pin) // a bent pin: its slices' forces where it is in equilibrium
+      {
+        for (const auto &f : first.elastic_pin->forces(e + first.bore_offset, relative_angle))
+          sum += f;
+        return sum;
+      }
     for (const auto *j : slices)
       sum += j->elastic_force(e + slices.front()->get_description().slice.bore_offset -
                                 j->get_description().slice.bore_offset,
@@ -594,7 +611,9 @@ namespace wearlink::contact
     const int bb    = description.bushing_body;
     d.bushing_angle = s.angle(bb);
     d.pin_angle     = s.angle(description.pin_body);
-    d.eccentricity  = s.point(description.pin_body, description.pin_point) - s.point(bb, description.bushing_point);
+    d.eccentricity  = pin_centre(s) - s.point(bb, description.bushing_point);
+    if (description.slice.elastic_pin)
+      d.pin_deflection = description.slice.elastic_pin->deflection(description.slice.index, s);
     d.local_eccentricity = mbs::rotate(d.eccentricity, -d.bushing_angle);
     d.penetration        = c.gap.penetration;
     d.normal             = c.gap.normal;

@@ -98,6 +98,7 @@ namespace wearlink::contact
     double    contact_angle = 0;                ///< φ* [rad], global
     mbs::Vec2 force_on_pin{0, 0};               ///< −F_n n + F_t t [N]
     double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
+    mbs::Vec2 pin_deflection{0, 0};             ///< a bent pin's at this slice, global (in eccentricity) [m]
   };
 
   class ClearanceJoint : public mbs::ForceElement
@@ -269,6 +270,9 @@ namespace wearlink::contact
     }
 
   private:
+    /** The pin centre at this slice, global [m]: the pin body's point, moved by the bent pin's deflection. */
+    mbs::Vec2
+    pin_centre(const mbs::StateView &s) const;
     /** Kinematics at the contact for state @p s; false if not penetrating. */
     struct Contact
     {

@@ -117,6 +117,31 @@ namespace wearlink::contact
               "How far the edge relief reaches in from each end of the bushing; at most half the "
               "Axial length.",
               "m");
+      declare(prm,
+              "Pin support",
+              "rigid",
+              P::Selection("rigid|pinned|clamped|cantilever"),
+              "How the pin bends under the slices' forces (an Euler–Bernoulli beam, doc/models.md "
+              "§1.8). 'rigid': it does not. 'pinned': simply supported, 'clamped': built in, both "
+              "Support distance beyond the bushing's ends (a pin in a fork). 'cantilever': built in "
+              "Support distance beyond the bushing's −z end, free at its other end (a pin pressed "
+              "into one link). A bending pin sags away from the bore between its supports and loads "
+              "the bushing's edges. Needs Axial slices ≥ 2.",
+              "none");
+      declare(prm,
+              "Pin bending stiffness",
+              "0",
+              P::Double(0, 1e9),
+              "EI of the pin (Pin support ≠ rigid). 0: a solid pin of the joint's pin radius r and "
+              "Pin elastic modulus E, EI = E π r⁴/4; give it for a hollow or stepped pin.",
+              "N m2");
+      declare(prm,
+              "Support distance",
+              "0",
+              P::Double(0, 1),
+              "How far beyond the bushing's ends the pin is held (Pin support ≠ rigid), 0 … 1 m: "
+              "the fork's half-width between the bushing and the middle of each cheek.",
+              "m");
       prm.leave_subsection();
     }
   } // namespace
@@ -260,19 +285,26 @@ namespace wearlink::contact
   {
     SliceLayout l;
     r.enter("Slices");
-    l.count                   = static_cast<unsigned int>(r.get_integer("Axial slices"));
-    l.misalignment            = r.get_double("Misalignment");
-    l.tilt_direction          = r.get_double("Misalignment direction") * numbers::pi / 180;
-    const std::string crown   = r.get("Pin crown");
-    l.crown                   = crown == "circular"    ? PinCrown::circular :
-                                crown == "logarithmic" ? PinCrown::logarithmic :
-                                                         PinCrown::none;
-    l.crown_drop              = r.get_double("Crown drop");
-    l.crown_load              = r.get_double("Crown design load");
-    l.relief_depth            = r.get_double("Edge relief depth");
-    l.relief_length           = r.get_double("Edge relief length");
-    const double length       = d.geometry.axial_length;
-    const auto   needs_slices = [&](const std::string &entry) {
+    l.count                     = static_cast<unsigned int>(r.get_integer("Axial slices"));
+    l.misalignment              = r.get_double("Misalignment");
+    l.tilt_direction            = r.get_double("Misalignment direction") * numbers::pi / 180;
+    const std::string crown     = r.get("Pin crown");
+    l.crown                     = crown == "circular"    ? PinCrown::circular :
+                                  crown == "logarithmic" ? PinCrown::logarithmic :
+                                                           PinCrown::none;
+    l.crown_drop                = r.get_double("Crown drop");
+    l.crown_load                = r.get_double("Crown design load");
+    l.relief_depth              = r.get_double("Edge relief depth");
+    l.relief_length             = r.get_double("Edge relief length");
+    const std::string support   = r.get("Pin support");
+    l.bending.support           = support == "pinned"     ? PinSupport::pinned :
+                                  support == "clamped"    ? PinSupport::clamped :
+                                  support == "cantilever" ? PinSupport::cantilever :
+                                                            PinSupport::rigid;
+    l.bending.bending_stiffness = r.get_double("Pin bending stiffness");
+    l.bending.support_distance  = r.get_double("Support distance");
+    const double length         = d.geometry.axial_length;
+    const auto   needs_slices   = [&](const std::string &entry) {
       if (l.count < 2)
         r.fail(entry,
                "it acts along the pin, and the joint has one slice (Axial slices = 1)",
@@ -284,6 +316,8 @@ namespace wearlink::contact
       needs_slices("Pin crown");
     if (l.relief_depth > 0)
       needs_slices("Edge relief depth");
+    if (l.bending.support != PinSupport::rigid)
+      needs_slices("Pin support");
     if (l.crown == PinCrown::circular && !(l.crown_drop > 0))
       r.fail("Crown drop", "it must be > 0 m with Pin crown = circular");
     if (l.crown == PinCrown::logarithmic && !(l.crown_load > 0))

@@ -243,21 +243,29 @@ namespace wearlink::io
 
       const auto size = contact::read_clearance_size(r);
       contact::read_clearance_materials(r, d);
-      d.normal_force_law     = r.get("Normal force law");
-      const auto      layout = contact::read_slice_layout(r, d);
-      const mbs::Vec2 e0     = vec(r.get_point("Initial eccentricity"));
+      d.normal_force_law                                  = r.get("Normal force law");
+      const auto                                   layout = contact::read_slice_layout(r, d);
+      const mbs::Vec2                              e0     = vec(r.get_point("Initial eccentricity"));
+      std::shared_ptr<contact::ElasticPin>         pin; // a bending pin, shared by the slices
+      std::vector<const contact::ClearanceJoint *> slices;
       for (unsigned int i = 0; i < layout.count; ++i)
         {
           const std::string number = layout.count > 1 ? contact::slice_number(i, layout.count) : std::string();
           read_clearance_profiles(r, size, number, d);
-          auto slice = contact::slice_of(d, layout, i);
+          if (i == 0)
+            pin = contact::make_elastic_pin(d, layout);
+          auto slice              = contact::slice_of(d, layout, i);
+          slice.slice.elastic_pin = pin;
           check_initial_eccentricity(scene, r, slice, e0, size.radial_clearance);
           if (auto w = wear::read_joint_wear(r, slice.name))
             scene.wear.push_back(std::move(w));
           auto element = make_clearance_joint(scene, r, std::move(slice));
           scene.clearance_joints.push_back(element.get());
+          slices.push_back(element.get());
           scene.mechanism->add_force_element(std::move(element));
         }
+      if (pin)
+        pin->attach(slices);
       r.leave();
 
       // Rotate e0 with the bushing's initial angle guess (exact after assembly for a

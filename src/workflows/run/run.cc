@@ -477,6 +477,16 @@ namespace wearlink::workflows
                    "the force there comes from a power law extrapolated beyond the tabulated (FE) solutions; raise "
                    "Table maximum force above this force"});
       }
+    if (summary.contains("sliced_joints"))
+      for (const auto &[name, joint] : summary.at("sliced_joints").items())
+        if (joint.contains("pin_solve_failures"))
+          w.check({"joint " + name + ": states where the bent pin's deflection was not found",
+                   json_number(joint.at("pin_solve_failures")),
+                   0,
+                   "",
+                   "none: Newton's method on the slices' forces and the beam converges at every state",
+                   "the forces there come from the best deflection found, not the equilibrium one; a slice may be "
+                   "switching between contact and lift-off at a kink of its law; use more slices or a stiffer pin"});
     return w;
   }
 
