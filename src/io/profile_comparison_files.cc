@@ -5,11 +5,13 @@
 #include "base/exceptions.h"
 #include "base/numbers.h"
 #include "base/text.h"
+#include "contact/axial_slices.h"
 #include "io/csv.h"
 #include "io/output_names.h"
 #include "io/plot.h"
 #include "io/profile_file.h"
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -62,6 +64,36 @@ namespace wearlink::io
   surface_name(const analysis::WornSurface surface)
   {
     return surface == analysis::WornSurface::bore ? "bore" : "pin";
+  }
+
+  std::string
+  slice_at(const std::string &run_directory, const std::string &joint, const double z, double &centre)
+  {
+    const std::string file = (fs::path(run_directory) / ("slices_" + joint + ".csv")).string();
+    std::error_code   ec;
+    if (!fs::exists(file, ec))
+      throw InputError("--axial-position needs a sliced joint: the run folder '" + run_directory + "' holds no " +
+                       fs::path(file).filename().string() + " (joint '" + joint +
+                       "' is not cut into slices, or the folder is not a finished wear run). Leave out "
+                       "--axial-position for a two-dimensional joint.");
+    const CsvTable    table  = CsvTable::read(file, "run's slice table");
+    const std::size_t column = table.find("z_m");
+    if (column == CsvTable::npos || table.n_rows() < 2)
+      throw InputError("The run's slice table '" + file +
+                       "' has no column 'z_m' or fewer than two slices (its columns: " + table.column_list() +
+                       "). It is written by a wear run; rerun it if it was damaged.");
+    const auto   zs   = table.numbers(column, "The file is a wear run's output; rerun the wear run if it was damaged.");
+    const double half = 0.5 * (zs[1] - zs[0]); // the slices are equal: L/(2n)
+    if (!(std::abs(z) <= zs.back() + half))
+      throw InputError("--axial-position is " + format_number(z, 6) + " m; joint '" + joint + "' of the run spans " +
+                       format_number(zs.front() - half, 6) + " … " + format_number(zs.back() + half, 6) +
+                       " m from the bushing's mid-plane. Give the position of the measured trace within it.");
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < zs.size(); ++i)
+      if (std::abs(zs[i] - z) < std::abs(zs[nearest] - z))
+        nearest = i;
+    centre = zs[nearest];
+    return contact::slice_name(joint, static_cast<unsigned int>(nearest), static_cast<unsigned int>(zs.size()));
   }
 
   RunSurface

@@ -38,6 +38,15 @@ namespace wearlink::io
    * top of the file). InputError if the folder or a file is missing (listing the joints
    * whose worn profiles the folder holds) or a file is malformed (file, line, column).
    */
+  /**
+   * The slice of the sliced joint @p joint of the run in @p run_directory that holds the
+   * axial position @p z [m] from the bushing's mid-plane (its slices_<J>.csv): its name
+   * ("B.s03"), and in @p centre its centre [m]. InputError if the run has no such sliced
+   * joint or @p z lies beyond the bushing's ends.
+   */
+  std::string
+  slice_at(const std::string &run_directory, const std::string &joint, double z, double &centre);
+
   RunSurface
   read_run_surface(const std::string &run_directory, const std::string &joint, analysis::WornSurface surface);
 

@@ -9,7 +9,8 @@
 //    own load times ∫p dA / F_n = 1/⟨cos⟩ of its contact arc (wear/archard.h), 1 for a
 //    narrow contact and 1.035 for ±30°: the ratio lies in [1, 1.04] (measured 1.003 at
 //    the lightly worn edge to 1.031 in the deepest pocket);
-//  - the slices' forces sum to the load, and the deepest wear sits at the loaded edge.
+//  - the slices' forces sum to the load, and the deepest wear sits at the loaded edge;
+//  - compare-profile takes a trace at an axial position against the slice holding it.
 #include "base/json.h"
 #include "io/csv.h"
 #include "io/json_file.h"
@@ -81,4 +82,38 @@ TEST(SlicedJournal, MisalignedPinWearsInAndFlattensItsAxialLoad)
   const Json  summary = io::read_json_file(dir + "/summary.json");
   const auto &w       = summary.at("sliced_joints_wear").at("O");
   EXPECT_LT(w.at("max_depth_bushing_position_m").get<double>(), -0.004) << "the deepest wear at the loaded edge";
+
+  // compare-profile at an axial position: a trace taken 0.3 mm inside the loaded edge
+  // slice (z_1 = −4.5 mm, the slice spans −5 … −4 mm) is that slice's; it matches the
+  // run's edge bore exactly, and the bore at the other edge (z = +4.7 mm) by the tilt's
+  // worn-in difference, which the comparison reports as the difference of worn areas.
+  const auto compare = [&](const std::string &z, const std::string &out) {
+    return run_wearlink({"compare-profile",
+                         dir,
+                         dir + "/bore_O.s01.csv",
+                         "--surface",
+                         "bore",
+                         "--joint",
+                         "O",
+                         "--axial-position",
+                         z,
+                         "--angle-search",
+                         "0",
+                         "--output",
+                         out,
+                         "--quiet"});
+  };
+  const std::string same = fresh_directory("sliced_compare_same"), other = fresh_directory("sliced_compare_other");
+  ASSERT_EQ(compare("-0.0042", same).exit_status, 0);
+  const Json at_edge = io::read_json_file(same + "/profile_comparison.json");
+  EXPECT_EQ(at_edge.at("joint").get<std::string>(), "O.s01");
+  EXPECT_DOUBLE_EQ(at_edge.at("slice_centre_m").get<double>(), -0.0045);
+  EXPECT_EQ(at_edge.at("rms_difference_m").get<double>(), 0.0);
+  ASSERT_EQ(compare("0.0047", other).exit_status, 0);
+  const Json across = io::read_json_file(other + "/profile_comparison.json");
+  EXPECT_EQ(across.at("joint").get<std::string>(), "O.s10");
+  EXPECT_GT(across.at("worn_area_difference_m2").get<double>(), 0.0) << "the loaded edge wore more";
+  const auto beyond = compare("0.0051", fresh_directory("sliced_compare_beyond") + "/out");
+  EXPECT_EQ(beyond.exit_status, 2) << beyond.output;
+  EXPECT_NE(beyond.output.find("spans"), std::string::npos) << beyond.output;
 }

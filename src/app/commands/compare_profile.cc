@@ -17,7 +17,8 @@ namespace wearlink::app
     const std::string compare_profile_help =
       std::string(
         R"(wearlink compare-profile RUN_DIR MEASURED.csv --surface bore|pin --joint J
-                         [--angle-search DEG] [--output DIR] [--overwrite] [--quiet]
+                         [--axial-position Z] [--angle-search DEG] [--output DIR]
+                         [--overwrite] [--quiet]
 
 Compares a measured worn surface (a profilometer or CMM trace of a pin or a bushing
 bore) with the worn profile a wear run predicted, to see whether the run's wear
@@ -35,6 +36,11 @@ points (at least 8), any spacing, any order; angles are wrapped into [0, 2 pi).
   --surface bore|pin  which surface the trace is: a bore wears open (depth r - r0), a
                       pin wears thin (depth r0 - r)
   --joint J           the wearing joint, as the scene names it (e.g. A)
+  --axial-position Z  for a joint cut into slices along the pin: the trace was taken
+                      Z metres from the bushing's mid-plane (negative towards the
+                      first slice); the slice that holds Z is compared (its worn
+                      profile, bore_<J>.sNN.csv or pin_<J>.sNN.csv). Within the
+                      bushing's length; the joint's slices_<J>.csv tells their centres
   --angle-search DEG  the measured origin is unknown: the trace is turned by the angle
                       within +-DEG (0 ... 180, default 180; 0: no turning) that
                       minimises the RMS radius difference; the measured point at
@@ -61,7 +67,8 @@ file atomically:
 
 Exit status: 0 success; 2 bad input (a missing run folder or file, a line of a CSV
 file that is not two finite numbers, a radius <= 0, two measured points at the same
-angle, fewer than 8 points, an unknown --surface, --angle-search outside 0 ... 180;
+angle, fewer than 8 points, an unknown --surface, --angle-search outside 0 ... 180,
+--axial-position for a joint that is not sliced or beyond the bushing's ends;
 also: output directory in use, earlier comparison's files) — the message names the
 file, the line and the column, and nothing is written; 4 an output that cannot be
 written; 1 an internal error (see `wearlink --help`).
@@ -74,6 +81,7 @@ written; 1 an internal error (see `wearlink --help`).
                                      {{"--surface", true},
                                       {"--joint", true},
                                       {"--angle-search", true},
+                                      {"--axial-position", true},
                                       {"--output", true},
                                       {"--overwrite", false},
                                       {"--quiet", false}},
@@ -90,6 +98,8 @@ written; 1 an internal error (see `wearlink --help`).
       o.surface          = a.value("--surface");
       o.joint            = a.value("--joint");
       o.angle_search_deg = a.number("--angle-search", 180);
+      if (a.has("--axial-position"))
+        o.axial_position = a.number("--axial-position", 0);
       o.output_directory = a.value("--output", "output/compare_profile_" + o.joint + "_" + o.surface);
       const auto claimed = claim_output_directory(output_claim(o.output_directory, io::outputs::compare_profile(), a));
       const auto r       = workflows::compare_profile(o);

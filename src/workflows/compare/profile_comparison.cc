@@ -124,15 +124,25 @@ namespace wearlink::workflows
                        " deg; it must lie in [0, 180] (0: the measured trace's angular origin is the run's).");
     if (o.joint.empty())
       throw InputError("Name the joint with --joint (e.g. --joint A), as the scene names it.");
+    // A sliced joint: the slice at the trace's axial position stands for the joint.
+    ProfileComparisonOptions at     = o;
+    double                   centre = 0;
+    if (!std::isnan(o.axial_position))
+      at.joint = io::slice_at(o.run_directory, o.joint, o.axial_position, centre);
     const auto measured = io::read_measured_profile_csv(o.measured_file);
-    const auto run      = io::read_run_surface(o.run_directory, o.joint, surface);
+    const auto run      = io::read_run_surface(o.run_directory, at.joint, surface);
     const auto c =
       analysis::compare_profile(measured, run.worn, run.unworn, surface, o.angle_search_deg * numbers::pi / 180);
     ProfileComparisonResult r;
-    r.json  = comparison_json(o, run, measured, c);
+    r.json = comparison_json(at, run, measured, c);
+    if (!std::isnan(o.axial_position))
+      {
+        r.json["axial_position_m"] = o.axial_position;
+        r.json["slice_centre_m"]   = centre;
+      }
     r.table = profile_table(r.json);
     make_output_directory(o.output_directory);
-    r.files = io::write_profile_comparison(o.output_directory, r.json, c, {o.joint, o.surface, o.measured_file});
+    r.files = io::write_profile_comparison(o.output_directory, r.json, c, {at.joint, o.surface, o.measured_file});
     return r;
   }
 } // namespace wearlink::workflows

@@ -14,6 +14,7 @@
 
 #include "base/json.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,11 @@ namespace wearlink::workflows
     std::string surface;
     /** The joint's name, as in the scene ("A"). */
     std::string joint;
+    /**
+     * For a sliced joint: the trace's axial position from the bushing's mid-plane [m];
+     * the slice that holds it is compared. NaN: the joint is not sliced.
+     */
+    double axial_position = std::numeric_limits<double>::quiet_NaN();
     /** The rotation is searched within ± this [deg], 0 … 180. */
     double      angle_search_deg = 180;
     std::string output_directory;
