@@ -48,6 +48,50 @@ namespace wearlink::analysis
       return volume * rho * 1e6;
     }
 
+    /** One wearing joint's depths [m] and mass losses [mg], the criteria's arguments. */
+    struct WearFigures
+    {
+      std::string name;
+      double      h_pin = 0, h_bore = 0, m_pin = 0, m_bush = 0;
+    };
+
+    /**
+     * The largest value of @p row over the joints: a depth criterion's over the wearing
+     * joints (slices included: the deepest slice), a mass criterion's over the whole
+     * joints (a sliced joint's slices summed, named by the joint).
+     */
+    CriterionValue
+    largest_value(const CriterionRow                &row,
+                  const std::vector<WearFigures>    &wear,
+                  const std::vector<JointDensities> &densities)
+    {
+      std::vector<WearFigures> whole;
+      for (std::size_t i = 0; i < wear.size(); ++i)
+        {
+          const std::string &joint = densities[i].joint;
+          auto               it    = std::find_if(whole.begin(), whole.end(), [&](const WearFigures &w) {
+            return !joint.empty() && w.name == joint;
+          });
+          if (row.depths || joint.empty() || it == whole.end())
+            {
+              whole.push_back(wear[i]);
+              if (!row.depths && !joint.empty())
+                whole.back().name = joint;
+              continue;
+            }
+          it->m_pin += wear[i].m_pin;
+          it->m_bush += wear[i].m_bush;
+        }
+      CriterionValue out{-1, ""};
+      for (const auto &w : whole)
+        {
+          const double v = row.joint_value(w.h_pin, w.h_bore, w.m_pin, w.m_bush);
+          if (v > out.value)
+            out = {v, w.name};
+        }
+      return out;
+    }
+
   } // namespace
 
   const std::vector<CriterionRow> &
@@ -187,29 +231,27 @@ namespace wearlink::analysis
     const auto &row = row_of(c.kind);
     if (!row.joint_value)
       return {nan, ""};
-    CriterionValue out{-1, ""};
+    std::vector<WearFigures> wear;
     for (std::size_t i = 0; i < p.joints.size(); ++i)
       {
-        const auto &j      = p.joints[i];
-        const bool  depths = row.depths;
-        double      h_pin = 0, h_bore = 0;
-        if (depths) // (the mass criteria need no depths)
+        const auto &j = p.joints[i];
+        WearFigures w{j.state ? j.state->name : "",
+                      0,
+                      0,
+                      milligrams(j.volume_pin + f * j.pin_volume_increment, densities[i].pin),
+                      milligrams(j.volume_bore + f * j.bore_volume_increment, densities[i].bushing)};
+        if (row.depths) // (the mass criteria need no depths)
           {
             const double r_pin  = j.state ? j.state->initial_pin.mean_radius() : 0.0;
             const double r_bore = j.state ? j.state->initial_bore.mean_radius() : 0.0;
-            h_pin =
+            w.h_pin =
               extrapolated_envelope(j.depth_pin, j.pin_increment, f, window_of(j.state, r_pin, j.depth_pin.size()));
-            h_bore =
+            w.h_bore =
               extrapolated_envelope(j.depth_bore, j.bore_increment, f, window_of(j.state, r_bore, j.depth_bore.size()));
           }
-        const double v = row.joint_value(h_pin,
-                                         h_bore,
-                                         milligrams(j.volume_pin + f * j.pin_volume_increment, densities[i].pin),
-                                         milligrams(j.volume_bore + f * j.bore_volume_increment, densities[i].bushing));
-        if (v > out.value)
-          out = {v, j.state ? j.state->name : ""};
+        wear.push_back(w);
       }
-    return out;
+    return largest_value(row, wear, densities);
   }
 
   CriterionValue
@@ -220,19 +262,18 @@ namespace wearlink::analysis
     const auto &row = row_of(c.kind);
     if (!row.joint_value)
       return {nan, ""};
-    CriterionValue out{-1, ""};
+    std::vector<WearFigures> wear;
     for (std::size_t i = 0; i < state.joints.size(); ++i)
       {
         const auto                 &js = state.joints[i];
         const wear::IterationRecord r  = js.history.empty() ? wear::IterationRecord() : js.history.back();
-        const double                v  = row.joint_value(r.envelope_depth_pin,
-                                         r.envelope_depth_bore,
-                                         milligrams(r.volume_pin, densities[i].pin),
-                                         milligrams(r.volume_bore, densities[i].bushing));
-        if (v > out.value)
-          out = {v, js.name};
+        wear.push_back({js.name,
+                        r.envelope_depth_pin,
+                        r.envelope_depth_bore,
+                        milligrams(r.volume_pin, densities[i].pin),
+                        milligrams(r.volume_bore, densities[i].bushing)});
       }
-    return out;
+    return largest_value(row, wear, densities);
   }
 
   double

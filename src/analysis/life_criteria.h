@@ -159,10 +159,16 @@ namespace wearlink::analysis
   std::string
   status_name(CriterionStatus status);
 
-  /** Densities of a wearing joint's pin and bushing [kg/m³], for the mass losses. */
+  /**
+   * Densities of a wearing joint's pin and bushing [kg/m³], for the mass losses, and the
+   * joint it is part of: a sliced joint's name for each of its slices (their masses add
+   * up to the pin's and the bushing's; the deepest slice has the joint's depth), else
+   * empty (the wearing joint is a whole joint).
+   */
   struct JointDensities
   {
-    double pin = 0, bushing = 0;
+    double      pin = 0, bushing = 0;
+    std::string joint;
   };
 
   /** A criterion's value and the joint that has it ("" for the response). */

@@ -76,14 +76,24 @@ namespace wearlink::io
       return "In " + file + (line > 0 ? " line " + std::to_string(line) : std::string()) + ": ";
     }
 
+    /** The joints of @p scene that wear, a sliced joint once by its own name. */
+    std::vector<std::string>
+    wearing_joints(const Scene &scene)
+    {
+      std::vector<std::string> wearing;
+      for (const auto &w : scene.wear)
+        if (const auto name = whole_joint(scene, w->joint);
+            std::find(wearing.begin(), wearing.end(), name) == wearing.end())
+          wearing.push_back(name);
+      return wearing;
+    }
+
     /** Each pre-scanned joint must be a joint of @p scene that wears. */
     void
     check_joints(const std::string &file, const Layout &layout, const Scene &scene)
     {
-      std::vector<std::string> wearing;
-      for (const auto &w : scene.wear)
-        wearing.push_back(w->joint);
-      const auto all = split(entry_value(*scene.parameters, "Mechanism/Joints"), ',');
+      const auto wearing = wearing_joints(scene);
+      const auto all     = split(entry_value(*scene.parameters, "Mechanism/Joints"), ',');
       for (const auto &[name, line] : layout.joints)
         {
           const bool is_joint = std::find(all.begin(), all.end(), name) != all.end();
@@ -264,9 +274,9 @@ namespace wearlink::io
     const Layout layout = pre_scan(file);
     check_joints(file, layout, scene);
     dealii::ParameterHandler prm;
-    for (const auto &w : scene.wear)
+    for (const auto &joint : wearing_joints(scene))
       {
-        prm.enter_subsection("Joint " + w->joint);
+        prm.enter_subsection("Joint " + joint);
         for (const char *e : entries)
           prm.declare_entry(e, "", dealii::Patterns::Anything());
         prm.leave_subsection();
@@ -284,6 +294,13 @@ namespace wearlink::io
       {
         const double revolutions = number(prm, file, layout, joint, "Revolutions");
         const auto   profiles    = joint_profiles(prm, file, layout, joint, revolutions);
+        if (!profiles.empty() && std::none_of(scene.clearance_joints.begin(),
+                                              scene.clearance_joints.end(),
+                                              [&](const auto *j) { return j->name() == joint; }))
+          throw InputError(where(file, line) + "'Joint " + joint + "' has a profile file, and joint " + joint +
+                           " is cut into slices along its pin, whose worn surfaces differ with the axial position: "
+                           "one trace is not the joint's. Give its measured mass losses (the whole surfaces') and "
+                           "compare traces with `wearlink compare-profile --axial-position`.");
         for (auto &s : joint_measurements(prm, file, layout, joint, profiles, scene))
           m.surfaces.push_back(std::move(s));
         m.profiles.insert(m.profiles.end(), profiles.begin(), profiles.end());

@@ -81,6 +81,19 @@ namespace wearlink::io
   };
 
   /**
+   * The joint that the wearing joint @p wearing of @p scene is part of: a slice's sliced
+   * joint ("B" for "B.s03", doc/models.md §1.8), else @p wearing itself.
+   */
+  inline std::string
+  whole_joint(const Scene &scene, const std::string &wearing)
+  {
+    for (const auto *j : scene.clearance_joints)
+      if (j->name() == wearing && j->get_description().slice.count > 1)
+        return j->get_description().slice.joint;
+    return wearing;
+  }
+
+  /**
    * Read, validate and build the scene in @p file with command-line @p overrides
    * ("Section/Entry=value"). Every problem with the input is an InputError naming the
    * file, the entry and the allowed values.

@@ -342,3 +342,65 @@ TEST(CalibrateCommand, TwoJointsMeasuredAfterDifferentRevolutions)
   EXPECT_LE(json_number(b.at("ci95_low")), k_b) << b.dump(1);
   EXPECT_GE(json_number(b.at("ci95_high")), k_b) << b.dump(1);
 }
+
+// A joint cut into slices along its pin (doc/models.md §1.8) is measured as a whole: its
+// mass losses are its slices' sums, and the coefficients (one per joint, shared by the
+// slices) are recovered as for the two-dimensional joint. A profile trace of a sliced
+// joint is refused: its slices' surfaces differ along the pin.
+TEST(CalibrateCommand, ASlicedJointIsWeighedAsAWhole)
+{
+  const std::string        dir    = fresh_directory("calibration_sliced");
+  const std::string        slices = "Joint B/Clearance/Slices/Axial slices=4";
+  std::vector<std::string> truth  = {"run",
+                                     source_path("params/slider_crank_wear.prm"),
+                                     "--output",
+                                     dir + "/truth",
+                                     "--quiet",
+                                     "--set",
+                                     slices,
+                                     "--set",
+                                     "Joint B/Clearance/archard/Pin wear coefficient=2.3e-14",
+                                     "--set",
+                                     "Joint B/Clearance/archard/Bushing wear coefficient=9.2e-14"};
+  for (const auto &c : cut)
+    truth.insert(truth.end(), {"--set", c});
+  const auto rig = run_wearlink(truth);
+  ASSERT_EQ(rig.exit_status, 0) << rig.output;
+  const Json summary = io::read_json_file(dir + "/truth/summary.json");
+  double     pin = 0, bushing = 0;
+  for (const std::string s : {"B.s01", "B.s02", "B.s03", "B.s04"})
+    {
+      pin += json_number(summary.at("clearance_joints").at(s).at("mass_loss_pin_mg"));
+      bushing += json_number(summary.at("clearance_joints").at(s).at("mass_loss_bushing_mg"));
+    }
+  const auto calibrate = [&](const std::string &meas, const std::string &out) {
+    std::vector<std::string> args = {"calibrate",
+                                     source_path("params/slider_crank_wear.prm"),
+                                     "--measurements",
+                                     meas,
+                                     "--output",
+                                     dir + "/" + out,
+                                     "--quiet",
+                                     "--set",
+                                     slices};
+    for (const auto &c : cut)
+      args.insert(args.end(), {"--set", c});
+    return run_wearlink(args);
+  };
+  const auto run = calibrate(measurements(dir, pin, 0.02 * pin, bushing, 0.02 * bushing), "out");
+  ASSERT_EQ(run.exit_status, 0) << run.output;
+  const Json r = io::read_json_file(dir + "/out/calibration.json");
+  EXPECT_TRUE(covers(r, "pin", true_pin)) << r.dump(1);
+  EXPECT_TRUE(covers(r, "bushing", true_bushing)) << r.dump(1);
+  EXPECT_NEAR(json_number(r.at("joints").at("B").at("pin_wear_coefficient").at("value")) / true_pin, 1, 0.02);
+  const auto traced =
+    calibrate(measurements(dir,
+                           pin,
+                           0.02 * pin,
+                           bushing,
+                           0.02 * bushing,
+                           "  set Pin profile file = truth/pin_B.s01.csv\n  set Profile uncertainty = 1e-7\n"),
+              "traced");
+  EXPECT_EQ(traced.exit_status, 2) << traced.output;
+  EXPECT_NE(traced.output.find("cut into slices"), std::string::npos) << traced.output;
+}

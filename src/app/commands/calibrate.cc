@@ -42,6 +42,9 @@ MEAS.prm (deal.II parameter syntax, like a scene), per measured joint J:
     set Profile uncertainty           = 2e-6   # [m, 1 sigma per point], > 0
     set Profile angle search          = 180    # [deg], 0 ... 180 (default 180)
   end
+A joint cut into slices along its pin is measured as a whole, by its own name: its
+slices' mass losses add up (a profile file is refused for it: its surfaces differ along
+the pin).
 A surface with a profile but no mass loss is fitted on the profile's worn volume: its
 worn area against the scene's unworn surface x the joint's axial length x the
 surface's density, as a mass loss with the 1 sigma of independent per-point errors.

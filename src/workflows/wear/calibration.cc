@@ -114,15 +114,18 @@ namespace wearlink::workflows
       std::vector<double> m(c.surfaces().size(), NAN);
       for (std::size_t s = 0; s < m.size(); ++s)
         for (std::size_t j = 0; j < state.joints.size(); ++j)
-          if (c.surfaces()[s].revolutions == revolutions && state.joints[j].name == c.surfaces()[s].joint)
+          if (c.surfaces()[s].revolutions == revolutions &&
+              io::whole_joint(c.problem.scene, state.joints[j].name) == c.surfaces()[s].joint)
             {
-              // The densities are data of the scene, not calibrated: the prior scene's.
+              // The densities are data of the scene, not calibrated: the prior scene's. A
+              // sliced joint's slices add up to its surfaces.
               const auto &h   = state.joints[j].history;
               const auto &a   = c.problem.scene.wear[j]->archard;
               const bool  pin = c.surfaces()[s].surface == "pin";
-              m[s]            = h.empty() ?
-                                  0. :
-                                  (pin ? h.back().volume_pin * a.pin_density : h.back().volume_bore * a.bushing_density) * 1e6;
+              m[s]            = (std::isnan(m[s]) ? 0. : m[s]) +
+                     (h.empty() ?
+                        0. :
+                        (pin ? h.back().volume_pin * a.pin_density : h.back().volume_bore * a.bushing_density) * 1e6);
             }
       return m;
     }
@@ -234,8 +237,11 @@ namespace wearlink::workflows
       std::vector<double> k0;
       for (const auto &m : c.surfaces())
         for (const auto &w : c.problem.scene.wear)
-          if (w->joint == m.joint)
-            k0.push_back(m.surface == "pin" ? w->archard.pin_coefficient : w->archard.bushing_coefficient);
+          if (io::whole_joint(c.problem.scene, w->joint) == m.joint) // a sliced joint's: its first slice's
+            {
+              k0.push_back(m.surface == "pin" ? w->archard.pin_coefficient : w->archard.bushing_coefficient);
+              break;
+            }
       return k0;
     }
 

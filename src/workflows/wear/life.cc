@@ -116,7 +116,12 @@ namespace wearlink::workflows
     {
       history.criteria = analysis::active_criteria(scene.life);
       for (const auto &w : scene.wear)
-        densities.push_back({w->archard.pin_density, w->archard.bushing_density});
+        {
+          // A slice's mass adds to its joint's (analysis::JointDensities).
+          const std::string whole = io::whole_joint(scene, w->joint);
+          densities.push_back(
+            {w->archard.pin_density, w->archard.bushing_density, whole == w->joint ? std::string() : whole});
+        }
       const std::string dir = options.output_directory;
       if (options.resume)
         {

@@ -46,7 +46,7 @@ namespace
 TEST(LifeCriteria, FactorToReachEachWearCriterion)
 {
   const auto                        p         = preview();
-  const std::vector<JointDensities> densities = {{2700, 7850}};
+  const std::vector<JointDensities> densities = {{2700, 7850, ""}};
   // Deepest wear: bore 5 + f µm reaches 8 µm at f = 3 (the pin, max(1 + 2f, 3, 2 + f),
   // only at f = 3.5).
   CriterionSpec depth{Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", 8e-6};
@@ -144,7 +144,7 @@ namespace
 TEST(LifeCriteria, TheDepthCriteriaUseTheEnvelopeOverTheContactWidth)
 {
   const auto                        js        = joint_of_five_area_contact();
-  const std::vector<JointDensities> densities = {{7850, 7850}};
+  const std::vector<JointDensities> densities = {{7850, 7850, ""}};
   CriterionSpec                     depth{Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", 50e-6};
   CriterionSpec growth{Criterion::clearance_growth, "clearance_growth", "Radial clearance growth", "m", 50e-6};
 
@@ -196,9 +196,43 @@ TEST(LifeCriteria, AfterAnIterationTheCriteriaReadTheRecordedEnvelope)
   r.envelope_depth_pin  = 10e-6;
   js.history.push_back(r);
   state.joints.push_back(js);
-  const std::vector<JointDensities> densities = {{7850, 7850}};
+  const std::vector<JointDensities> densities = {{7850, 7850, ""}};
   CriterionSpec                     depth{Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", 50e-6};
   CriterionSpec growth{Criterion::clearance_growth, "clearance_growth", "Radial clearance growth", "m", 75e-6};
   EXPECT_DOUBLE_EQ(wear_criterion_value(depth, state, densities).value, 45e-6);
   EXPECT_DOUBLE_EQ(wear_criterion_value(growth, state, densities).value, 55e-6);
+}
+
+// A joint cut into slices along its pin: its slices are wearing joints of their own. The
+// depth criteria take the deepest slice (and name it); the mass criteria weigh the whole
+// pin and bushing, the slices' masses summed, and name the joint. Two slices of B at
+// 3 and 4 mg of pin (7 mg together) against A's 5 mg: B's pin is the heavier loss.
+TEST(LifeCriteria, ASlicedJointsDepthIsItsDeepestSliceAndItsMassTheSum)
+{
+  wear::WearState state;
+  const double    rho = 7850;
+  const auto      add = [&](const std::string &name, const double depth, const double mg) {
+    auto                  js = joint_of_five_area_contact();
+    wear::IterationRecord r;
+    js.name               = name;
+    r.envelope_depth_bore = depth;
+    r.volume_pin          = mg * 1e-6 / rho;
+    js.history.push_back(r);
+    state.joints.push_back(js);
+  };
+  add("A", 30e-6, 5);
+  add("B.s01", 40e-6, 3);
+  add("B.s02", 20e-6, 4);
+  const std::vector<JointDensities> densities = {{rho, rho, ""}, {rho, rho, "B"}, {rho, rho, "B"}};
+  CriterionSpec                     depth{Criterion::wear_depth, "wear_depth", "Maximum wear depth", "m", 50e-6};
+  CriterionSpec                     mass{Criterion::pin_mass_loss, "pin_mass_loss", "Pin mass loss", "mg", 10};
+  const auto                        deepest = wear_criterion_value(depth, state, densities);
+  EXPECT_DOUBLE_EQ(deepest.value, 40e-6);
+  EXPECT_EQ(deepest.joint, "B.s01");
+  const auto heaviest = wear_criterion_value(mass, state, densities);
+  EXPECT_NEAR(heaviest.value, 7, 1e-12);
+  EXPECT_EQ(heaviest.joint, "B");
+  // Without the grouping the largest slice (4 mg) would lose to A's 5 mg.
+  const std::vector<JointDensities> ungrouped = {{rho, rho, ""}, {rho, rho, ""}, {rho, rho, ""}};
+  EXPECT_EQ(wear_criterion_value(mass, state, ungrouped).joint, "A");
 }
