@@ -513,8 +513,10 @@ namespace wearlink::io
              << "set ylabel " << quote(map.y_label) << " noenhanced\n"
              << "set cblabel " << quote(map.z_label) << " noenhanced\n"
              << "set palette defined (0 '#ffffff', 1 '#fee391', 2 '#fe9929', 3 '#cc4c02', 4 '#662506')\n"
-             << "set autoscale xfix\nset autoscale yfix\nset tics out\n"
-             << "plot " << quote(data.string()) << " nonuniform matrix using 1:2:3 with image notitle\n";
+             << "set autoscale xfix\nset autoscale yfix\nset tics out\n";
+      if (map.z_max > 0)
+        script << "set cbrange [0:" << map.z_max << "]\n";
+      script << "plot " << quote(data.string()) << " nonuniform matrix using 1:2:3 with image notitle\n";
       return script.str();
     });
   }

@@ -194,6 +194,7 @@ namespace wearlink::io
     std::vector<double>              x, y;
     std::vector<std::vector<double>> z; ///< one row per y
     int                              width = 1100, height = 600;
+    double                           z_max = 0; ///< > 0: the colour scale's top (a series shares one scale)
   };
 
   /** Render @p map to @p png_path. Returns false (and warns) if gnuplot is missing. */

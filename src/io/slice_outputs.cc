@@ -114,12 +114,17 @@ namespace wearlink::io
       return z;
     }
 
+    /**
+     * The worn depth of one surface over angle × axial position at iteration @p it
+     * (0-based), on a colour scale up to @p z_max [µm] (0: its own largest depth).
+     */
     void
-    plot_wear_map(const std::string &path, const SlicedJoint &j, const bool bore)
+    plot_wear_map(const std::string &path, const SlicedJoint &j, const bool bore, const std::size_t it, double z_max)
     {
       HeatMap m;
       m.title = "joint " + j.name + ", worn " + (bore ? "bushing (bushing frame)" : "pin (pin frame)") + ", " +
-                std::to_string(j.slices.size()) + " slices";
+                std::to_string(j.slices.size()) + " slices, iteration " + std::to_string(it + 1);
+      m.z_max   = z_max;
       m.x_label = "angle [deg]";
       m.y_label = "axial position z [mm]";
       m.z_label = "worn depth [µm]";
@@ -129,7 +134,7 @@ namespace wearlink::io
         m.x.push_back(360.0 * static_cast<double>(k) / static_cast<double>(n));
       for (const double z : j.positions)
         m.y.push_back(z * 1e3);
-      m.z = depth_field(j, bore, j.slices[0]->history.size() - 1);
+      m.z = depth_field(j, bore, it);
       for (auto &row : m.z)
         for (auto &v : row)
           v *= 1e6;
@@ -266,10 +271,29 @@ namespace wearlink::io
         if (j.slices[0]->history.empty())
           continue;
         write_slice_table(dir + "/slices_" + j.name + ".csv", j);
-        write_surfaces(dir, j, scene.wear_loop.every_iteration_output, 0);
-        if (scene.plots)
-          for (const bool bore : {true, false})
-            plot_wear_map(dir + "/wear_map_" + j.name + (bore ? "_bushing" : "_pin") + ".png", j, bore);
+        const bool every = scene.wear_loop.every_iteration_output;
+        write_surfaces(dir, j, every, 0);
+        if (!scene.plots)
+          continue;
+        // The last iteration beside the run's files; the frames of the VTU series (at
+        // most ten unless every iteration's outputs are asked for) in slices/, on the
+        // last iteration's colour scale, so that the maps of a series compare.
+        const std::size_t last = j.slices[0]->history.size() - 1;
+        for (const bool bore : {true, false})
+          {
+            const std::string surface = bore ? "bushing" : "pin";
+            plot_wear_map(dir + "/wear_map_" + j.name + "_" + surface + ".png", j, bore, last, 0);
+            double top = 0;
+            for (const auto &row : depth_field(j, bore, last))
+              for (const double v : row)
+                top = std::max(top, v * 1e6);
+            for (const auto it : frames(last + 1, every))
+              plot_wear_map(dir + "/slices/" + j.name + "_" + surface + "_it" + std::to_string(it + 1) + ".png",
+                            j,
+                            bore,
+                            it,
+                            top);
+          }
       }
   }
 } // namespace wearlink::io
