@@ -83,6 +83,8 @@ TEST(SlicedJournal, MisalignedPinWearsInAndFlattensItsAxialLoad)
     }
   const Json  summary = io::read_json_file(dir + "/summary.json");
   const auto &w       = summary.at("sliced_joints_wear").at("O");
+  EXPECT_EQ(summary.at("warnings").dump().find("elastic approach"), std::string::npos)
+    << "an increment of about the approach (ratio 1.0 here) wears in: no warning";
   EXPECT_LT(w.at("max_depth_bushing_position_m").get<double>(), -0.004) << "the deepest wear at the loaded edge";
 
   // compare-profile at an axial position: a trace taken 0.3 mm inside the loaded edge
@@ -118,4 +120,33 @@ TEST(SlicedJournal, MisalignedPinWearsInAndFlattensItsAxialLoad)
   const auto beyond = compare("0.0051", fresh_directory("sliced_compare_beyond") + "/out");
   EXPECT_EQ(beyond.exit_status, 2) << beyond.output;
   EXPECT_NE(beyond.output.find("spans"), std::string::npos) << beyond.output;
+}
+
+// The same journal extrapolated 2000-fold per iteration: a slice wears 3.8 times the
+// slices' elastic approach in one iteration, and the axial load jumps between the edges
+// instead of wearing in. The run must say so (doc/models.md §1.8).
+TEST(SlicedJournal, AnIterationThatWearsPastTheApproachIsFlagged)
+{
+  const std::string dir = fresh_directory("sliced_journal_overshoot");
+  const auto        r   = run_wearlink({"run",
+                                        source_path("tests/scenes/journal_pocket.prm"),
+                                        "--output",
+                                        dir,
+                                        "--quiet",
+                                        "--set",
+                                        "Joint O/Clearance/Slices/Axial slices=10",
+                                        "--set",
+                                        "Joint O/Clearance/Slices/Misalignment=1e-3",
+                                        "--set",
+                                        "Joint O/Clearance/Initial eccentricity=0,-4.4e-5",
+                                        "--set",
+                                        "Joint O/Clearance/Pressure model=winkler",
+                                        "--set",
+                                        "Wear/Number of iterations=2",
+                                        "--set",
+                                        "Wear/Extrapolation factor=2000"});
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const Json summary = io::read_json_file(dir + "/summary.json");
+  EXPECT_NE(summary.at("warnings").dump().find("joint O: largest depth increment of a slice"), std::string::npos)
+    << summary.at("warnings").dump(1);
 }

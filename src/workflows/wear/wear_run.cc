@@ -13,6 +13,7 @@
 #include "io/wear_outputs.h"
 #include "mbs/assembly.h"
 #include "mbs/constraint.h"
+#include "wear/slice_checks.h"
 #include "wear/wear_loop.h"
 #include "workflows/compare/dynamics_comparison.h"
 #include "workflows/run/analyses.h"
@@ -528,6 +529,7 @@ namespace wearlink::workflows
       if (more_warnings != nullptr)
         result.warnings.merge(*more_warnings);
       wear::check_roughness(st, result.warnings);
+      wear::check_axial_increments(st, scene.clearance_joints, result.warnings);
       check_target_reached(ws, st, result.warnings);
       result.summary["warnings"] = result.warnings.json(); // every iteration's and this run's
       result.timings.dynamics += dynamics.seconds();
