@@ -106,7 +106,10 @@ namespace wearlink::contact
   }
 
   void
-  ClearanceJoint::conformal_contact(const mbs::StateView &s, const mbs::Vec2 &e, Contact &c) const
+  ClearanceJoint::conformal_contact(const mbs::StateView &s,
+                                    const mbs::Vec2      &e,
+                                    Contact              &c,
+                                    const bool            with_potential) const
   {
     const int       bb = description.bushing_body, pb = description.pin_body;
     const mbs::Vec2 e_local = s.to_local(bb, e);
@@ -121,7 +124,7 @@ namespace wearlink::contact
     m.impact_velocity = in_contact ? captured_impact_velocity : 0.0;
     m.min_velocity    = h.min_impact_velocity;
     ConformalForce cf;
-    field->evaluate(e_local, c.pin_angle - c.bushing_angle, &m, false, cf);
+    field->evaluate(e_local, c.pin_angle - c.bushing_angle, &m, with_potential, cf);
     // The contact normal: opposite to the force on the pin (from the bore centre towards
     // the contact); before any force, the direction of the deepest overlap.
     const double    f       = cf.damped.norm();
@@ -137,10 +140,11 @@ namespace wearlink::contact
     c.pin_torque            = cf.pin_torque;
     c.bushing_torque        = cf.bushing_torque;
     c.damping_power         = cf.damping_power;
+    c.potential             = cf.potential;
   }
 
   void
-  ClearanceJoint::contact_kinematics(const mbs::StateView &s, Contact &c) const
+  ClearanceJoint::contact_kinematics(const mbs::StateView &s, Contact &c, const bool with_potential) const
   {
     const int  bb       = description.bushing_body;
     const int  pb       = description.pin_body;
@@ -150,7 +154,7 @@ namespace wearlink::contact
     c.bushing_angle     = s.angle(bb);
     c.pin_angle         = s.angle(pb);
     if (field != nullptr)
-      conformal_contact(s, p_pin - p_bore, c);
+      conformal_contact(s, p_pin - p_bore, c, with_potential);
     else
       c.gap = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
                          gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
@@ -403,16 +407,18 @@ namespace wearlink::contact
   double
   ClearanceJoint::potential_energy(const mbs::StateView &s) const
   {
-    if (field != nullptr)
-      {
-        const int       bb = description.bushing_body, pb = description.pin_body;
-        const mbs::Vec2 e = s.point(pb, description.pin_point) - s.point(bb, description.bushing_point);
-        ConformalForce  cf;
-        field->evaluate(s.to_local(bb, e), s.angle(pb) - s.angle(bb), nullptr, true, cf);
-        return cf.potential;
-      }
     Contact c;
-    contact_kinematics(s, c);
+    contact_kinematics(s, c, true);
+    return stored_energy(c);
+  }
+
+  // potential_energy() and diagnostics() both take the energy from here: an observer may
+  // use either.
+  double
+  ClearanceJoint::stored_energy(const Contact &c) const
+  {
+    if (c.conformal)
+      return c.potential;
     if (!(c.gap.penetration > 0))
       return 0;
     return normal_law->potential(normal_input(c));
@@ -590,7 +596,7 @@ namespace wearlink::contact
   {
     JointDiagnostics d;
     Contact          c;
-    contact_kinematics(s, c);
+    contact_kinematics(s, c, true);
     const int bb    = description.bushing_body;
     d.bushing_angle = s.angle(bb);
     d.pin_angle     = s.angle(description.pin_body);
@@ -599,6 +605,7 @@ namespace wearlink::contact
     d.penetration        = c.gap.penetration;
     d.normal             = c.gap.normal;
     d.contact_angle      = c.gap.angle();
+    d.potential_energy   = stored_energy(c);
     if (c.gap.penetration > 0)
       {
         forces(c, d.normal_force, d.elastic_force, d.friction_force);
