@@ -106,7 +106,10 @@ namespace wearlink::contact
   }
 
   void
-  ClearanceJoint::conformal_contact(const mbs::StateView &s, const mbs::Vec2 &e, Contact &c) const
+  ClearanceJoint::conformal_contact(const mbs::StateView &s,
+                                    const mbs::Vec2      &e,
+                                    Contact              &c,
+                                    const bool            with_potential) const
   {
     const int       bb = description.bushing_body, pb = description.pin_body;
     const mbs::Vec2 e_local = s.to_local(bb, e);
@@ -121,7 +124,7 @@ namespace wearlink::contact
     m.impact_velocity = in_contact ? captured_impact_velocity : 0.0;
     m.min_velocity    = h.min_impact_velocity;
     ConformalForce cf;
-    field->evaluate(e_local, c.pin_angle - c.bushing_angle, &m, false, cf);
+    field->evaluate(e_local, c.pin_angle - c.bushing_angle, &m, with_potential, cf);
     // The contact normal: opposite to the force on the pin (from the bore centre towards
     // the contact); before any force, the direction of the deepest overlap.
     const double    f       = cf.damped.norm();
@@ -137,18 +140,20 @@ namespace wearlink::contact
     c.pin_torque            = cf.pin_torque;
     c.bushing_torque        = cf.bushing_torque;
     c.damping_power         = cf.damping_power;
+    c.potential             = cf.potential;
   }
 
   mbs::Vec2
   ClearanceJoint::pin_centre(const mbs::StateView &s) const
   {
-    const mbs::Vec2 p   = s.point(description.pin_body, description.pin_point);
-    const auto     &pin = description.slice.elastic_pin;
-    return pin ? mbs::Vec2(p + pin->deflection(description.slice.index, s)) : p;
+    mbs::Vec2 p = s.point(description.pin_body, description.pin_point);
+    if (const auto &pin = description.slice.elastic_pin)
+      p += pin->deflection(description.slice.index, s);
+    return p;
   }
 
   void
-  ClearanceJoint::contact_kinematics(const mbs::StateView &s, Contact &c) const
+  ClearanceJoint::contact_kinematics(const mbs::StateView &s, Contact &c, const bool with_potential) const
   {
     const int  bb       = description.bushing_body;
     const int  pb       = description.pin_body;
@@ -158,7 +163,7 @@ namespace wearlink::contact
     c.bushing_angle     = s.angle(bb);
     c.pin_angle         = s.angle(pb);
     if (field != nullptr)
-      conformal_contact(s, p_pin - p_bore, c);
+      conformal_contact(s, p_pin - p_bore, c, with_potential);
     else
       c.gap = per_area ? gap.evaluate_per_area(p_pin - p_bore, s.angle(bb), s.angle(pb)) :
                          gap.evaluate(p_pin - p_bore, s.angle(bb), s.angle(pb));
@@ -411,19 +416,20 @@ namespace wearlink::contact
   double
   ClearanceJoint::potential_energy(const mbs::StateView &s) const
   {
-    // A bent pin's strain energy counts once, with its first slice.
+    Contact c;
+    contact_kinematics(s, c, true);
+    return stored_energy(s, c);
+  }
+
+  // potential_energy() and diagnostics() both take the energy from here: an observer may
+  // use either. A bent pin's strain energy counts once, with its first slice.
+  double
+  ClearanceJoint::stored_energy(const mbs::StateView &s, const Contact &c) const
+  {
     const auto  &pin     = description.slice.elastic_pin;
     const double bending = pin && description.slice.index == 0 ? pin->bending_energy(s) : 0.0;
-    if (field != nullptr)
-      {
-        const int       bb = description.bushing_body, pb = description.pin_body;
-        const mbs::Vec2 e = pin_centre(s) - s.point(bb, description.bushing_point);
-        ConformalForce  cf;
-        field->evaluate(s.to_local(bb, e), s.angle(pb) - s.angle(bb), nullptr, true, cf);
-        return cf.potential + bending;
-      }
-    Contact c;
-    contact_kinematics(s, c);
+    if (c.conformal)
+      return c.potential + bending;
     if (!(c.gap.penetration > 0))
       return bending;
     return normal_law->potential(normal_input(c)) + bending;
@@ -449,10 +455,10 @@ namespace wearlink::contact
   double
   ClearanceJoint::event_value(const mbs::StateView &s) const
   {
-    const auto   p_bore = s.point(description.bushing_body, description.bushing_point);
-    const auto   e      = pin_centre(s) - p_bore;
-    const double tb     = s.angle(description.bushing_body);
-    const double tp     = s.angle(description.pin_body);
+    const auto      p_bore = s.point(description.bushing_body, description.bushing_point);
+    const mbs::Vec2 e      = pin_centre(s) - p_bore;
+    const double    tb     = s.angle(description.bushing_body);
+    const double    tp     = s.angle(description.pin_body);
     if (field != nullptr)
       return field->overlap(s.to_local(description.bushing_body, e), tp - tb);
     if (description.clearance_form == ClearanceForm::per_area && !gap.round())
@@ -607,7 +613,7 @@ namespace wearlink::contact
   {
     JointDiagnostics d;
     Contact          c;
-    contact_kinematics(s, c);
+    contact_kinematics(s, c, true);
     const int bb    = description.bushing_body;
     d.bushing_angle = s.angle(bb);
     d.pin_angle     = s.angle(description.pin_body);
@@ -618,6 +624,7 @@ namespace wearlink::contact
     d.penetration        = c.gap.penetration;
     d.normal             = c.gap.normal;
     d.contact_angle      = c.gap.angle();
+    d.potential_energy   = stored_energy(s, c);
     if (c.gap.penetration > 0)
       {
         forces(c, d.normal_force, d.elastic_force, d.friction_force);

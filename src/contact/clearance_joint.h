@@ -99,6 +99,7 @@ namespace wearlink::contact
     mbs::Vec2 force_on_pin{0, 0};               ///< −F_n n + F_t t [N]
     double    bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
     mbs::Vec2 pin_deflection{0, 0};             ///< a bent pin's at this slice, global (in eccentricity) [m]
+    double    potential_energy = 0;             ///< stored energy [J], as ClearanceJoint::potential_energy() gives it
   };
 
   class ClearanceJoint : public mbs::ForceElement
@@ -170,7 +171,11 @@ namespace wearlink::contact
     bool
     update_hold(double t, const mbs::StateView &s, const double *a) override;
 
-    /** Full evaluation at a state (not counted as a force evaluation). */
+    /**
+     * Full evaluation at a state (not counted as a force evaluation), with the stored
+     * energy: one evaluation of the contact serves an observer's figures and its energy
+     * balance.
+     */
     JointDiagnostics
     diagnostics(const mbs::StateView &s) const;
 
@@ -287,14 +292,19 @@ namespace wearlink::contact
       double elastic = 0, damped = 0, pin_torque = 0, bushing_torque = 0, damping_power = 0;
       double stiffness     = 0;                ///< K, or K*(n) of the facing area (per_area) [N/mⁿ]
       double bushing_angle = 0, pin_angle = 0; ///< θ of both bodies [rad]
+      double potential = 0;                    ///< the conformal field's stored energy [J], if asked for
     };
     NormalContactInput
     normal_input(const Contact &c) const;
+    /** @p with_potential: the conformal field's stored energy too (Contact::potential). */
     void
-    contact_kinematics(const mbs::StateView &s, Contact &c) const;
+    contact_kinematics(const mbs::StateView &s, Contact &c, bool with_potential = false) const;
     /** The conformal field's contact (direction, overlap, resultants, couples) into @p c. */
     void
-    conformal_contact(const mbs::StateView &s, const mbs::Vec2 &e, Contact &c) const;
+    conformal_contact(const mbs::StateView &s, const mbs::Vec2 &e, Contact &c, bool with_potential) const;
+    /** The energy stored in contact @p c [J] (from contact_kinematics() with the potential). */
+    double
+    stored_energy(const mbs::StateView &s, const Contact &c) const;
     /** True while a held contact is quasi-static (see the .cc). */
     bool
     quasi_static(const mbs::StateView &s) const;

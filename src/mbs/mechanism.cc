@@ -503,14 +503,17 @@ namespace wearlink::mbs
   }
 
   double
-  Mechanism::potential_energy(const double *q, const double *v, const double *trig) const
+  Mechanism::potential_energy(const double           *q,
+                              const double           *v,
+                              const double           *trig,
+                              const ElementPotential &element_potential) const
   {
     double e = 0;
     for (unsigned int b = 0; b < n_bodies(); ++b)
       e -= bodies[b].mass * (gravity.x() * q[3 * b] + gravity.y() * q[3 * b + 1]);
     const StateView s(q, v, trig);
     for (const auto &f : force_elements)
-      e += f->potential_energy(s);
+      e += element_potential ? element_potential(*f, s) : f->potential_energy(s);
     return e;
   }
 } // namespace wearlink::mbs

@@ -22,6 +22,7 @@
 #include <Eigen/LU>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -155,12 +156,21 @@ namespace wearlink::mbs
     /** ½ q̇ᵀ M q̇ [J]. */
     double
     kinetic_energy(const double *v) const;
+    /** The potential energy of force element @p f at state @p s [J], as a caller supplies it. */
+    using ElementPotential = std::function<double(const ForceElement &f, const StateView &s)>;
+
     /**
-     * Gravity plus force-element potentials [J]. @p trig: the bodies' (cos θ, sin θ)
-     * from body_trig(), if the caller has them (else each rotation computes its own).
+     * Gravity plus force-element potentials [J], summed in that order. @p trig: the
+     * bodies' (cos θ, sin θ) from body_trig(), if the caller has them (else each rotation
+     * computes its own). @p element_potential, if given, is asked for each element's
+     * potential instead of ForceElement::potential_energy(): a caller that evaluated some
+     * elements at this state already passes their energies on.
      */
     double
-    potential_energy(const double *q, const double *v, const double *trig = nullptr) const;
+    potential_energy(const double           *q,
+                     const double           *v,
+                     const double           *trig              = nullptr,
+                     const ElementPotential &element_potential = {}) const;
 
     /** True if the last evaluation that held contacts was at (@p q, @p v) (their forces are from there). */
     bool

@@ -55,38 +55,57 @@ namespace wearlink::wear
   }
 
   void
+  LoadRecorder::evaluate(const mbs::StepContext &c)
+  {
+    const auto n = c.simulation.get_mechanism().n_coordinates();
+    current.resize(joints.size());
+    for (unsigned int j = 0; j < joints.size(); ++j)
+      current[j] = joints[j]->diagnostics(view(c.y, n));
+  }
+
+  void
   LoadRecorder::on_start(const mbs::StepContext &c)
   {
-    t_start = t_last = c.t;
-    const auto n     = c.simulation.get_mechanism().n_coordinates();
-    for (unsigned int j = 0; j < joints.size(); ++j)
-      {
-        const auto d      = joints[j]->diagnostics(view(c.y, n));
-        relative_angle[j] = d.pin_angle - d.bushing_angle;
-        pending[j]        = load_sample(d);
-        pending[j].weight = 0;
-        pending[j].time   = c.t;
-      }
+    evaluate(c);
+    start(c.t, current);
   }
 
   void
   LoadRecorder::on_step(const mbs::StepContext &c)
   {
-    const auto   n = c.simulation.get_mechanism().n_coordinates();
-    const double h = c.t - t_last;
+    evaluate(c);
+    step(c.t, current);
+  }
+
+  void
+  LoadRecorder::start(const double t, const std::vector<contact::JointDiagnostics> &d)
+  {
+    t_start = t_last = t;
     for (unsigned int j = 0; j < joints.size(); ++j)
       {
-        const auto   d   = joints[j]->diagnostics(view(c.y, n));
-        const double rel = d.pin_angle - d.bushing_angle;
+        relative_angle[j] = d[j].pin_angle - d[j].bushing_angle;
+        pending[j]        = load_sample(d[j]);
+        pending[j].weight = 0;
+        pending[j].time   = t;
+      }
+  }
+
+  void
+  LoadRecorder::step(const double t, const std::vector<contact::JointDiagnostics> &d)
+  {
+    const double h = t - t_last;
+    for (unsigned int j = 0; j < joints.size(); ++j)
+      {
+        const double rel = d[j].pin_angle - d[j].bushing_angle;
         rotation[j] += std::abs(rel - relative_angle[j]);
         relative_angle[j] = rel;
         // The previous sample's weight is complete with this step's half.
         take(j, pending[j], pending[j].weight + 0.5 * h);
-        pending[j]        = load_sample(d);
+        pending[j]        = load_sample(d[j]);
         pending[j].weight = 0.5 * h;
-        pending[j].time   = c.t;
+        pending[j].time   = t;
       }
-    t_last = c.t;
+    t_last = t;
   }
 
   void

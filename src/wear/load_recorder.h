@@ -7,6 +7,11 @@
 // are kept. How often the pressure model is evaluated on this history is the
 // accumulator's business (ArchardAccumulator::add_history). The recorder also
 // integrates the relative rotation |d(θ_pin − θ_bushing)| of each joint.
+//
+// As an observer it evaluates its joints itself. A run that evaluates the joints at
+// every accepted step anyway (workflows/run/run.h, RunOptions::loads) hands it those
+// diagnostics through start() and step() instead, so that each joint is evaluated once
+// per step.
 #pragma once
 
 #include "contact/clearance_joint.h"
@@ -33,6 +38,24 @@ namespace wearlink::wear
     void
     on_step(const mbs::StepContext &c) override;
 
+    /**
+     * The state at time @p t where the recording starts, from the diagnostics @p d of the
+     * joints there (d[j] of joint j), evaluated as on_start() does: in an mbs::StateView
+     * without precomputed cos and sin of the bodies' angles.
+     */
+    void
+    start(double t, const std::vector<contact::JointDiagnostics> &d);
+    /** The accepted step that ends at time @p t, from the diagnostics @p d there, as for start(). */
+    void
+    step(double t, const std::vector<contact::JointDiagnostics> &d);
+
+    /** The joints recorded, in the order of samples(). */
+    const std::vector<const contact::ClearanceJoint *> &
+    recorded_joints() const
+    {
+      return joints;
+    }
+
     /** Close the history (the last step's half weight); call after the run. */
     void
     finish();
@@ -50,8 +73,12 @@ namespace wearlink::wear
   private:
     void
     take(unsigned int j, const LoadSample &s, double weight);
+    /** Every joint's diagnostics at the state of @p c, into `current`. */
+    void
+    evaluate(const mbs::StepContext &c);
 
     std::vector<const contact::ClearanceJoint *> joints;
+    std::vector<contact::JointDiagnostics>       current; ///< of the observed step
     double                                       t_start = 0, t_last = 0;
     std::vector<std::vector<LoadSample>>         history;
     std::vector<LoadSample>                      pending;

@@ -198,11 +198,9 @@ namespace wearlink::wear
     std::vector<const contact::ClearanceJoint *> recorded;
     for (const auto &w : wearing)
       recorded.push_back(w.joint);
-    auto                             loads     = std::make_unique<LoadRecorder>(recorded);
-    std::vector<mbs::StepObserver *> observers = {loads.get()};
-    observers.insert(observers.end(), extra_observers.begin(), extra_observers.end());
+    auto      loads = std::make_unique<LoadRecorder>(recorded);
     Stopwatch dynamics;
-    st.state = advance(st.time, t_end, y0, observers);
+    st.state = advance(st.time, t_end, y0, loads.get(), extra_observers);
     st.time  = t_end;
     loads->finish();
     own_timings.dynamics += dynamics.seconds();
@@ -532,7 +530,7 @@ namespace wearlink::wear
     y0.tail(mbs::MechanismOde::n_quadratures).setZero();
     const Stopwatch dynamics;
     const double    t_end = st.time + settings.settling_cycles * period;
-    st.state              = advance(st.time, t_end, y0, {&recorder});
+    st.state              = advance(st.time, t_end, y0, nullptr, {&recorder});
     st.time               = t_end;
     own_timings.dynamics += dynamics.seconds();
     store_contact_modes();

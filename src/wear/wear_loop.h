@@ -58,12 +58,14 @@ namespace wearlink::wear
 
   /**
    * Advances the mechanism's dynamics from time @p t0 and full state @p y0 ([q | v | z])
-   * to time @p t1, notifying @p observers of every accepted step; returns the state at
-   * @p t1.
+   * to time @p t1, handing every accepted step to @p loads (if not null; through
+   * LoadRecorder::start() and step(), from the joints' diagnostics the run evaluates
+   * anyway), then notifying @p observers of it; returns the state at @p t1.
    */
   using AdvanceDynamics = std::function<Eigen::VectorXd(double                                  t0,
                                                         double                                  t1,
                                                         const Eigen::VectorXd                  &y0,
+                                                        LoadRecorder                           *loads,
                                                         const std::vector<mbs::StepObserver *> &observers)>;
 
   /**

@@ -88,14 +88,25 @@ namespace wearlink::contact
     double
     resultant_scale(const double epsilon)
     {
-      static const dealii::QGauss<1> rule(24);
-      const double                   top   = std::asin(std::min(1.0, pi / epsilon));
-      double                         along = 0;
-      for (unsigned int q = 0; q < rule.size(); ++q)
-        {
-          const double t = top * (2 * rule.point(q)[0] - 1), c = std::cos(t);
-          along += 2 * top * rule.weight(q) * c * c * std::cos(epsilon * std::sin(t));
-        }
+      // Per Gauss point t over |t| ≤ top: the factor 2 top w cos² t and sin t.
+      using Points            = std::vector<std::array<double, 2>>;
+      const auto points_up_to = [](const double top) {
+        static const dealii::QGauss<1> rule(24);
+        Points                         p(rule.size());
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            const double t = top * (2 * rule.point(q)[0] - 1), c = std::cos(t);
+            p[q] = {{2 * top * rule.weight(q) * c * c, std::sin(t)}};
+          }
+        return p;
+      };
+      // Every uncut strip integrates up to top = π/2: those points once for all calls.
+      static const Points whole  = points_up_to(std::asin(1.0));
+      const double        cut    = std::min(1.0, pi / epsilon);
+      const Points        partly = cut < 1.0 ? points_up_to(std::asin(cut)) : Points();
+      double              along  = 0;
+      for (const auto &[factor, sine] : cut < 1.0 ? partly : whole)
+        along += factor * std::cos(epsilon * sine);
       return 0.5 * pi / along;
     }
 

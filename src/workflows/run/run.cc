@@ -11,6 +11,7 @@
 #include "io/scene_periods.h"
 #include "mbs/assembly.h"
 #include "mbs/body_trig.h"
+#include "wear/load_recorder.h"
 #include "workflows/run/analyses.h"
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 
 namespace wearlink::workflows
 {
@@ -58,14 +60,20 @@ namespace wearlink::workflows
       long evaluations_at_start = 0;
     };
 
+    /** A clearance joint's index in the scene, by its force element. */
+    using JointIndex = std::unordered_map<const mbs::ForceElement *, unsigned int>;
+
     /** Significant digits of the numbers in time_series.csv. */
     constexpr int time_series_digits = 10;
 
-    /** Watches accepted steps: extremes, energy balance, time-series samples. */
+    /**
+     * Watches accepted steps: extremes, energy balance, time-series samples; hands its
+     * diagnostics of the clearance joints on to a load history (RunOptions::loads).
+     */
     class Recorder : public mbs::StepObserver
     {
     public:
-      Recorder(io::Scene &scene, AtomicFile *csv, double interval, bool progress)
+      Recorder(io::Scene &scene, AtomicFile *csv, double interval, bool progress, wear::LoadRecorder *loads)
         : scene(scene)
         , mech(*scene.mechanism)
         , csv(csv)
@@ -76,14 +84,24 @@ namespace wearlink::workflows
         , joints(scene.clearance_joints.size())
         , axial(scene.clearance_joints)
         , diagnostics(scene.clearance_joints.size())
+        , loads(loads)
       {
         rhs_at_start = static_cast<long>(mech.n_evaluations());
         for (unsigned int i = 0; i < joints.size(); ++i)
           {
-            joints[i].impacts_at_start     = scene.clearance_joints[i]->n_impacts();
-            joints[i].holds_at_start       = scene.clearance_joints[i]->n_holds();
-            joints[i].evaluations_at_start = scene.clearance_joints[i]->n_force_evaluations();
+            joints[i].impacts_at_start          = scene.clearance_joints[i]->n_impacts();
+            joints[i].holds_at_start            = scene.clearance_joints[i]->n_holds();
+            joints[i].evaluations_at_start      = scene.clearance_joints[i]->n_force_evaluations();
+            joint_of[scene.clearance_joints[i]] = i;
           }
+        if (loads)
+          for (const auto *j : loads->recorded_joints())
+            {
+              const auto k = joint_of.find(j);
+              AssertThrow(k != joint_of.end(), dealii::ExcInternalError()); // a joint of the scene
+              loads_index.push_back(k->second);
+            }
+        loads_diagnostics.resize(loads_index.size());
       }
 
       void
@@ -96,6 +114,8 @@ namespace wearlink::workflows
         wall_start    = std::chrono::steady_clock::now();
         next_progress = 0.1;
         record(c.t, c.y, c.dydt, 0.0);
+        if (loads)
+          loads->start(c.t, diagnostics_for_loads());
         if (csv)
           {
             write_header();
@@ -111,6 +131,8 @@ namespace wearlink::workflows
         throw_if_interrupted(); // SIGINT/SIGTERM: stop here, unwinding removes the temporaries
         ++steps;
         record(c.t, c.y, c.dydt, c.t - c.t_previous);
+        if (loads)
+          loads->step(c.t, diagnostics_for_loads());
         if (csv)
           {
             if (interval <= 0)
@@ -266,7 +288,9 @@ namespace wearlink::workflows
             x.max_ay = std::max(x.max_ay, std::abs(f[n + 3 * i + 1]));
           }
         max_violation = std::max(max_violation, mech.last_constraint_violation());
-        const mbs::StateView s(y.data(), y.data() + n, trig.data());
+        // With a load history the joints are evaluated as it records them (RunOptions::loads).
+        const mbs::StateView s =
+          loads ? mbs::StateView(y.data(), y.data() + n) : mbs::StateView(y.data(), y.data() + n, trig.data());
         for (unsigned int k = 0; k < joints.size(); ++k)
           {
             const auto &d = diagnostics[k] = scene.clearance_joints[k]->diagnostics(s);
@@ -281,14 +305,42 @@ namespace wearlink::workflows
           }
         if (axial.any())
           axial.record(diagnostics, h);
-        using Q        = mbs::MechanismOde;
-        const auto   z = 2 * n;
-        const double energy =
-          mech.kinetic_energy(y.data() + n) + mech.potential_energy(y.data(), y.data() + n, trig.data());
+        using Q               = mbs::MechanismOde;
+        const auto   z        = 2 * n;
+        const double energy   = mech.kinetic_energy(y.data() + n) + potential_energy(y, trig.data(), diagnostics);
         const double residual = energy - energy_start - y[z + Q::reaction_work] + y[z + Q::damping_dissipation] +
                                 y[z + Q::friction_dissipation];
         max_energy_residual = std::max(max_energy_residual, std::abs(residual));
         (void)t;
+      }
+
+      /**
+       * The mechanism's potential energy at @p y (@p trig as for mbs::StateView), the
+       * clearance joints' taken from their diagnostics @p d at that state.
+       */
+      double
+      potential_energy(const Eigen::VectorXd                        &y,
+                       const double                                 *trig,
+                       const std::vector<contact::JointDiagnostics> &d) const
+      {
+        const auto n = mech.n_coordinates();
+        return mech.potential_energy(y.data(),
+                                     y.data() + n,
+                                     trig,
+                                     [&](const mbs::ForceElement &f, const mbs::StateView &s) {
+                                       const auto k = joint_of.find(&f);
+                                       return k != joint_of.end() ? d[k->second].potential_energy :
+                                                                    f.potential_energy(s);
+                                     });
+      }
+
+      /** The diagnostics of the last recorded step, of the load history's joints in its order. */
+      const std::vector<contact::JointDiagnostics> &
+      diagnostics_for_loads()
+      {
+        for (unsigned int i = 0; i < loads_index.size(); ++i)
+          loads_diagnostics[i] = diagnostics[loads_index[i]];
+        return loads_diagnostics;
       }
 
       void
@@ -325,9 +377,10 @@ namespace wearlink::workflows
               put(f[n + 3 * i + d]);
           }
         const mbs::StateView s(y.data(), y.data() + n);
-        for (const auto *j : scene.clearance_joints)
+        sampled.resize(scene.clearance_joints.size());
+        for (unsigned int k = 0; k < sampled.size(); ++k)
           {
-            const auto d = j->diagnostics(s);
+            const auto &d = sampled[k] = scene.clearance_joints[k]->diagnostics(s);
             for (const double x : {d.eccentricity.x(),
                                    d.eccentricity.y(),
                                    d.local_eccentricity.x(),
@@ -345,7 +398,7 @@ namespace wearlink::workflows
         using Q      = mbs::MechanismOde;
         const auto z = 2 * n;
         put(mech.kinetic_energy(y.data() + n));
-        put(mech.potential_energy(y.data(), y.data() + n));
+        put(potential_energy(y, nullptr, sampled));
         put(y[z + Q::reaction_work]);
         put(y[z + Q::damping_dissipation] + y[z + Q::friction_dissipation]);
         line += '\n';
@@ -363,13 +416,18 @@ namespace wearlink::workflows
       std::vector<JointStatistics>           joints;
       contact::AxialLoads                    axial;       ///< the sliced joints' axial load
       std::vector<contact::JointDiagnostics> diagnostics; ///< of the last recorded step, per clearance joint
+      std::vector<contact::JointDiagnostics> sampled;     ///< of the last time-series sample, per clearance joint
       double                                 energy_start = 0, t_start = 0, next_sample = 0;
       long                                   n_samples = 0, steps = 0, rhs_at_start = 0;
       double                                 max_violation = 0, max_energy_residual = 0;
       double                                 next_progress = 0.1;
       std::chrono::steady_clock::time_point  wall_start;
       Eigen::VectorXd                        y_sample, f_sample;
-      std::string                            line; ///< one time-series row, written at once
+      std::string                            line;              ///< one time-series row, written at once
+      JointIndex                             joint_of;          ///< of every clearance joint
+      wear::LoadRecorder                    *loads;             ///< the load history fed, or null
+      std::vector<unsigned int>              loads_index;       ///< its joints' indices in the scene
+      std::vector<contact::JointDiagnostics> loads_diagnostics; ///< its joints' diagnostics of the step
     };
   } // namespace
 
@@ -543,7 +601,7 @@ namespace wearlink::workflows
       sim.initialize_state(options.start_time, *options.initial_state);
     else
       sim.initialize(scene.start_time, q0, v0);
-    Recorder                       recorder(scene, csv, scene.output_interval, options.progress);
+    Recorder                       recorder(scene, csv, scene.output_interval, options.progress, options.loads);
     std::unique_ptr<SceneAnalyses> analyses;
     if (options.analyses)
       analyses =

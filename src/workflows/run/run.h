@@ -19,6 +19,11 @@
 #include <string>
 #include <vector>
 
+namespace wearlink::wear
+{
+  class LoadRecorder;
+}
+
 namespace wearlink::workflows
 {
   struct RunOptions
@@ -29,6 +34,17 @@ namespace wearlink::workflows
     bool progress = false;
     /** More observers to notify after every accepted step. */
     std::vector<mbs::StepObserver *> observers;
+    /**
+     * If set, the load history of a wear iteration: the run hands it the diagnostics of
+     * the clearance joints it evaluates at every accepted step for its own figures (before
+     * the observers), so that each joint is evaluated once per step, not twice. The run
+     * then evaluates the joints as the load history always has, without the bodies'
+     * cos and sin from mbs::body_trig() (libmvec's differ from std::cos in the last bits):
+     * the wear stays the same to the bit, and the run's own joint figures and energy
+     * balance may differ from a run without it in the last bits (a wear iteration keeps
+     * only their validity warnings).
+     */
+    wear::LoadRecorder *loads = nullptr;
     /**
      * Continuation (wear iterations): start from this full state [q | v | z] at
      * start_time instead of assembling, and stop at end_time (NaN: the scene's).

@@ -206,6 +206,7 @@ namespace wearlink::workflows
       return [&scene, &warnings](const double                            t0,
                                  const double                            t1,
                                  const Eigen::VectorXd                  &y0,
+                                 wear::LoadRecorder                     *loads,
                                  const std::vector<mbs::StepObserver *> &observers) {
         Eigen::VectorXd y1;
         RunOptions      ro;
@@ -213,6 +214,7 @@ namespace wearlink::workflows
         ro.start_time    = t0;
         ro.end_time      = t1;
         ro.final_state   = &y1;
+        ro.loads         = loads;
         ro.observers     = observers;
         ro.analyses      = false; // the scene's analyses run before and after wear instead
         ValidityWarnings own;
