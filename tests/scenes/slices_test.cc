@@ -24,26 +24,36 @@
 using namespace wearlink;
 using namespace wearlink::testing;
 
+namespace sliced_journal
+{
+  /** The journal cut into 10 slices, its bore tilted by 1 mrad, winkler, into @p dir. */
+  ProgramResult
+  run(const std::string &dir, const std::string &iterations, const std::string &factor)
+  {
+    return run_wearlink({"run",
+                         source_path("tests/scenes/journal_pocket.prm"),
+                         "--output",
+                         dir,
+                         "--quiet",
+                         "--set",
+                         "Joint O/Clearance/Slices/Axial slices=10",
+                         "--set",
+                         "Joint O/Clearance/Slices/Misalignment=1e-3",
+                         "--set",
+                         "Joint O/Clearance/Initial eccentricity=0,-4.4e-5",
+                         "--set",
+                         "Joint O/Clearance/Pressure model=winkler",
+                         "--set",
+                         "Wear/Number of iterations=" + iterations,
+                         "--set",
+                         "Wear/Extrapolation factor=" + factor});
+  }
+} // namespace sliced_journal
+
 TEST(SlicedJournal, MisalignedPinWearsInAndFlattensItsAxialLoad)
 {
   const std::string dir = fresh_directory("sliced_journal");
-  const auto        r   = run_wearlink({"run",
-                                        source_path("tests/scenes/journal_pocket.prm"),
-                                        "--output",
-                                        dir,
-                                        "--quiet",
-                                        "--set",
-                                        "Joint O/Clearance/Slices/Axial slices=10",
-                                        "--set",
-                                        "Joint O/Clearance/Slices/Misalignment=1e-3",
-                                        "--set",
-                                        "Joint O/Clearance/Initial eccentricity=0,-4.4e-5",
-                                        "--set",
-                                        "Joint O/Clearance/Pressure model=winkler",
-                                        "--set",
-                                        "Wear/Number of iterations=8",
-                                        "--set",
-                                        "Wear/Extrapolation factor=300"});
+  const auto        r   = sliced_journal::run(dir, "8", "300");
   ASSERT_EQ(r.exit_status, 0) << r.output;
   const auto   h             = io::CsvTable::read(dir + "/wear_history.csv", "wear history");
   const auto   n             = h.numbers(0).size();
@@ -128,23 +138,7 @@ TEST(SlicedJournal, MisalignedPinWearsInAndFlattensItsAxialLoad)
 TEST(SlicedJournal, AnIterationThatWearsPastTheApproachIsFlagged)
 {
   const std::string dir = fresh_directory("sliced_journal_overshoot");
-  const auto        r   = run_wearlink({"run",
-                                        source_path("tests/scenes/journal_pocket.prm"),
-                                        "--output",
-                                        dir,
-                                        "--quiet",
-                                        "--set",
-                                        "Joint O/Clearance/Slices/Axial slices=10",
-                                        "--set",
-                                        "Joint O/Clearance/Slices/Misalignment=1e-3",
-                                        "--set",
-                                        "Joint O/Clearance/Initial eccentricity=0,-4.4e-5",
-                                        "--set",
-                                        "Joint O/Clearance/Pressure model=winkler",
-                                        "--set",
-                                        "Wear/Number of iterations=2",
-                                        "--set",
-                                        "Wear/Extrapolation factor=2000"});
+  const auto        r   = sliced_journal::run(dir, "2", "2000");
   ASSERT_EQ(r.exit_status, 0) << r.output;
   const Json summary = io::read_json_file(dir + "/summary.json");
   EXPECT_NE(summary.at("warnings").dump().find("joint O: largest depth increment of a slice"), std::string::npos)
