@@ -12,7 +12,9 @@ namespace wearlink::contact
   double
   slice_position(const unsigned int i, const unsigned int n, const double length)
   {
-    return (i + 0.5) * length / n - 0.5 * length;
+    // Antisymmetric to the last bit (slices i and n − 1 − i at ∓z): a symmetric crown's
+    // pairs of slices get the same profiles and share their field.
+    return (2.0 * i + 1.0 - n) * length / (2.0 * n);
   }
 
   mbs::Vec2

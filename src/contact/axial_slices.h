@@ -24,6 +24,7 @@
 
 #include "contact/elastic_pin.h"
 #include "contact/pressure_model.h"
+#include "contact/shared_fields.h"
 #include "mbs/types.h"
 
 #include <memory>
@@ -85,6 +86,8 @@ namespace wearlink::contact
     double nominal_bore_radius = 0, nominal_pin_radius = 0;
     /** The joint's bending pin, shared by its slices (nullptr: rigid). */
     std::shared_ptr<const ElasticPin> elastic_pin;
+    /** Where the joint's slices find the conformal field of a slice whose geometry is theirs (contact/shared_fields.h). */
+    std::shared_ptr<FieldPool> field_pool;
   };
 
   struct ClearanceJointDescription;

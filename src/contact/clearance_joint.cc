@@ -96,13 +96,28 @@ namespace wearlink::contact
                              1e-12,
                              std::max(1e-6, reference_clearance),
                              161);
-    own_field = std::make_unique<OverlapFoundation>(g.bore,
-                                                    g.pin,
-                                                    g.axial_length,
-                                                    reference_radius,
-                                                    f,
-                                                    description.conformal_cells);
-    field     = own_field.get();
+    const auto make = [&] {
+      return std::make_unique<OverlapFoundation>(g.bore,
+                                                 g.pin,
+                                                 g.axial_length,
+                                                 reference_radius,
+                                                 f,
+                                                 description.conformal_cells);
+    };
+    if (const auto &pool = description.slice.field_pool)
+      own_field = pool->field(g.bore,
+                              g.pin,
+                              FieldKey{description.normal_force_law,
+                                       contact_stiffness,
+                                       n,
+                                       reference_clearance,
+                                       reference_radius,
+                                       g.axial_length,
+                                       description.conformal_cells},
+                              make);
+    else
+      own_field = make();
+    field = own_field.get();
   }
 
   void

@@ -325,9 +325,10 @@ namespace wearlink::contact
     Gap                             gap;
     double                          contact_stiffness;
     /** The nominal bore radius and radial clearance, which K and the foundation are calibrated with [m]. */
-    double                          reference_radius, reference_clearance;
-    std::unique_ptr<ConformalField> own_field;       ///< the foundation, if the law has no field of its own
-    const ConformalField           *field = nullptr; ///< the field in use, or nullptr (point contact)
+    double reference_radius, reference_clearance;
+    /** The foundation, if the law has no field of its own (a slice's may be shared: contact/shared_fields.h). */
+    std::shared_ptr<const ConformalField> own_field;
+    const ConformalField                 *field = nullptr; ///< the field in use, or nullptr (point contact)
 
     /** ∂(w·q̇)/∂q q̇ of the held row: δ̇ along a small shift of q by q̇ (central difference). */
     double

@@ -243,10 +243,11 @@ namespace wearlink::io
 
       const auto size = contact::read_clearance_size(r);
       contact::read_clearance_materials(r, d);
-      d.normal_force_law                                  = r.get("Normal force law");
-      const auto                                   layout = contact::read_slice_layout(r, d);
-      const mbs::Vec2                              e0     = vec(r.get_point("Initial eccentricity"));
-      std::shared_ptr<contact::ElasticPin>         pin; // a bending pin, shared by the slices
+      d.normal_force_law                          = r.get("Normal force law");
+      const auto                           layout = contact::read_slice_layout(r, d);
+      const mbs::Vec2                      e0     = vec(r.get_point("Initial eccentricity"));
+      std::shared_ptr<contact::ElasticPin> pin; // a bending pin, shared by the slices
+      const auto                           pool = layout.count > 1 ? std::make_shared<contact::FieldPool>() : nullptr;
       std::vector<const contact::ClearanceJoint *> slices;
       for (unsigned int i = 0; i < layout.count; ++i)
         {
@@ -256,6 +257,7 @@ namespace wearlink::io
             pin = contact::make_elastic_pin(d, layout);
           auto slice              = contact::slice_of(d, layout, i);
           slice.slice.elastic_pin = pin;
+          slice.slice.field_pool  = pool;
           check_initial_eccentricity(scene, r, slice, e0, size.radial_clearance);
           if (auto w = wear::read_joint_wear(r, slice.name))
             scene.wear.push_back(std::move(w));

@@ -5,12 +5,21 @@
 #include "base/numbers.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace wearlink::wear
 {
   namespace
   {
     using numbers::two_pi;
+  }
+
+  bool
+  identical_histories(const std::vector<LoadSample> &a, const std::vector<LoadSample> &b)
+  {
+    // Every member is a double (no padding): a new member that is not fails here.
+    static_assert(sizeof(LoadSample) == 12 * sizeof(double), "identical_histories compares LoadSample's bytes");
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(LoadSample)) == 0);
   }
 
   ArchardAccumulator::ArchardAccumulator(const contact::JointGeometry &g,

@@ -53,6 +53,13 @@ namespace wearlink::wear
     double               time          = 0; ///< [s]
   };
 
+  /**
+   * Whether two load histories are the same bit for bit (the slices of an aligned joint
+   * record the same loads; wear/wear_loop.h shares their wear).
+   */
+  bool
+  identical_histories(const std::vector<LoadSample> &a, const std::vector<LoadSample> &b);
+
   class ArchardAccumulator
   {
   public:

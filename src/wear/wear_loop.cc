@@ -232,8 +232,15 @@ namespace wearlink::wear
             peaks[i] = s.load;
         set_contact_width(i);
         const auto &w = *wearing[i].wear;
-        const auto  g = geometry(i, st.joints[i].bore, st.joints[i].pin);
-        Stopwatch   evaluation;
+        if (const int twin = twin_of(i, loads); twin >= 0)
+          {
+            increments.push_back(std::make_unique<ArchardAccumulator>(*increments[twin]));
+            if (warnings) // the twin's model saw the loads
+              wearing[twin].wear->model->check_validity(wearing[i].joint->name(), *warnings);
+            continue;
+          }
+        const auto g = geometry(i, st.joints[i].bore, st.joints[i].pin);
+        Stopwatch  evaluation;
         if (sequential_factor > 0) // the surfaces of the iteration's start (a second pass meets worn ones)
           w.model->update_geometry(g);
         increments.push_back(
@@ -248,6 +255,29 @@ namespace wearlink::wear
           w.model->check_validity(wearing[i].joint->name(), *warnings);
       }
     return increments;
+  }
+
+  int
+  WearLoop::twin_of(const unsigned int i, const LoadRecorder &loads) const
+  {
+    const auto &slice = wearing[i].joint->get_description().slice;
+    const auto &w     = *wearing[i].wear;
+    if (slice.count <= 1 || w.model->fe_hooks() != nullptr)
+      return -1;
+    const auto &js = st.joints[i];
+    for (unsigned int j = 0; j < i; ++j)
+      {
+        const auto &other = *wearing[j].wear;
+        if (wearing[j].joint->get_description().slice.joint != slice.joint ||
+            other.pressure_model != w.pressure_model || other.archard.pin_coefficient != w.archard.pin_coefficient ||
+            other.archard.bushing_coefficient != w.archard.bushing_coefficient)
+          continue;
+        const auto &ks = st.joints[j];
+        if (ks.bore.samples() == js.bore.samples() && ks.pin.samples() == js.pin.samples() &&
+            identical_histories(loads.samples(j), loads.samples(i)))
+          return static_cast<int>(j);
+      }
+    return -1;
   }
 
   double

@@ -290,6 +290,16 @@ namespace wearlink::wear
     std::vector<std::unique_ptr<ArchardAccumulator>>
     archard_increments(const LoadRecorder &loads, double t_start, double sequential_factor);
 
+    /**
+     * A slice j < @p i of the same sliced joint whose wear this iteration is joint @p i's:
+     * the same profiles, wear coefficients and closed-form pressure model, and the same
+     * recorded loads bit for bit (an aligned joint's slices, a symmetric crown's pairs).
+     * Its increment then serves @p i too (the same inputs give the same bits); −1: none.
+     * The fe model is not shared (its mesh state follows each joint's own updates).
+     */
+    int
+    twin_of(unsigned int i, const LoadRecorder &loads) const;
+
     /** Step 3. The factor this iteration stands for (see WearLoopSettings). */
     double
     extrapolation_factor(const std::vector<std::unique_ptr<ArchardAccumulator>> &increments) const;

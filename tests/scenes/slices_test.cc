@@ -11,6 +11,9 @@
 //    the lightly worn edge to 1.031 in the deepest pocket);
 //  - the slices' forces sum to the load, and the deepest wear sits at the loaded edge;
 //  - compare-profile takes a trace at an axial position against the slice holding it.
+// Aligned, the journal's slices wear as the whole joint (the slices of equal geometry share
+// their field and their wear, contact/shared_fields.h, wear/wear_loop.h: sharing must not
+// change a bit), and a symmetric crown's pairs of slices wear alike.
 #include "base/json.h"
 #include "io/csv.h"
 #include "io/json_file.h"
@@ -20,6 +23,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 using namespace wearlink;
 using namespace wearlink::testing;
@@ -47,6 +52,34 @@ namespace sliced_journal
                          "Wear/Number of iterations=" + iterations,
                          "--set",
                          "Wear/Extrapolation factor=" + factor});
+  }
+
+  /** The aligned journal (hertz-strip) cut into @p slices, 3 iterations, with @p more entries set, into @p dir. */
+  ProgramResult
+  run_aligned(const std::string &dir, const std::string &slices, const std::vector<std::string> &more = {})
+  {
+    std::vector<std::string> args{"run",
+                                  source_path("tests/scenes/journal_pocket.prm"),
+                                  "--output",
+                                  dir,
+                                  "--quiet",
+                                  "--set",
+                                  "Joint O/Clearance/Slices/Axial slices=" + slices,
+                                  "--set",
+                                  "Wear/Number of iterations=3",
+                                  "--set",
+                                  "Wear/Extrapolation factor=300"};
+    for (const auto &m : more)
+      args.insert(args.end(), {"--set", m});
+    return run_wearlink(args);
+  }
+
+  /** The last iteration's @p column of slice @p k (1-based) of joint O, or of the whole joint (k = 0). */
+  double
+  last(const io::CsvTable &h, const int k, const std::string &column)
+  {
+    const std::string s = k == 0 ? "O" : "O.s" + std::string(k < 10 ? "0" : "") + std::to_string(k);
+    return h.numbers(h.find(s + "_" + column)).back();
   }
 } // namespace sliced_journal
 
@@ -143,4 +176,40 @@ TEST(SlicedJournal, AnIterationThatWearsPastTheApproachIsFlagged)
   const Json summary = io::read_json_file(dir + "/summary.json");
   EXPECT_NE(summary.at("warnings").dump().find("joint O: largest depth increment of a slice"), std::string::npos)
     << summary.at("warnings").dump(1);
+}
+
+// Aligned slices are the whole joint cut into equal parts: each wears as deep as the
+// whole joint and carries 1/n of its volume, to round-off. With a circular crown the
+// slices at ±z have the same profiles and loads, so they wear alike to the last bit.
+TEST(SlicedJournal, AlignedSlicesWearAsTheWholeJointAndACrownsPairsAlike)
+{
+  const std::string whole = fresh_directory("aligned_whole"), cut = fresh_directory("aligned_cut"),
+                    crowned = fresh_directory("aligned_crowned");
+  ASSERT_EQ(sliced_journal::run_aligned(whole, "1").exit_status, 0);
+  const auto r = sliced_journal::run_aligned(cut, "4");
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto   h1     = io::CsvTable::read(whole + "/wear_history.csv", "wear history");
+  const auto   h4     = io::CsvTable::read(cut + "/wear_history.csv", "wear history");
+  const double depth  = sliced_journal::last(h1, 0, "max_depth_bushing_um");
+  const double volume = sliced_journal::last(h1, 0, "volume_bushing_mm3");
+  ASSERT_GT(depth, 0.0);
+  for (int k = 1; k <= 4; ++k)
+    {
+      EXPECT_NEAR(sliced_journal::last(h4, k, "max_depth_bushing_um"), depth, 1e-9 * depth) << "slice " << k;
+      EXPECT_NEAR(4 * sliced_journal::last(h4, k, "volume_bushing_mm3"), volume, 1e-9 * volume) << "slice " << k;
+    }
+  const auto c = sliced_journal::run_aligned(crowned,
+                                             "4",
+                                             {"Joint O/Clearance/Slices/Pin crown=circular",
+                                              "Joint O/Clearance/Slices/Crown drop=2e-6"});
+  ASSERT_EQ(c.exit_status, 0) << c.output;
+  const auto hc = io::CsvTable::read(crowned + "/wear_history.csv", "wear history");
+  for (const std::string column : {"max_depth_bushing_um", "volume_bushing_mm3", "mean_normal_force_N"})
+    {
+      EXPECT_EQ(sliced_journal::last(hc, 1, column), sliced_journal::last(hc, 4, column)) << column;
+      EXPECT_EQ(sliced_journal::last(hc, 2, column), sliced_journal::last(hc, 3, column)) << column;
+    }
+  EXPECT_GT(sliced_journal::last(hc, 2, "mean_normal_force_N"),
+            1.2 * sliced_journal::last(hc, 1, "mean_normal_force_N"))
+    << "the crown takes load off the ends";
 }

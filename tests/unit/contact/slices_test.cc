@@ -63,19 +63,6 @@ namespace slices_test
     return s;
   }
 
-  /** A bore worn into a pocket of 20 µm at −90°, ±40° wide (cos² shape). */
-  JointGeometry
-  worn_pair()
-  {
-    auto g = contact::testing::steel_pair();
-    for (unsigned int k = 0; k < g.bore.n_points(); ++k)
-      {
-        const double d = std::remainder(g.bore.angle(k) + M_PI / 2, 2 * M_PI);
-        if (std::abs(d) < 40 * M_PI / 180)
-          g.bore.samples()[k] += 20e-6 * std::pow(std::cos(d * 90 / 40), 2);
-      }
-    return g;
-  }
 
   /** Per slice, the force per unit length [N/m] along +y with the pin carrying @p force up. */
   std::vector<double>
@@ -99,7 +86,7 @@ namespace slices_test
 
 TEST(Slices, AlignedSlicesCarryTheJointsForce)
 {
-  for (const auto &g : {contact::testing::steel_pair(), slices_test::worn_pair()})
+  for (const auto &g : {contact::testing::steel_pair(), contact::testing::worn_steel_pair()})
     {
       const auto whole = slices_test::make(slices_test::joint(g), "1.5");
       for (const unsigned int n : {2u, 7u, 10u})
