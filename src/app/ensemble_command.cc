@@ -54,46 +54,17 @@ namespace wearlink::app
             "--seed, --perturbation and --sensitivity belong to an ensemble: add --ensemble N (2 … 1000).");
         return r;
       }
-    const double n = a.number("--ensemble", 0);
-    if (!(n >= 2 && n <= 1000 && n == std::floor(n)))
-      throw InputError("--ensemble " + a.value("--ensemble") +
-                       ": the number of members must be a whole number from 2 to 1000 (a spread needs two).");
-    r.members      = static_cast<unsigned int>(n);
-    const double s = a.number("--seed", 1);
-    if (!(s >= 0 && s <= 9007199254740992.0 && s == std::floor(s)))
-      throw InputError("--seed " + a.value("--seed") + ": the seed must be a whole number from 0 to 2^53.");
-    r.seed         = static_cast<std::uint64_t>(s);
-    r.perturbation = a.number("--perturbation", 1e-9);
-    if (!(r.perturbation > 0 && r.perturbation <= 1e-3))
-      throw InputError("--perturbation " + a.value("--perturbation") +
-                       ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (it is meant to be "
-                       "physically tiny; default 1e-9 rad).");
     if (a.has("--sensitivity") && a.value("--sensitivity") != "saltelli")
       throw InputError("--sensitivity " + a.value("--sensitivity") +
                        ": the only layout is 'saltelli' (a Saltelli design for Sobol indices); leave the option "
                        "out for rank correlations over Sobol points.");
-    r.saltelli = a.has("--sensitivity");
-    return r;
+    // A value that is no number is named by a.number(); its range by the workflow.
+    return workflows::ensemble_request(a.number("--ensemble", 0),
+                                       a.number("--seed", 1),
+                                       a.number("--perturbation", 1e-9),
+                                       a.has("--sensitivity"));
   }
 
-  namespace
-  {
-    /** The ensemble's own files, and the member folders (those asked for and any earlier). */
-    RunFiles
-    ensemble_files(const std::string &dir, const unsigned int members, const RunFiles &member_files)
-    {
-      RunFiles f = member_files;
-      for (const auto &name : io::outputs::ensemble().patterns)
-        f.patterns.push_back(name);
-      for (unsigned int k = 0; k < members; ++k)
-        f.subdirectories.push_back(workflows::member_directory_name(k, members));
-      std::error_code ec;
-      for (const auto &e : std::filesystem::directory_iterator(dir, ec))
-        if (e.is_directory(ec) && e.path().filename().string().rfind("member_", 0) == 0)
-          f.subdirectories.push_back(e.path().filename().string());
-      return f;
-    }
-  } // namespace
 
   int
   run_ensemble_command(const std::string          &command,
@@ -123,8 +94,9 @@ namespace wearlink::app
       check_resumable_ensemble(o.output_directory);
     // Every member's uncertain inputs are checked before the folder is claimed: a bad input writes nothing.
     workflows::check_uncertain_members(o, io::read_scene(file, o.overrides));
-    OutputClaim claim =
-      output_claim(o.output_directory, ensemble_files(o.output_directory, o.request.members, member_files), a);
+    OutputClaim claim = output_claim(o.output_directory,
+                                     workflows::ensemble_files(o.output_directory, o.request.members, member_files),
+                                     a);
     if (o.resume)
       claim.earlier = EarlierRun::resume;
     claim.advice = "Add --overwrite to replace them, --resume " + o.output_directory +

@@ -3,11 +3,8 @@
 
 #include "app/command_line.h"
 #include "base/exceptions.h"
+#include "workflows/ensemble/ensemble.h"
 
-#include <deal.II/base/mpi.h>
-
-#include <boost/serialization/string.hpp>
-#include <boost/serialization/utility.hpp>
 #include <iostream>
 #include <utility>
 
@@ -48,30 +45,6 @@ names listed above) is refused unless --overwrite, which removes those files fir
   std::unique_ptr<OutputDirectory>
   claim_output_directory_on_root(const OutputClaim &claim)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
-    if (dealii::Utilities::MPI::n_mpi_processes(comm) == 1)
-      return claim_output_directory(claim);
-    // Rank 0's outcome for everyone: 0 claimed, 2 InputError, 4 IoError, and the message.
-    std::pair<int, std::string>      outcome{0, ""};
-    std::unique_ptr<OutputDirectory> claimed;
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      try
-        {
-          claimed = claim_output_directory(claim);
-        }
-      catch (const InputError &e)
-        {
-          outcome = {2, e.message()};
-        }
-      catch (const IoError &e)
-        {
-          outcome = {4, e.message()};
-        }
-    outcome = dealii::Utilities::MPI::broadcast(comm, outcome, 0);
-    if (outcome.first == 2)
-      throw InputError(outcome.second);
-    if (outcome.first == 4)
-      throw IoError(outcome.second);
-    return claimed;
+    return workflows::held_on_root([&claim] { return claim_output_directory(claim); });
   }
 } // namespace wearlink::app

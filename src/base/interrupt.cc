@@ -60,6 +60,23 @@ namespace wearlink
     ::signal(SIGXFSZ, SIG_IGN);
   }
 
+  InterruptScope::InterruptScope()
+  {
+    struct sigaction action;
+    std::memset(&action, 0, sizeof(action));
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    received        = 0;
+    ::sigaction(SIGINT, &action, &previous);
+  }
+
+  InterruptScope::~InterruptScope()
+  {
+    ::sigaction(SIGINT, &previous, nullptr);
+    received = 0;
+  }
+
   int
   interrupt_signal()
   {

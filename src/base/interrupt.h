@@ -10,6 +10,7 @@
 // the same directory (remove_stale_partials in base/atomic_file.h).
 #pragma once
 
+#include <signal.h>
 #include <string>
 
 namespace wearlink
@@ -21,6 +22,27 @@ namespace wearlink
    */
   void
   install_interrupt_handlers();
+
+  /**
+   * While it lives, SIGINT stops a run as it does the program's (the handler of
+   * install_interrupt_handlers(): the run throws Interrupted at its next check; a second
+   * SIGINT leaves at once); the handler that was there before — an embedding
+   * interpreter's — is put back at its end, and a signal recorded in between is
+   * forgotten. For a library caller (the Python module) that runs wearlink in its main
+   * thread; not nested.
+   */
+  class InterruptScope
+  {
+  public:
+    InterruptScope();
+    ~InterruptScope();
+    InterruptScope(const InterruptScope &) = delete;
+    InterruptScope &
+    operator=(const InterruptScope &) = delete;
+
+  private:
+    struct sigaction previous; ///< the SIGINT action before
+  };
 
   /** The signal received so far, or 0. */
   int

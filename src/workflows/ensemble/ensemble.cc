@@ -19,6 +19,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -27,6 +29,71 @@
 
 namespace wearlink::workflows
 {
+  EnsembleRequest
+  ensemble_request(const double members, const double seed, const double perturbation, const bool saltelli)
+  {
+    EnsembleRequest r;
+    if (!(members >= 2 && members <= 1000 && members == std::floor(members)))
+      throw InputError("--ensemble " + format_number(members) +
+                       ": the number of members must be a whole number from 2 to 1000 (a spread needs two).");
+    r.members = static_cast<unsigned int>(members);
+    if (!(seed >= 0 && seed <= 9007199254740992.0 && seed == std::floor(seed)))
+      throw InputError("--seed " + format_number(seed) + ": the seed must be a whole number from 0 to 2^53.");
+    r.seed = static_cast<std::uint64_t>(seed);
+    if (!(perturbation > 0 && perturbation <= 1e-3))
+      throw InputError("--perturbation " + format_number(perturbation) +
+                       ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (it is meant to be "
+                       "physically tiny; default 1e-9 rad).");
+    r.perturbation = perturbation;
+    r.saltelli     = saltelli;
+    return r;
+  }
+
+  std::unique_ptr<OutputDirectory>
+  held_on_root(const std::function<std::unique_ptr<OutputDirectory>()> &hold)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    if (dealii::Utilities::MPI::n_mpi_processes(comm) == 1)
+      return hold();
+    // Rank 0's outcome for everyone: 0 held, 2 InputError, 4 IoError, and the message.
+    std::pair<int, std::string>      outcome{0, ""};
+    std::unique_ptr<OutputDirectory> held;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          held = hold();
+        }
+      catch (const InputError &e)
+        {
+          outcome = {2, e.message()};
+        }
+      catch (const IoError &e)
+        {
+          outcome = {4, e.message()};
+        }
+    outcome = dealii::Utilities::MPI::broadcast(comm, outcome, 0);
+    if (outcome.first == 2)
+      throw InputError(outcome.second);
+    if (outcome.first == 4)
+      throw IoError(outcome.second);
+    return held;
+  }
+
+  RunFiles
+  ensemble_files(const std::string &dir, const unsigned int members, const RunFiles &member_files)
+  {
+    RunFiles f = member_files;
+    for (const auto &name : io::outputs::ensemble().patterns)
+      f.patterns.push_back(name);
+    for (unsigned int k = 0; k < members; ++k)
+      f.subdirectories.push_back(member_directory_name(k, members));
+    std::error_code ec;
+    for (const auto &e : std::filesystem::directory_iterator(dir, ec))
+      if (e.is_directory(ec) && e.path().filename().string().rfind("member_", 0) == 0)
+        f.subdirectories.push_back(e.path().filename().string());
+    return f;
+  }
+
   std::string
   ensemble_help()
   {

@@ -35,12 +35,14 @@
 #pragma once
 
 #include "base/json.h"
+#include "base/output_directory.h"
 #include "base/parameters.h"
 #include "io/scene.h"
 
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,26 @@ namespace wearlink::workflows
     /** --sensitivity saltelli: the uncertain inputs laid out as a Saltelli design (uncertain_inputs.h). */
     bool saltelli = false;
   };
+
+  /**
+   * The request of @p members members (a whole number 2 … 1000), @p seed (a whole number
+   * 0 … 2⁵³) and @p perturbation (> 0, ≤ 1e-3 rad), with a Saltelli design if @p saltelli;
+   * InputError naming the option (--ensemble, --seed, --perturbation) and its range otherwise.
+   */
+  EnsembleRequest
+  ensemble_request(double members, double seed, double perturbation, bool saltelli);
+
+  /** The files of an ensemble in @p dir: its own, @p member_files, and the member folders (asked for and earlier ones). */
+  RunFiles
+  ensemble_files(const std::string &dir, unsigned int members, const RunFiles &member_files);
+
+  /**
+   * @p hold on rank 0 of MPI_COMM_WORLD (MPI initialised; rank 0 writes the outputs):
+   * every other rank receives its refusal (InputError, IoError) and throws the same, so
+   * that all ranks stop alike. Returns nullptr on the other ranks.
+   */
+  std::unique_ptr<OutputDirectory>
+  held_on_root(const std::function<std::unique_ptr<OutputDirectory>()> &hold);
 
   /** The text `--help` shows about --ensemble, --seed and --perturbation. */
   std::string

@@ -73,13 +73,19 @@ namespace wearlink::workflows
     class Recorder : public mbs::StepObserver
     {
     public:
-      Recorder(io::Scene &scene, AtomicFile *csv, double interval, bool progress, wear::LoadRecorder *loads)
+      Recorder(io::Scene              &scene,
+               AtomicFile             *csv,
+               double                  interval,
+               bool                    progress,
+               const ProgressCallback &on_progress,
+               wear::LoadRecorder     *loads)
         : scene(scene)
         , mech(*scene.mechanism)
         , csv(csv)
         , trig(2 * mech.n_bodies())
         , interval(interval)
         , progress(progress)
+        , on_progress(on_progress)
         , bodies(mech.n_bodies())
         , joints(scene.clearance_joints.size())
         , axial(scene.clearance_joints)
@@ -147,7 +153,7 @@ namespace wearlink::workflows
                   next_sample = t_start + interval * (++n_samples);
                 }
           }
-        if (progress)
+        if (progress || on_progress)
           {
             const double fraction = (c.t - t_start) / (scene.end_time - t_start);
             if (fraction >= next_progress - 1e-12)
@@ -157,10 +163,13 @@ namespace wearlink::workflows
                   impacts += scene.clearance_joints[i]->n_impacts() - joints[i].impacts_at_start;
                 const double wall =
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-                std::cerr << "[wearlink] " << std::setw(3) << static_cast<int>(std::round(100 * fraction))
-                          << "%  t = " << c.t << " s  steps " << steps << "  impacts " << impacts << "  wall "
-                          << std::setprecision(3) << wall << " s\n"
-                          << std::setprecision(6);
+                std::ostringstream os;
+                os << std::setw(3) << static_cast<int>(std::round(100 * fraction)) << "%  t = " << c.t << " s  steps "
+                   << steps << "  impacts " << impacts << "  wall " << std::setprecision(3) << wall << " s";
+                if (progress)
+                  std::cerr << "[wearlink] " << os.str() << "\n";
+                if (on_progress)
+                  on_progress(std::min(1.0, fraction), os.str());
                 next_progress += 0.1;
               }
           }
@@ -412,6 +421,7 @@ namespace wearlink::workflows
       std::vector<double>                    trig; ///< per step: the bodies' (cos θ, sin θ)
       double                                 interval;
       bool                                   progress;
+      ProgressCallback                       on_progress;
       std::vector<BodyExtremes>              bodies;
       std::vector<JointStatistics>           joints;
       contact::AxialLoads                    axial;       ///< the sliced joints' axial load
@@ -601,7 +611,7 @@ namespace wearlink::workflows
       sim.initialize_state(options.start_time, *options.initial_state);
     else
       sim.initialize(scene.start_time, q0, v0);
-    Recorder                       recorder(scene, csv, scene.output_interval, options.progress, options.loads);
+    Recorder recorder(scene, csv, scene.output_interval, options.progress, options.on_progress, options.loads);
     std::unique_ptr<SceneAnalyses> analyses;
     if (options.analyses)
       analyses =

@@ -26,12 +26,21 @@ namespace wearlink::wear
 
 namespace wearlink::workflows
 {
+  /**
+   * Told of a run's progress: the fraction done (0 … 1) and the progress line the program
+   * prints (without its newline). It runs on the run's thread; what it throws stops the run
+   * (its temporary files removed) and leaves the run.
+   */
+  using ProgressCallback = std::function<void(double fraction, const std::string &line)>;
+
   struct RunOptions
   {
     /** Where to write; empty: write nothing (library use, tests). */
     std::string output_directory;
     /** Progress lines on stderr. */
     bool progress = false;
+    /** If set, told of the progress at each tenth of the run (whether or not it is printed). */
+    ProgressCallback on_progress;
     /** More observers to notify after every accepted step. */
     std::vector<mbs::StepObserver *> observers;
     /**

@@ -90,8 +90,9 @@ namespace wearlink::workflows
       settled(std::size_t c) const;
       double
       measure_response();
-      void
-      print_progress() const;
+      /** One line: each criterion's value as a percentage of its limit. */
+      std::string
+      progress_line() const;
       Json
       wear_block(std::size_t c, analysis::CriterionOutcome &outcome) const;
       Json
@@ -231,8 +232,19 @@ namespace wearlink::workflows
       iterations_run  = st.iterations_done;
       if (!options.output_directory.empty())
         io::write_life_history(options.output_directory + "/" + io::outputs::life_history, history);
-      if (options.progress)
-        print_progress();
+      if (options.progress || options.on_progress)
+        {
+          const auto line = progress_line();
+          if (options.progress)
+            std::cerr << "[wearlink] " + line + "\n";
+          if (options.on_progress)
+            {
+              double fraction = 0;
+              for (std::size_t c = 0; c < history.criteria.size(); ++c)
+                fraction = std::max(fraction, history.values.back()[c] / history.criteria[c].limit);
+              options.on_progress(std::clamp(fraction, 0.0, 1.0), line);
+            }
+        }
     }
 
     /** The first crossing of the wear criterion @p c. */
@@ -402,12 +414,11 @@ namespace wearlink::workflows
     }
 
     /** One line: each criterion's value as a percentage of its limit. */
-    void
-    LifeRun::print_progress() const
+    std::string
+    LifeRun::progress_line() const
     {
       std::ostringstream os;
-      os << "[wearlink] " << options.progress_prefix << "life after " << std::setprecision(6)
-         << history.revolutions.back() << " rev:";
+      os << options.progress_prefix << "life after " << std::setprecision(6) << history.revolutions.back() << " rev:";
       for (std::size_t c = 0; c < history.criteria.size(); ++c)
         {
           const auto &spec = history.criteria[c];
@@ -420,7 +431,7 @@ namespace wearlink::workflows
           else if (reached(c))
             os << " reached";
         }
-      std::cerr << os.str() << "\n";
+      return os.str();
     }
 
     /** The entries every criterion's block has. */

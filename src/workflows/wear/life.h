@@ -40,6 +40,11 @@ namespace wearlink::workflows
     bool        resume   = false; ///< continue the run in output_directory
     bool        progress = true;
     std::string progress_prefix; ///< of the progress lines (an ensemble's member)
+    /**
+     * If set, told after every iteration of the life's progress — the largest criterion's
+     * value over its limit, at most 1 — and of its progress line (workflows/run/run.h).
+     */
+    ProgressCallback on_progress;
   };
 
   struct LifeRunResult

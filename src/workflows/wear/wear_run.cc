@@ -208,25 +208,25 @@ namespace wearlink::workflows
       loop.start(scene.start_time, q0, v0, fingerprint(entries), entries);
     }
 
-    /** One line per iteration on stderr: revolutions, factor, depths and volume per joint. */
-    void
-    print_progress(const wear::WearLoop &loop,
-                   const unsigned int    n_iterations,
-                   const double          seconds,
-                   const std::string    &prefix)
+    /** The progress line of an iteration: revolutions, factor, depths and volume per joint. */
+    std::string
+    progress_line(const wear::WearLoop &loop,
+                  const unsigned int    n_iterations,
+                  const double          seconds,
+                  const std::string    &prefix)
     {
       const auto        &st = loop.state();
       std::ostringstream os;
-      os << "[wearlink] " << prefix << "wear iteration " << st.iterations_done << '/' << n_iterations
-         << "  revolutions " << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
+      os << prefix << "wear iteration " << st.iterations_done << '/' << n_iterations << "  revolutions "
+         << std::setprecision(6) << st.revolutions << "  factor " << loop.last_factor();
       for (const auto &j : st.joints)
         {
           const auto &r = j.history.back();
           os << "  " << j.name << ": h_pin " << std::setprecision(3) << r.max_depth_pin * 1e6 << " µm, h_bore "
              << r.max_depth_bore * 1e6 << " µm, V " << (r.volume_pin + r.volume_bore) * 1e9 << " mm³";
         }
-      os << "  (" << std::setprecision(3) << seconds << " s)\n";
-      std::cerr << os.str();
+      os << "  (" << std::setprecision(3) << seconds << " s)";
+      return os.str();
     }
 
     /** The wear figures of each wearing joint, into summary["clearance_joints"][J]. */
@@ -603,8 +603,20 @@ namespace wearlink::workflows
         if (ws.fe_output)
           write_fe_files(m->setup.wearing, loop, m->dir, ws, m->fe_meshes_copied);
       }
-    if (m->options.progress)
-      print_progress(loop, ws.n_iterations, iteration.seconds(), m->options.progress_prefix);
+    if (m->options.progress || m->options.on_progress)
+      {
+        const auto line = progress_line(loop, ws.n_iterations, iteration.seconds(), m->options.progress_prefix);
+        if (m->options.progress)
+          std::cerr << "[wearlink] " + line + "\n";
+        if (m->options.on_progress)
+          {
+            const auto  &st       = loop.state();
+            const double fraction = ws.extrapolation == wear::Extrapolation::adaptive ?
+                                      st.revolutions / ws.target_revolutions :
+                                      static_cast<double>(st.iterations_done) / ws.n_iterations;
+            m->options.on_progress(std::min(1.0, fraction), line);
+          }
+      }
   }
 
   void

@@ -13,6 +13,7 @@
 #include "io/scene.h"
 #include "wear/wear_loop.h"
 #include "wear/wear_state.h"
+#include "workflows/run/run.h"
 
 #include <functional>
 #include <memory>
@@ -39,6 +40,11 @@ namespace wearlink::workflows
     bool final_outputs = true;
     /** Prefix of the progress lines (an ensemble's member). */
     std::string progress_prefix;
+    /**
+     * If set, told after every iteration of the fraction of the iterations (of the target
+     * revolutions, adaptive) done and of its progress line (workflows/run/run.h).
+     */
+    ProgressCallback on_progress;
   };
 
   struct WearRunResult
