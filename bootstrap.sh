@@ -11,7 +11,8 @@ shift || true
 
 packages="cmake make g++ libdeal.ii-dev libeigen3-dev libmetis-dev gmsh libgmsh-dev
           googletest libgtest-dev libsuitesparse-dev gnuplot-nox openmpi-bin python3-matplotlib
-          nlohmann-json3-dev zlib1g-dev libfftw3-dev clang-format libopenblas0-pthread"
+          nlohmann-json3-dev zlib1g-dev libfftw3-dev clang-format libopenblas0-pthread
+          python3-dev pybind11-dev python3-numpy python3-pytest"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -27,9 +28,9 @@ fi
 jobs="$(nproc 2>/dev/null || echo 2)"
 echo "== configuring and building (Release) in build/"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release ${WEARLINK_CMAKE_ARGS:-}
-# A run needs only the program; the tests are built by `test` (and `build`).
+# A run needs only the program and the Python module; the tests are built by `test` (and `build`).
 target=""
-[ "$mode" = run ] && target="--target wearlink"
+[ "$mode" = run ] && target="--target wearlink wearlink_python"
 cmake --build build -j "$jobs" $target
 
 # Open MPI refuses to run as root unless told that this is intended (CI runs as root).

@@ -35,6 +35,7 @@ accuracy_default         3    long   study accuracy params/nine_bar_wear.prm on 
 convergence_hertz_strip  5    long   study convergence params/nine_bar_wear.prm on 2 ranks (doc/tutorials/profiles.md)
 convergence_winkler      15   long   the same with winkler (doc/tutorials/profiles.md)
 accuracy_fe              21   long   study accuracy of the FE scene's shortcuts (doc/tutorials/accuracy_study.md)
+python_clearance_study   4.5  long   the Python study of doc/python.md: 4 clearances, a wear run and a life each
 "
 
 # A fresh folder for one command's output.
@@ -123,6 +124,16 @@ END
   "$wearlink" study accuracy params/nine_bar_wear_fe.prm --study "$out/fe_shortcuts.prm" --output "$d" \
       --set "Wear/Number of iterations=5" --set "Wear/Cycles per iteration=2" --set "Wear/Extrapolation factor=5000"
   keep "$d/accuracy_pareto.png" accuracy_nine_bar_wear_fe.png
+}
+
+make_python_clearance_study() {
+  local d; d=$(fresh python_clearance_study)
+  ln -s "$PWD/params" "$d/params"
+  ln -s "$PWD/meshes" "$d/meshes"
+  # The page's own block, as the doc-test runs it (shortened there, whole here).
+  awk '/^```python$/ {inside = 1; next} inside && /^```$/ {exit} inside' doc/python.md > "$d/study.py"
+  (cd "$d" && PYTHONPATH="$OLDPWD/build/python" MPLBACKEND=Agg /usr/bin/python3 study.py)
+  keep "$d/clearance_study.png" python_clearance_study.png
 }
 
 names_of() { echo "$figures" | awk -v g="$1" 'NF && (g == "all" || $3 == g) {print $1}'; }

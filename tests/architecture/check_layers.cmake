@@ -1,7 +1,9 @@
 # The layers of src/ include one way only (doc/architecture.md §3):
-#   base < mbs < contact < fe < wear < analysis < io < workflows < app
+#   base < mbs < contact < fe < wear < analysis < io < workflows < app, bindings
 # A file in a layer may include headers of its own layer and of the layers before it;
-# files directly in src/ (register_all.*) count as app. deal.II headers other than
+# app and bindings (the Python module) are peers on top: neither includes the other's
+# headers; files directly in src/ (register_all.*) count as app, and bindings may include
+# them. deal.II headers other than
 # deal.II/base and the gmsh API belong to fe/ alone. Inside workflows/ the rooms are
 # ordered the same way: run, ensemble < compare < wear < study (run and ensemble are
 # peers: neither includes the other); a room includes its own headers and those of the
@@ -11,7 +13,7 @@ cmake_minimum_required(VERSION 3.16)
 if(NOT SRC OR NOT IS_DIRECTORY "${SRC}")
   message(FATAL_ERROR "check_layers.cmake: set -DSRC=<source folder> (got '${SRC}')")
 endif()
-set(layers base mbs contact fe wear analysis io workflows app)
+set(layers base mbs contact fe wear analysis io workflows app bindings)
 set(rooms run ensemble compare wear study)
 set(room_levels 0 0 1 2 3)
 # The room of a path under workflows/ ("" if none) and its level into the variables.
@@ -53,7 +55,9 @@ foreach(rel IN LISTS files)
         set(target app)
       endif()
       list(FIND layers "${target}" target_level)
-      if(target_level GREATER level)
+      if(layer STREQUAL "bindings" AND target STREQUAL "app" AND header MATCHES "/")
+        string(APPEND violations "  ${rel} (layer bindings) includes \"${header}\" (layer app): app and bindings are peers\n")
+      elseif(target_level GREATER level)
         string(APPEND violations "  ${rel} (layer ${layer}) includes \"${header}\" (layer ${target})\n")
       endif()
       room_of("${rel}" from_room from_level)

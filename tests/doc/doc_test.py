@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""The documentation's commands, run: every shell block of README.md and doc/**/*.md.
+"""The documentation's commands, run: every shell and Python block of README.md and doc/**/*.md.
 
-A fenced block tagged ```sh, ```bash or ```shell is run; a block tagged anything else
-(```text for a synopsis with placeholders or a printed table, ```prm for a scene) is
-not. A fence without a tag is an error, so that no block escapes the choice.
+A fenced block tagged ```sh, ```bash or ```shell is run by bash; a block tagged ```python
+by python3 with the module of the build under test on its path (--python-path) and
+matplotlib drawing into files (MPLBACKEND=Agg); a block tagged anything else (```text for
+a synopsis with placeholders or a printed table, ```prm for a scene, ```pycon for a
+Python session to read) is not. A fence without a tag is an error, so that no block
+escapes the choice.
 
 Before a block's fence, HTML comments (invisible on the rendered page, visible in the
 source and in this test's report) may shorten it:
@@ -17,6 +20,7 @@ source and in this test's report) may shorten it:
       must occur);
   <!-- doc-test: skip: REASON -->
       does not run the block, and says why in the report.
+A Python block takes `sub` and `skip:` (there is no build/wearlink command to append to).
 
 doc/parameters.md is not a page of this test: it is generated (GENERATED below) and
 has a test of its own. Lines that call ./bootstrap.sh are not run (CI runs `./bootstrap.sh test`, which
@@ -25,7 +29,8 @@ synopsis: `[--option ...]`, `...` or one of the placeholder words (SCENE.prm, DI
 is an error that asks for a ```text fence.
 
 Each Markdown file runs in a fresh working directory WORK/<file>/ that holds copies of
-the source's params/ and meshes/ and build/wearlink, a link to the program under test,
+the source's params/ and meshes/ and build/wearlink, a link to the program under test
+(and build/python, a link to the module's folder, with --python-path),
 so the commands run as written from the project's root and nothing is written into the
 source tree. The blocks of one file run in order in that directory (a block may use
 the output of an earlier block of the same file), with
@@ -49,7 +54,9 @@ import sys
 import time
 from pathlib import Path
 
-RUN_TAGS = {"sh", "bash", "shell"}
+SHELL_TAGS = {"sh", "bash", "shell"}
+PYTHON_TAGS = {"python"}
+RUN_TAGS = SHELL_TAGS | PYTHON_TAGS
 # Pages written by a program, not by hand: their own test keeps them current.
 GENERATED = {"doc/parameters.md": "written by tests/support/parameter_reference.cmake from "
                                   "`wearlink --print-parameters`; the test doc.parameter_reference checks it"}
@@ -186,11 +193,15 @@ def prepare(block):
         else:
             errors.append(f"{block.where}: unknown doc-test directive '{d}' (--ARGS, sub \"A\" \"B\", skip: REASON)")
     text = block.text
+    if block.tag in PYTHON_TAGS and args:
+        errors.append(f"{block.where}: doc-test arguments before a ```python block (use sub \"A\" \"B\")")
     for old, new in subs:
         if old not in text:
             errors.append(f"{block.where}: doc-test sub: '{old}' is not in the block")
         text = text.replace(old, new)
         notes.append(f"sub '{old}' -> '{new}'")
+    if block.tag in PYTHON_TAGS:
+        return text + "\n", notes, errors
     lines, dropped = [], 0
     for line in logical_lines(text):
         code = command_part(line).strip()
@@ -219,13 +230,15 @@ def prepare(block):
     return "\n".join(lines) + "\n", notes, errors
 
 
-def fresh_workdir(work, display, source, binary):
+def fresh_workdir(work, display, source, binary, python_path=None):
     name = re.sub(r"[^A-Za-z0-9_.-]", "_", display)
     d = work / name
     if d.exists():
         shutil.rmtree(d)
     (d / "build").mkdir(parents=True)
     os.symlink(binary, d / "build" / "wearlink")
+    if python_path:
+        os.symlink(python_path, d / "build" / "python")
     for sub in ("params", "meshes"):
         shutil.copytree(source / sub, d / sub, symlinks=True)
     return d
@@ -252,9 +265,14 @@ def run_file(md, display, opts):
             print(f"--- {b.where} ({'; '.join(notes) if notes else 'as written'})")
             print(script if script else "(not run)")
         return True, {}
-    wd = fresh_workdir(opts.work, display, opts.source, opts.binary)
+    wd = fresh_workdir(opts.work, display, opts.source, opts.binary, opts.python_path)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                WEARLINK_CACHE_DIR=str(opts.work / "cache"), TMPDIR=str(opts.work / "tmp"), LC_ALL="C.UTF-8")
+    # `python3` in a shell block is the interpreter running this test (the build's).
+    env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")
+    if opts.python_path:
+        env["PYTHONPATH"] = str(opts.python_path) + os.pathsep + env.get("PYTHONPATH", "")
+    env["MPLBACKEND"] = "Agg"
     (opts.work / "tmp").mkdir(exist_ok=True)
     stats = {"run": 0, "override": 0, "skip": 0, "bootstrap": 0, "text": n_text, "seconds": 0.0}
     t_file = time.monotonic()
@@ -270,7 +288,9 @@ def run_file(md, display, opts):
             stats["override"] += 1
         t0 = time.monotonic()
         try:
-            p = subprocess.run(["bash", "-c", "set -eo pipefail\n" + script], cwd=wd, env=env,
+            command = [sys.executable, "-c", script] if b.tag in PYTHON_TAGS else \
+                ["bash", "-c", "set -eo pipefail\n" + script]
+            p = subprocess.run(command, cwd=wd, env=env,
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=opts.timeout)
             rc, out = p.returncode, p.stdout.decode("utf-8", "replace")
         except subprocess.TimeoutExpired as e:
@@ -295,6 +315,7 @@ def main():
     ap.add_argument("--binary", required=True, type=Path, help="the wearlink program under test")
     ap.add_argument("--source", required=True, type=Path, help="the project's source directory")
     ap.add_argument("--work", required=True, type=Path, help="a scratch directory (in the build tree)")
+    ap.add_argument("--python-path", type=Path, help="the folder holding the Python module under test")
     ap.add_argument("--timeout", type=float, default=120, help="seconds per block (default 120)")
     ap.add_argument("--list", action="store_true", help="print what would run, run nothing")
     ap.add_argument("files", nargs="*", help="Markdown files (default: README.md and doc/**/*.md)")
@@ -302,6 +323,8 @@ def main():
     opts.source = opts.source.resolve()
     opts.binary = opts.binary.resolve()
     opts.work = opts.work.resolve()
+    if opts.python_path:
+        opts.python_path = opts.python_path.resolve()
     if not opts.list and not os.access(opts.binary, os.X_OK):
         print(f"doc-test: ERROR the program {opts.binary} is not an executable file")
         return 1

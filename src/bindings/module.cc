@@ -1,0 +1,438 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The C++ part of the Python module `wearlink` (doc/python.md): a layer beside app/ that
+// calls the same workflows. It reads scenes through io::read_scene (the same validation
+// and messages as the program), runs them into an output folder it holds as the program
+// does, and hands back the summary, the worn profiles as arrays and the CSV tables as
+// arrays. The Python package (bindings/python/wearlink/__init__.py) builds its objects
+// on top: Scene, run(), Result.
+//
+// The GIL is released while a scene is read or run, so that other Python threads and a
+// Jupyter kernel stay responsive; a progress callback takes the GIL back for its call.
+// In the interpreter's main thread SIGINT stops a run as it stops the program (the run
+// throws at its next check, its temporary files are removed) and is raised as
+// wearlink.Interrupted, a KeyboardInterrupt.
+#include "base/exceptions.h"
+#include "base/interrupt.h"
+#include "base/json.h"
+#include "base/output_directory.h"
+#include "io/csv.h"
+#include "io/output_names.h"
+#include "io/scene.h"
+#include "register_all.h"
+#include "workflows/ensemble/ensemble.h"
+#include "workflows/ensemble/uncertain_inputs.h"
+#include "workflows/run/first_look.h"
+#include "workflows/run/run.h"
+#include "workflows/wear/life.h"
+#include "workflows/wear/wear_run.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace wearlink::bindings
+{
+  namespace
+  {
+    /** A copy of @p v as a one-dimensional float64 array. */
+    py::array_t<double>
+    array_of(const std::vector<double> &v)
+    {
+      py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+      std::copy(v.begin(), v.end(), a.mutable_data());
+      return a;
+    }
+
+    /** The scene in @p file with the entries @p sets ("Section/Entry=value"), read with the GIL released. */
+    io::Scene
+    read(const std::string &file, const std::vector<std::string> &sets)
+    {
+      py::gil_scoped_release released;
+      return io::read_scene(file, ParameterOverrides(sets));
+    }
+
+    /** What Scene shows of a scene: its title, bodies and clearance joints, and whether it wears. */
+    py::dict
+    describe(const std::string &file, const std::vector<std::string> &sets)
+    {
+      const auto               scene = read(file, sets);
+      std::vector<std::string> bodies, joints, wearing;
+      for (const auto &b : scene.mechanism->get_bodies())
+        bodies.push_back(b.name);
+      for (const auto *j : scene.clearance_joints)
+        joints.push_back(j->name());
+      for (const auto &w : scene.wear)
+        wearing.push_back(w->joint);
+      py::dict d;
+      d["title"]            = scene.title;
+      d["bodies"]           = bodies;
+      d["clearance_joints"] = joints;
+      d["wearing_joints"]   = wearing;
+      d["start_time_s"]     = scene.start_time;
+      d["end_time_s"]       = scene.end_time;
+      return d;
+    }
+
+    /** The value of the entry @p path ("Section/Subsection/Entry") of the scene, as text. */
+    std::string
+    entry(const std::string &file, const std::vector<std::string> &sets, const std::string &path)
+    {
+      const auto scene = read(file, sets);
+      // The tree of every entry with its value (a name without its entry is not in it).
+      std::ostringstream tree;
+      scene.parameters->print_parameters(tree, dealii::ParameterHandler::ShortJSON);
+      const Json               all = Json::parse(tree.str());
+      const Json              *at  = &all;
+      std::stringstream        in(path);
+      std::vector<std::string> parts;
+      for (std::string p; std::getline(in, p, '/');)
+        parts.push_back(p);
+      for (const auto &p : parts)
+        {
+          if (!at->is_object() || !at->contains(p))
+            {
+              at = nullptr;
+              break;
+            }
+          at = &at->at(p);
+        }
+      if (at == nullptr || !at->is_string())
+        throw InputError("In " + file + ", there is no entry '" + path + "'" +
+                         (at != nullptr ? " (it is a section: name one of its entries)" : "") +
+                         ". `wearlink --print-parameters " + file + "` lists every entry the scene can have.");
+      return at->get<std::string>();
+    }
+
+    /** The worn profiles of every wearing joint: radii [m] at `angle_rad`, now and at the start. */
+    py::dict
+    profiles_of(const wear::WearState &st)
+    {
+      py::dict out;
+      for (const auto &j : st.joints)
+        {
+          std::vector<double> angles(j.bore.n_points());
+          for (unsigned int k = 0; k < angles.size(); ++k)
+            angles[k] = j.bore.angle(k);
+          py::dict d;
+          d["angle_rad"]      = array_of(angles);
+          d["bore"]           = array_of(j.bore.samples());
+          d["pin"]            = array_of(j.pin.samples());
+          d["initial_bore"]   = array_of(j.initial_bore.samples());
+          d["initial_pin"]    = array_of(j.initial_pin.samples());
+          out[j.name.c_str()] = d;
+        }
+      return out;
+    }
+
+    /**
+     * The progress callback of a run: @p callback (a Python callable taking the fraction
+     * and the progress line), called with the GIL.
+     */
+    workflows::ProgressCallback
+    progress_of(const py::object &callback)
+    {
+      if (callback.is_none())
+        return {};
+      return [callback](const double fraction, const std::string &line) {
+        py::gil_scoped_acquire held;
+        callback(fraction, line);
+      };
+    }
+
+    /** What a run hands back to run()'s caller. */
+    struct Outcome
+    {
+      std::string                    summary; ///< summary.json's text
+      std::optional<wear::WearState> state;   ///< of a wear run
+    };
+
+    /** A command's work on the scene read, into the folder held, telling @p progress. */
+    using Work = std::function<Outcome(io::Scene &, const std::string &, const workflows::ProgressCallback &)>;
+
+    /**
+     * Read the scene in @p file with @p sets, hold @p directory (created; it must hold no
+     * earlier run's files, unless @p overwrite: then those are removed) and do @p work in
+     * it, without the GIL and, if @p catch_interrupt, with SIGINT stopping it. Returns the
+     * summary (JSON text), whether it wore, and the worn profiles.
+     */
+    py::dict
+    held_run(const std::string                            &file,
+             const std::vector<std::string>               &sets,
+             const std::string                            &directory,
+             const bool                                    overwrite,
+             const py::object                             &callback,
+             const bool                                    catch_interrupt,
+             const Work                                   &work,
+             const std::function<void(const io::Scene &)> &check = {})
+    {
+      const auto                    progress = progress_of(callback);
+      std::optional<InterruptScope> interrupts;
+      Outcome                       outcome;
+      {
+        py::gil_scoped_release released;
+        if (catch_interrupt)
+          interrupts.emplace();
+        auto scene = io::read_scene(file, ParameterOverrides(sets));
+        if (check)
+          check(scene); // before the folder is held: bad input writes nothing
+        OutputDirectory held(directory,
+                             overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
+                             io::outputs::run(),
+                             "Give it a new or empty folder, or overwrite=True.");
+        outcome = work(scene, directory, progress);
+        throw_if_interrupted();
+      }
+      py::dict d;
+      d["summary"]  = outcome.summary;
+      d["wear"]     = outcome.state.has_value();
+      d["profiles"] = outcome.state ? profiles_of(*outcome.state) : py::dict();
+      return d;
+    }
+
+    /** `wearlink run`'s work: the wear loop if a joint wears, else one run with its first look. */
+    Outcome
+    run_work(io::Scene &scene, const std::string &dir, const workflows::ProgressCallback &progress)
+    {
+      Outcome o;
+      if (workflows::has_wear(scene))
+        {
+          workflows::WearRunOptions w;
+          w.output_directory = dir;
+          w.progress         = false;
+          w.on_progress      = progress;
+          auto r             = workflows::run_wear(scene, w);
+          o.summary          = r.summary.dump();
+          o.state            = std::move(r.state);
+        }
+      else
+        {
+          workflows::RunOptions ro;
+          ro.output_directory = dir;
+          ro.on_progress      = progress;
+          o.summary           = workflows::run_with_first_look(scene, ro).summary.dump();
+        }
+      return o;
+    }
+
+    /** `wearlink life`'s work: the wear loop until the scene's Life criteria are decided. */
+    Outcome
+    life_work(io::Scene &scene, const std::string &dir, const workflows::ProgressCallback &progress)
+    {
+      workflows::LifeRunOptions l;
+      l.output_directory = dir;
+      l.progress         = false;
+      l.on_progress      = progress;
+      auto    r          = workflows::run_life(scene, l);
+      Outcome o;
+      o.summary = r.wear.summary.dump();
+      o.state   = std::move(r.wear.state);
+      return o;
+    }
+
+    /** The command @p command ("run" or "life") on the scene, as held_run() says. */
+    py::dict
+    execute(const std::string              &command,
+            const std::string              &file,
+            const std::vector<std::string> &sets,
+            const std::string              &directory,
+            const bool                      overwrite,
+            const py::object               &callback,
+            const bool                      catch_interrupt)
+    {
+      if (command == "life")
+        return held_run(file, sets, directory, overwrite, callback, catch_interrupt, life_work, [](const io::Scene &s) {
+          workflows::check_life_criteria(s);
+        });
+      if (command == "run")
+        return held_run(file, sets, directory, overwrite, callback, catch_interrupt, run_work);
+      throw InputError("The module runs the commands run and life, not '" + command + "'.");
+    }
+
+    /** MPI for the ensembles: started at the first one (unless started already), finished at exit. */
+    std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+
+    void
+    start_mpi()
+    {
+      int started = 0;
+      MPI_Initialized(&started);
+      if (started)
+        return;
+      static int    argc           = 1;
+      static char   program[]      = "python3";
+      static char  *argv_storage[] = {program, nullptr};
+      static char **argv           = argv_storage;
+      mpi                          = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
+      py::module_::import("atexit").attr("register")(py::cpp_function([] { mpi.reset(); }));
+    }
+
+    /** This process's rank and the number of ranks (MPI started). */
+    py::tuple
+    mpi_ranks()
+    {
+      start_mpi();
+      return py::make_tuple(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD),
+                            dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    }
+
+    /** What runs one member of a `run` (@p life false) or a `life` ensemble. */
+    workflows::MemberRun
+    member_run(const bool life)
+    {
+      return [life](io::Scene &scene, const std::string &dir, const std::string &, const bool resume) {
+        if (life)
+          {
+            workflows::LifeRunOptions l;
+            l.output_directory = dir;
+            l.resume           = resume;
+            l.progress         = false;
+            return workflows::run_life(scene, l).wear.summary;
+          }
+        if (workflows::has_wear(scene))
+          {
+            workflows::WearRunOptions w;
+            w.output_directory = dir;
+            w.resume           = resume;
+            w.progress         = false;
+            return workflows::run_wear(scene, w).summary;
+          }
+        workflows::RunOptions ro;
+        ro.output_directory = dir;
+        return workflows::run_scene(scene, ro);
+      };
+    }
+
+    /**
+     * Hold @p o's folder on rank 0 (created; an earlier run's files refused unless
+     * @p overwrite); every rank gets rank 0's outcome (its InputError or IoError).
+     */
+    std::unique_ptr<OutputDirectory>
+    hold_on_root(const workflows::EnsembleOptions &o, const bool overwrite)
+    {
+      return workflows::held_on_root([&] {
+        return std::make_unique<OutputDirectory>(o.output_directory,
+                                                 overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
+                                                 workflows::ensemble_files(o.output_directory,
+                                                                           o.request.members,
+                                                                           io::outputs::run()),
+                                                 "Give it a new or empty folder, or overwrite=True.");
+      });
+    }
+
+    /**
+     * `wearlink run|life --ensemble N` (@p command "run" or "life") of the scene into
+     * @p directory, its members over the MPI ranks; every rank gets the ensemble's summary.
+     */
+    py::dict
+    ensemble(const std::string              &command,
+             const std::string              &file,
+             const std::vector<std::string> &sets,
+             const std::string              &directory,
+             const bool                      overwrite,
+             const double                    members,
+             const double                    seed,
+             const double                    perturbation,
+             const bool                      saltelli,
+             const bool                      catch_interrupt)
+    {
+      if (command != "run" && command != "life")
+        throw InputError("An ensemble runs the command run or life, not '" + command + "'.");
+      start_mpi();
+      workflows::EnsembleOptions o;
+      o.scene_file       = file;
+      o.overrides        = ParameterOverrides(sets);
+      o.request          = workflows::ensemble_request(members, seed, perturbation, saltelli);
+      o.command          = command;
+      o.output_directory = directory;
+      o.progress         = false;
+      std::string                   summary;
+      bool                          all_failed = false;
+      std::optional<InterruptScope> interrupts;
+      {
+        py::gil_scoped_release released;
+        if (catch_interrupt)
+          interrupts.emplace();
+        const auto scene = io::read_scene(file, o.overrides);
+        if (command == "life")
+          workflows::check_life_criteria(scene);
+        workflows::check_uncertain_members(o, scene); // before the folder is held: bad input writes nothing
+        const auto held = hold_on_root(o, overwrite);
+        const Json s    = workflows::run_ensemble(o, member_run(command == "life"), all_failed);
+        summary         = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, s.dump(), 0);
+        throw_if_interrupted();
+      }
+      if (all_failed)
+        throw NumericalError("Every member of the ensemble failed; " + directory +
+                             "/summary.json has each member's message.");
+      py::dict d;
+      d["summary"]  = summary;
+      d["wear"]     = false;
+      d["profiles"] = py::dict();
+      return d;
+    }
+
+    /** A CSV table of numbers: its header and its rows as a two-dimensional array (a field that is no number: NaN). */
+    py::tuple
+    read_csv(const std::string &file)
+    {
+      std::vector<std::string> names;
+      std::vector<double>      values;
+      std::size_t              n_rows = 0, n_columns = 0;
+      {
+        py::gil_scoped_release released;
+        const auto             table = io::CsvTable::read(file, "table");
+        names                        = table.columns();
+        n_rows                       = table.n_rows();
+        n_columns                    = table.n_columns();
+        values.resize(n_rows * n_columns);
+        for (std::size_t r = 0; r < n_rows; ++r)
+          for (std::size_t c = 0; c < n_columns; ++c)
+            {
+              const std::string &f   = table.field(r, c);
+              char              *end = nullptr;
+              const double       x   = std::strtod(f.c_str(), &end);
+              values[r * n_columns + c] =
+                (!f.empty() && end != nullptr && *end == '\0') ? x : std::numeric_limits<double>::quiet_NaN();
+            }
+      }
+      py::array_t<double> a({static_cast<py::ssize_t>(n_rows), static_cast<py::ssize_t>(n_columns)});
+      std::copy(values.begin(), values.end(), a.mutable_data());
+      return py::make_tuple(names, a);
+    }
+  } // namespace
+} // namespace wearlink::bindings
+
+PYBIND11_MODULE(_wearlink, m)
+{
+  using namespace wearlink;
+  m.doc() = "The C++ part of the wearlink module; use `import wearlink` (doc/python.md).";
+  dealii::deal_II_exceptions::disable_abort_on_exception();
+  register_all();
+
+  // wearlink's failures as Python exceptions (doc/running.md, "Exit status"; doc/python.md).
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<EstimationError>(m, "EstimationError", PyExc_ValueError);
+  py::register_exception<NumericalError>(m, "NumericalError", PyExc_RuntimeError);
+  py::register_exception<IoError>(m, "EnvironmentFault", PyExc_OSError);
+  py::register_exception<Interrupted>(m, "Interrupted", PyExc_KeyboardInterrupt);
+
+  m.def("describe", &bindings::describe, py::arg("file"), py::arg("sets"));
+  m.def("entry", &bindings::entry, py::arg("file"), py::arg("sets"), py::arg("path"));
+  // Called by the package (python/wearlink/__init__.py) with positional arguments.
+  m.def("execute", &bindings::execute);
+  m.def("ensemble", &bindings::ensemble);
+  m.def("mpi_ranks", &bindings::mpi_ranks);
+  m.def("read_csv", &bindings::read_csv, py::arg("file"));
+}
