@@ -2,9 +2,9 @@
 // The C++ part of the Python module `wearlink` (doc/python.md): a layer beside app/ that
 // calls the same workflows. It reads scenes through io::read_scene (the same validation
 // and messages as the program), runs them into an output folder it holds as the program
-// does, and hands back the summary, the worn profiles as arrays and the CSV tables as
-// arrays. The Python package (bindings/python/wearlink/__init__.py) builds its objects
-// on top: Scene, run(), Result.
+// does, and hands back the summary, the worn profiles and the CSV tables as numpy arrays
+// that own the C++ storage (no copy). The Python package (bindings/python/wearlink/) builds
+// its objects on top: Scene, run(), life(), Result, Table.
 //
 // The GIL is released while a scene is read or run, so that other Python threads and a
 // Jupyter kernel stay responsive; a progress callback takes the GIL back for its call.
@@ -15,14 +15,18 @@
 #include "base/interrupt.h"
 #include "base/json.h"
 #include "base/output_directory.h"
+#include "io/contact_case.h"
 #include "io/csv.h"
 #include "io/output_names.h"
 #include "io/scene.h"
 #include "register_all.h"
+#include "workflows/compare/contact_comparison.h"
 #include "workflows/ensemble/ensemble.h"
 #include "workflows/ensemble/uncertain_inputs.h"
+#include "workflows/run/contact_case.h"
 #include "workflows/run/first_look.h"
 #include "workflows/run/run.h"
+#include "workflows/wear/calibration.h"
 #include "workflows/wear/life.h"
 #include "workflows/wear/wear_run.h"
 
@@ -46,13 +50,18 @@ namespace wearlink::bindings
 {
   namespace
   {
-    /** A copy of @p v as a one-dimensional float64 array. */
+    /**
+     * @p v as a float64 array of @p shape (C order) without a copy: the array owns the
+     * vector's storage through a capsule.
+     */
     py::array_t<double>
-    array_of(const std::vector<double> &v)
+    array_of(std::vector<double> &&v, std::vector<py::ssize_t> shape = {})
     {
-      py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
-      std::copy(v.begin(), v.end(), a.mutable_data());
-      return a;
+      if (shape.empty())
+        shape = {static_cast<py::ssize_t>(v.size())};
+      auto       *held = new std::vector<double>(std::move(v));
+      py::capsule owner(held, [](void *p) { delete static_cast<std::vector<double> *>(p); });
+      return py::array_t<double>(shape, held->data(), owner);
     }
 
     /** The scene in @p file with the entries @p sets ("Section/Entry=value"), read with the GIL released. */
@@ -117,20 +126,20 @@ namespace wearlink::bindings
 
     /** The worn profiles of every wearing joint: radii [m] at `angle_rad`, now and at the start. */
     py::dict
-    profiles_of(const wear::WearState &st)
+    profiles_of(wear::WearState &&st)
     {
       py::dict out;
-      for (const auto &j : st.joints)
+      for (auto &j : st.joints)
         {
           std::vector<double> angles(j.bore.n_points());
           for (unsigned int k = 0; k < angles.size(); ++k)
             angles[k] = j.bore.angle(k);
           py::dict d;
-          d["angle_rad"]      = array_of(angles);
-          d["bore"]           = array_of(j.bore.samples());
-          d["pin"]            = array_of(j.pin.samples());
-          d["initial_bore"]   = array_of(j.initial_bore.samples());
-          d["initial_pin"]    = array_of(j.initial_pin.samples());
+          d["angle_rad"]      = array_of(std::move(angles));
+          d["bore"]           = array_of(std::move(j.bore.samples()));
+          d["pin"]            = array_of(std::move(j.pin.samples()));
+          d["initial_bore"]   = array_of(std::move(j.initial_bore.samples()));
+          d["initial_pin"]    = array_of(std::move(j.initial_pin.samples()));
           out[j.name.c_str()] = d;
         }
       return out;
@@ -197,7 +206,7 @@ namespace wearlink::bindings
       py::dict d;
       d["summary"]  = outcome.summary;
       d["wear"]     = outcome.state.has_value();
-      d["profiles"] = outcome.state ? profiles_of(*outcome.state) : py::dict();
+      d["profiles"] = outcome.state ? profiles_of(std::move(*outcome.state)) : py::dict();
       return d;
     }
 
@@ -383,6 +392,131 @@ namespace wearlink::bindings
       return d;
     }
 
+    /** A command's answer: its report (the table the program prints) and its summary (JSON text, or ""). */
+    py::dict
+    answer(const std::string &report, const std::string &summary)
+    {
+      py::dict d;
+      d["summary"]  = summary;
+      d["report"]   = report;
+      d["wear"]     = false;
+      d["profiles"] = py::dict();
+      return d;
+    }
+
+    /** `wearlink compare-contact`: the simplified contact laws against the FE model, into @p directory. */
+    py::dict
+    compare_contact(const std::string              &file,
+                    const std::vector<std::string> &sets,
+                    const std::string              &directory,
+                    const bool                      overwrite,
+                    const std::string              &worn,
+                    const double                    cycles,
+                    const bool                      effects,
+                    const bool                      catch_interrupt)
+    {
+      workflows::ContactComparisonRequest r;
+      r.scene_file     = file;
+      r.overrides      = ParameterOverrides(sets);
+      r.worn_directory = worn;
+      r.cycles         = cycles;
+      r.effects        = effects;
+      r.progress       = false;
+      std::string                   report;
+      std::optional<InterruptScope> interrupts;
+      {
+        py::gil_scoped_release released;
+        if (catch_interrupt)
+          interrupts.emplace();
+        OutputDirectory held(directory,
+                             overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
+                             io::outputs::compare_contact(),
+                             "Give it a new or empty folder, or overwrite=True.");
+        const auto      c = workflows::compare_contact(r);
+        workflows::write_contact_comparison(directory, c);
+        report = c.table();
+        throw_if_interrupted();
+      }
+      return answer(report, "");
+    }
+
+    /** `wearlink contact`: the FE contact of one pin–bushing pair (a contact case file), into @p directory. */
+    py::dict
+    contact(const std::string              &file,
+            const std::vector<std::string> &sets,
+            const std::string              &directory,
+            const bool                      overwrite,
+            const bool                      catch_interrupt)
+    {
+      start_mpi();
+      std::string                   summary;
+      std::optional<InterruptScope> interrupts;
+      {
+        py::gil_scoped_release released;
+        if (catch_interrupt)
+          interrupts.emplace();
+        dealii::ParameterHandler prm;
+        io::declare_contact_case(prm);
+        const auto                contact_case = io::load_contact_case(prm, file, sets);
+        workflows::ContactCaseRun run;
+        run.output_directory = directory;
+        run.root             = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+        run.n_ranks          = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        const auto held      = workflows::held_on_root([&] {
+          return std::make_unique<OutputDirectory>(directory,
+                                                   overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
+                                                   io::outputs::contact(),
+                                                   "Give it a new or empty folder, or overwrite=True.");
+        });
+        summary              = workflows::run_contact_case(contact_case, prm, run).dump();
+        throw_if_interrupted();
+      }
+      return answer("", summary);
+    }
+
+    /** `wearlink calibrate`: the wear coefficients from measured mass losses or profiles, into @p directory. */
+    py::dict
+    calibrate(const std::string              &file,
+              const std::vector<std::string> &sets,
+              const std::string              &measurements,
+              const std::string              &directory,
+              const bool                      overwrite,
+              const double                    members,
+              const double                    seed,
+              const double                    perturbation,
+              const double                    tolerance,
+              const double                    max_runs,
+              const bool                      catch_interrupt)
+    {
+      workflows::CalibrationOptions o;
+      o.scene_file        = file;
+      o.measurements_file = measurements;
+      o.overrides         = ParameterOverrides(sets);
+      o.output_directory  = directory;
+      o.progress          = false;
+      o                   = workflows::calibration_options(o, members, seed, perturbation, tolerance, max_runs);
+      start_mpi();
+      std::string                   report, summary;
+      std::optional<InterruptScope> interrupts;
+      {
+        py::gil_scoped_release released;
+        if (catch_interrupt)
+          interrupts.emplace();
+        auto       problem = workflows::load_calibration(o); // bad input: before the folder is held
+        const auto held    = workflows::held_on_root([&] {
+          return std::make_unique<OutputDirectory>(directory,
+                                                   overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
+                                                   io::outputs::calibrate(),
+                                                   "Give it a new or empty folder, or overwrite=True.");
+        });
+        const Json r       = workflows::calibrate(problem, o); // the same on every rank
+        summary            = r.dump();
+        report             = workflows::calibration_table(r);
+        throw_if_interrupted();
+      }
+      return answer(report, summary);
+    }
+
     /** A CSV table of numbers: its header and its rows as a two-dimensional array (a field that is no number: NaN). */
     py::tuple
     read_csv(const std::string &file)
@@ -407,9 +541,8 @@ namespace wearlink::bindings
                 (!f.empty() && end != nullptr && *end == '\0') ? x : std::numeric_limits<double>::quiet_NaN();
             }
       }
-      py::array_t<double> a({static_cast<py::ssize_t>(n_rows), static_cast<py::ssize_t>(n_columns)});
-      std::copy(values.begin(), values.end(), a.mutable_data());
-      return py::make_tuple(names, a);
+      const auto rows = static_cast<py::ssize_t>(n_rows), columns = static_cast<py::ssize_t>(n_columns);
+      return py::make_tuple(names, array_of(std::move(values), {rows, columns}));
     }
   } // namespace
 } // namespace wearlink::bindings
@@ -433,6 +566,9 @@ PYBIND11_MODULE(_wearlink, m)
   // Called by the package (python/wearlink/__init__.py) with positional arguments.
   m.def("execute", &bindings::execute);
   m.def("ensemble", &bindings::ensemble);
+  m.def("compare_contact", &bindings::compare_contact);
+  m.def("calibrate", &bindings::calibrate);
+  m.def("contact", &bindings::contact);
   m.def("mpi_ranks", &bindings::mpi_ranks);
   m.def("read_csv", &bindings::read_csv, py::arg("file"));
 }

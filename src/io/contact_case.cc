@@ -8,6 +8,7 @@
 #include "base/text.h"
 #include "fe/fe_settings.h"
 #include "io/profile_file.h"
+#include "io/scene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -288,5 +289,76 @@ namespace wearlink::io
     c.run_reference = std::find(solvers.begin(), solvers.end(), "reference") != solvers.end();
     c.write_vtu     = write_vtu;
     return c;
+  }
+  namespace
+  {
+    /**
+     * Parse @p file as a contact case into @p prm. A file that fails to parse but reads
+     * as a mechanism scene was given to the wrong command: say so, instead of deal.II's
+     * "No entry <Scene format>" at its first line.
+     */
+    void
+    read_contact_case_file(dealii::ParameterHandler &prm, const std::string &file)
+    {
+      try
+        {
+          read_prm_file(prm, file);
+        }
+      catch (const InputError &)
+        {
+          bool scene = false;
+          try
+            {
+              io::read_scene(file);
+              scene = true;
+            }
+          catch (const Error &)
+            {
+              // not a scene either: the contact case's own message says what is wrong
+            }
+          if (scene)
+            throw InputError("'" + file +
+                             "' is a mechanism scene (for `wearlink run`), not a contact case. `wearlink contact` "
+                             "reads one pin–bushing pair under given loads (subsections Geometry, Bushing material, "
+                             "Pin material, Loads, FE model; see params/pin_bushing.prm). To compare the contact "
+                             "laws of a scene's joints against the FE model, use `wearlink compare-contact " +
+                             file + "`.");
+          throw;
+        }
+    }
+
+    /**
+     * A --set of the load list that the chosen Loads/Control does not read (magnitudes
+     * under displacement control, eccentricities under force control) is a mistake:
+     * the run would use the file's other list and say nothing.
+     */
+    void
+    refuse_unused_load_override(dealii::ParameterHandler &prm, const std::vector<std::string> &overrides)
+    {
+      prm.enter_subsection("Loads");
+      const std::string control = prm.get("Control");
+      prm.leave_subsection();
+      const std::string unused = control == "force" ? "Eccentricities" : "Load magnitudes";
+      const std::string used   = control == "force" ? "Load magnitudes" : "Eccentricities";
+      for (const auto &o : overrides)
+        if (trim(o.substr(0, o.find('='))) == "Loads/" + unused)
+          throw InputError("--set \"" + o + "\" has no effect: under Loads/Control = " + control +
+                           " the load states are Loads/" + used +
+                           (control == "force" ? " (forces on the pin, N)" :
+                                                 " (pin-centre offsets, m, each beyond the radial clearance)") +
+                           ". Set Loads/" + used +
+                           ", or Loads/Control = " + (control == "force" ? "displacement" : "force") + ".");
+    }
+
+  } // namespace
+
+  ContactCase
+  load_contact_case(dealii::ParameterHandler &prm, const std::string &file, const std::vector<std::string> &overrides)
+  {
+    read_contact_case_file(prm, file);
+    apply_overrides(prm, ParameterOverrides(overrides));
+    refuse_unused_load_override(prm, overrides);
+    check_required_entries(prm, file);
+    return read_contact_case(prm, file);
   }
 } // namespace wearlink::io

@@ -44,4 +44,13 @@ namespace wearlink::io
    */
   ContactCase
   read_contact_case(dealii::ParameterHandler &prm, const std::string &file);
+
+  /**
+   * Parse @p file into @p prm (declared by declare_contact_case()), apply @p overrides
+   * ("Section/Entry=value"), check the required entries and read the case. InputError for
+   * a mechanism scene given instead (saying which command reads it), and for an override
+   * of the load list that Loads/Control does not read (it would have no effect).
+   */
+  ContactCase
+  load_contact_case(dealii::ParameterHandler &prm, const std::string &file, const std::vector<std::string> &overrides);
 } // namespace wearlink::io

@@ -18,6 +18,12 @@ def scene_path(name):
     return os.path.join(SOURCE, "params", name)
 
 
+def set_args(sets):
+    """A dict of entries as the program's --set arguments."""
+    import wearlink
+    return [a for k, v in sets.items() for a in ("--set", f"{k}={wearlink._format(v)}")]
+
+
 def run_program(*args):
     """The program with `args`; its CompletedProcess (output captured)."""
     return subprocess.run([BINARY, *args], capture_output=True, text=True)

@@ -11,7 +11,7 @@ import textwrap
 import pytest
 
 import wearlink
-from conftest import SHORT_WEAR, run_program, scene_path
+from conftest import SHORT_WEAR, run_program, scene_path, set_args
 
 # What measures the machine or names the folder, not the members' mechanics.
 MACHINE = ("wall_time_s", "wear_timing_s", "effect_ledger", "elapsed")
@@ -34,8 +34,7 @@ def test_an_ensemble_is_the_programs_on_any_rank_count(scratch):
     assert os.path.isdir(scratch / "serial" / "member_1") or os.path.isdir(scratch / "serial" / "member_01")
     args = ["run", scene_path("nine_bar_wear.prm"), "--ensemble", "2", "--seed", "7", "--output",
             str(scratch / "cli"), "--quiet"]
-    for k, v in SHORT_WEAR.items():
-        args += ["--set", f"{k}={wearlink._format(v)}"]
+    args += set_args(SHORT_WEAR)
     done = run_program(*args)
     assert done.returncode == 0, done.stderr
     with open(scratch / "cli" / "summary.json") as f:

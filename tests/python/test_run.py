@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import wearlink
-from conftest import SHORT_WEAR, run_program, scene_path
+from conftest import SHORT_WEAR, run_program, scene_path, set_args
 
 # Figures that measure the machine, not the mechanism: wall times and the phases' times.
 MACHINE = {"wall_time_s", "wear_timing_s", "effect_ledger"}
@@ -22,8 +22,7 @@ def figures(summary):
 
 def program_run(scene, sets, out):
     args = ["run", scene, "--output", str(out), "--quiet"]
-    for k, v in sets.items():
-        args += ["--set", f"{k}={wearlink._format(v)}"]
+    args += set_args(sets)
     done = run_program(*args)
     assert done.returncode == 0, done.stderr
     with open(os.path.join(out, "summary.json")) as f:
@@ -127,3 +126,11 @@ def test_two_runs_in_threads_give_their_own_figures(scratch):
     for t in threads:
         t.join()
     assert together == alone
+
+
+def test_a_table_is_a_dataframe_where_pandas_is_installed():
+    pandas = pytest.importorskip("pandas")
+    table = wearlink.Table(["time_s", "x_m"], np.array([[0.0, 1.0], [0.5, 2.0]]))
+    frame = table.to_pandas()
+    assert isinstance(frame, pandas.DataFrame) and list(frame.columns) == ["time_s", "x_m"]
+    assert frame["x_m"].tolist() == [1.0, 2.0]

@@ -112,23 +112,13 @@ run that failed numerically; 4 an output that cannot be written; 1 an internal e
       o.scene_file        = a.positional[0];
       o.measurements_file = a.value("--measurements");
       o.overrides         = ParameterOverrides(a.all("--set"));
-      const double n = a.number("--ensemble", 4), seed = a.number("--seed", 1), runs = a.number("--max-runs", 10);
-      if (!(n >= 1 && n <= 1000 && n == std::floor(n)))
-        throw InputError("--ensemble " + a.value("--ensemble") + ": a whole number from 1 to 1000 (1: no ensemble).");
-      if (!(seed >= 0 && seed <= 9007199254740992.0 && seed == std::floor(seed)))
-        throw InputError("--seed " + a.value("--seed") + ": the seed must be a whole number from 0 to 2^53.");
-      if (!(runs >= 1 && runs <= 100 && runs == std::floor(runs)))
-        throw InputError("--max-runs " + a.value("--max-runs") + ": a whole number from 1 to 100.");
-      o.members          = static_cast<unsigned int>(n);
-      o.seed             = static_cast<std::uint64_t>(seed);
-      o.perturbation     = a.number("--perturbation", 1e-9);
-      o.secant.tolerance = a.number("--tolerance", 1e-3);
-      o.secant.max_runs  = static_cast<unsigned int>(runs);
-      o.progress         = !a.has("--quiet");
-      if (!(o.perturbation > 0 && o.perturbation <= 1e-3))
-        throw InputError("--perturbation " + a.value("--perturbation") + ": > 0 and at most 1e-3 rad.");
-      if (!(o.secant.tolerance > 0 && o.secant.tolerance < 1))
-        throw InputError("--tolerance " + a.value("--tolerance") + ": a relative residual > 0 and < 1.");
+      o.progress          = !a.has("--quiet");
+      o                   = workflows::calibration_options(o,
+                                         a.number("--ensemble", 4),
+                                         a.number("--seed", 1),
+                                         a.number("--perturbation", 1e-9),
+                                         a.number("--tolerance", 1e-3),
+                                         a.number("--max-runs", 10));
       o.output_directory =
         a.value("--output", "output/" + std::filesystem::path(o.scene_file).stem().string() + "_calibration");
       return o;

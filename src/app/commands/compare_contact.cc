@@ -76,13 +76,6 @@ internal error (see `wearlink --help`).
       r.worn_directory = a.value("--worn", "");
       r.cycles         = a.number("--cycles", 100);
       r.effects        = !a.has("--no-effects");
-      if (!(r.cycles > 0 && r.cycles <= 1e4))
-        throw InputError("--cycles is " + format_number(r.cycles) +
-                         "; it must be > 0 and at most 1e4 (the load history of the cycles is kept in memory).");
-      if (!r.worn_directory.empty() && !std::filesystem::is_directory(r.worn_directory))
-        throw InputError("--worn '" + r.worn_directory +
-                         "' is not a directory; give the output directory of a wear run (it holds bore_<J>.csv "
-                         "and pin_<J>.csv).");
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(r.scene_file).stem().string() + "_contact");
       const auto claimed = claim_output_directory(output_claim(out, io::outputs::compare_contact(), a));

@@ -7,20 +7,14 @@
 #include "app/command_line.h"
 #include "app/output_claim.h"
 #include "base/exceptions.h"
-#include "base/parameters.h"
-#include "base/text.h"
 #include "io/contact_case.h"
 #include "io/output_names.h"
-#include "io/scene.h"
 #include "workflows/run/contact_case.h"
 
 #include <deal.II/base/mpi.h>
 
-#include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
-#include <sstream>
 
 namespace wearlink::app
 {
@@ -63,64 +57,6 @@ Exit status: 0 success, 2 bad input (also: directory in use, earlier run's files
 internal error (see `wearlink --help`).
 )" + io::outputs::listing(io::outputs::contact());
 
-    /**
-     * Parse @p file as a contact case into @p prm. A file that fails to parse but reads
-     * as a mechanism scene was given to the wrong command: say so, instead of deal.II's
-     * "No entry <Scene format>" at its first line.
-     */
-    void
-    read_contact_case_file(dealii::ParameterHandler &prm, const std::string &file)
-    {
-      try
-        {
-          read_prm_file(prm, file);
-        }
-      catch (const InputError &)
-        {
-          bool scene = false;
-          try
-            {
-              io::read_scene(file);
-              scene = true;
-            }
-          catch (const Error &)
-            {
-              // not a scene either: the contact case's own message says what is wrong
-            }
-          if (scene)
-            throw InputError("'" + file +
-                             "' is a mechanism scene (for `wearlink run`), not a contact case. `wearlink contact` "
-                             "reads one pin–bushing pair under given loads (subsections Geometry, Bushing material, "
-                             "Pin material, Loads, FE model; see params/pin_bushing.prm). To compare the contact "
-                             "laws of a scene's joints against the FE model, use `wearlink compare-contact " +
-                             file + "`.");
-          throw;
-        }
-    }
-
-    /**
-     * A --set of the load list that the chosen Loads/Control does not read (magnitudes
-     * under displacement control, eccentricities under force control) is a mistake:
-     * the run would use the file's other list and say nothing.
-     */
-    void
-    refuse_unused_load_override(dealii::ParameterHandler &prm, const std::vector<std::string> &overrides)
-    {
-      prm.enter_subsection("Loads");
-      const std::string control = prm.get("Control");
-      prm.leave_subsection();
-      const std::string unused = control == "force" ? "Eccentricities" : "Load magnitudes";
-      const std::string used   = control == "force" ? "Load magnitudes" : "Eccentricities";
-      for (const auto &o : overrides)
-        if (trim(o.substr(0, o.find('='))) == "Loads/" + unused)
-          throw InputError("--set \"" + o + "\" has no effect: under Loads/Control = " + control +
-                           " the load states are Loads/" + used +
-                           (control == "force" ? " (forces on the pin, N)" :
-                                                 " (pin-centre offsets, m, each beyond the radial clearance)") +
-                           ". Set Loads/" + used +
-                           ", or Loads/Control = " + (control == "force" ? "displacement" : "force") + ".");
-    }
-
     int
     run_contact(const std::vector<std::string> &args)
     {
@@ -148,12 +84,8 @@ internal error (see `wearlink --help`).
       if (a.positional.size() != 1)
         throw InputError("`wearlink contact` needs exactly one case file (given " +
                          std::to_string(a.positional.size()) + "). See `wearlink contact --help`.");
-      const std::string file = a.positional[0];
-      read_contact_case_file(prm, file);
-      apply_overrides(prm, a.all("--set"));
-      refuse_unused_load_override(prm, a.all("--set"));
-      check_required_entries(prm, file);
-      const auto                contact_case = io::read_contact_case(prm, file);
+      const std::string         file         = a.positional[0];
+      const auto                contact_case = io::load_contact_case(prm, file, a.all("--set"));
       workflows::ContactCaseRun run;
       run.output_directory = a.value("--output", "output/" + std::filesystem::path(file).stem().string());
       run.log              = root ? &std::cout : nullptr;

@@ -466,9 +466,13 @@ namespace wearlink::workflows
   ContactComparison
   compare_contact(const ContactComparisonRequest &request)
   {
-    if (!(request.cycles > 0))
-      throw InputError("The number of cycles of the effect runs must be > 0 (given: " + format_number(request.cycles) +
-                       ").");
+    if (!(request.cycles > 0 && request.cycles <= 1e4))
+      throw InputError("--cycles is " + format_number(request.cycles) +
+                       "; it must be > 0 and at most 1e4 (the load history of the cycles is kept in memory).");
+    if (!request.worn_directory.empty() && !std::filesystem::is_directory(request.worn_directory))
+      throw InputError("--worn '" + request.worn_directory +
+                       "' is not a directory; give the output directory of a wear run (it holds bore_<J>.csv "
+                       "and pin_<J>.csv).");
     io::Scene scene = io::read_scene(request.scene_file, request.overrides);
     if (scene.clearance_joints.empty())
       throw InputError("The scene '" + request.scene_file +

@@ -21,6 +21,32 @@
 
 namespace wearlink::workflows
 {
+  CalibrationOptions
+  calibration_options(CalibrationOptions o,
+                      const double       members,
+                      const double       seed,
+                      const double       perturbation,
+                      const double       tolerance,
+                      const double       max_runs)
+  {
+    if (!(members >= 1 && members <= 1000 && members == std::floor(members)))
+      throw InputError("--ensemble " + format_number(members) + ": a whole number from 1 to 1000 (1: no ensemble).");
+    if (!(seed >= 0 && seed <= 9007199254740992.0 && seed == std::floor(seed)))
+      throw InputError("--seed " + format_number(seed) + ": the seed must be a whole number from 0 to 2^53.");
+    if (!(max_runs >= 1 && max_runs <= 100 && max_runs == std::floor(max_runs)))
+      throw InputError("--max-runs " + format_number(max_runs) + ": a whole number from 1 to 100.");
+    if (!(perturbation > 0 && perturbation <= 1e-3))
+      throw InputError("--perturbation " + format_number(perturbation) + ": > 0 and at most 1e-3 rad.");
+    if (!(tolerance > 0 && tolerance < 1))
+      throw InputError("--tolerance " + format_number(tolerance) + ": a relative residual > 0 and < 1.");
+    o.members          = static_cast<unsigned int>(members);
+    o.seed             = static_cast<std::uint64_t>(seed);
+    o.perturbation     = perturbation;
+    o.secant.tolerance = tolerance;
+    o.secant.max_runs  = static_cast<unsigned int>(max_runs);
+    return o;
+  }
+
   CalibrationProblem
   load_calibration(const CalibrationOptions &options)
   {

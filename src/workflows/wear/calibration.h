@@ -57,6 +57,19 @@ namespace wearlink::workflows
     bool                     progress = true;  ///< a line per forward run on stderr (rank 0)
   };
 
+  /**
+   * @p o with the numbers of its request checked: @p members a whole number 1 … 1000,
+   * @p seed 0 … 2⁵³, @p perturbation > 0 and ≤ 1e-3 rad, @p tolerance in (0, 1),
+   * @p max_runs 1 … 100 (InputError naming the option, --ensemble, --seed, ...).
+   */
+  CalibrationOptions
+  calibration_options(CalibrationOptions o,
+                      double             members,
+                      double             seed,
+                      double             perturbation,
+                      double             tolerance,
+                      double             max_runs);
+
   /** The scene and the measurements of a calibration, read and checked. */
   struct CalibrationProblem
   {

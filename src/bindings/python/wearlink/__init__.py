@@ -32,7 +32,7 @@ from ._wearlink import (EnvironmentFault, EstimationError, InputError, Interrupt
                         NumericalError)
 from . import _wearlink
 
-__all__ = ["Scene", "Result", "Table", "run", "life", "InputError", "EstimationError", "NumericalError",
+__all__ = ["Scene", "Result", "Table", "run", "life", "compare_contact", "calibrate", "contact", "InputError", "EstimationError", "NumericalError",
            "EnvironmentFault", "Interrupted"]
 
 _INCLUDE = _re.compile(r"^(\s*include\s+)(\S+)(.*)$", _re.IGNORECASE)
@@ -222,6 +222,8 @@ class Result:
     wear_history    wear_history.csv as a Table, one row per wear iteration (wear runs)
     life, life_history  summary["life"] and life_history.csv as a Table (life())
     members         an ensemble's ensemble.csv as a Table, one row per member (ensemble=N)
+    tables          every CSV table the command wrote into its folder, by name ("deviations", ...)
+    report          the table the program prints (compare_contact, calibrate)
     profiles        {joint: {"angle_rad", "bore", "pin", "initial_bore", "initial_pin"}}:
                     the worn surfaces' radii [m] at the angles of their samples (wear runs)
     files           the files the run wrote, relative to output_directory
@@ -229,9 +231,10 @@ class Result:
     warnings        the results beyond their models' validity (summary["warnings"])
     """
 
-    def __init__(self, summary, profiles, directory, keep):
+    def __init__(self, summary, profiles, directory, keep, report=""):
         self.summary = summary
         self.profiles = profiles
+        self.report = report
         self.warnings = list(summary.get("warnings", []))
         self.files = sorted(_os.path.relpath(_os.path.join(d, f), directory)
                             for d, _, names in _os.walk(directory) for f in names)
@@ -244,12 +247,95 @@ class Result:
         lh = _os.path.join(directory, "life_history.csv")
         self.life_history = Table.read(lh) if _os.path.exists(lh) else None
         self.life = summary.get("life")
+        self.tables = {name[:-4]: Table.read(_os.path.join(directory, name))
+                       for name in sorted(_os.listdir(directory)) if name.endswith(".csv")}
         self.output_directory = directory if keep else None
 
     def __repr__(self):
         kind = "wear run" if self.wear_history is not None else "run"
         where = self.output_directory or "a removed temporary folder"
         return f"<wearlink.Result of a {kind}: {len(self.files)} files in {where}>"
+
+
+def _in_folder(output, keep, call):
+    """call(directory) into `output` (or a temporary folder, removed unless kept); its Result."""
+    temporary = output is None
+    directory = _tempfile.mkdtemp(prefix="wearlink-run-") if temporary else _os.path.abspath(_os.fspath(output))
+    keep = (not temporary) if keep is None else keep
+    try:
+        raw = call(directory)
+        summary = _json.loads(raw["summary"]) if raw["summary"] else {}
+        result = Result(summary, raw["profiles"], directory, keep, raw.get("report", ""))
+    except BaseException:
+        if temporary:
+            _shutil.rmtree(directory, ignore_errors=True)
+        raise
+    if temporary and not keep:
+        _shutil.rmtree(directory, ignore_errors=True)
+    return result
+
+
+def compare_contact(scene, worn=None, cycles=100, effects=True, output=None, keep=None, overwrite=False):
+    """The simplified contact laws against the FE model of each joint, as `wearlink compare-contact`.
+
+    worn      None, or the folder of a wear run (its bore_<J>.csv, pin_<J>.csv): the worn
+              joints too
+    cycles    driving cycles of each law's effect run (> 0, at most 1e4)
+    effects   False: no effect runs (force–approach curves and pressures only)
+
+    The Result's `report` is the table of deviations the program prints, its `tables` the
+    CSVs (force_approach, deviations, effects, pressure); output, keep and overwrite are
+    run()'s.
+    """
+    if not isinstance(scene, Scene):
+        scene = Scene(scene)
+    in_main = _threading.current_thread() is _threading.main_thread()
+    worn = "" if worn is None else _os.path.abspath(_os.fspath(worn))
+    return _in_folder(output, keep, lambda d: _call(_wearlink.compare_contact, scene.path, scene.overrides, d,
+                                                    overwrite, worn, float(cycles), bool(effects), in_main))
+
+
+def contact(case, set=None, output=None, keep=None, overwrite=False):
+    """The FE contact of one pin–bushing pair under given loads, as `wearlink contact`.
+
+    case   a contact case file (params/pin_bushing.prm: geometry, materials, loads, FE
+           model; not a mechanism scene); set a dict of its entries to change
+    The Result's `summary` is summary.json (per load state the contact force, the
+    approach, the contact arc and the peak pressure), its `tables` the pressure on both
+    surfaces per load state; output, keep and overwrite are run()'s. The reference solver
+    goes over the MPI ranks under `mpirun` (output=DIR then).
+    """
+    sets = [f"{k}={_format(v)}" for k, v in (set or {}).items()]
+    if output is None and _wearlink.mpi_ranks()[1] > 1:
+        raise _located(InputError("A contact case over several MPI ranks needs output=DIR, a folder every rank "
+                                  "sees."))
+    in_main = _threading.current_thread() is _threading.main_thread()
+    path = _os.path.abspath(_os.fspath(case))
+    return _in_folder(output, keep, lambda d: _call(_wearlink.contact, path, sets, d, overwrite, in_main))
+
+
+def calibrate(scene, measurements, ensemble=4, seed=1, perturbation=1e-9, tolerance=1e-3, max_runs=10, output=None,
+              keep=None, overwrite=False):
+    """The wear coefficients that reproduce measured mass losses or profiles, as `wearlink calibrate`.
+
+    measurements  the measurements file (a .prm; doc/tutorials/calibration.md)
+    ensemble      members of the ensemble at the calibrated coefficients (1: none), for
+                  the 95 % intervals; seed, perturbation as for run()
+    tolerance     the relative residual the secant runs stop at; max_runs their limit
+
+    The Result's `summary` is calibration.json (each coefficient with its interval), its
+    `report` the table the program prints. The forward runs go over the MPI ranks under
+    `mpirun` (output=DIR then).
+    """
+    if not isinstance(scene, Scene):
+        scene = Scene(scene)
+    if output is None and _wearlink.mpi_ranks()[1] > 1:
+        raise _located(InputError("A calibration over several MPI ranks needs output=DIR, a folder every rank sees."))
+    in_main = _threading.current_thread() is _threading.main_thread()
+    meas = _os.path.abspath(_os.fspath(measurements))
+    return _in_folder(output, keep, lambda d: _call(_wearlink.calibrate, scene.path, scene.overrides, meas, d,
+                                                    overwrite, float(ensemble), float(seed), float(perturbation),
+                                                    float(tolerance), float(max_runs), in_main))
 
 
 def _command(command, scene, output, keep, overwrite, progress, ensemble=None, seed=1, perturbation=1e-9,
@@ -267,25 +353,16 @@ def _command(command, scene, output, keep, overwrite, progress, ensemble=None, s
     if output is None and ranks > 1:
         raise _located(InputError(f"An ensemble over {ranks} MPI ranks needs output=DIR, a folder every rank "
                                   "sees (a temporary folder is each rank's own)."))
-    temporary = output is None
-    directory = _tempfile.mkdtemp(prefix="wearlink-run-") if temporary else _os.path.abspath(_os.fspath(output))
-    keep = (not temporary) if keep is None else keep
     in_main = _threading.current_thread() is _threading.main_thread()
-    try:
+
+    def call(directory):
         if ensemble is None:
-            raw = _call(_wearlink.execute, command, scene.path, scene.overrides, directory, overwrite, progress,
-                        in_main)
-        else:
-            raw = _call(_wearlink.ensemble, command, scene.path, scene.overrides, directory, overwrite,
-                        float(ensemble), float(seed), float(perturbation), sensitivity == "saltelli", in_main)
-        result = Result(_json.loads(raw["summary"]), raw["profiles"], directory, keep)
-    except BaseException:
-        if temporary:
-            _shutil.rmtree(directory, ignore_errors=True)
-        raise
-    if temporary and not keep:
-        _shutil.rmtree(directory, ignore_errors=True)
-    return result
+            return _call(_wearlink.execute, command, scene.path, scene.overrides, directory, overwrite, progress,
+                         in_main)
+        return _call(_wearlink.ensemble, command, scene.path, scene.overrides, directory, overwrite,
+                     float(ensemble), float(seed), float(perturbation), sensitivity == "saltelli", in_main)
+
+    return _in_folder(output, keep, call)
 
 
 _ENSEMBLE_DOC = """
