@@ -26,6 +26,8 @@
 #include "workflows/run/contact_case.h"
 #include "workflows/run/first_look.h"
 #include "workflows/run/run.h"
+#include "workflows/study/accuracy_study.h"
+#include "workflows/study/convergence_study.h"
 #include "workflows/wear/calibration.h"
 #include "workflows/wear/life.h"
 #include "workflows/wear/wear_run.h"
@@ -474,6 +476,87 @@ namespace wearlink::bindings
       return answer("", summary);
     }
 
+    /**
+     * `wearlink study accuracy|convergence` (@p kind) of the scene into @p directory: the
+     * accuracy study (@p quick, @p knobs, a study file @p study_file) or the convergence
+     * study (@p refinements), with a chaos floor of @p members perturbed runs. The report
+     * (the study's Markdown) on every rank.
+     */
+    py::dict
+    study(const std::string              &kind,
+          const std::string              &file,
+          const std::vector<std::string> &sets,
+          const std::string              &directory,
+          const bool                      overwrite,
+          const bool                      quick,
+          const std::vector<std::string> &knobs,
+          const std::string              &study_file,
+          const std::vector<double>      &refinements,
+          const double                    members,
+          const double                    seed,
+          const double                    perturbation,
+          const bool                      catch_interrupt)
+    {
+      if (kind != "accuracy" && kind != "convergence")
+        throw InputError("A study is 'accuracy' or 'convergence', not '" + kind + "'.");
+      const auto floor = workflows::floor_ensemble(members, seed, perturbation);
+      start_mpi();
+      std::string                   report;
+      std::optional<InterruptScope> interrupts;
+      {
+        py::gil_scoped_release released;
+        if (catch_interrupt)
+          interrupts.emplace();
+        const bool accuracy = kind == "accuracy";
+        const auto held     = workflows::held_on_root([&] {
+          return std::make_unique<OutputDirectory>(directory,
+                                                   overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
+                                                   accuracy ? io::outputs::accuracy_study() :
+                                                                  io::outputs::convergence_study(),
+                                                   "Give it a new or empty folder, or overwrite=True.");
+        });
+        if (accuracy)
+          {
+            workflows::StudyRequest r;
+            r.overrides = sets;
+            r.quick     = quick;
+            r.progress  = false;
+            if (!study_file.empty())
+              workflows::read_study_file(study_file, r);
+            if (!knobs.empty())
+              r.knobs = knobs;
+            r.floor_members = floor.members;
+            r.seed          = floor.seed;
+            r.perturbation  = floor.perturbation;
+            const auto s    = workflows::run_accuracy_study(file, r);
+            if (s.root)
+              {
+                workflows::write_accuracy_study(directory, s);
+                report = s.markdown();
+              }
+          }
+        else
+          {
+            workflows::ConvergenceRequest r;
+            r.overrides    = ParameterOverrides(sets);
+            r.refinements  = refinements;
+            r.members      = floor.members;
+            r.seed         = floor.seed;
+            r.perturbation = floor.perturbation;
+            r.progress     = false;
+            const auto s   = workflows::run_convergence_study(file, r);
+            if (s.root)
+              {
+                workflows::write_convergence_study(directory, s);
+                report = s.markdown();
+              }
+          }
+        report = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, report, 0);
+        throw_if_interrupted();
+      }
+      return answer(report, "");
+    }
+
     /** `wearlink calibrate`: the wear coefficients from measured mass losses or profiles, into @p directory. */
     py::dict
     calibrate(const std::string              &file,
@@ -569,6 +652,7 @@ PYBIND11_MODULE(_wearlink, m)
   m.def("compare_contact", &bindings::compare_contact);
   m.def("calibrate", &bindings::calibrate);
   m.def("contact", &bindings::contact);
+  m.def("study", &bindings::study);
   m.def("mpi_ranks", &bindings::mpi_ranks);
   m.def("read_csv", &bindings::read_csv, py::arg("file"));
 }

@@ -64,3 +64,21 @@ def test_contact_gives_the_programs_summary(scratch):
     with pytest.raises(wearlink.InputError, match="mechanism scene"):
         wearlink.contact(scene_path("nine_bar_wear.prm"), output=scratch / "bad")
     assert not os.path.exists(scratch / "bad"), "nothing written"
+
+
+def test_a_quick_accuracy_study_gives_the_programs_errors(scratch):
+    result = wearlink.study("accuracy", scene_path("nine_bar_clearance.prm"), quick=True)
+    done = run_program("study", "accuracy", scene_path("nine_bar_clearance.prm"), "--quick", "--quiet", "--output",
+                       str(scratch / "cli"))
+    assert done.returncode == 0, done.stderr
+    assert result.report.startswith("Accuracy study of")
+    program = wearlink.Table.read(scratch / "cli" / "accuracy.csv")
+    mine = result.tables["accuracy"]
+    assert mine.columns == program.columns and len(mine) == len(program) > 0
+    # The errors are the mechanics' (the same to the bit); the times are the machine's.
+    for column in ("worst_error", "floor_worst_mean", "A F_peak"):
+        assert np.array_equal(mine[column], program[column], equal_nan=True), column
+    with pytest.raises(wearlink.InputError, match="2 … 100 members"):
+        wearlink.study("accuracy", scene_path("nine_bar_clearance.prm"), quick=True, ensemble=1,
+                       output=scratch / "bad")
+    assert not os.path.exists(scratch / "bad"), "nothing written"

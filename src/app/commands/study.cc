@@ -114,18 +114,13 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       io::outputs::listing(io::outputs::accuracy_study()) +
       "study convergence: " + io::outputs::listing(io::outputs::convergence_study());
 
-    /** --ensemble N of the study: the chaos floor's members (0, or 2 … 100; default 4). */
-    unsigned int
-    floor_members(const ParsedArguments &a)
+    /** --ensemble N, --seed, --perturbation of a study: the chaos floor's ensemble. */
+    workflows::FloorEnsemble
+    floor_of(const ParsedArguments &a)
     {
-      const double n = a.number("--ensemble", 4);
-      if (!(n == 0 || (n >= 2 && n <= 100)) || n != std::floor(n))
-        throw InputError("--ensemble " + a.value("--ensemble") +
-                         ": the chaos floor needs 2 … 100 members (0: no floor; default 4).");
-      const double s = a.number("--seed", 1);
-      if (!(s >= 0 && s <= 9007199254740992.0 && s == std::floor(s)))
-        throw InputError("--seed " + a.value("--seed") + ": the seed must be a whole number from 0 to 2^53.");
-      return static_cast<unsigned int>(n);
+      return workflows::floor_ensemble(a.number("--ensemble", 4),
+                                       a.number("--seed", 1),
+                                       a.number("--perturbation", 1e-9));
     }
 
     /** --refinements a,b,c: the levels' factors. */
@@ -185,14 +180,10 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       request.overrides    = a.all("--set");
       request.progress     = !a.has("--quiet");
       request.refinements  = refinements(a);
-      request.members      = floor_members(a);
-      request.seed         = static_cast<std::uint64_t>(a.number("--seed", 1));
-      request.perturbation = a.number("--perturbation", 1e-9);
-      if (request.members == 0)
-        throw InputError("--ensemble 0: a convergence study needs 2 … 100 members per level (default 4).");
-      if (!(request.perturbation > 0 && request.perturbation <= 1e-3))
-        throw InputError("--perturbation " + a.value("--perturbation") +
-                         ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (default 1e-9 rad).");
+      const auto floor     = floor_of(a);
+      request.members      = floor.members;
+      request.seed         = floor.seed;
+      request.perturbation = floor.perturbation;
       const std::string out =
         a.value("--output", "output/" + std::filesystem::path(file).stem().string() + "_convergence");
       StudyMpi   mpi;
@@ -231,12 +222,10 @@ output that cannot be written or memory that ran out, 1 an internal error (see
       request.progress  = !a.has("--quiet");
       if (a.has("--study"))
         workflows::read_study_file(a.value("--study"), request);
-      request.floor_members = floor_members(a);
-      request.seed          = static_cast<std::uint64_t>(a.number("--seed", 1));
-      request.perturbation  = a.number("--perturbation", 1e-9);
-      if (!(request.perturbation > 0 && request.perturbation <= 1e-3))
-        throw InputError("--perturbation " + a.value("--perturbation") +
-                         ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (default 1e-9 rad).");
+      const auto floor      = floor_of(a);
+      request.floor_members = floor.members;
+      request.seed          = floor.seed;
+      request.perturbation  = floor.perturbation;
       if (a.has("--knobs"))
         {
           request.knobs.clear();

@@ -32,6 +32,20 @@
 
 namespace wearlink::workflows
 {
+  FloorEnsemble
+  floor_ensemble(const double members, const double seed, const double perturbation)
+  {
+    if (!(members == 0 || (members >= 2 && members <= 100)) || members != std::floor(members))
+      throw InputError("--ensemble " + format_number(members) +
+                       ": the chaos floor needs 2 … 100 members (0: no floor; default 4).");
+    if (!(seed >= 0 && seed <= 9007199254740992.0 && seed == std::floor(seed)))
+      throw InputError("--seed " + format_number(seed) + ": the seed must be a whole number from 0 to 2^53.");
+    if (!(perturbation > 0 && perturbation <= 1e-3))
+      throw InputError("--perturbation " + format_number(perturbation) +
+                       ": the initial-angle perturbation must be > 0 and at most 1e-3 rad (default 1e-9 rad).");
+    return {static_cast<unsigned int>(members), static_cast<std::uint64_t>(seed), perturbation};
+  }
+
   using namespace accuracy_detail;
 
   namespace

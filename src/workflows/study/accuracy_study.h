@@ -54,6 +54,22 @@ namespace wearlink::workflows
   };
 
   /** What the user asked for (command line and study file). */
+  /** The chaos floor's ensemble of a study: members (0: none, or 2 … 100), seed, perturbation [rad]. */
+  struct FloorEnsemble
+  {
+    unsigned int  members      = 4;
+    std::uint64_t seed         = 1;
+    double        perturbation = 1e-9;
+  };
+
+  /**
+   * The floor ensemble of @p members (0, or a whole number 2 … 100), @p seed (a whole
+   * number 0 … 2⁵³) and @p perturbation (> 0, ≤ 1e-3 rad); InputError naming the option
+   * (--ensemble, --seed, --perturbation) and its range otherwise.
+   */
+  FloorEnsemble
+  floor_ensemble(double members, double seed, double perturbation);
+
   struct StudyRequest
   {
     std::vector<std::string> overrides; ///< applied to every run (after --quick's)

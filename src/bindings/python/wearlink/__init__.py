@@ -32,7 +32,8 @@ from ._wearlink import (EnvironmentFault, EstimationError, InputError, Interrupt
                         NumericalError)
 from . import _wearlink
 
-__all__ = ["Scene", "Result", "Table", "run", "life", "compare_contact", "calibrate", "contact", "InputError", "EstimationError", "NumericalError",
+__all__ = ["Scene", "Result", "Table", "run", "life", "compare_contact", "calibrate", "contact", "study",
+           "InputError", "EstimationError", "NumericalError",
            "EnvironmentFault", "Interrupted"]
 
 _INCLUDE = _re.compile(r"^(\s*include\s+)(\S+)(.*)$", _re.IGNORECASE)
@@ -265,6 +266,11 @@ def _in_folder(output, keep, call):
     try:
         raw = call(directory)
         summary = _json.loads(raw["summary"]) if raw["summary"] else {}
+        for name in ("summary.json", "convergence.json"):  # the command's own summary file
+            path = _os.path.join(directory, name)
+            if not summary and _os.path.exists(path):
+                with open(path) as f:
+                    summary = _json.load(f)
         result = Result(summary, raw["profiles"], directory, keep, raw.get("report", ""))
     except BaseException:
         if temporary:
@@ -312,6 +318,34 @@ def contact(case, set=None, output=None, keep=None, overwrite=False):
     in_main = _threading.current_thread() is _threading.main_thread()
     path = _os.path.abspath(_os.fspath(case))
     return _in_folder(output, keep, lambda d: _call(_wearlink.contact, path, sets, d, overwrite, in_main))
+
+
+def study(kind, scene, output=None, keep=None, overwrite=False, quick=False, knobs=None, study_file=None,
+          refinements=(1, 2, 4), ensemble=4, seed=1, perturbation=1e-9):
+    """What accuracy costs in time, or whether the worn profiles converge, as `wearlink study`.
+
+    kind          "accuracy": every accuracy knob of the scene in turn (quick=True a shortened
+                  study; knobs a list of knob names; study_file a study .prm), each run's cost
+                  and its change of the result beside the chaos floor; "convergence": the wear
+                  run at the refinement factors `refinements`, the worn profiles' change level
+                  by level against the floor
+    ensemble      the chaos floor's perturbed runs (accuracy: 0 for none, or 2 … 100;
+                  convergence: 2 … 100 per level); seed, perturbation as for run()
+
+    The Result's `report` is the study's Markdown (accuracy.md, convergence.md), its
+    `tables` the CSVs (accuracy, accuracy_floor; convergence, ...) and, for convergence,
+    its `summary` convergence.json. The runs go over the MPI ranks under `mpirun`
+    (output=DIR then).
+    """
+    if not isinstance(scene, Scene):
+        scene = Scene(scene)
+    if output is None and _wearlink.mpi_ranks()[1] > 1:
+        raise _located(InputError("A study over several MPI ranks needs output=DIR, a folder every rank sees."))
+    in_main = _threading.current_thread() is _threading.main_thread()
+    study_file = "" if study_file is None else _os.path.abspath(_os.fspath(study_file))
+    return _in_folder(output, keep, lambda d: _call(
+        _wearlink.study, kind, scene.path, scene.overrides, d, overwrite, bool(quick), list(knobs or []), study_file,
+        [float(r) for r in refinements], float(ensemble), float(seed), float(perturbation), in_main))
 
 
 def calibrate(scene, measurements, ensemble=4, seed=1, perturbation=1e-9, tolerance=1e-3, max_runs=10, output=None,
