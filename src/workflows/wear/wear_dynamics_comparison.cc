@@ -90,12 +90,6 @@ namespace wearlink::workflows
     }
   } // namespace
 
-  /**
-   * The scene's analyses once with the fresh and once with the worn profiles, each run
-   * from assembly at Start time to End time (outputs in DIR/dynamics_before and
-   * DIR/dynamics_after), then compared (workflows/compare/dynamics_comparison.h) into DIR. The joints
-   * are left with the worn profiles.
-   */
   DynamicsComparison
   before_after_dynamics(io::Scene                                    &scene,
                         const wear::WearState                        &st,
