@@ -26,7 +26,6 @@ import shutil as _shutil
 import tempfile as _tempfile
 import threading as _threading
 
-import numpy as _np
 
 from ._wearlink import (EnvironmentFault, EstimationError, InputError, Interrupted,
                         NumericalError)
@@ -69,6 +68,26 @@ def _format(value):
     return repr(value) if isinstance(value, float) else str(value)
 
 
+def _absolute_includes(text, base):
+    """Scene text with its relative `include` paths made absolute from the folder `base`."""
+    lines = []
+    for line in text.splitlines():
+        match = _INCLUDE.match(line)
+        if match and not _os.path.isabs(match.group(2)):
+            line = match.group(1) + _os.path.abspath(_os.path.join(base, match.group(2))) + match.group(3)
+        lines.append(line)
+    return "\n".join(lines) + "\n"
+
+
+def _scene_file(text):
+    """A temporary folder holding `text` as its scene.prm: (folder, path)."""
+    folder = _tempfile.mkdtemp(prefix="wearlink-scene-")
+    path = _os.path.join(folder, "scene.prm")
+    with open(path, "w") as out:
+        out.write(text)
+    return folder, path
+
+
 class Scene:
     """A wearlink scene (a .prm file) and the entries set on top of it.
 
@@ -81,34 +100,20 @@ class Scene:
     file would). scene.set(...) sets several at once; scene.copy() is an independent copy.
     """
 
-    def __init__(self, path, set=None):
-        self._path = _os.fspath(path)
-        self._sets = {}
-        self._owned = None
-        self._info = None
-        self.set(set or {})
+    def __init__(self, path, set=None, _owned=None):
+        self._path, self._sets, self._owned, self._info = _os.fspath(path), {}, _owned, None
+        try:
+            self.set(set or {})
+        except BaseException:
+            if _owned:  # a scene from text that does not read: its file goes
+                _shutil.rmtree(_owned, ignore_errors=True)
+            raise
 
     @classmethod
     def from_string(cls, text, base=".", set=None):
         """A scene from its text. Relative `include` lines are read from the folder `base`."""
-        lines = []
-        for line in text.splitlines():
-            match = _INCLUDE.match(line)
-            if match and not _os.path.isabs(match.group(2)):
-                line = match.group(1) + _os.path.abspath(_os.path.join(base, match.group(2))) + match.group(3)
-            lines.append(line)
-        folder = _tempfile.mkdtemp(prefix="wearlink-scene-")
-        path = _os.path.join(folder, "scene.prm")
-        with open(path, "w") as out:
-            out.write("\n".join(lines) + "\n")
-        scene = cls.__new__(cls)
-        scene._path, scene._sets, scene._owned, scene._info = path, {}, folder, None
-        try:
-            scene.set(set or {})
-        except BaseException:
-            _shutil.rmtree(folder, ignore_errors=True)
-            raise
-        return scene
+        folder, path = _scene_file(_absolute_includes(text, base))
+        return cls(path, set, _owned=folder)
 
     def __del__(self):
         if getattr(self, "_owned", None):
@@ -159,13 +164,12 @@ class Scene:
 
     def copy(self):
         """An independent copy (changing it leaves this one as it is)."""
-        other = Scene.__new__(Scene)
-        other._path, other._sets, other._info = self._path, dict(self._sets), self._info
-        other._owned = None
+        folder, path = None, self._path
         if self._owned:  # a scene from text: the copy gets its own file
-            other._owned = _tempfile.mkdtemp(prefix="wearlink-scene-")
-            other._path = _os.path.join(other._owned, "scene.prm")
-            _shutil.copyfile(self._path, other._path)
+            with open(self._path) as f:
+                folder, path = _scene_file(f.read())
+        other = Scene.__new__(Scene)
+        other._path, other._sets, other._owned, other._info = path, dict(self._sets), folder, self._info
         return other
 
     def __repr__(self):
