@@ -162,6 +162,54 @@ namespace wearlink::bindings
       };
     }
 
+    /**
+     * @p work without the GIL and, if @p catch_interrupt, with SIGINT stopping it (the
+     * work throws Interrupted at its next check, or this does right after it): how every
+     * command of the module runs its C++.
+     */
+    template <class Work>
+    void
+    in_cpp(const bool catch_interrupt, Work &&work)
+    {
+      std::optional<InterruptScope> interrupts;
+      py::gil_scoped_release        released;
+      if (catch_interrupt)
+        interrupts.emplace();
+      work();
+      throw_if_interrupted();
+    }
+
+    /**
+     * @p directory held for a command that writes @p files (created; an earlier run's files
+     * refused, or removed with @p overwrite): from rank 0 once MPI runs, every rank getting
+     * its refusal.
+     */
+    std::unique_ptr<OutputDirectory>
+    hold(const std::string &directory, const bool overwrite, const RunFiles &files)
+    {
+      const auto make = [&] {
+        return std::make_unique<OutputDirectory>(directory,
+                                                 overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
+                                                 files,
+                                                 "Give it a new or empty folder, or overwrite=True.");
+      };
+      int mpi_started = 0;
+      MPI_Initialized(&mpi_started);
+      return mpi_started ? workflows::held_on_root(make) : make();
+    }
+
+    /** A command's answer: its report (the table the program prints) and its summary (JSON text, or ""). */
+    py::dict
+    answer(const std::string &report, const std::string &summary)
+    {
+      py::dict d;
+      d["summary"]  = summary;
+      d["report"]   = report;
+      d["wear"]     = false;
+      d["profiles"] = py::dict();
+      return d;
+    }
+
     /** What a run hands back to run()'s caller. */
     struct Outcome
     {
@@ -188,23 +236,15 @@ namespace wearlink::bindings
              const Work                                   &work,
              const std::function<void(const io::Scene &)> &check = {})
     {
-      const auto                    progress = progress_of(callback);
-      std::optional<InterruptScope> interrupts;
-      Outcome                       outcome;
-      {
-        py::gil_scoped_release released;
-        if (catch_interrupt)
-          interrupts.emplace();
+      const auto progress = progress_of(callback);
+      Outcome    outcome;
+      in_cpp(catch_interrupt, [&] {
         auto scene = io::read_scene(file, ParameterOverrides(sets));
         if (check)
           check(scene); // before the folder is held: bad input writes nothing
-        OutputDirectory held(directory,
-                             overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
-                             io::outputs::run(),
-                             "Give it a new or empty folder, or overwrite=True.");
-        outcome = work(scene, directory, progress);
-        throw_if_interrupted();
-      }
+        const auto held = hold(directory, overwrite, io::outputs::run());
+        outcome         = work(scene, directory, progress);
+      });
       py::dict d;
       d["summary"]  = outcome.summary;
       d["wear"]     = outcome.state.has_value();
@@ -326,23 +366,6 @@ namespace wearlink::bindings
     }
 
     /**
-     * Hold @p o's folder on rank 0 (created; an earlier run's files refused unless
-     * @p overwrite); every rank gets rank 0's outcome (its InputError or IoError).
-     */
-    std::unique_ptr<OutputDirectory>
-    hold_on_root(const workflows::EnsembleOptions &o, const bool overwrite)
-    {
-      return workflows::held_on_root([&] {
-        return std::make_unique<OutputDirectory>(o.output_directory,
-                                                 overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
-                                                 workflows::ensemble_files(o.output_directory,
-                                                                           o.request.members,
-                                                                           io::outputs::run()),
-                                                 "Give it a new or empty folder, or overwrite=True.");
-      });
-    }
-
-    /**
      * `wearlink run|life --ensemble N` (@p command "run" or "life") of the scene into
      * @p directory, its members over the MPI ranks; every rank gets the ensemble's summary.
      */
@@ -368,42 +391,22 @@ namespace wearlink::bindings
       o.command          = command;
       o.output_directory = directory;
       o.progress         = false;
-      std::string                   summary;
-      bool                          all_failed = false;
-      std::optional<InterruptScope> interrupts;
-      {
-        py::gil_scoped_release released;
-        if (catch_interrupt)
-          interrupts.emplace();
+      std::string summary;
+      bool        all_failed = false;
+      in_cpp(catch_interrupt, [&] {
         const auto scene = io::read_scene(file, o.overrides);
         if (command == "life")
           workflows::check_life_criteria(scene);
         workflows::check_uncertain_members(o, scene); // before the folder is held: bad input writes nothing
-        const auto held = hold_on_root(o, overwrite);
-        const Json s    = workflows::run_ensemble(o, member_run(command == "life"), all_failed);
-        summary         = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, s.dump(), 0);
-        throw_if_interrupted();
-      }
+        const auto held =
+          hold(directory, overwrite, workflows::ensemble_files(directory, o.request.members, io::outputs::run()));
+        const Json s = workflows::run_ensemble(o, member_run(command == "life"), all_failed);
+        summary      = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, s.dump(), 0);
+      });
       if (all_failed)
         throw NumericalError("Every member of the ensemble failed; " + directory +
                              "/summary.json has each member's message.");
-      py::dict d;
-      d["summary"]  = summary;
-      d["wear"]     = false;
-      d["profiles"] = py::dict();
-      return d;
-    }
-
-    /** A command's answer: its report (the table the program prints) and its summary (JSON text, or ""). */
-    py::dict
-    answer(const std::string &report, const std::string &summary)
-    {
-      py::dict d;
-      d["summary"]  = summary;
-      d["report"]   = report;
-      d["wear"]     = false;
-      d["profiles"] = py::dict();
-      return d;
+      return answer("", summary);
     }
 
     /** `wearlink compare-contact`: the simplified contact laws against the FE model, into @p directory. */
@@ -424,21 +427,13 @@ namespace wearlink::bindings
       r.cycles         = cycles;
       r.effects        = effects;
       r.progress       = false;
-      std::string                   report;
-      std::optional<InterruptScope> interrupts;
-      {
-        py::gil_scoped_release released;
-        if (catch_interrupt)
-          interrupts.emplace();
-        OutputDirectory held(directory,
-                             overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
-                             io::outputs::compare_contact(),
-                             "Give it a new or empty folder, or overwrite=True.");
-        const auto      c = workflows::compare_contact(r);
+      std::string report;
+      in_cpp(catch_interrupt, [&] {
+        const auto held = hold(directory, overwrite, io::outputs::compare_contact());
+        const auto c    = workflows::compare_contact(r);
         workflows::write_contact_comparison(directory, c);
         report = c.table();
-        throw_if_interrupted();
-      }
+      });
       return answer(report, "");
     }
 
@@ -451,12 +446,8 @@ namespace wearlink::bindings
             const bool                      catch_interrupt)
     {
       start_mpi();
-      std::string                   summary;
-      std::optional<InterruptScope> interrupts;
-      {
-        py::gil_scoped_release released;
-        if (catch_interrupt)
-          interrupts.emplace();
+      std::string summary;
+      in_cpp(catch_interrupt, [&] {
         dealii::ParameterHandler prm;
         io::declare_contact_case(prm);
         const auto                contact_case = io::load_contact_case(prm, file, sets);
@@ -464,16 +455,60 @@ namespace wearlink::bindings
         run.output_directory = directory;
         run.root             = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
         run.n_ranks          = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-        const auto held      = workflows::held_on_root([&] {
-          return std::make_unique<OutputDirectory>(directory,
-                                                   overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
-                                                   io::outputs::contact(),
-                                                   "Give it a new or empty folder, or overwrite=True.");
-        });
+        const auto held      = hold(directory, overwrite, io::outputs::contact());
         summary              = workflows::run_contact_case(contact_case, prm, run).dump();
-        throw_if_interrupted();
-      }
+      });
       return answer("", summary);
+    }
+
+    /** The accuracy study's Markdown (rank 0; "" elsewhere), its files written into @p directory. */
+    std::string
+    accuracy_report(const std::string              &file,
+                    const std::vector<std::string> &sets,
+                    const std::string              &directory,
+                    const bool                      quick,
+                    const std::vector<std::string> &knobs,
+                    const std::string              &study_file,
+                    const workflows::FloorEnsemble &floor)
+    {
+      workflows::StudyRequest r;
+      r.overrides = sets;
+      r.quick     = quick;
+      r.progress  = false;
+      if (!study_file.empty())
+        workflows::read_study_file(study_file, r);
+      if (!knobs.empty())
+        r.knobs = knobs;
+      r.floor_members = floor.members;
+      r.seed          = floor.seed;
+      r.perturbation  = floor.perturbation;
+      const auto s    = workflows::run_accuracy_study(file, r);
+      if (!s.root)
+        return "";
+      workflows::write_accuracy_study(directory, s);
+      return s.markdown();
+    }
+
+    /** The convergence study's Markdown (rank 0; "" elsewhere), its files written into @p directory. */
+    std::string
+    convergence_report(const std::string              &file,
+                       const std::vector<std::string> &sets,
+                       const std::string              &directory,
+                       const std::vector<double>      &refinements,
+                       const workflows::FloorEnsemble &floor)
+    {
+      workflows::ConvergenceRequest r;
+      r.overrides    = ParameterOverrides(sets);
+      r.refinements  = refinements;
+      r.members      = floor.members;
+      r.seed         = floor.seed;
+      r.perturbation = floor.perturbation;
+      r.progress     = false;
+      const auto s   = workflows::run_convergence_study(file, r);
+      if (!s.root)
+        return "";
+      workflows::write_convergence_study(directory, s);
+      return s.markdown();
     }
 
     /**
@@ -499,61 +534,17 @@ namespace wearlink::bindings
     {
       if (kind != "accuracy" && kind != "convergence")
         throw InputError("A study is 'accuracy' or 'convergence', not '" + kind + "'.");
-      const auto floor = workflows::floor_ensemble(members, seed, perturbation);
+      const auto floor    = workflows::floor_ensemble(members, seed, perturbation);
+      const bool accuracy = kind == "accuracy";
       start_mpi();
-      std::string                   report;
-      std::optional<InterruptScope> interrupts;
-      {
-        py::gil_scoped_release released;
-        if (catch_interrupt)
-          interrupts.emplace();
-        const bool accuracy = kind == "accuracy";
-        const auto held     = workflows::held_on_root([&] {
-          return std::make_unique<OutputDirectory>(directory,
-                                                   overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
-                                                   accuracy ? io::outputs::accuracy_study() :
-                                                                  io::outputs::convergence_study(),
-                                                   "Give it a new or empty folder, or overwrite=True.");
-        });
-        if (accuracy)
-          {
-            workflows::StudyRequest r;
-            r.overrides = sets;
-            r.quick     = quick;
-            r.progress  = false;
-            if (!study_file.empty())
-              workflows::read_study_file(study_file, r);
-            if (!knobs.empty())
-              r.knobs = knobs;
-            r.floor_members = floor.members;
-            r.seed          = floor.seed;
-            r.perturbation  = floor.perturbation;
-            const auto s    = workflows::run_accuracy_study(file, r);
-            if (s.root)
-              {
-                workflows::write_accuracy_study(directory, s);
-                report = s.markdown();
-              }
-          }
-        else
-          {
-            workflows::ConvergenceRequest r;
-            r.overrides    = ParameterOverrides(sets);
-            r.refinements  = refinements;
-            r.members      = floor.members;
-            r.seed         = floor.seed;
-            r.perturbation = floor.perturbation;
-            r.progress     = false;
-            const auto s   = workflows::run_convergence_study(file, r);
-            if (s.root)
-              {
-                workflows::write_convergence_study(directory, s);
-                report = s.markdown();
-              }
-          }
+      std::string report;
+      in_cpp(catch_interrupt, [&] {
+        const auto held =
+          hold(directory, overwrite, accuracy ? io::outputs::accuracy_study() : io::outputs::convergence_study());
+        report = accuracy ? accuracy_report(file, sets, directory, quick, knobs, study_file, floor) :
+                            convergence_report(file, sets, directory, refinements, floor);
         report = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, report, 0);
-        throw_if_interrupted();
-      }
+      });
       return answer(report, "");
     }
 
@@ -579,24 +570,14 @@ namespace wearlink::bindings
       o.progress          = false;
       o                   = workflows::calibration_options(o, members, seed, perturbation, tolerance, max_runs);
       start_mpi();
-      std::string                   report, summary;
-      std::optional<InterruptScope> interrupts;
-      {
-        py::gil_scoped_release released;
-        if (catch_interrupt)
-          interrupts.emplace();
+      std::string report, summary;
+      in_cpp(catch_interrupt, [&] {
         auto       problem = workflows::load_calibration(o); // bad input: before the folder is held
-        const auto held    = workflows::held_on_root([&] {
-          return std::make_unique<OutputDirectory>(directory,
-                                                   overwrite ? EarlierRun::overwrite : EarlierRun::refuse,
-                                                   io::outputs::calibrate(),
-                                                   "Give it a new or empty folder, or overwrite=True.");
-        });
+        const auto held    = hold(directory, overwrite, io::outputs::calibrate());
         const Json r       = workflows::calibrate(problem, o); // the same on every rank
         summary            = r.dump();
         report             = workflows::calibration_table(r);
-        throw_if_interrupted();
-      }
+      });
       return answer(report, summary);
     }
 
